@@ -1,0 +1,179 @@
+#include "report.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace lloydscope {
+
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+struct Row {
+  const char* label;
+  const char* pattern;
+  double QualityMetrics::*field;
+};
+const Row kRows[] = {
+    {"Irregularity (%)", "%.1f", &QualityMetrics::irregularPercent},
+    {"Irregularity, boundary-aware (%)", "%.1f", &QualityMetrics::irregularBoundaryAware},
+    {"Min angle (deg)", "%.1f", &QualityMetrics::minAngle},
+    {"Avg. min angle (deg)", "%.1f", &QualityMetrics::avgMinAngle},
+    {"Triangles under 30 deg (%)", "%.1f", &QualityMetrics::percentUnder30},
+    {"Max angle (deg)", "%.1f", &QualityMetrics::maxAngle},
+};
+
+void line(std::ostringstream& out, const std::string& label, const std::string& a,
+          const std::string& b) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, "| %-34s | %10s | %10s |\n", label.c_str(), a.c_str(),
+                b.c_str());
+  out << buffer;
+}
+
+}  // namespace
+
+nlohmann::json toJson(const QualityMetrics& m) {
+  return {{"vertices", m.vertices},
+          {"faces", m.faces},
+          {"boundary_vertices", m.boundaryVertices},
+          {"irregular_percent", m.irregularPercent},
+          {"irregular_boundary_aware_percent", m.irregularBoundaryAware},
+          {"min_angle_deg", m.minAngle},
+          {"avg_min_angle_deg", m.avgMinAngle},
+          {"percent_under_30_deg", m.percentUnder30},
+          {"max_angle_deg", m.maxAngle},
+          {"angle_histogram_10deg", m.angleHistogram}};
+}
+
+nlohmann::json toJson(const Fidelity& f) {
+  return {{"hausdorff_percent_diagonal", f.hausdorffPercent},
+          {"rms_percent_diagonal", f.rmsPercent},
+          {"samples", f.samples}};
+}
+
+nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
+  nlohmann::json output = toJson(r.after);
+  output["fidelity"] = toJson(r.fidelity);
+  return {{"settings",
+           {{"method", toString(o.method)},
+            {"param", toString(o.param.method)},
+            {"param_used", toString(r.paramUsed)},
+            {"border", toString(o.param.border)},
+            {"density", toString(o.density.kind)},
+            {"alpha", o.density.alpha},
+            {"beta", o.density.beta},
+            {"sites", o.sites.fromInputVertices ? nlohmann::json("input-vertices")
+                                                : nlohmann::json(o.sites.count)},
+            {"solver", toString(o.lloyd.solver)},
+            {"distance_threshold", o.lloyd.distanceThreshold},
+            {"percent_threshold", o.lloyd.percentThreshold},
+            {"max_iterations", o.lloyd.maxIterations}}},
+          {"input", toJson(r.before)},
+          {"output", output},
+          {"iterations", r.iterations},
+          {"converged", r.converged},
+          {"distortion",
+           {{"min_area_ratio", r.distortion.minAreaRatio},
+            {"max_area_ratio", r.distortion.maxAreaRatio},
+            {"mean_log_area_ratio", r.distortion.meanLogAreaRatio},
+            {"mean_angle_error_deg", r.distortion.meanAngleErrorDeg}}},
+          {"milliseconds",
+           {{"parameterize", r.ms.parameterize},
+            {"density", r.ms.density},
+            {"sites", r.ms.sites},
+            {"lloyd", r.ms.lloyd},
+            {"remesh", r.ms.remesh},
+            {"metrics", r.ms.metrics},
+            {"total", r.ms.total}}}};
+}
+
+std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
+                         const Fidelity* fidelity) {
+  std::ostringstream out;
+  line(out, "", "Input", "Output");
+  out << "|------------------------------------|------------|------------|\n";
+  line(out, "Vertices", std::to_string(before.vertices), std::to_string(after.vertices));
+  line(out, "Faces", std::to_string(before.faces), std::to_string(after.faces));
+  for (const Row& row : kRows)
+    line(out, row.label, format(row.pattern, before.*row.field),
+         format(row.pattern, after.*row.field));
+  if (fidelity) {
+    line(out, "Hausdorff distance (% diagonal)", "", format("%.3f", fidelity->hausdorffPercent));
+    line(out, "RMS distance (% diagonal)", "", format("%.3f", fidelity->rmsPercent));
+  }
+  return out.str();
+}
+
+std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
+  std::ostringstream out;
+  out << "Settings: " << describe(o) << "\n\n";
+  out << qualityTable(r.before, r.after, o.measureFidelity ? &r.fidelity : nullptr) << "\n";
+  out << "Lloyd iterations: " << r.iterations << (r.converged ? " (converged)" : " (not converged)")
+      << "\n";
+  out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
+      << format("%.3g", r.distortion.maxAreaRatio)
+      << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
+  out << "Time (ms): parameterize " << format("%.1f", r.ms.parameterize) << ", density "
+      << format("%.1f", r.ms.density) << ", sites " << format("%.1f", r.ms.sites) << ", lloyd "
+      << format("%.1f", r.ms.lloyd) << ", remesh " << format("%.1f", r.ms.remesh) << ", metrics "
+      << format("%.1f", r.ms.metrics) << ", total " << format("%.1f", r.ms.total) << "\n";
+  return out.str();
+}
+
+std::string metricsReport(const QualityMetrics& m, const Fidelity* fidelity) {
+  std::ostringstream out;
+  out << "| Vertices | " << m.vertices << " |\n| Faces | " << m.faces << " |\n";
+  for (const Row& row : kRows) out << "| " << row.label << " | " << format(row.pattern, m.*row.field) << " |\n";
+  if (fidelity) {
+    out << "| Hausdorff distance (% diagonal) | " << format("%.3f", fidelity->hausdorffPercent)
+        << " |\n| RMS distance (% diagonal) | " << format("%.3f", fidelity->rmsPercent) << " |\n";
+  }
+  return out.str();
+}
+
+nlohmann::json recordingSummary(const Recording& r) {
+  nlohmann::json iterations = nlohmann::json::array();
+  for (const IterationRecord& it : r.iterations)
+    iterations.push_back({{"index", it.index},
+                          {"energy", it.energy},
+                          {"max_displacement", it.maxDisplacement},
+                          {"mean_displacement", it.meanDisplacement},
+                          {"percent_moving", 100.0 * it.fractionMoving},
+                          {"milliseconds", it.milliseconds}});
+  const bool converged =
+      !r.iterations.empty() && 100.0 * r.iterations.back().fractionMoving < r.percentThreshold;
+  return {{"settings", r.settings},
+          {"input_vertices", r.input.vertexCount()},
+          {"input_faces", r.input.faceCount()},
+          {"fixed_sites", r.fixedSites.size()},
+          {"movable_sites", r.iterations.empty() ? 0 : r.iterations.front().sites.size()},
+          {"distance_threshold", r.distanceThreshold},
+          {"percent_threshold", r.percentThreshold},
+          {"converged", converged},
+          {"iterations", iterations}};
+}
+
+std::string recordingReport(const Recording& r) {
+  const nlohmann::json s = recordingSummary(r);
+  std::ostringstream out;
+  out << "Settings: " << r.settings << "\n"
+      << "Input: " << r.input.vertexCount() << " vertices, " << r.input.faceCount() << " faces\n"
+      << "Sites: " << s["fixed_sites"] << " fixed, " << s["movable_sites"] << " movable\n"
+      << "Iterations: " << r.iterations.size()
+      << (s["converged"].get<bool>() ? " (converged)" : " (not converged)") << "\n\n"
+      << "| iteration | CVT energy | max move | mean move | % moving | ms |\n"
+      << "|---|---|---|---|---|---|\n";
+  for (const IterationRecord& it : r.iterations)
+    out << "| " << it.index << " | " << format("%.6e", it.energy) << " | "
+        << format("%.3e", it.maxDisplacement) << " | " << format("%.3e", it.meanDisplacement)
+        << " | " << format("%.1f", 100.0 * it.fractionMoving) << " | "
+        << format("%.2f", it.milliseconds) << " |\n";
+  return out.str();
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,24 @@
+// How the command line shows results: tables like the reference's Table II, and JSON.
+#pragma once
+
+#include "pipeline.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace lloydscope {
+
+nlohmann::json toJson(const QualityMetrics& m);
+nlohmann::json toJson(const Fidelity& f);
+nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& options);
+nlohmann::json recordingSummary(const Recording& r);
+
+// Input and output side by side.
+std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
+                         const Fidelity* fidelity);
+std::string remeshReport(const RemeshResult& r, const RemeshOptions& options);
+std::string metricsReport(const QualityMetrics& m, const Fidelity* fidelity);
+std::string recordingReport(const Recording& r);
+
+}  // namespace lloydscope

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Lloydscope set-up on Debian 12: installs the missing packages, builds, then
+#   ./build.sh run    remeshes the bundled default mesh and prints the before/after table
+#   ./build.sh test   runs every test (what CI runs)
+#   ./build.sh        only installs and builds
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(cmake g++ make libcgal-dev libcgal-demo libeigen3-dev libgtest-dev libcli11-dev
+          nlohmann-json3-dev)
+# CGAL's sample meshes used by tests and benchmarks (disk topology), from libcgal-demo.
+CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil)
+
+install_missing() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return
+  echo "Installing: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+extract_cgal_samples() {
+  mkdir -p data/cgal
+  local wanted=()
+  for m in "${CGAL_SAMPLES[@]}"; do
+    [ -f "data/cgal/$m.off" ] || wanted+=("data/meshes/$m.off")
+  done
+  [ ${#wanted[@]} -eq 0 ] && return
+  tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C data/cgal --strip-components=2 "${wanted[@]}"
+}
+
+build() {
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build -j"$(nproc)"
+}
+
+install_missing
+extract_cgal_samples
+build
+case "${1:-}" in
+  run) ./build/app/lloydscope remesh assets/bumpy_disk.off -o build/bumpy_disk_remeshed.off ;;
+  test) ctest --test-dir build --output-on-failure -j"$(nproc)" ;;
+  "") ;;
+  *) echo "usage: ./build.sh [run|test]" >&2; exit 2 ;;
+esac

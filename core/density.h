@@ -1,0 +1,46 @@
+// The density that weights Lloyd relaxation in the parameter domain: one value per vertex,
+// interpolated linearly inside each parameter triangle.
+#pragma once
+
+#include "mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace lloydscope {
+
+enum class DensityKind {
+  Uniform,    // 1 everywhere: equal cells in the parameter domain (the reference's choice)
+  Area,       // compensates the map's area distortion: equal cells on the surface
+  Curvature,  // more sites where the surface is curved
+};
+
+struct DensityOptions {
+  DensityKind kind = DensityKind::Area;
+  // Curvature: psi(v) = 1 / (alpha |K(v)| + beta H(v)^2) is the reference's local size;
+  // the density is 1 / psi, plus `floor` times its mean so that flat regions keep sites.
+  double alpha = 1.0, beta = 1.0, floor = 0.1;
+  bool curvatureTimesArea = true;  // multiply the curvature density by the area term
+};
+
+// Per-vertex density, scaled to a mean of 1.
+std::vector<double> computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
+                                   const DensityOptions& options);
+
+// The area term alone: (3D area / UV area)^2 around each vertex. Why squared: a 2D CVT with
+// density rho gives cells of area proportional to rho^(-1/2) (Gersho), so rho = ratio^2 makes
+// every cell cover the same area of the surface.
+std::vector<double> areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv);
+
+// Discrete curvatures per vertex: Gaussian K by the angle defect over a third of the incident
+// area, mean H from the cotangent Laplacian. Boundary vertices take the mean of their interior
+// neighbours (their angle defect is not a curvature).
+struct Curvature {
+  std::vector<double> gaussian, mean;
+};
+Curvature computeCurvature(const Mesh& mesh);
+
+const char* toString(DensityKind kind);
+DensityKind parseDensityKind(const std::string& text);  // throws Error on unknown names
+
+}  // namespace lloydscope

@@ -1,0 +1,123 @@
+#include "domain.h"
+
+#include "cgal_types.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+
+#include <Eigen/LU>
+
+#include <map>
+
+namespace lloydscope {
+
+namespace {
+using Triangle3 = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+}  // namespace
+
+// CGAL's AABB tree over the UV triangles lifted to the plane z = 0: its closest-point query
+// answers both "which triangle contains p" and "where is the domain closest to p".
+struct Domain::Index {
+  std::vector<Triangle3> triangles;
+  std::vector<int> triangleId;  // of each indexed triangle in Domain::triangles()
+  Tree tree;
+};
+
+Domain::Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, std::vector<double> density)
+    : uv_(std::move(uv)), triangles_(std::move(triangles)), density_(std::move(density)),
+      index_(std::make_unique<Index>()) {
+  if (density_.empty()) density_.assign(uv_.size(), 1.0);
+  std::map<std::pair<int, int>, std::pair<int, int>> edgeOwner;  // (a,b) -> (triangle, corner)
+  neighbours_.assign(triangles_.size(), {-1, -1, -1});
+  // Flat triangles (ears of a square border) cover nothing: leave them out of the adjacency
+  // and the spatial index, so no walk or search ever ends in one.
+  std::vector<double> area(triangles_.size());
+  double total = 0;
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    const Triangle& tri = triangles_[t];
+    area[t] = triangleArea(uv_[tri[0]], uv_[tri[1]], uv_[tri[2]]);
+    total += std::abs(area[t]);
+  }
+  std::vector<bool> flat(triangles_.size());
+  for (size_t t = 0; t < triangles_.size(); ++t) flat[t] = !(area[t] > 1e-14 * total);
+  for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) {
+    if (flat[t]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int a = triangles_[t][(k + 1) % 3], b = triangles_[t][(k + 2) % 3];
+      auto twin = edgeOwner.find({b, a});
+      if (twin != edgeOwner.end()) {
+        neighbours_[t][k] = twin->second.first;
+        neighbours_[twin->second.first][twin->second.second] = t;
+      } else {
+        edgeOwner[{a, b}] = {t, k};
+      }
+    }
+  }
+  for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) {
+    // Solve a + b u + c v = rho at the three corners.
+    Eigen::Matrix3d m;
+    Eigen::Vector3d rho;
+    for (int k = 0; k < 3; ++k) {
+      const int v = triangles_[t][k];
+      m.row(k) << 1.0, uv_[v].x(), uv_[v].y();
+      rho[k] = density_[v];
+    }
+    densityPlanes_.push_back(flat[t] ? Eigen::Vector3d(rho.mean(), 0, 0)
+                                     : Eigen::Vector3d(m.fullPivLu().solve(rho)));
+  }
+  index_->triangles.reserve(triangles_.size());
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    if (flat[t]) continue;
+    auto p = [&](int i) { return Point3(uv_[i].x(), uv_[i].y(), 0.0); };
+    index_->triangles.emplace_back(p(triangles_[t][0]), p(triangles_[t][1]), p(triangles_[t][2]));
+    index_->triangleId.push_back(static_cast<int>(t));
+  }
+  index_->tree.insert(index_->triangles.cbegin(), index_->triangles.cend());
+  index_->tree.build();
+  index_->tree.accelerate_distance_queries();
+}
+
+Domain::~Domain() = default;
+Domain::Domain(Domain&&) noexcept = default;
+Domain& Domain::operator=(Domain&&) noexcept = default;
+
+Location Domain::locate(const Vec2& p) const {
+  Location l;
+  if (index_->triangles.empty()) return l;
+  const auto [closest, primitive] =
+      index_->tree.closest_point_and_primitive(Point3(p.x(), p.y(), 0.0));
+  l.triangle = index_->triangleId[primitive - index_->triangles.cbegin()];
+  const Vec2 q(closest.x(), closest.y());
+  l.weights = barycentric(l.triangle, q).cwiseMax(0.0);
+  l.weights /= l.weights.sum();
+  l.inside = (q - p).squaredNorm() == 0.0;
+  return l;
+}
+
+Location Domain::locate(const Vec2& p, int hint) const {
+  int t = hint;
+  for (int step = 0; t >= 0 && step < 64; ++step) {
+    const Eigen::Vector3d w = barycentric(t, p);
+    int k;
+    if (w.minCoeff(&k) >= 0.0) return {t, w, true};
+    t = neighbours_[t][k];  // across the edge opposite the most negative weight
+  }
+  return locate(p);  // left the domain, or too far from the hint
+}
+
+Eigen::Vector3d Domain::barycentric(int triangle, const Vec2& p) const {
+  const Triangle& t = triangles_[triangle];
+  const Vec2 &a = uv_[t[0]], &b = uv_[t[1]], &c = uv_[t[2]];
+  return Eigen::Vector3d(triangleArea(p, b, c), triangleArea(a, p, c), triangleArea(a, b, p)) /
+         triangleArea(a, b, c);
+}
+
+Vec2 Domain::pointAt(const Location& l) const {
+  const Triangle& t = triangles_[l.triangle];
+  return l.weights[0] * uv_[t[0]] + l.weights[1] * uv_[t[1]] + l.weights[2] * uv_[t[2]];
+}
+
+}  // namespace lloydscope

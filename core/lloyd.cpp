@@ -1,0 +1,166 @@
+#include "lloyd.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+namespace lloydscope {
+
+namespace {
+constexpr size_t kMemory = 7;        // L-BFGS pairs kept
+constexpr int kMaxHalvings = 8;      // line search tries before falling back to a Lloyd step
+constexpr double kArmijo = 1e-4;
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  return std::inner_product(a.begin(), a.end(), b.begin(), 0.0);
+}
+}  // namespace
+
+std::vector<Vec2> allSites(const std::vector<Vec2>& fixed, const std::vector<Vec2>& movable) {
+  std::vector<Vec2> sites = fixed;
+  sites.insert(sites.end(), movable.begin(), movable.end());
+  return sites;
+}
+
+LloydSolver::LloydSolver(const Domain& domain, std::vector<Vec2> fixedSites,
+                         std::vector<Vec2> movableSites, const LloydOptions& options)
+    : domain_(domain), fixed_(std::move(fixedSites)), movable_(std::move(movableSites)),
+      options_(options) {}
+
+LloydSolver::Evaluation LloydSolver::evaluate(const std::vector<Vec2>& movable) {
+  const std::vector<BoundedCell> cells =
+      computeCells(domain_, allSites(fixed_, movable), /*keepGeometry=*/false, &hints_);
+  Evaluation e;
+  for (const BoundedCell& cell : cells) e.energy += cell.energy;
+  for (size_t i = fixed_.size(); i < cells.size(); ++i) {
+    e.centroids.push_back(cells[i].centroid);
+    e.masses.push_back(cells[i].mass);
+  }
+  return e;
+}
+
+// dE/dz_i = 2 m_i (z_i - c_i): the CVT energy's gradient (Du, Faber, Gunzburger).
+std::vector<double> LloydSolver::gradient(const std::vector<Vec2>& x, const Evaluation& e) const {
+  std::vector<double> g(2 * x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    g[2 * i] = 2 * e.masses[i] * (x[i].x() - e.centroids[i].x());
+    g[2 * i + 1] = 2 * e.masses[i] * (x[i].y() - e.centroids[i].y());
+  }
+  return g;
+}
+
+std::vector<Vec2> LloydSolver::lbfgsStep(const Evaluation& current, Evaluation& next) {
+  const std::vector<Vec2>& x = movable_;
+  const std::vector<double> g = gradient(x, current);
+  // Two-loop recursion; the initial inverse Hessian diag(1 / 2m) makes the first step Lloyd's.
+  std::vector<double> h0(g.size());
+  for (size_t i = 0; i < x.size(); ++i)
+    h0[2 * i] = h0[2 * i + 1] = 1.0 / (2.0 * std::max(current.masses[i], 1e-300));
+  std::vector<double> q = g, alpha(historyS_.size());
+  for (size_t k = historyS_.size(); k-- > 0;) {
+    alpha[k] = dot(historyS_[k], q) / dot(historyY_[k], historyS_[k]);
+    for (size_t j = 0; j < q.size(); ++j) q[j] -= alpha[k] * historyY_[k][j];
+  }
+  double gamma = 1.0;
+  if (!historyS_.empty()) {
+    const auto& s = historyS_.back();
+    const auto& y = historyY_.back();
+    double yHy = 0;
+    for (size_t j = 0; j < y.size(); ++j) yHy += y[j] * h0[j] * y[j];
+    gamma = dot(s, y) / yHy;
+  }
+  for (size_t j = 0; j < q.size(); ++j) q[j] *= gamma * h0[j];
+  for (size_t k = 0; k < historyS_.size(); ++k) {
+    const double beta = dot(historyY_[k], q) / dot(historyY_[k], historyS_[k]);
+    for (size_t j = 0; j < q.size(); ++j) q[j] += historyS_[k][j] * (alpha[k] - beta);
+  }
+  const double slope = -dot(g, q);  // directional derivative along -q
+
+  std::vector<Vec2> trial(x.size());
+  double step = 1.0;
+  bool accepted = false;
+  if (slope < 0) {
+    for (int tries = 0; tries < kMaxHalvings && !accepted; ++tries, step *= 0.5) {
+      for (size_t i = 0; i < x.size(); ++i) trial[i] = x[i] - step * Vec2(q[2 * i], q[2 * i + 1]);
+      next = evaluate(trial);
+      accepted = next.energy <= current.energy + kArmijo * step * slope;
+    }
+  }
+  if (!accepted) {  // not a descent direction: forget the history, take a Lloyd step
+    historyS_.clear();
+    historyY_.clear();
+    trial = current.centroids;
+    next = evaluate(trial);
+  }
+  const std::vector<double> gNext = gradient(trial, next);
+  std::vector<double> s(g.size()), y(g.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    s[2 * i] = trial[i].x() - x[i].x();
+    s[2 * i + 1] = trial[i].y() - x[i].y();
+  }
+  for (size_t j = 0; j < g.size(); ++j) y[j] = gNext[j] - g[j];
+  if (dot(s, y) > 1e-12 * std::sqrt(dot(s, s) * dot(y, y))) {  // keep H positive definite
+    historyS_.push_back(std::move(s));
+    historyY_.push_back(std::move(y));
+    if (historyS_.size() > kMemory) {
+      historyS_.erase(historyS_.begin());
+      historyY_.erase(historyY_.begin());
+    }
+  }
+  return trial;
+}
+
+const IterationRecord& LloydSolver::step() {
+  const auto start = std::chrono::steady_clock::now();
+  if (current_.empty()) current_.push_back(evaluate(movable_));
+  const Evaluation& e = current_.front();
+
+  IterationRecord record;
+  record.index = static_cast<int>(iterations_.size());
+  record.sites = movable_;
+  record.centroids = e.centroids;
+  record.energy = e.energy;
+  int moving = 0;
+  for (size_t i = 0; i < movable_.size(); ++i) {
+    const double d = (e.centroids[i] - movable_[i]).norm();
+    record.maxDisplacement = std::max(record.maxDisplacement, d);
+    record.meanDisplacement += d;
+    if (d > options_.distanceThreshold) ++moving;
+  }
+  if (!movable_.empty()) {
+    record.meanDisplacement /= movable_.size();
+    record.fractionMoving = static_cast<double>(moving) / movable_.size();
+  }
+
+  if (options_.solver == CvtSolver::Lloyd) {
+    movable_ = e.centroids;
+    current_.clear();
+  } else {
+    Evaluation next;
+    movable_ = lbfgsStep(e, next);
+    current_.front() = std::move(next);
+  }
+  record.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  iterations_.push_back(std::move(record));
+  return iterations_.back();
+}
+
+bool LloydSolver::converged() const {
+  return !iterations_.empty() &&
+         100.0 * iterations_.back().fractionMoving < options_.percentThreshold;
+}
+
+void LloydSolver::run() {
+  while (!converged() && static_cast<int>(iterations_.size()) < options_.maxIterations) step();
+}
+
+const char* toString(CvtSolver solver) { return solver == CvtSolver::Lloyd ? "lloyd" : "lbfgs"; }
+
+CvtSolver parseCvtSolver(const std::string& text) {
+  if (text == "lloyd") return CvtSolver::Lloyd;
+  if (text == "lbfgs") return CvtSolver::Lbfgs;
+  throw Error("unknown solver '" + text + "' (lloyd, lbfgs)");
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,82 @@
+// Weighted Lloyd relaxation in the parameter domain, and its quasi-Newton acceleration
+// (L-BFGS on the CVT energy, Liu et al. 2009), recording every iteration.
+#pragma once
+
+#include "voronoi.h"
+
+#include <string>
+#include <vector>
+
+namespace lloydscope {
+
+enum class CvtSolver {
+  Lloyd,  // move every site to its centroid
+  Lbfgs,  // L-BFGS steps on the CVT energy, preconditioned so its first step is Lloyd's
+};
+
+struct LloydOptions {
+  CvtSolver solver = CvtSolver::Lbfgs;
+  // Converged when fewer than percentThreshold % of the movable sites moved more than
+  // distanceThreshold (a fraction of the domain size, which is 1) in the last iteration.
+  double distanceThreshold = 1e-6;
+  double percentThreshold = 5.0;
+  int maxIterations = 1000;
+};
+
+// One iteration as it happened: the sites it started from and the centroids of their cells.
+// Displacements are site-to-centroid distances: the move Lloyd makes (the L-BFGS step differs,
+// and the next iteration's sites show where it went). Fixed sites are the same in every
+// iteration and are kept once, in the Recording.
+struct IterationRecord {
+  int index = 0;
+  std::vector<Vec2> sites;      // movable sites at the start of the iteration
+  std::vector<Vec2> centroids;  // of their cells
+  double energy = 0;            // CVT energy Σ ∫ rho |x - site|^2 of all cells, fixed ones too
+  double maxDisplacement = 0, meanDisplacement = 0;
+  double fractionMoving = 0;    // of movable sites farther than the distance threshold
+  double milliseconds = 0;      // time of the step
+};
+
+// Fixed sites (the border samples) first, then movable ones: the order of every site list.
+std::vector<Vec2> allSites(const std::vector<Vec2>& fixed, const std::vector<Vec2>& movable);
+
+class LloydSolver {
+ public:
+  LloydSolver(const Domain& domain, std::vector<Vec2> fixedSites, std::vector<Vec2> movableSites,
+              const LloydOptions& options);
+
+  // Computes the cells of the current sites, records the iteration, then moves the movable
+  // sites: to their centroids (Lloyd) or by one L-BFGS step with a backtracking line search.
+  const IterationRecord& step();
+  bool converged() const;
+  // Steps until converged() or options.maxIterations iterations were recorded.
+  void run();
+
+  const std::vector<Vec2>& fixedSites() const { return fixed_; }
+  const std::vector<Vec2>& movableSites() const { return movable_; }
+  const std::vector<IterationRecord>& iterations() const { return iterations_; }
+  std::vector<IterationRecord> takeIterations() { return std::move(iterations_); }
+
+ private:
+  struct Evaluation {  // the cells of one configuration, as the solvers need them
+    double energy = 0;
+    std::vector<Vec2> centroids;
+    std::vector<double> masses;
+  };
+  Evaluation evaluate(const std::vector<Vec2>& movable);
+  std::vector<Vec2> lbfgsStep(const Evaluation& current, Evaluation& next);
+  std::vector<double> gradient(const std::vector<Vec2>& x, const Evaluation& e) const;
+
+  const Domain& domain_;
+  std::vector<Vec2> fixed_, movable_;
+  LloydOptions options_;
+  std::vector<IterationRecord> iterations_;
+  std::vector<int> hints_;            // triangle of each site, to start the next search from
+  std::vector<Evaluation> current_;   // 0 or 1 element: the evaluation of movable_, if known
+  std::vector<std::vector<double>> historyS_, historyY_;  // L-BFGS memory
+};
+
+const char* toString(CvtSolver solver);
+CvtSolver parseCvtSolver(const std::string& text);  // throws Error on unknown names
+
+}  // namespace lloydscope

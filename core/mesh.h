@@ -1,0 +1,37 @@
+// The indexed triangle mesh every stage of the pipeline reads and writes.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lloydscope {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Triangle = std::array<int, 3>;
+
+// The one exception type of the core. Its message is a single line meant for the user,
+// starting with the file it is about when there is one ("face.off: 3 faces use vertex 12 ...").
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Mesh {
+  std::vector<Vec3> points;
+  std::vector<Triangle> triangles;  // counter-clockwise seen from the front side
+
+  int vertexCount() const { return static_cast<int>(points.size()); }
+  int faceCount() const { return static_cast<int>(triangles.size()); }
+};
+
+// Length of the diagonal of the axis-aligned bounding box (0 for an empty mesh).
+double boundingBoxDiagonal(const Mesh& mesh);
+double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
+double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c);  // signed, > 0 if CCW
+
+}  // namespace lloydscope

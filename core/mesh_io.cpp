@@ -1,0 +1,1022 @@
+// Reading, validating and writing triangle meshes in OFF, OBJ and PLY.
+//
+// A reader loads the whole file into memory and parses it into a RawMesh: points, and polygons
+// whose indices are stored exactly as the file gives them (converted to 0-based). readMesh() then
+// checks the polygons, fan-triangulates the larger ones, runs the same surface checks as
+// validateMesh() and finally drops vertices no face uses. Messages number vertices and faces the
+// way the file does (from 0 for OFF and PLY, from 1 for OBJ), so that a user can find them.
+//
+// Every problem is an Error("<path>: <problem>") on a single line.
+
+#include "mesh_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <optional>
+#include <string_view>
+#include <system_error>
+#include <tuple>
+
+namespace lloydscope {
+namespace {
+
+// ------------------------------------------------------------------------------------ messages
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem) {
+  throw Error(path + ": " + problem);
+}
+
+std::string str(long long n) { return std::to_string(n); }
+
+std::string plural(long long n, const char* one, const char* many) {
+  return str(n) + " " + (n == 1 ? one : many);
+}
+
+// A token of the file as it may appear in a message: short and printable, so that even a
+// binary file read as text gives a readable one-line message.
+std::string shown(std::string_view token) {
+  const size_t kMax = 32;
+  std::string out = "'";
+  for (char c : token.substr(0, kMax)) out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  if (token.size() > kMax) out += "...";
+  return out + "'";
+}
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+
+bool onlySpace(std::string_view text) { return std::all_of(text.begin(), text.end(), isSpace); }
+
+std::string lowercaseExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string unknownExtension(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return (ext.empty() ? std::string("no extension") : "unknown extension " + shown(ext)) +
+         " (expected .off, .obj or .ply)";
+}
+
+// ------------------------------------------------------------------------------------- numbers
+
+// The whole token must be a number. Out-of-range values become +-inf or 0 like strtod does,
+// so that "1e999" is reported as a non-finite coordinate rather than as garbage.
+bool parseDouble(std::string_view token, double& value) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  if (token.empty()) return false;
+  const char* end = token.data() + token.size();
+  const auto [stop, ec] = std::from_chars(token.data(), end, value);
+  if (stop != end) return false;
+  if (ec == std::errc::result_out_of_range) value = std::strtod(std::string(token).c_str(), nullptr);
+  else if (ec != std::errc()) return false;
+  return true;
+}
+
+bool parseInteger(std::string_view token, long long& value) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  if (token.empty()) return false;
+  const char* end = token.data() + token.size();
+  const auto [stop, ec] = std::from_chars(token.data(), end, value);
+  return ec == std::errc() && stop == end;
+}
+
+// ----------------------------------------------------------------------------------- raw mesh
+
+// What a reader produces: geometry plus polygons of any size, with 0-based indices that have
+// not been range-checked yet (an OBJ face may name a vertex defined further down).
+struct RawMesh {
+  std::vector<Vec3> points;
+  std::vector<long long> indices;       // all polygons, one after the other
+  std::vector<size_t> polygonStart{0};  // polygon f is indices[polygonStart[f], polygonStart[f+1])
+  int base = 0;                         // how the file numbers vertices and faces (1 for OBJ)
+
+  long long polygonCount() const { return static_cast<long long>(polygonStart.size()) - 1; }
+  void endPolygon() { polygonStart.push_back(indices.size()); }
+};
+
+// How messages number vertices and faces: as the file does, before triangulation.
+struct Numbering {
+  int base = 0;
+  const std::vector<long long>* faceOfTriangle = nullptr;  // null: triangle t is face t
+
+  long long vertex(long long v) const { return v + base; }
+  long long face(size_t t) const {
+    return (faceOfTriangle ? (*faceOfTriangle)[t] : static_cast<long long>(t)) + base;
+  }
+};
+
+// ------------------------------------------------------------------------------- text reading
+
+// Splits text into lines and lines into white-space separated tokens; '#' starts a comment.
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : text_(text) {}
+
+  // Moves to the next line that has a token; false at the end of the text.
+  bool next(std::vector<std::string_view>& tokens) {
+    while (pos_ < text_.size()) {
+      size_t end = text_.find('\n', pos_);
+      if (end == std::string_view::npos) end = text_.size();
+      std::string_view line = text_.substr(pos_, end - pos_);
+      pos_ = std::min(end + 1, text_.size());
+      ++lineNumber_;
+      line = line.substr(0, line.find('#'));
+      split(line, tokens);
+      if (!tokens.empty()) return true;
+    }
+    return false;
+  }
+
+  int lineNumber() const { return lineNumber_; }
+  size_t position() const { return pos_; }  // first character after the current line
+
+ private:
+  static void split(std::string_view line, std::vector<std::string_view>& tokens) {
+    tokens.clear();
+    size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && isSpace(line[i])) ++i;
+      const size_t start = i;
+      while (i < line.size() && !isSpace(line[i])) ++i;
+      if (i > start) tokens.push_back(line.substr(start, i - start));
+    }
+  }
+
+  std::string_view text_;
+  size_t pos_ = 0;
+  int lineNumber_ = 0;
+};
+
+std::string atLine(int line) { return "line " + str(line) + ": "; }
+
+double numberAt(const std::string& path, int line, std::string_view token) {
+  double value;
+  if (!parseDouble(token, value)) fail(path, atLine(line) + shown(token) + " is not a number");
+  return value;
+}
+
+long long integerAt(const std::string& path, int line, std::string_view token) {
+  long long value;
+  if (!parseInteger(token, value)) fail(path, atLine(line) + shown(token) + " is not an integer");
+  return value;
+}
+
+// ----------------------------------------------------------------------------- binary reading
+
+bool hostIsLittleEndian() {
+  const std::uint16_t one = 1;
+  unsigned char first;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+// Reads fixed-size numbers in the file's byte order and never past the end of the data.
+class BinaryReader {
+ public:
+  BinaryReader(std::string_view data, bool bigEndian)
+      : data_(data), swap_(bigEndian == hostIsLittleEndian()) {}
+
+  template <class T>
+  bool get(T& value) {
+    if (remaining() < sizeof(T)) return false;
+    unsigned char bytes[sizeof(T)];
+    std::memcpy(bytes, data_.data() + pos_, sizeof(T));
+    if (swap_) std::reverse(bytes, bytes + sizeof(T));
+    std::memcpy(&value, bytes, sizeof(T));
+    pos_ += sizeof(T);
+    return true;
+  }
+
+  bool skip(size_t bytes) {
+    if (remaining() < bytes) return false;
+    pos_ += bytes;
+    return true;
+  }
+
+  size_t remaining() const { return data_.size() - pos_; }
+  std::string_view rest() const { return data_.substr(pos_); }
+
+ private:
+  std::string_view data_;
+  size_t pos_ = 0;
+  bool swap_;
+};
+
+// ---------------------------------------------------------------------------------------- OFF
+
+// Which prefixes of "OFF" we read: colours (C), normals (N) and texture coordinates (ST) only
+// add values at the end of a vertex line, which are ignored. 4OFF and nOFF are not 3D.
+bool isSupportedOffKeyword(std::string_view keyword) {
+  static const char* const kKeywords[] = {"OFF",    "COFF",   "NOFF",   "CNOFF",   "NCOFF",
+                                          "STOFF",  "STCOFF", "STNOFF", "STCNOFF", "STNCOFF"};
+  return std::find(std::begin(kKeywords), std::end(kKeywords), keyword) != std::end(kKeywords);
+}
+
+int offCount(const std::string& path, int line, std::string_view token, const char* what) {
+  long long value;
+  if (!parseInteger(token, value)) {
+    fail(path, "bad header: " + atLine(line) + std::string(what) + " count " + shown(token) +
+                   " is not an integer");
+  }
+  if (value < 0 || value > INT_MAX) {
+    fail(path, "bad header: " + atLine(line) + std::string(what) + " count " + str(value) +
+                   " is impossible");
+  }
+  return static_cast<int>(value);
+}
+
+// Reserves room for at most as many vertices as the remaining bytes can hold, so that a corrupt
+// count cannot make us allocate gigabytes; reading then stops where the data really ends and
+// says so.
+void reservePoints(RawMesh& raw, long long count, size_t remainingBytes, size_t bytesPerVertex) {
+  raw.points.reserve(static_cast<size_t>(std::min<long long>(count, remainingBytes / bytesPerVertex)));
+}
+
+RawMesh readBinaryOff(const std::string& path, std::string_view data) {
+  BinaryReader in(data, /*bigEndian=*/true);
+  std::int32_t nv, nf, ne;
+  if (!in.get(nv) || !in.get(nf) || !in.get(ne)) {
+    fail(path, "file is truncated: the binary OFF counts are cut short");
+  }
+  if (nv < 0 || nf < 0) {
+    fail(path, "bad header: negative count (" + str(nv) + " vertices, " + str(nf) + " faces)");
+  }
+  RawMesh raw;
+  reservePoints(raw, nv, in.remaining(), 12);
+  for (int i = 0; i < nv; ++i) {
+    float x, y, z;
+    if (!in.get(x) || !in.get(y) || !in.get(z)) {
+      fail(path, "file is truncated: it ends inside vertex " + str(i) + " of " + str(nv));
+    }
+    raw.points.emplace_back(x, y, z);
+  }
+  for (int f = 0; f < nf; ++f) {
+    const auto truncated = [&] { return "file is truncated: it ends inside face " + str(f) + " of " + str(nf); };
+    std::int32_t n;
+    if (!in.get(n)) fail(path, truncated());
+    if (n < 0) fail(path, "face " + str(f) + " has a negative vertex count (" + str(n) + ")");
+    if (static_cast<size_t>(n) > in.remaining() / 4) fail(path, truncated());
+    for (int k = 0; k < n; ++k) {
+      std::int32_t v = 0;
+      in.get(v);  // room was checked above
+      raw.indices.push_back(v);
+    }
+    raw.endPolygon();
+    std::int32_t colours;
+    if (!in.get(colours)) fail(path, truncated());
+    if (colours < 0) fail(path, "face " + str(f) + " has a negative colour count (" + str(colours) + ")");
+    if (!in.skip(4 * static_cast<size_t>(colours))) fail(path, truncated());
+  }
+  if (!onlySpace(in.rest())) {
+    fail(path, "header says " + plural(nf, "face", "faces") + " but the file has more data");
+  }
+  return raw;
+}
+
+RawMesh readOff(const std::string& path, std::string_view text) {
+  LineReader lines(text);
+  std::vector<std::string_view> tokens;
+  if (!lines.next(tokens)) fail(path, "bad header: the file has only comments, no 'OFF' line");
+  if (!isSupportedOffKeyword(tokens[0])) {
+    fail(path, "bad header: expected 'OFF' (or COFF, NOFF, ...) but the file starts with " +
+                   shown(tokens[0]));
+  }
+  if (tokens.size() >= 2 && tokens[1] == "BINARY") {
+    if (tokens[0] != "OFF") fail(path, "bad header: only plain 'OFF BINARY' is supported as binary OFF");
+    return readBinaryOff(path, text.substr(lines.position()));
+  }
+
+  // The counts may follow the keyword on the same line ("OFF 8 6 12") or be on the next line.
+  std::vector<std::string_view> counts(tokens.begin() + 1, tokens.end());
+  if (counts.empty() && !lines.next(counts)) fail(path, "bad header: the vertex and face counts are missing");
+  if (counts.size() < 2 || counts.size() > 3) {
+    fail(path, "bad header: " + atLine(lines.lineNumber()) +
+                   "expected 'vertices faces edges' counts, found " + plural(counts.size(), "value", "values"));
+  }
+  const int nv = offCount(path, lines.lineNumber(), counts[0], "vertex");
+  const int nf = offCount(path, lines.lineNumber(), counts[1], "face");
+  if (counts.size() == 3) offCount(path, lines.lineNumber(), counts[2], "edge");  // unused, but must be sane
+  RawMesh raw;
+  reservePoints(raw, nv, text.size() - lines.position(), 6);  // "0 0 0\n"
+  for (int i = 0; i < nv; ++i) {
+    if (!lines.next(tokens)) {
+      fail(path, "file is truncated: header says " + plural(nv, "vertex", "vertices") +
+                     " but the file ends after " + str(i));
+    }
+    const int line = lines.lineNumber();
+    if (tokens.size() < 3) {
+      fail(path, atLine(line) + "vertex " + str(i) + " has " + plural(tokens.size(), "coordinate", "coordinates") +
+                     " (expected 3)");
+    }
+    raw.points.emplace_back(numberAt(path, line, tokens[0]), numberAt(path, line, tokens[1]),
+                            numberAt(path, line, tokens[2]));
+  }
+  for (int f = 0; f < nf; ++f) {
+    if (!lines.next(tokens)) {
+      fail(path, "file is truncated: header says " + plural(nf, "face", "faces") +
+                     " but the file ends after " + str(f));
+    }
+    const int line = lines.lineNumber();
+    long long n;
+    if (!parseInteger(tokens[0], n)) {
+      fail(path, atLine(line) + "face " + str(f) + " should start with its vertex count, found " +
+                     shown(tokens[0]) + " (more vertex lines than the header says?)");
+    }
+    if (n < 0) fail(path, atLine(line) + "face " + str(f) + " has a negative vertex count (" + str(n) + ")");
+    if (n > static_cast<long long>(tokens.size()) - 1) {
+      fail(path, atLine(line) + "face " + str(f) + " should have " + str(n) + " vertices but lists " +
+                     str(tokens.size() - 1));
+    }
+    // Values after the indices are a colour, which we do not need.
+    for (long long k = 1; k <= n; ++k) raw.indices.push_back(integerAt(path, line, tokens[k]));
+    raw.endPolygon();
+  }
+  if (lines.next(tokens)) {
+    fail(path, "header says " + plural(nf, "face", "faces") + " but the file has more data (" +
+                   atLine(lines.lineNumber()) + shown(tokens[0]) + ")");
+  }
+  return raw;
+}
+
+// ---------------------------------------------------------------------------------------- OBJ
+
+// "12", "12/4", "12//7", "12/4/7" and negative (relative) forms; returns the 0-based index.
+long long objIndex(const std::string& path, int line, long long face, std::string_view token,
+                   long long verticesSoFar) {
+  const std::string_view number = token.substr(0, token.find('/'));
+  long long index;
+  if (!parseInteger(number, index)) {
+    fail(path, atLine(line) + shown(token) + " is not a vertex index");
+  }
+  if (index == 0) fail(path, atLine(line) + "face " + str(face) + " uses vertex 0 (OBJ counts vertices from 1)");
+  if (index > 0) return index - 1;  // may refer to a later vertex; range-checked after reading
+  if (index < -verticesSoFar) {
+    fail(path, "face " + str(face) + " uses vertex " + str(index) + " but only " +
+                   plural(verticesSoFar, "vertex precedes", "vertices precede") + " it");
+  }
+  return verticesSoFar + index;
+}
+
+RawMesh readObj(const std::string& path, std::string_view text) {
+  if (text.find('\0') != std::string_view::npos) {
+    fail(path, "bad header: this is not a text OBJ file (it contains binary data)");
+  }
+  RawMesh raw;
+  raw.base = 1;
+  LineReader lines(text);
+  std::vector<std::string_view> tokens;
+  while (lines.next(tokens)) {
+    const int line = lines.lineNumber();
+    if (tokens[0] == "v") {
+      if (tokens.size() < 4) {
+        fail(path, atLine(line) + "vertex " + str(raw.points.size() + 1) + " has " +
+                       plural(tokens.size() - 1, "coordinate", "coordinates") + " (expected 3)");
+      }
+      raw.points.emplace_back(numberAt(path, line, tokens[1]), numberAt(path, line, tokens[2]),
+                              numberAt(path, line, tokens[3]));
+    } else if (tokens[0] == "f") {
+      const long long face = raw.polygonCount() + 1;
+      for (size_t k = 1; k < tokens.size(); ++k) {
+        raw.indices.push_back(objIndex(path, line, face, tokens[k], raw.points.size()));
+      }
+      raw.endPolygon();
+    }
+    // Texture coordinates, normals, groups, materials, lines ... do not matter here.
+  }
+  return raw;
+}
+
+// ---------------------------------------------------------------------------------------- PLY
+
+enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+enum class PlyFormat { Ascii, BinaryLittleEndian, BinaryBigEndian };
+
+std::optional<PlyType> plyType(std::string_view name) {
+  static const std::pair<const char*, PlyType> kNames[] = {
+      {"char", PlyType::Int8},     {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
+      {"uint8", PlyType::UInt8},   {"short", PlyType::Int16},     {"int16", PlyType::Int16},
+      {"ushort", PlyType::UInt16}, {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
+      {"int32", PlyType::Int32},   {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
+      {"float", PlyType::Float32}, {"float32", PlyType::Float32}, {"double", PlyType::Float64},
+      {"float64", PlyType::Float64}};
+  for (const auto& [typeName, type] : kNames) {
+    if (name == typeName) return type;
+  }
+  return std::nullopt;
+}
+
+bool isIntegerType(PlyType type) { return type != PlyType::Float32 && type != PlyType::Float64; }
+
+struct PlyProperty {
+  std::string name;
+  PlyType type = PlyType::Float32;  // of the items, for a list
+  bool isList = false;
+  PlyType countType = PlyType::UInt8;
+};
+
+struct PlyElement {
+  std::string name;
+  long long count = 0;
+  std::vector<PlyProperty> properties;
+
+  const PlyProperty* find(std::string_view propertyName) const {
+    for (const PlyProperty& p : properties) {
+      if (p.name == propertyName) return &p;
+    }
+    return nullptr;
+  }
+};
+
+struct PlyHeader {
+  PlyFormat format = PlyFormat::Ascii;
+  std::vector<PlyElement> elements;
+  size_t bodyStart = 0;  // offset of the first byte after "end_header\n"
+  int bodyLine = 0;      // line number of the body's first line (ASCII)
+
+  const PlyElement* find(std::string_view name) const {
+    for (const PlyElement& e : elements) {
+      if (e.name == name) return &e;
+    }
+    return nullptr;
+  }
+};
+
+PlyType plyTypeAt(const std::string& path, int line, std::string_view name) {
+  const std::optional<PlyType> type = plyType(name);
+  if (!type) fail(path, "bad header: " + atLine(line) + "unknown property type " + shown(name));
+  return *type;
+}
+
+// The header is read line by line without the LineReader: '#' is not a comment in PLY and the
+// binary body must start exactly after "end_header\n".
+PlyHeader readPlyHeader(const std::string& path, std::string_view text) {
+  PlyHeader header;
+  bool sawFormat = false;
+  size_t pos = 0;
+  std::vector<std::string_view> tokens;
+  for (int line = 1;; ++line) {
+    if (pos >= text.size()) fail(path, "bad header: no 'end_header' line");
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view lineText = text.substr(pos, end - pos);
+    pos = std::min(end + 1, text.size());
+
+    tokens.clear();
+    for (size_t i = 0; i < lineText.size();) {
+      while (i < lineText.size() && isSpace(lineText[i])) ++i;
+      const size_t start = i;
+      while (i < lineText.size() && !isSpace(lineText[i])) ++i;
+      if (i > start) tokens.push_back(lineText.substr(start, i - start));
+    }
+
+    if (line == 1) {
+      if (tokens.size() != 1 || tokens[0] != "ply") {
+        fail(path, "bad header: a PLY file must start with a 'ply' line");
+      }
+      continue;
+    }
+    if (tokens.empty() || tokens[0] == "comment" || tokens[0] == "obj_info") continue;
+    const std::string_view keyword = tokens[0];
+    if (keyword == "end_header") {
+      header.bodyStart = pos;
+      header.bodyLine = line + 1;
+      break;
+    }
+    if (keyword == "format") {
+      if (tokens.size() != 3 || tokens[2] != "1.0") {
+        fail(path, "bad header: " + atLine(line) + "expected 'format <kind> 1.0'");
+      }
+      if (tokens[1] == "ascii") header.format = PlyFormat::Ascii;
+      else if (tokens[1] == "binary_little_endian") header.format = PlyFormat::BinaryLittleEndian;
+      else if (tokens[1] == "binary_big_endian") header.format = PlyFormat::BinaryBigEndian;
+      else fail(path, "bad header: " + atLine(line) + "unknown format " + shown(tokens[1]));
+      sawFormat = true;
+    } else if (keyword == "element") {
+      long long count;
+      if (tokens.size() != 3 || !parseInteger(tokens[2], count) || count < 0 || count > INT_MAX) {
+        fail(path, "bad header: " + atLine(line) + "expected 'element <name> <count>'");
+      }
+      header.elements.push_back({std::string(tokens[1]), count, {}});
+    } else if (keyword == "property") {
+      if (header.elements.empty()) fail(path, "bad header: " + atLine(line) + "property before any element");
+      PlyProperty property;
+      if (tokens.size() == 5 && tokens[1] == "list") {
+        property.isList = true;
+        property.countType = plyTypeAt(path, line, tokens[2]);
+        property.type = plyTypeAt(path, line, tokens[3]);
+        property.name = tokens[4];
+        if (!isIntegerType(property.countType)) {
+          fail(path, "bad header: " + atLine(line) + "a list length must have an integer type");
+        }
+      } else if (tokens.size() == 3) {
+        property.type = plyTypeAt(path, line, tokens[1]);
+        property.name = tokens[2];
+      } else {
+        fail(path, "bad header: " + atLine(line) + "expected 'property <type> <name>' or "
+                   "'property list <type> <type> <name>'");
+      }
+      header.elements.back().properties.push_back(property);
+    } else {
+      fail(path, "bad header: " + atLine(line) + "unexpected " + shown(keyword));
+    }
+  }
+  if (!sawFormat) fail(path, "bad header: no 'format' line");
+  for (const PlyElement& element : header.elements) {
+    // An element without properties takes no bytes, so its count could not be checked.
+    if (element.properties.empty() && element.count > 0) {
+      fail(path, "bad header: element " + shown(element.name) + " has no properties");
+    }
+  }
+  return header;
+}
+
+// Hands out property values one by one from the ASCII tokens or the binary data of the body.
+class PlyValues {
+ public:
+  PlyValues(const std::string& path, std::string_view body, PlyFormat format, int firstLine)
+      : path_(path), body_(body), format_(format), binary_(body, format == PlyFormat::BinaryBigEndian),
+        line_(firstLine) {}
+
+  // False when the data ends before the value.
+  bool read(PlyType type, double& value) {
+    return format_ == PlyFormat::Ascii ? readToken(type, value) : readBinary(type, value);
+  }
+
+  size_t remaining() const { return format_ == PlyFormat::Ascii ? body_.size() - pos_ : binary_.remaining(); }
+  std::string_view rest() const { return format_ == PlyFormat::Ascii ? body_.substr(pos_) : binary_.rest(); }
+
+ private:
+  bool readToken(PlyType type, double& value) {
+    while (pos_ < body_.size() && isSpace(body_[pos_])) {
+      if (body_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+    if (pos_ == body_.size()) return false;
+    const size_t start = pos_;
+    while (pos_ < body_.size() && !isSpace(body_[pos_])) ++pos_;
+    const std::string_view token = body_.substr(start, pos_ - start);
+    if (isIntegerType(type)) value = static_cast<double>(integerAt(path_, line_, token));
+    else value = numberAt(path_, line_, token);
+    return true;
+  }
+
+  template <class T>
+  bool readAs(double& value) {
+    T v;
+    if (!binary_.get(v)) return false;
+    value = static_cast<double>(v);
+    return true;
+  }
+
+  bool readBinary(PlyType type, double& value) {
+    switch (type) {
+      case PlyType::Int8: return readAs<std::int8_t>(value);
+      case PlyType::UInt8: return readAs<std::uint8_t>(value);
+      case PlyType::Int16: return readAs<std::int16_t>(value);
+      case PlyType::UInt16: return readAs<std::uint16_t>(value);
+      case PlyType::Int32: return readAs<std::int32_t>(value);
+      case PlyType::UInt32: return readAs<std::uint32_t>(value);
+      case PlyType::Float32: return readAs<float>(value);
+      case PlyType::Float64: return readAs<double>(value);
+    }
+    return false;
+  }
+
+  const std::string& path_;
+  std::string_view body_;
+  PlyFormat format_;
+  BinaryReader binary_;
+  size_t pos_ = 0;  // ASCII only
+  int line_;        // ASCII only
+};
+
+RawMesh readPly(const std::string& path, std::string_view text) {
+  const PlyHeader header = readPlyHeader(path, text);
+  const PlyElement* vertexElement = header.find("vertex");
+  if (!vertexElement) fail(path, "bad header: no 'vertex' element");
+  const PlyProperty* xyz[3] = {vertexElement->find("x"), vertexElement->find("y"), vertexElement->find("z")};
+  for (int c = 0; c < 3; ++c) {
+    if (!xyz[c] || xyz[c]->isList) fail(path, std::string("bad header: the vertex element has no '") + "xyz"[c] + "' property");
+  }
+  const PlyElement* faceElement = header.find("face");
+  if (!faceElement) fail(path, "the mesh has no faces (the header declares no 'face' element)");
+  const PlyProperty* indexProperty = faceElement->find("vertex_indices");
+  if (!indexProperty) indexProperty = faceElement->find("vertex_index");
+  if (!indexProperty || !indexProperty->isList || !isIntegerType(indexProperty->type)) {
+    fail(path, "bad header: the face element has no integer 'vertex_indices' list");
+  }
+
+  const std::string_view body = text.substr(header.bodyStart);
+  RawMesh raw;
+  reservePoints(raw, vertexElement->count, body.size(), vertexElement->properties.size());
+  PlyValues values(path, body, header.format, header.bodyLine);
+  for (const PlyElement& element : header.elements) {
+    const bool isVertex = &element == vertexElement, isFace = &element == faceElement;
+    for (long long i = 0; i < element.count; ++i) {
+      const auto truncated = [&] {
+        fail(path, "file is truncated: it ends inside " + element.name + " " + str(i) + " of " + str(element.count));
+      };
+      Vec3 point = Vec3::Zero();
+      for (const PlyProperty& property : element.properties) {
+        double value = 0;
+        if (!values.read(property.isList ? property.countType : property.type, value)) truncated();
+        if (!property.isList) {
+          for (int c = 0; c < 3; ++c) {
+            if (isVertex && &property == xyz[c]) point[c] = value;
+          }
+          continue;
+        }
+        if (value < 0) fail(path, element.name + " " + str(i) + " has a list of negative length");
+        // Every item takes at least one byte: refuse a length the remaining data cannot hold.
+        if (value > static_cast<double>(values.remaining())) truncated();
+        const bool isIndexList = isFace && &property == indexProperty;
+        for (long long k = 0; k < static_cast<long long>(value); ++k) {
+          double item = 0;
+          if (!values.read(property.type, item)) truncated();
+          if (isIndexList) raw.indices.push_back(static_cast<long long>(item));
+        }
+        if (isIndexList) raw.endPolygon();
+      }
+      if (isVertex) raw.points.push_back(point);
+    }
+  }
+  if (!onlySpace(values.rest())) fail(path, "the file has more data than its header declares");
+  return raw;
+}
+
+// -------------------------------------------------------------------------------------- checks
+
+void checkHasFaces(long long faceCount, const std::string& name) {
+  if (faceCount == 0) fail(name, "the mesh has no faces");
+}
+
+void checkFinite(const std::vector<Vec3>& points, const std::string& name, int base) {
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite()) fail(name, "vertex " + str(i + base) + " has a non-finite coordinate");
+  }
+}
+
+// Size, index range and repeated vertices of one face, before any geometry is looked at.
+template <class Index>
+void checkFaceIndices(const Index* v, size_t n, long long face, size_t vertexCount, int base,
+                      const std::string& name) {
+  const std::string faceName = "face " + str(face + base);
+  if (n < 3) fail(name, faceName + " has " + plural(n, "vertex", "vertices") + " (at least 3 are needed)");
+  for (size_t i = 0; i < n; ++i) {
+    if (v[i] < 0 || static_cast<unsigned long long>(v[i]) >= vertexCount) {
+      fail(name, faceName + " uses vertex " + str(static_cast<long long>(v[i]) + base) + " but there are " +
+                     plural(vertexCount, "vertex", "vertices"));
+    }
+  }
+  const auto repeatedVertex = [&](long long v) { fail(name, faceName + " uses vertex " + str(v + base) + " twice"); };
+  if (n <= 8) {  // the usual case, without allocating
+    for (size_t i = 0; i < n; ++i) {
+      for (size_t j = i + 1; j < n; ++j) {
+        if (v[i] == v[j]) repeatedVertex(v[i]);
+      }
+    }
+    return;
+  }
+  std::vector<long long> sorted(v, v + n);
+  std::sort(sorted.begin(), sorted.end());
+  const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
+  if (repeated != sorted.end()) repeatedVertex(*repeated);
+}
+
+// Zero area up to rounding: the sine of the angle at a is negligible. Exact comparison with 0
+// would let through collinear corners whose coordinates are not exactly representable.
+bool hasZeroArea(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 u = b - a, v = c - a;
+  return u.cross(v).norm() <= 1e-12 * u.norm() * v.norm();
+}
+
+void checkDuplicatePositions(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
+  std::vector<int> used;
+  std::vector<bool> isUsed(mesh.points.size(), false);
+  for (const Triangle& t : mesh.triangles) {
+    for (int v : t) isUsed[v] = true;
+  }
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    if (isUsed[v]) used.push_back(v);
+  }
+  const auto byPosition = [&](int a, int b) {
+    const Vec3 &p = mesh.points[a], &q = mesh.points[b];
+    return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
+  };
+  std::sort(used.begin(), used.end(), byPosition);
+  for (size_t i = 1; i < used.size(); ++i) {
+    if (mesh.points[used[i - 1]] == mesh.points[used[i]]) {
+      fail(name, "vertices " + str(numbering.vertex(used[i - 1])) + " and " + str(numbering.vertex(used[i])) +
+                     " are at the same position");
+    }
+  }
+}
+
+// One side of an edge as seen from a triangle.
+struct HalfEdge {
+  int lo, hi;         // the edge's vertices, lo < hi
+  int triangle;
+  bool forward;       // the triangle goes lo -> hi
+};
+
+void checkEdges(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
+  std::vector<HalfEdge> halfEdges;
+  halfEdges.reserve(3 * mesh.triangles.size());
+  for (int t = 0; t < mesh.faceCount(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      halfEdges.push_back({std::min(a, b), std::max(a, b), t, a < b});
+    }
+  }
+  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return std::tie(x.lo, x.hi, x.triangle) < std::tie(y.lo, y.hi, y.triangle);
+  });
+  const auto edgeName = [&](const HalfEdge& h) {
+    return "edge " + str(numbering.vertex(h.lo)) + "-" + str(numbering.vertex(h.hi));
+  };
+  // Non-manifold edges first: an orientation is meaningless where three faces meet.
+  for (size_t i = 0; i < halfEdges.size();) {
+    size_t j = i;
+    while (j < halfEdges.size() && halfEdges[j].lo == halfEdges[i].lo && halfEdges[j].hi == halfEdges[i].hi) ++j;
+    if (j - i > 2) fail(name, edgeName(halfEdges[i]) + " is shared by " + str(j - i) + " faces");
+    i = j;
+  }
+  for (size_t i = 0; i + 1 < halfEdges.size(); ++i) {
+    const HalfEdge &x = halfEdges[i], &y = halfEdges[i + 1];
+    if (x.lo == y.lo && x.hi == y.hi && x.forward == y.forward) {
+      fail(name, "faces " + str(numbering.face(x.triangle)) + " and " + str(numbering.face(y.triangle)) +
+                     " have opposite orientations across " + edgeName(x));
+    }
+  }
+}
+
+// Number of fans around one vertex, given the far edge b -> c of each incident triangle
+// (v, b, c). With manifold, consistently oriented edges each b starts at most one far edge,
+// so the fans are chains (open fans, walked from a start nobody points to) and cycles.
+int countFans(std::vector<std::pair<int, int>>& farEdges) {
+  std::sort(farEdges.begin(), farEdges.end());
+  std::vector<int> targets;
+  for (const auto& e : farEdges) targets.push_back(e.second);
+  std::sort(targets.begin(), targets.end());
+
+  std::vector<bool> walked(farEdges.size(), false);
+  const auto edgeFrom = [&](int vertex) -> size_t {
+    const auto it = std::lower_bound(farEdges.begin(), farEdges.end(), std::make_pair(vertex, INT_MIN));
+    return (it != farEdges.end() && it->first == vertex) ? static_cast<size_t>(it - farEdges.begin()) : farEdges.size();
+  };
+  const auto walk = [&](size_t e) {
+    while (e < farEdges.size() && !walked[e]) {
+      walked[e] = true;
+      e = edgeFrom(farEdges[e].second);
+    }
+  };
+  int fans = 0;
+  for (size_t e = 0; e < farEdges.size(); ++e) {
+    if (!std::binary_search(targets.begin(), targets.end(), farEdges[e].first)) {
+      ++fans;
+      walk(e);
+    }
+  }
+  for (size_t e = 0; e < farEdges.size(); ++e) {
+    if (!walked[e]) {
+      ++fans;
+      walk(e);
+    }
+  }
+  return fans;
+}
+
+void checkVertexFans(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
+  // Triangles around each vertex, in compressed rows.
+  std::vector<int> start(mesh.points.size() + 1, 0);
+  for (const Triangle& t : mesh.triangles) {
+    for (int v : t) ++start[v + 1];
+  }
+  for (size_t v = 0; v < mesh.points.size(); ++v) start[v + 1] += start[v];
+  std::vector<int> corners(start.back());
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int t = 0; t < mesh.faceCount(); ++t) {
+    for (int k = 0; k < 3; ++k) corners[fill[mesh.triangles[t][k]]++] = 3 * t + k;
+  }
+
+  std::vector<std::pair<int, int>> farEdges;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    farEdges.clear();
+    for (int i = start[v]; i < start[v + 1]; ++i) {
+      const Triangle& t = mesh.triangles[corners[i] / 3];
+      const int k = corners[i] % 3;
+      farEdges.emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
+    }
+    const int fans = countFans(farEdges);
+    if (fans > 1) {
+      fail(name, "vertex " + str(numbering.vertex(v)) + " is non-manifold (" +
+                     (fans == 2 ? std::string("two") : str(fans)) + " fans of faces meet there)");
+    }
+  }
+}
+
+// Everything that needs positions and connectivity; indices are known to be valid.
+void checkSurface(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
+  // Coinciding vertices before zero area: a face on two of them is degenerate because of them.
+  checkDuplicatePositions(mesh, name, numbering);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& f = mesh.triangles[t];
+    if (hasZeroArea(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]])) {
+      fail(name, "face " + str(numbering.face(t)) + " has zero area");
+    }
+  }
+  checkEdges(mesh, name, numbering);
+  checkVertexFans(mesh, name, numbering);
+}
+
+// ------------------------------------------------------------------------------ triangulation
+
+// Splits polygon v[0..n) into a fan from the corner that makes its smallest triangle largest
+// (areas signed along the polygon's Newell normal). Any fan of a strictly convex polygon is
+// fine, but corners on a straight side need the right start; star-shaped polygons get a fan
+// from their kernel when one of their corners is in it.
+void triangulatePolygon(const long long* v, size_t n, const std::vector<Vec3>& points,
+                        std::vector<Triangle>& out) {
+  if (n == 3) {  // keep triangles exactly as the file has them
+    out.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2])});
+    return;
+  }
+  const auto p = [&](size_t i) -> const Vec3& { return points[v[i % n]]; };
+  Vec3 normal = Vec3::Zero();
+  for (size_t i = 0; i < n; ++i) normal += p(i).cross(p(i + 1));
+
+  // Trying every start is quadratic; huge polygons only try a few hundred evenly spaced ones.
+  const size_t step = std::max<size_t>(1, n / 256);
+  size_t bestStart = 0;
+  double bestSmallest = -std::numeric_limits<double>::infinity();
+  for (size_t s = 0; s < n; s += step) {
+    double smallest = std::numeric_limits<double>::infinity();
+    for (size_t i = 1; i + 1 < n && smallest > bestSmallest; ++i) {
+      smallest = std::min(smallest, (p(s + i) - p(s)).cross(p(s + i + 1) - p(s)).dot(normal));
+    }
+    if (smallest > bestSmallest) {
+      bestSmallest = smallest;
+      bestStart = s;
+    }
+  }
+  for (size_t i = 1; i + 1 < n; ++i) {
+    out.push_back({static_cast<int>(v[bestStart]), static_cast<int>(v[(bestStart + i) % n]),
+                   static_cast<int>(v[(bestStart + i + 1) % n])});
+  }
+}
+
+// ------------------------------------------------------------------------------ file handling
+
+std::string loadFile(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) fail(path, "cannot access the file (" + ec.message() + ")");
+  if (!fs::exists(status)) fail(path, "no such file");
+  if (fs::is_directory(status)) fail(path, "is a directory, not a mesh file");
+
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot read the file (") + std::strerror(errno) + ")");
+  std::string data;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) data.append(buffer, static_cast<size_t>(in.gcount()));
+  if (in.bad()) fail(path, "cannot read the file (read error)");
+  if (onlySpace(data)) fail(path, "the file is empty");
+  return data;
+}
+
+// Drops vertices no triangle uses and renumbers the rest; returns how many were dropped.
+int removeUnusedVertices(Mesh& mesh) {
+  std::vector<int> newIndex(mesh.points.size(), -1);
+  for (const Triangle& t : mesh.triangles) {
+    for (int v : t) newIndex[v] = 0;
+  }
+  int next = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    if (newIndex[v] == 0) {
+      newIndex[v] = next;
+      mesh.points[next++] = mesh.points[v];
+    }
+  }
+  const int removed = mesh.vertexCount() - next;
+  mesh.points.resize(next);
+  for (Triangle& t : mesh.triangles) {
+    for (int& v : t) v = newIndex[v];
+  }
+  return removed;
+}
+
+void writeOff(std::ostream& out, const Mesh& mesh) {
+  out << "OFF\n" << mesh.vertexCount() << ' ' << mesh.faceCount() << " 0\n";
+  for (const Vec3& p : mesh.points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const Triangle& t : mesh.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
+void writeObj(std::ostream& out, const Mesh& mesh) {
+  for (const Vec3& p : mesh.points) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const Triangle& t : mesh.triangles) {
+    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  }
+}
+
+void writePly(std::ostream& out, const Mesh& mesh) {
+  out << "ply\nformat ascii 1.0\n"
+      << "element vertex " << mesh.vertexCount() << "\n"
+      << "property double x\nproperty double y\nproperty double z\n"
+      << "element face " << mesh.faceCount() << "\n"
+      << "property list uchar int vertex_indices\nend_header\n";
+  for (const Vec3& p : mesh.points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const Triangle& t : mesh.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------------------------ public API
+
+void validateMesh(const Mesh& mesh, const std::string& name) {
+  checkHasFaces(mesh.faceCount(), name);
+  checkFinite(mesh.points, name, 0);
+  std::vector<bool> used(mesh.points.size(), false);
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    checkFaceIndices(mesh.triangles[f].data(), 3, f, mesh.points.size(), 0, name);
+    for (int v : mesh.triangles[f]) used[v] = true;
+  }
+  const auto unused = std::find(used.begin(), used.end(), false);
+  if (unused != used.end()) fail(name, "vertex " + str(unused - used.begin()) + " is not used by any face");
+  checkSurface(mesh, name, Numbering{});
+}
+
+ReadResult readMesh(const std::string& path) {
+  const std::string ext = lowercaseExtension(path);
+  if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, unknownExtension(path));
+  const std::string text = loadFile(path);
+  const RawMesh raw = ext == ".off" ? readOff(path, text) : ext == ".obj" ? readObj(path, text) : readPly(path, text);
+
+  checkHasFaces(raw.polygonCount(), path);
+  checkFinite(raw.points, path, raw.base);
+  ReadResult result;
+  result.mesh.points = raw.points;
+  std::vector<long long> faceOfTriangle;
+  int polygons = 0;
+  for (long long f = 0; f < raw.polygonCount(); ++f) {
+    const long long* v = raw.indices.data() + raw.polygonStart[f];
+    const size_t n = raw.polygonStart[f + 1] - raw.polygonStart[f];
+    checkFaceIndices(v, n, f, raw.points.size(), raw.base, path);
+    if (n > 3) ++polygons;
+    triangulatePolygon(v, n, raw.points, result.mesh.triangles);
+    faceOfTriangle.resize(result.mesh.triangles.size(), f);
+  }
+  checkSurface(result.mesh, path, Numbering{raw.base, &faceOfTriangle});
+
+  if (polygons > 0) {
+    result.notes.push_back(path + ": " + plural(polygons, "polygon", "polygons") + " with more than 3 vertices " +
+                           (polygons == 1 ? "was" : "were") + " triangulated");
+  }
+  const int removed = removeUnusedVertices(result.mesh);
+  if (removed > 0) {
+    result.notes.push_back(path + ": " + plural(removed, "vertex", "vertices") + " used by no face " +
+                           (removed == 1 ? "was" : "were") + " removed");
+  }
+  return result;
+}
+
+void writeMesh(const Mesh& mesh, const std::string& path) {
+  const std::string ext = lowercaseExtension(path);
+  if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, "cannot write: " + unknownExtension(path));
+
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) fail(path, "cannot write " + temporary + " (" + std::strerror(errno) + ")");
+    out.imbue(std::locale::classic());  // a decimal point, whatever the global locale says
+    out << std::setprecision(17);       // enough digits to read back the same doubles
+    if (ext == ".off") writeOff(out, mesh);
+    else if (ext == ".obj") writeObj(out, mesh);
+    else writePly(out, mesh);
+    out.close();
+    if (!out) {
+      std::remove(temporary.c_str());
+      fail(path, "cannot write " + temporary + " (disk full?)");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    fail(path, "cannot write: renaming " + temporary + " onto it failed (" + reason + ")");
+  }
+}
+
+}  // namespace lloydscope

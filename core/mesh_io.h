@@ -1,0 +1,30 @@
+// Reading and writing OFF (ASCII and binary), OBJ and PLY (ASCII and binary) triangle meshes.
+// Reading validates: any problem is an Error whose message is one line naming the file.
+#pragma once
+
+#include "mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace lloydscope {
+
+struct ReadResult {
+  Mesh mesh;
+  // Things that were repaired rather than refused, one line each, e.g.
+  // "face.obj: 12 quads and 3 pentagons were triangulated".
+  std::vector<std::string> notes;
+};
+
+// Reads by extension (.off, .obj, .ply; case-insensitive) and validates with validateMesh().
+ReadResult readMesh(const std::string& path);
+
+// Checks what every later stage relies on and throws Error("<name>: <problem>") otherwise:
+// finite coordinates, indices in range, no zero-area faces, no two vertices at the same position,
+// no vertex used by no face, manifold edges and vertices, consistently oriented faces.
+void validateMesh(const Mesh& mesh, const std::string& name);
+
+// Writes by extension. The file appears complete or not at all (temporary file, then rename).
+void writeMesh(const Mesh& mesh, const std::string& path);
+
+}  // namespace lloydscope

@@ -1,0 +1,142 @@
+#include "metrics.h"
+
+#include "cgal_types.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace lloydscope {
+
+std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  auto angle = [](const Vec3& at, const Vec3& p, const Vec3& q) {
+    return std::atan2((p - at).cross(q - at).norm(), (p - at).dot(q - at)) * 180.0 / M_PI;
+  };
+  return {angle(a, b, c), angle(b, c, a), angle(c, a, b)};
+}
+
+QualityMetrics measureQuality(const Mesh& mesh) {
+  QualityMetrics m;
+  m.vertices = mesh.vertexCount();
+  m.faces = mesh.faceCount();
+  if (mesh.triangles.empty()) return m;
+
+  // Valence = number of distinct neighbours; a vertex is on the boundary if one of its edges
+  // has a single face.
+  std::map<std::pair<int, int>, int> edgeFaces;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++edgeFaces[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  std::vector<int> valence(mesh.points.size(), 0);
+  std::vector<bool> boundary(mesh.points.size(), false);
+  for (const auto& [edge, faces] : edgeFaces) {
+    ++valence[edge.first];
+    ++valence[edge.second];
+    if (faces == 1) boundary[edge.first] = boundary[edge.second] = true;
+  }
+  int irregular = 0, irregularAware = 0, used = 0;
+  for (size_t v = 0; v < valence.size(); ++v) {
+    if (valence[v] == 0) continue;
+    ++used;
+    if (boundary[v]) ++m.boundaryVertices;
+    if (valence[v] != 6) ++irregular;
+    if (valence[v] != (boundary[v] ? 4 : 6)) ++irregularAware;
+  }
+  m.irregularPercent = 100.0 * irregular / used;
+  m.irregularBoundaryAware = 100.0 * irregularAware / used;
+
+  m.minAngle = 180;
+  double sumMin = 0;
+  int under30 = 0;
+  for (const Triangle& t : mesh.triangles) {
+    const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    const double lo = *std::min_element(angles.begin(), angles.end());
+    m.minAngle = std::min(m.minAngle, lo);
+    m.maxAngle = std::max(m.maxAngle, *std::max_element(angles.begin(), angles.end()));
+    sumMin += lo;
+    if (lo < 30.0) ++under30;
+    for (double a : angles) ++m.angleHistogram[std::clamp(static_cast<int>(a / 10.0), 0, 17)];
+  }
+  m.avgMinAngle = sumMin / mesh.faceCount();
+  m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
+  return m;
+}
+
+namespace {
+
+using Triangle3 = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+std::vector<Triangle3> cgalTriangles(const Mesh& mesh) {
+  std::vector<Triangle3> triangles;
+  auto p = [&](int i) { return Point3(mesh.points[i].x(), mesh.points[i].y(), mesh.points[i].z()); };
+  for (const Triangle& t : mesh.triangles) triangles.emplace_back(p(t[0]), p(t[1]), p(t[2]));
+  return triangles;
+}
+
+// Metro's sampling: every vertex, every edge midpoint, and area-weighted random points.
+std::vector<Vec3> samplePoints(const Mesh& mesh, int randomCount) {
+  std::vector<Vec3> samples = mesh.points;
+  std::vector<double> cumulative;
+  double total = 0;
+  for (const Triangle& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < t[(k + 1) % 3])  // each interior edge once (boundary edges may appear once more)
+        samples.push_back(0.5 * (mesh.points[t[k]] + mesh.points[t[(k + 1) % 3]]));
+    total += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    cumulative.push_back(total);
+  }
+  std::mt19937_64 rng(12345);
+  auto uniform01 = [&] { return (rng() >> 11) * 0x1.0p-53; };
+  for (int i = 0; i < randomCount; ++i) {
+    const size_t f = std::min<size_t>(
+        std::upper_bound(cumulative.begin(), cumulative.end(), uniform01() * total) -
+            cumulative.begin(),
+        cumulative.size() - 1);
+    double a = uniform01(), b = uniform01();
+    if (a + b > 1) {
+      a = 1 - a;
+      b = 1 - b;
+    }
+    const Triangle& t = mesh.triangles[f];
+    samples.push_back(mesh.points[t[0]] + a * (mesh.points[t[1]] - mesh.points[t[0]]) +
+                      b * (mesh.points[t[2]] - mesh.points[t[0]]));
+  }
+  return samples;
+}
+
+// Largest and summed squared distance from the samples of `from` to the surface `to`.
+void oneSided(const Mesh& from, const Mesh& to, double& maxDistance, double& sumSquared,
+              int& count) {
+  const std::vector<Triangle3> triangles = cgalTriangles(to);
+  Tree tree(triangles.cbegin(), triangles.cend());
+  tree.accelerate_distance_queries();
+  for (const Vec3& s : samplePoints(from, 10000 + 10 * from.faceCount())) {
+    const double d2 = tree.squared_distance(Point3(s.x(), s.y(), s.z()));
+    maxDistance = std::max(maxDistance, std::sqrt(d2));
+    sumSquared += d2;
+    ++count;
+  }
+}
+
+}  // namespace
+
+Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference) {
+  Fidelity f;
+  if (mesh.triangles.empty() || reference.triangles.empty()) return f;
+  double maxDistance = 0, sumSquared = 0;
+  oneSided(mesh, reference, maxDistance, sumSquared, f.samples);
+  oneSided(reference, mesh, maxDistance, sumSquared, f.samples);
+  const double diagonal = boundingBoxDiagonal(reference);
+  f.hausdorffPercent = 100.0 * maxDistance / diagonal;
+  f.rmsPercent = 100.0 * std::sqrt(sumSquared / f.samples) / diagonal;
+  return f;
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,37 @@
+// Mesh quality (the reference's Table II and more) and fidelity to another surface (Metro-style).
+#pragma once
+
+#include "mesh.h"
+
+#include <array>
+#include <vector>
+
+namespace lloydscope {
+
+struct QualityMetrics {
+  int vertices = 0, faces = 0, boundaryVertices = 0;
+  double irregularPercent = 0;       // vertices of valence != 6, all of them (the reference)
+  double irregularBoundaryAware = 0; // interior valence != 6 and boundary valence != 4
+  double minAngle = 0, maxAngle = 0; // degrees, over all triangles
+  double avgMinAngle = 0;            // mean of each triangle's smallest angle
+  double percentUnder30 = 0;         // triangles whose smallest angle is under 30 degrees
+  std::array<int, 18> angleHistogram{};  // all corner angles in 10-degree bins, 0..180
+};
+
+QualityMetrics measureQuality(const Mesh& mesh);
+
+struct Fidelity {
+  // Two-sided distances between the surfaces, in % of the reference's bounding-box diagonal.
+  double hausdorffPercent = 0;
+  double rmsPercent = 0;
+  int samples = 0;
+};
+
+// Samples each surface (vertices, edge midpoints and area-weighted random points, fixed seed)
+// and measures the distance to the other with an AABB tree, in both directions.
+Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference);
+
+// The three corner angles of a triangle, in degrees.
+std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& c);
+
+}  // namespace lloydscope

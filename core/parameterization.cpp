@@ -1,0 +1,280 @@
+#include "parameterization.h"
+
+#include "cgal_types.h"
+#include "topology.h"
+
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lloydscope {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+SurfaceMesh toSurfaceMesh(const Mesh& mesh) {
+  SurfaceMesh sm;
+  sm.reserve(mesh.points.size(), 3 * mesh.triangles.size() / 2, mesh.triangles.size());
+  for (const Vec3& p : mesh.points) sm.add_vertex(Point3(p.x(), p.y(), p.z()));
+  for (const Triangle& t : mesh.triangles)
+    sm.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
+                SurfaceMesh::Vertex_index(t[2]));
+  return sm;
+}
+
+namespace {
+
+struct FoldedMap : Error {
+  using Error::Error;
+};
+
+using Halfedge = boost::graph_traits<SurfaceMesh>::halfedge_descriptor;
+using UVMap = SurfaceMesh::Property_map<SurfaceMesh::Vertex_index, Point2>;
+// SparseLU was 1.2-1.6x faster than CGAL's default BiCGSTAB here (shared/notes/cgal.md);
+// the matrices of the fixed-border methods are not symmetric, so LU it is.
+using Solver = CGAL::Eigen_solver_traits<
+    Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int>>>;
+
+using Vertex = SurfaceMesh::Vertex_index;
+
+double angleAt(const Point3& at, const Point3& p, const Point3& q) {
+  const auto u = p - at, v = q - at;
+  return std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
+}
+
+// The four border vertices that become the square's corners: the sharpest turn of the border,
+// then the sharpest turn near each quarter of the border's length from it. CGAL's own choice
+// (quarters of the length from an arbitrary vertex) can put a corner mid-side and leave the
+// triangles at the shape's real corners with three vertices on one side of the square: flat.
+std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
+  std::vector<Vertex> loop;
+  std::vector<double> turn, position;  // turn: pi - the sum of the corner angles at the vertex
+  double length = 0;
+  for (Halfedge h : CGAL::halfedges_around_face(border, sm)) {
+    const Vertex v = sm.source(h);
+    double angles = 0;
+    for (auto f : CGAL::faces_around_target(sm.halfedge(v), sm)) {
+      if (f == SurfaceMesh::null_face()) continue;
+      const Halfedge at = [&] {
+        for (Halfedge g : CGAL::halfedges_around_face(sm.halfedge(f), sm))
+          if (sm.target(g) == v) return g;
+        return sm.halfedge(f);
+      }();
+      angles += angleAt(sm.point(v), sm.point(sm.source(at)), sm.point(sm.target(sm.next(at))));
+    }
+    loop.push_back(v);
+    turn.push_back(M_PI - angles);
+    position.push_back(length);
+    length += std::sqrt(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h))));
+  }
+  const size_t first = std::max_element(turn.begin(), turn.end()) - turn.begin();
+  std::array<Vertex, 4> corners = {loop[first], loop[first], loop[first], loop[first]};
+  for (int k = 1; k < 4; ++k) {
+    double best = -INFINITY;
+    for (size_t i = 0; i < loop.size(); ++i) {
+      // Offset along the border from the first corner, compared with k quarters.
+      const double offset = std::fmod(position[i] - position[first] + length, length);
+      const double miss = std::abs(offset - k * length / 4);
+      if (miss > length / 8) continue;
+      const double score = turn[i] - 1e-9 * miss;  // sharpest; the nearer on ties
+      if (score > best) {
+        best = score;
+        corners[k] = loop[i];
+      }
+    }
+  }
+  return corners;
+}
+
+template <template <class, class, class> class Method>
+SMP::Error_code solveFixedBorder(SurfaceMesh& sm, Halfedge border, UVMap uv, Border shape) {
+  if (shape == Border::Square) {
+    using B = SMP::Square_border_arc_length_parameterizer_3<SurfaceMesh>;
+    const auto c = squareCorners(sm, border);
+    return SMP::parameterize(sm, Method<SurfaceMesh, B, Solver>(B(c[0], c[1], c[2], c[3])),
+                             border, uv);
+  }
+  using B = SMP::Circular_border_arc_length_parameterizer_3<SurfaceMesh>;
+  return SMP::parameterize(sm, Method<SurfaceMesh, B, Solver>(), border, uv);
+}
+
+SMP::Error_code solve(SurfaceMesh& sm, Halfedge border, UVMap uv, const ParamOptions& o) {
+  switch (o.method) {
+    case ParamMethod::Authalic:
+      return solveFixedBorder<SMP::Discrete_authalic_parameterizer_3>(sm, border, uv, o.border);
+    case ParamMethod::Conformal:
+      return solveFixedBorder<SMP::Discrete_conformal_map_parameterizer_3>(sm, border, uv,
+                                                                          o.border);
+    case ParamMethod::MeanValue:
+      return solveFixedBorder<SMP::Mean_value_coordinates_parameterizer_3>(sm, border, uv,
+                                                                          o.border);
+    case ParamMethod::Tutte:
+      return solveFixedBorder<SMP::Barycentric_mapping_parameterizer_3>(sm, border, uv, o.border);
+    case ParamMethod::Lscm:
+      return SMP::parameterize(sm, SMP::LSCM_parameterizer_3<SurfaceMesh>(), border, uv);
+    case ParamMethod::Auto:
+      break;  // resolved by parameterize()
+  }
+  return SMP::ERROR_EMPTY_MESH;
+}
+
+// Uniform scale and translation so that the UV bounding box fits [0,1]^2 with its lower-left
+// corner at the origin: thresholds can then be given as fractions of the domain size.
+void normalize(std::vector<Vec2>& uv) {
+  Vec2 lo = uv.front(), hi = lo;
+  for (const Vec2& p : uv) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double scale = 1.0 / std::max((hi - lo).maxCoeff(), 1e-300);
+  for (Vec2& p : uv) p = (p - lo) * scale;
+}
+
+// Mirrors the map if it came out clockwise, then refuses any triangle that is still flipped,
+// or collapsed unless it is an ear of the border (three border vertices on one straight side
+// of the square: flat, but harmless, as it covers no part of the domain).
+void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool>& onBoundary,
+                     const std::string& name) {
+  double total = 0;
+  for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
+  if (total < 0)
+    for (Vec2& p : uv) p.x() = 1.0 - p.x();
+  const double minArea = 1e-14 * std::abs(total);
+  int flipped = 0, collapsed = 0;
+  for (const Triangle& t : mesh.triangles) {
+    const double a = triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
+    const bool ear = onBoundary[t[0]] && onBoundary[t[1]] && onBoundary[t[2]];
+    if (a < -minArea) ++flipped;
+    else if (a <= minArea && !ear) ++collapsed;
+  }
+  if (flipped || collapsed)
+    throw FoldedMap(name + ": the parameterization is not one-to-one (" + std::to_string(flipped) +
+                " flipped and " + std::to_string(collapsed) + " collapsed of " +
+                std::to_string(mesh.faceCount()) +
+                " triangles); try --param tutte or mean-value, whose maps are always one-to-one");
+}
+
+double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a
+  return std::atan2((b - a).cross(c - a).norm(), (b - a).dot(c - a));
+}
+double cornerAngle(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const Vec2 u = b - a, v = c - a;
+  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+}
+
+}  // namespace
+
+Distortion measureDistortion(const Mesh& mesh, const std::vector<Vec2>& uv) {
+  double area3 = 0, area2 = 0;
+  for (const Triangle& t : mesh.triangles) {
+    area3 += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    area2 += std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]));
+  }
+  Distortion d;
+  d.minAreaRatio = INFINITY;
+  d.maxAreaRatio = 0;
+  double angleError = 0;
+  for (const Triangle& t : mesh.triangles) {
+    const double a3 = triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    const double a2 = std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]));
+    const double r = (a3 / area3) / std::max(a2 / area2, 1e-300);
+    d.minAreaRatio = std::min(d.minAreaRatio, r);
+    d.maxAreaRatio = std::max(d.maxAreaRatio, r);
+    d.meanLogAreaRatio += a3 / area3 * std::abs(std::log(std::max(r, 1e-300)));
+    for (int k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3], l = t[(k + 2) % 3];
+      angleError += std::abs(cornerAngle(mesh.points[i], mesh.points[j], mesh.points[l]) -
+                             cornerAngle(uv[i], uv[j], uv[l]));
+    }
+  }
+  d.meanAngleErrorDeg = angleError / (3.0 * mesh.faceCount()) * 180.0 / M_PI;
+  return d;
+}
+
+Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
+                              const std::string& name) {
+  if (options.method == ParamMethod::Auto) {
+    try {
+      return parameterize(mesh, {ParamMethod::Lscm, options.border}, name);
+    } catch (const FoldedMap&) {
+      return parameterize(mesh, {ParamMethod::MeanValue, Border::Circle}, name);
+    }
+  }
+  // CGAL does not check the topology itself (shared/notes/cgal.md): a non-disk "succeeds".
+  requireDisk(mesh, name);
+  SurfaceMesh sm = toSurfaceMesh(mesh);
+  const Halfedge border = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  UVMap uvMap = sm.add_property_map<SurfaceMesh::Vertex_index, Point2>("v:uv").first;
+  const SMP::Error_code err = solve(sm, border, uvMap, options);
+  if (err != SMP::OK)
+    throw Error(name + ": " + toString(options.method) + " parameterization failed: " +
+                SMP::get_error_message(err));
+
+  Parameterization result;
+  result.method = options.method;
+  result.uv.resize(mesh.points.size());
+  for (auto v : sm.vertices()) result.uv[v.idx()] = Vec2(uvMap[v].x(), uvMap[v].y());
+  for (const Vec2& p : result.uv)
+    if (!p.allFinite()) throw Error(name + ": the parameterization produced non-finite UVs");
+  normalize(result.uv);
+
+  result.onBoundary.assign(mesh.points.size(), false);
+  for (Halfedge h : CGAL::halfedges_around_face(border, sm)) {
+    const int v = static_cast<int>(sm.source(h).idx());
+    result.boundaryLoop.push_back(v);
+    result.onBoundary[v] = true;
+  }
+  requireOneToOne(mesh, result.uv, result.onBoundary, name);
+  // The border cycle runs around the hole; make it counter-clockwise around the domain.
+  double signedArea = 0;
+  const auto& loop = result.boundaryLoop;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Vec2& a = result.uv[loop[i]];
+    const Vec2& b = result.uv[loop[(i + 1) % loop.size()]];
+    signedArea += a.x() * b.y() - b.x() * a.y();
+  }
+  if (signedArea < 0) std::reverse(result.boundaryLoop.begin(), result.boundaryLoop.end());
+  result.distortion = measureDistortion(mesh, result.uv);
+  return result;
+}
+
+const char* toString(ParamMethod method) {
+  switch (method) {
+    case ParamMethod::Auto: return "auto";
+    case ParamMethod::Authalic: return "authalic";
+    case ParamMethod::Conformal: return "conformal";
+    case ParamMethod::MeanValue: return "mean-value";
+    case ParamMethod::Tutte: return "tutte";
+    case ParamMethod::Lscm: return "lscm";
+  }
+  return "?";
+}
+
+const char* toString(Border border) { return border == Border::Square ? "square" : "circle"; }
+
+ParamMethod parseParamMethod(const std::string& text) {
+  for (ParamMethod m : {ParamMethod::Auto, ParamMethod::Authalic, ParamMethod::Conformal, ParamMethod::MeanValue,
+                        ParamMethod::Tutte, ParamMethod::Lscm})
+    if (text == toString(m)) return m;
+  throw Error("unknown parameterization '" + text +
+              "' (auto, authalic, conformal, mean-value, tutte, lscm)");
+}
+
+Border parseBorder(const std::string& text) {
+  if (text == "square") return Border::Square;
+  if (text == "circle") return Border::Circle;
+  throw Error("unknown border '" + text + "' (square, circle)");
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,52 @@
+// Global 2D parameterization of a disk-topology mesh (CGAL Surface_mesh_parameterization).
+#pragma once
+
+#include "mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace lloydscope {
+
+enum class ParamMethod {
+  Auto,  // LSCM, or mean value with a circle border where LSCM folds
+  Authalic, Conformal, MeanValue, Tutte, Lscm
+};
+enum class Border { Square, Circle };  // ignored by LSCM, whose border is free
+
+struct ParamOptions {
+  // Free-border LSCM keeps the border's own shape: no corner of the input is squeezed onto a
+  // circle or spread along a square's side, which measured best. It can fold, and then the
+  // mean-value map, one-to-one on any convex border, takes over.
+  ParamMethod method = ParamMethod::Auto;
+  Border border = Border::Circle;  // for the fixed-border methods
+};
+
+struct Distortion {
+  // Per triangle, r = (3D area share) / (UV area share); 1 everywhere for an area-preserving map.
+  double minAreaRatio = 1, maxAreaRatio = 1;
+  double meanLogAreaRatio = 0;  // area-weighted mean of |ln r|
+  double meanAngleErrorDeg = 0;  // mean |3D corner angle - UV corner angle|, degrees
+};
+
+struct Parameterization {
+  ParamMethod method = ParamMethod::Lscm;  // the one used (Auto resolved)
+  std::vector<Vec2> uv;           // per vertex, scaled uniformly to fit the unit square
+  std::vector<int> boundaryLoop;  // the border's vertices, counter-clockwise in UV
+  std::vector<bool> onBoundary;   // per vertex
+  Distortion distortion;
+};
+
+// The mesh must be a validated topological disk. Throws Error("<name>: ...") when CGAL fails
+// or when the result is not one-to-one (some UV triangles flipped or collapsed).
+Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
+                              const std::string& name);
+
+Distortion measureDistortion(const Mesh& mesh, const std::vector<Vec2>& uv);
+
+const char* toString(ParamMethod method);
+const char* toString(Border border);
+ParamMethod parseParamMethod(const std::string& text);  // throws Error on unknown names
+Border parseBorder(const std::string& text);
+
+}  // namespace lloydscope

@@ -1,0 +1,61 @@
+// The whole remeshing pipeline: parameterize, density, initial sites, Lloyd, lift, measure.
+#pragma once
+
+#include "density.h"
+#include "lloyd.h"
+#include "metrics.h"
+#include "parameterization.h"
+#include "recording.h"
+#include "remesh.h"
+#include "sites.h"
+
+#include <string>
+
+namespace lloydscope {
+
+enum class RemeshMethod { Relocate, Retriangulate };
+
+struct RemeshOptions {
+  RemeshMethod method = RemeshMethod::Retriangulate;
+  ParamOptions param;
+  DensityOptions density;
+  SiteOptions sites;
+  LloydOptions lloyd;
+  bool measureFidelity = true;
+};
+
+// The reference report's settings: discrete authalic map with a square border, uniform density,
+// the input's own vertices as sites, thresholds 1e-6 and 5%.
+RemeshOptions referencePreset(RemeshMethod method);
+
+struct StageTimes {  // milliseconds
+  double parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0, metrics = 0, total = 0;
+};
+
+struct RemeshResult {
+  Mesh output;
+  Recording recording;
+  ParamMethod paramUsed = ParamMethod::Lscm;  // what "auto" chose
+  Distortion distortion;
+  QualityMetrics before, after;
+  Fidelity fidelity;  // output against input; zero when not measured
+  int iterations = 0;
+  bool converged = false;
+  StageTimes ms;
+};
+
+// `input` must be a validated mesh; `name` is used in error messages. Throws Error.
+RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
+
+// Builds the output mesh from a (possibly partial) run's current sites.
+Mesh buildOutput(const Mesh& input, const Domain& domain, RemeshMethod method,
+                 const std::vector<Vec2>& fixedSites, const std::vector<Vec2>& movableSites,
+                 const std::vector<int>& movableVertex);
+
+// One line naming every setting, stored in recordings and printed by the command line.
+std::string describe(const RemeshOptions& options);
+
+const char* toString(RemeshMethod method);
+RemeshMethod parseRemeshMethod(const std::string& text);  // throws Error on unknown names
+
+}  // namespace lloydscope

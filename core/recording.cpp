@@ -1,0 +1,222 @@
+#include "recording.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace lloydscope {
+
+namespace {
+
+constexpr char kMagic[8] = {'L', 'L', 'O', 'Y', 'D', 'R', 'E', 'C'};
+constexpr size_t kHeaderSize = sizeof(kMagic) + 4 + 8;  // magic, version, payload size
+constexpr size_t kChecksumSize = 8;
+
+std::uint64_t fnv1a(const char* data, size_t size) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (size_t i = 0; i < size; ++i) {
+    hash ^= static_cast<unsigned char>(data[i]);
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+// Little-endian host assumed (x86-64, arm64); the format stores native doubles and integers.
+class Writer {
+ public:
+  template <class T>
+  void put(const T& value) {
+    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
+  }
+  void putString(const std::string& s) {
+    put<std::uint32_t>(static_cast<std::uint32_t>(s.size()));
+    bytes_ += s;
+  }
+  void putPoints(const std::vector<Vec2>& points) {
+    put<std::uint32_t>(static_cast<std::uint32_t>(points.size()));
+    for (const Vec2& p : points) put(p.x()), put(p.y());
+  }
+  std::string& bytes() { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
+// Every read is bounds-checked: a damaged payload is an error, never a crash.
+class Reader {
+ public:
+  Reader(const std::string& bytes, size_t begin, size_t end, const std::string& path)
+      : bytes_(bytes), at_(begin), end_(end), path_(path) {}
+  template <class T>
+  T get() {
+    need(sizeof(T));
+    T value;
+    std::memcpy(&value, bytes_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return value;
+  }
+  std::uint32_t getCount(size_t bytesPerItem) {
+    const auto n = get<std::uint32_t>();
+    need(static_cast<size_t>(n) * bytesPerItem);
+    return n;
+  }
+  std::string getString() {
+    const auto n = getCount(1);
+    std::string s = bytes_.substr(at_, n);
+    at_ += n;
+    return s;
+  }
+  std::vector<Vec2> getPoints() {
+    std::vector<Vec2> points(getCount(16));
+    for (Vec2& p : points) {
+      const double x = get<double>(), y = get<double>();
+      p = Vec2(x, y);
+    }
+    return points;
+  }
+  bool done() const { return at_ == end_; }
+
+ private:
+  void need(size_t n) {
+    if (n > end_ - at_) throw Error(path_ + ": damaged recording (a count runs past the data)");
+  }
+  const std::string& bytes_;
+  size_t at_, end_;
+  const std::string& path_;
+};
+
+std::string encodePayload(const Recording& r) {
+  Writer w;
+  w.putString(r.settings);
+  w.put(r.distanceThreshold);
+  w.put(r.percentThreshold);
+  w.put<std::uint32_t>(static_cast<std::uint32_t>(r.input.points.size()));
+  for (const Vec3& p : r.input.points) w.put(p.x()), w.put(p.y()), w.put(p.z());
+  w.put<std::uint32_t>(static_cast<std::uint32_t>(r.input.triangles.size()));
+  for (const Triangle& t : r.input.triangles) w.put(t[0]), w.put(t[1]), w.put(t[2]);
+  w.putPoints(r.uv);
+  for (double d : r.density) w.put(d);
+  w.putPoints(r.fixedSites);
+  w.put<std::uint32_t>(static_cast<std::uint32_t>(r.movableVertex.size()));
+  for (int v : r.movableVertex) w.put(v);
+  w.put<std::uint32_t>(static_cast<std::uint32_t>(r.iterations.size()));
+  for (const IterationRecord& it : r.iterations) {
+    w.put(it.index);
+    w.put(it.energy);
+    w.put(it.maxDisplacement);
+    w.put(it.meanDisplacement);
+    w.put(it.fractionMoving);
+    w.put(it.milliseconds);
+    w.putPoints(it.sites);
+    w.putPoints(it.centroids);
+  }
+  return std::move(w.bytes());
+}
+
+Recording decodePayload(Reader& in, const std::string& path) {
+  Recording r;
+  r.settings = in.getString();
+  r.distanceThreshold = in.get<double>();
+  r.percentThreshold = in.get<double>();
+  r.input.points.resize(in.getCount(24));
+  for (Vec3& p : r.input.points) {
+    const double x = in.get<double>(), y = in.get<double>(), z = in.get<double>();
+    p = Vec3(x, y, z);
+  }
+  r.input.triangles.resize(in.getCount(12));
+  for (Triangle& t : r.input.triangles)
+    for (int& v : t) {
+      v = in.get<int>();
+      if (v < 0 || v >= r.input.vertexCount())
+        throw Error(path + ": damaged recording (a triangle index is out of range)");
+    }
+  r.uv = in.getPoints();
+  if (r.uv.size() != r.input.points.size())
+    throw Error(path + ": damaged recording (UV count differs from vertex count)");
+  r.density.resize(r.uv.size());
+  for (double& d : r.density) d = in.get<double>();
+  r.fixedSites = in.getPoints();
+  r.movableVertex.resize(in.getCount(4));
+  for (int& v : r.movableVertex) v = in.get<int>();
+  r.iterations.resize(in.getCount(48));
+  for (IterationRecord& it : r.iterations) {
+    it.index = in.get<int>();
+    it.energy = in.get<double>();
+    it.maxDisplacement = in.get<double>();
+    it.meanDisplacement = in.get<double>();
+    it.fractionMoving = in.get<double>();
+    it.milliseconds = in.get<double>();
+    it.sites = in.getPoints();
+    it.centroids = in.getPoints();
+    if (it.centroids.size() != it.sites.size())
+      throw Error(path + ": damaged recording (sites and centroids differ in number)");
+  }
+  if (!in.done()) throw Error(path + ": damaged recording (unexpected data after the end)");
+  return r;
+}
+
+}  // namespace
+
+std::vector<BoundedCell> Recording::cells(const Domain& domain, int iteration,
+                                          bool keepGeometry) const {
+  return computeCells(domain, allSites(fixedSites, iterations.at(iteration).sites), keepGeometry);
+}
+
+void saveRecording(const Recording& recording, const std::string& path) {
+  const std::string payload = encodePayload(recording);
+  Writer file;
+  file.bytes().append(kMagic, sizeof(kMagic));
+  file.put<std::uint32_t>(Recording::kVersion);
+  file.put<std::uint64_t>(payload.size());
+  file.bytes() += payload;
+  file.put<std::uint64_t>(fnv1a(payload.data(), payload.size()));
+
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(file.bytes().data(), static_cast<std::streamsize>(file.bytes().size()));
+    out.close();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw Error(path + ": cannot write the recording");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw Error(path + ": cannot write the recording (rename failed)");
+  }
+}
+
+Recording loadRecording(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw Error(path + ": cannot open the recording (missing or unreadable)");
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
+    throw Error(path + ": not a Lloydscope recording");
+  if (bytes.size() < kHeaderSize)
+    throw Error(path + ": truncated recording (the header is incomplete)");
+  std::uint32_t version;
+  std::uint64_t payloadSize;
+  std::memcpy(&version, bytes.data() + sizeof(kMagic), 4);
+  std::memcpy(&payloadSize, bytes.data() + sizeof(kMagic) + 4, 8);
+  if (version != Recording::kVersion)
+    throw Error(path + ": recording version " + std::to_string(version) +
+                " is not supported (this build reads version " +
+                std::to_string(Recording::kVersion) + ")");
+  const size_t available = bytes.size() - kHeaderSize;
+  if (payloadSize > available || available - payloadSize < kChecksumSize)
+    throw Error(path + ": truncated recording (" + std::to_string(bytes.size()) + " bytes, " +
+                "expected " + std::to_string(kHeaderSize + payloadSize + kChecksumSize) + ")");
+  if (available - payloadSize > kChecksumSize)
+    throw Error(path + ": damaged recording (unexpected data after the end)");
+  std::uint64_t checksum;
+  std::memcpy(&checksum, bytes.data() + kHeaderSize + payloadSize, 8);
+  if (checksum != fnv1a(bytes.data() + kHeaderSize, payloadSize))
+    throw Error(path + ": corrupt recording (checksum mismatch)");
+  Reader in(bytes, kHeaderSize, kHeaderSize + payloadSize, path);
+  return decodePayload(in, path);
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,34 @@
+// Everything needed to replay a Lloyd run: the domain, the fixed sites and every iteration.
+// Saved as a versioned binary file with a checksum.
+#pragma once
+
+#include "lloyd.h"
+
+#include <string>
+#include <vector>
+
+namespace lloydscope {
+
+struct Recording {
+  static constexpr std::uint32_t kVersion = 1;
+
+  std::string settings;  // the settings that produced it, one line ("param=conformal ...")
+  double distanceThreshold = 1e-6, percentThreshold = 5.0;
+  Mesh input;                      // the disk mesh that was parameterized
+  std::vector<Vec2> uv;            // per input vertex
+  std::vector<double> density;     // per input vertex
+  std::vector<Vec2> fixedSites;    // border samples, counter-clockwise
+  std::vector<int> movableVertex;  // input vertex each movable site started at, or -1
+  std::vector<IterationRecord> iterations;
+
+  Domain domain() const { return Domain(uv, input.triangles, density); }
+  // The cells of iteration k, recomputed from its sites: bit-identical to those of the run.
+  std::vector<BoundedCell> cells(const Domain& domain, int iteration, bool keepGeometry) const;
+};
+
+// Written to "<path>.tmp" and renamed, so an existing file is replaced whole or not at all.
+void saveRecording(const Recording& recording, const std::string& path);
+// Throws Error("<path>: ...") for a missing, truncated, corrupt or other-version file.
+Recording loadRecording(const std::string& path);
+
+}  // namespace lloydscope

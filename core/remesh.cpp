@@ -1,0 +1,111 @@
+#include "remesh.h"
+
+#include "cgal_types.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <deque>
+
+namespace lloydscope {
+
+namespace {
+
+struct FaceInfo {
+  int nesting = -1;  // how many constraint edges separate the face from the outside
+  bool inDomain() const { return nesting % 2 == 1; }
+};
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using FaceBase = CGAL::Triangulation_face_base_with_info_2<
+    FaceInfo, Kernel, CGAL::Constrained_triangulation_face_base_2<Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+
+// Flood from the infinite face; crossing a constraint edge raises the nesting level
+// (CGAL's polygon-triangulation example).
+void markDomain(Cdt& cdt) {
+  std::deque<std::pair<Cdt::Face_handle, int>> queue = {{cdt.infinite_face(), 0}};
+  std::deque<std::pair<Cdt::Face_handle, int>> nextLevel;
+  while (!queue.empty()) {
+    while (!queue.empty()) {
+      auto [face, level] = queue.front();
+      queue.pop_front();
+      if (face->info().nesting != -1) continue;
+      face->info().nesting = level;
+      for (int i = 0; i < 3; ++i) {
+        Cdt::Face_handle n = face->neighbor(i);
+        if (n->info().nesting != -1) continue;
+        if (cdt.is_constrained({face, i}))
+          nextLevel.push_back({n, level + 1});
+        else
+          queue.push_back({n, level});
+      }
+    }
+    queue.swap(nextLevel);
+  }
+}
+
+}  // namespace
+
+Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p) {
+  const Location l = domain.locate(p);
+  const Triangle& t = input.triangles[l.triangle];
+  return l.weights[0] * input.points[t[0]] + l.weights[1] * input.points[t[1]] +
+         l.weights[2] * input.points[t[2]];
+}
+
+Mesh relocate(const Mesh& input, const Domain& domain, const std::vector<int>& movableVertex,
+              const std::vector<Vec2>& movableSites) {
+  Mesh output = input;
+  for (size_t i = 0; i < movableSites.size(); ++i)
+    if (movableVertex[i] >= 0) output.points[movableVertex[i]] = lift(input, domain, movableSites[i]);
+  return output;
+}
+
+std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
+                                       const std::vector<Vec2>& movableSites) {
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> borderVertex;
+  for (size_t i = 0; i < border.size(); ++i) {
+    borderVertex.push_back(cdt.insert(Point2(border[i].x(), border[i].y())));
+    borderVertex.back()->info() = static_cast<int>(i);
+  }
+  for (size_t i = 0; i < border.size(); ++i)
+    cdt.insert_constraint(borderVertex[i], borderVertex[(i + 1) % border.size()]);
+  std::vector<std::pair<Point2, int>> inside;
+  for (size_t i = 0; i < movableSites.size(); ++i)
+    inside.emplace_back(Point2(movableSites[i].x(), movableSites[i].y()),
+                        static_cast<int>(border.size() + i));
+  cdt.insert(inside.begin(), inside.end());
+  markDomain(cdt);
+
+  std::vector<Triangle> triangles;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->info().inDomain())
+      triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  return triangles;
+}
+
+Mesh retriangulate(const Mesh& input, const Domain& domain, const std::vector<Vec2>& border,
+                   const std::vector<Vec2>& movableSites) {
+  const std::vector<Triangle> triangles = triangulateSites(border, movableSites);
+  // Keep only the vertices some triangle uses (a site on top of another, or outside the domain,
+  // has none), numbered in order.
+  const size_t total = border.size() + movableSites.size();
+  std::vector<int> newIndex(total, -1);
+  for (const Triangle& t : triangles)
+    for (int v : t) newIndex[v] = 0;
+  Mesh output;
+  for (size_t v = 0; v < total; ++v) {
+    if (newIndex[v] < 0) continue;
+    newIndex[v] = output.vertexCount();
+    const Vec2& p = v < border.size() ? border[v] : movableSites[v - border.size()];
+    output.points.push_back(lift(input, domain, p));
+  }
+  for (const Triangle& t : triangles)
+    output.triangles.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
+  return output;
+}
+
+}  // namespace lloydscope

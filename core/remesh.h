@@ -1,0 +1,29 @@
+// From relaxed sites back to a 3D mesh.
+#pragma once
+
+#include "domain.h"
+
+#include <vector>
+
+namespace lloydscope {
+
+// The 3D point of the input surface at parameter point p (barycentric coordinates in the
+// parameter triangle that holds p; points outside the domain go to its closest point).
+Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p);
+
+// The reference's area-based method: the input's connectivity, each inside vertex moved to the
+// lifted position of the site that started at it (movableVertex[i] for site i).
+Mesh relocate(const Mesh& input, const Domain& domain, const std::vector<int>& movableVertex,
+              const std::vector<Vec2>& movableSites);
+
+// The reference's alternative: a new mesh, the constrained Delaunay triangulation of the
+// border samples (in order, counter-clockwise, joined by constraint edges) and the movable
+// sites, restricted to the domain and lifted to 3D. Vertices: border samples, then sites.
+Mesh retriangulate(const Mesh& input, const Domain& domain, const std::vector<Vec2>& border,
+                   const std::vector<Vec2>& movableSites);
+
+// The 2D triangles of retriangulate(), before lifting (same vertex order).
+std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
+                                       const std::vector<Vec2>& movableSites);
+
+}  // namespace lloydscope

@@ -1,0 +1,117 @@
+#include "sites.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace lloydscope {
+
+namespace {
+
+double uniform01(std::mt19937_64& rng) { return (rng() >> 11) * 0x1.0p-53; }
+
+double surfaceArea(const Mesh& mesh) {
+  double area = 0;
+  for (const Triangle& t : mesh.triangles)
+    area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  return area;
+}
+
+// A border vertex where the UV border turns by more than ~20 degrees (the corners of the
+// square) must stay a sample, or resampling would cut the corner off the domain.
+bool isCorner(const Vec2& prev, const Vec2& at, const Vec2& next) {
+  const Vec2 a = (at - prev).normalized(), b = (next - at).normalized();
+  return a.dot(b) < std::cos(20.0 * M_PI / 180.0);
+}
+
+// Samples along the border at 3D arc-length spacing close to `spacing`, corners kept.
+std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param,
+                                 double spacing) {
+  const std::vector<int>& loop = param.boundaryLoop;
+  const int n = static_cast<int>(loop.size());
+  std::vector<int> corners;
+  for (int i = 0; i < n; ++i)
+    if (isCorner(param.uv[loop[(i + n - 1) % n]], param.uv[loop[i]], param.uv[loop[(i + 1) % n]]))
+      corners.push_back(i);
+  if (corners.empty()) corners.push_back(0);
+
+  std::vector<Vec2> samples;
+  for (size_t c = 0; c < corners.size(); ++c) {
+    const int begin = corners[c];
+    const int end = c + 1 < corners.size() ? corners[c + 1] : corners[0] + n;
+    std::vector<double> length = {0.0};  // cumulative 3D length along this stretch
+    for (int i = begin; i < end; ++i)
+      length.push_back(length.back() +
+                       (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i % n]]).norm());
+    const int pieces = std::max(1, static_cast<int>(std::lround(length.back() / spacing)));
+    int segment = 0;
+    for (int s = 0; s < pieces; ++s) {
+      const double target = length.back() * s / pieces;
+      while (segment + 1 < static_cast<int>(length.size()) - 1 && length[segment + 1] <= target)
+        ++segment;
+      const double span = length[segment + 1] - length[segment];
+      const double t = span > 0 ? (target - length[segment]) / span : 0.0;
+      const Vec2& a = param.uv[loop[(begin + segment) % n]];
+      const Vec2& b = param.uv[loop[(begin + segment + 1) % n]];
+      samples.push_back((1 - t) * a + t * b);
+    }
+  }
+  return samples;
+}
+
+// `count` points drawn from the density: a triangle with probability proportional to its mass,
+// then a uniform point inside it.
+std::vector<Vec2> sampleDensity(const Domain& domain, int count, std::uint64_t seed) {
+  const auto& uv = domain.uv();
+  const auto& rho = domain.density();
+  std::vector<double> cumulative;
+  double total = 0;
+  for (const Triangle& t : domain.triangles()) {
+    total += std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]])) *
+             (rho[t[0]] + rho[t[1]] + rho[t[2]]) / 3.0;
+    cumulative.push_back(total);
+  }
+  std::mt19937_64 rng(seed);
+  std::vector<Vec2> points;
+  for (int i = 0; i < count; ++i) {
+    const double pick = uniform01(rng) * total;
+    const size_t t = std::min<size_t>(
+        std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin(),
+        cumulative.size() - 1);
+    double a = uniform01(rng), b = uniform01(rng);
+    if (a + b > 1) {
+      a = 1 - a;
+      b = 1 - b;
+    }
+    const Triangle& tri = domain.triangles()[t];
+    points.push_back(uv[tri[0]] + a * (uv[tri[1]] - uv[tri[0]]) + b * (uv[tri[2]] - uv[tri[0]]));
+  }
+  return points;
+}
+
+}  // namespace
+
+InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const Domain& domain,
+                          const SiteOptions& options) {
+  InitialSites sites;
+  if (options.fromInputVertices) {
+    for (int v : param.boundaryLoop) sites.fixed.push_back(param.uv[v]);
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (!param.onBoundary[v]) {
+        sites.movable.push_back(param.uv[v]);
+        sites.movableVertex.push_back(v);
+      }
+    return sites;
+  }
+  const int count = options.count > 0 ? options.count : mesh.vertexCount();
+  // An equilateral mesh of N vertices has about 2N triangles of area (sqrt 3 / 4) h^2.
+  const double spacing = std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
+  sites.fixed = resampleBorder(mesh, param, spacing);
+  const int inside = std::max(0, count - static_cast<int>(sites.fixed.size()));
+  sites.movable = sampleDensity(domain, inside, options.seed);
+  sites.movableVertex.assign(sites.movable.size(), -1);
+  return sites;
+}
+
+}  // namespace lloydscope

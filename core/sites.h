@@ -1,0 +1,31 @@
+// Where Lloyd relaxation starts: fixed sites on the border, movable sites inside.
+#pragma once
+
+#include "domain.h"
+#include "parameterization.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace lloydscope {
+
+struct SiteOptions {
+  // true: one movable site per inside vertex, the border's own vertices as fixed sites (the
+  // reference's choice, and what the relocate method needs).
+  // false: `count` sites in all (0: as many as the input has vertices), the border resampled at
+  // the spacing that count gives, the inside sampled from the density.
+  bool fromInputVertices = false;
+  int count = 0;
+  std::uint64_t seed = 1;
+};
+
+struct InitialSites {
+  std::vector<Vec2> fixed;      // along the border, counter-clockwise, in order
+  std::vector<Vec2> movable;
+  std::vector<int> movableVertex;  // the input vertex each movable site started at, or -1
+};
+
+InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const Domain& domain,
+                          const SiteOptions& options);
+
+}  // namespace lloydscope

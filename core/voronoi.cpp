@@ -1,0 +1,226 @@
+#include "voronoi.h"
+
+#include "cgal_types.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <thread>
+
+namespace lloydscope {
+
+namespace {
+
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase>;
+using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+constexpr int kDummy = -1;
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Sutherland-Hodgman: the part of a convex polygon left of each edge of a CCW triangle.
+// `scratch` is reused between calls to keep allocation out of the inner loop.
+void clipToTriangle(const std::vector<Vec2>& polygon, const Vec2 (&corner)[3],
+                    std::vector<Vec2>& result, std::vector<Vec2>& scratch) {
+  // Most (cell, triangle) pairs are either disjoint or nested: settle those without clipping.
+  bool allInside = true;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
+    bool anyIn = false, anyOut = false;
+    for (const Vec2& p : polygon) (cross(edge, p - a) >= 0 ? anyIn : anyOut) = true;
+    if (!anyIn) {
+      result.clear();
+      return;
+    }
+    allInside = allInside && !anyOut;
+  }
+  result = polygon;
+  if (allInside) return;
+  for (int k = 0; k < 3 && result.size() >= 3; ++k) {
+    const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
+    scratch.clear();
+    const size_t n = result.size();
+    double sp = cross(edge, result[n - 1] - a);  // walk edges (p, q) from the last vertex
+    for (size_t i = 0; i < n; ++i) {
+      const Vec2 &p = result[(i + n - 1) % n], &q = result[i];
+      const double sq = cross(edge, q - a);
+      if ((sp >= 0) != (sq >= 0)) scratch.push_back(p + (sp / (sp - sq)) * (q - p));
+      if (sq >= 0) scratch.push_back(q);
+      sp = sq;
+    }
+    result.swap(scratch);
+  }
+}
+
+void integrateTriangle(const Vec2 (&p)[3], const double (&rho)[3], const Vec2& site,
+                       PolygonIntegrals& sum) {
+  const double area = 0.5 * cross(p[1] - p[0], p[2] - p[0]);
+  const double rhoSum = rho[0] + rho[1] + rho[2];
+  sum.area += area;
+  sum.mass += area * rhoSum / 3.0;
+  // ∫ x rho = Σ_ij p_i rho_j ∫λiλj, with ∫λiλj = A (1 + δij) / 12.
+  sum.moment += area / 12.0 *
+                ((p[0] + p[1] + p[2]) * rhoSum + rho[0] * p[0] + rho[1] * p[1] + rho[2] * p[2]);
+  // ∫ rho |x - site|^2 = Σ_ijk rho_k (q_i·q_j) ∫λiλjλk with q_i = p_i - site, and
+  // ∫λiλjλk = A (1 + δij + δjk + δik + 2 δijk) / 60, which sums to the closed form below.
+  const Vec2 q[3] = {p[0] - site, p[1] - site, p[2] - site};
+  const Vec2 qSum = q[0] + q[1] + q[2];
+  double squares = 0, weightedDot = 0, weightedSquares = 0;
+  for (int k = 0; k < 3; ++k) {
+    squares += q[k].squaredNorm();
+    weightedDot += rho[k] * q[k].dot(qSum);
+    weightedSquares += rho[k] * q[k].squaredNorm();
+  }
+  const double energy =
+      (rhoSum * (qSum.squaredNorm() + squares) + 2 * weightedDot + 2 * weightedSquares) / 60.0;
+  sum.energy += area * energy;
+}
+
+Delaunay triangulateSites(const std::vector<Vec2>& sites) {
+  Vec2 lo(0, 0), hi(1, 1);
+  for (const Vec2& s : sites) {
+    lo = lo.cwiseMin(s);
+    hi = hi.cwiseMax(s);
+  }
+  // Four far dummy sites make every real cell bounded; their own cells are never used.
+  const Vec2 center = 0.5 * (lo + hi);
+  const double far = 10.0 * std::max((hi - lo).maxCoeff(), 1.0);
+  std::vector<std::pair<Point2, int>> points;
+  points.reserve(sites.size() + 4);
+  for (int i = 0; i < static_cast<int>(sites.size()); ++i)
+    points.emplace_back(Point2(sites[i].x(), sites[i].y()), i);
+  for (int dx : {-1, 1})
+    for (int dy : {-1, 1})
+      points.emplace_back(Point2(center.x() + dx * far, center.y() + dy * far), kDummy);
+  Delaunay dt;
+  dt.insert(points.begin(), points.end());  // spatially sorted inside
+  return dt;
+}
+
+std::vector<Vec2> voronoiPolygon(const Delaunay& dt, Delaunay::Vertex_handle v) {
+  std::vector<Vec2> polygon;
+  auto face = dt.incident_faces(v), end = face;
+  do {
+    const Point2 c = dt.circumcenter(face);
+    const Vec2 p(c.x(), c.y());
+    if (polygon.empty() || p != polygon.back()) polygon.push_back(p);
+  } while (++face != end);
+  while (polygon.size() > 1 && polygon.front() == polygon.back()) polygon.pop_back();
+  return polygon;
+}
+
+// Buffers reused from cell to cell.
+struct Workspace {
+  std::vector<int> visitedBy, queue;
+  std::vector<Vec2> piece, scratch;
+  std::vector<double> rho;
+  std::vector<std::pair<int, PolygonIntegrals>> parts;  // (triangle, integrals of the piece)
+};
+
+// Visits, breadth first through shared edges, the parameter triangles that the cell overlaps,
+// starting from `start`, the one that holds the site, and integrates cell ∩ triangle for each.
+// The parts are summed in triangle order, so the result does not depend on where the walk
+// started: a cell recomputed later is bit-identical.
+void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, const Vec2& site,
+                      int start, int cellId, bool keepGeometry, Workspace& w,
+                      BoundedCell& cell) {
+  w.queue.assign(1, start);
+  w.visitedBy[start] = cellId;
+  w.parts.clear();
+  for (size_t head = 0; head < w.queue.size(); ++head) {
+    const int t = w.queue[head];
+    const Triangle& tri = domain.triangles()[t];
+    const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
+    clipToTriangle(voronoi, corner, w.piece, w.scratch);
+    if (w.piece.size() < 3) continue;
+    w.rho.resize(w.piece.size());
+    for (size_t i = 0; i < w.piece.size(); ++i) w.rho[i] = domain.densityAt(t, w.piece[i]);
+    const PolygonIntegrals part = integratePolygon(w.piece, w.rho, site);
+    if (part.area <= 0) continue;
+    w.parts.emplace_back(t, part);
+    if (keepGeometry) cell.pieces.push_back({t, w.piece});
+    for (int n : domain.neighbours()[t])
+      if (n >= 0 && w.visitedBy[n] != cellId) {
+        w.visitedBy[n] = cellId;
+        w.queue.push_back(n);
+      }
+  }
+  std::sort(w.parts.begin(), w.parts.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  PolygonIntegrals sum;
+  for (const auto& [triangle, part] : w.parts) {
+    sum.area += part.area;
+    sum.mass += part.mass;
+    sum.moment += part.moment;
+    sum.energy += part.energy;
+  }
+  if (keepGeometry)
+    std::sort(cell.pieces.begin(), cell.pieces.end(),
+              [](const CellPiece& a, const CellPiece& b) { return a.triangle < b.triangle; });
+  cell.area = sum.area;
+  cell.mass = sum.mass;
+  cell.energy = sum.energy;
+  cell.centroid = sum.mass > 0 ? Vec2(sum.moment / sum.mass) : site;
+}
+
+}  // namespace
+
+PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
+                                  const std::vector<double>& density, const Vec2& site) {
+  PolygonIntegrals sum;
+  for (size_t i = 1; i + 1 < polygon.size(); ++i) {
+    const Vec2 p[3] = {polygon[0], polygon[i], polygon[i + 1]};
+    const double rho[3] = {density[0], density[i], density[i + 1]};
+    integrateTriangle(p, rho, site, sum);
+  }
+  return sum;
+}
+
+std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
+                                      bool keepGeometry, std::vector<int>* hints) {
+  std::vector<BoundedCell> cells(sites.size());
+  for (size_t i = 0; i < sites.size(); ++i) cells[i].centroid = sites[i];
+  if (sites.empty() || domain.triangles().empty()) return cells;
+  if (hints) hints->resize(sites.size(), -1);
+  const Delaunay dt = triangulateSites(sites);
+  // A site that coincides with an earlier one has no vertex of its own: its cell stays empty.
+  std::vector<Delaunay::Vertex_handle> vertices;
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    if (v->info() != kDummy) vertices.push_back(v);
+
+  // Cells are independent: split them over the cores. Each cell's numbers do not depend on
+  // which thread computed it.
+  auto work = [&](size_t begin, size_t end) {
+    Workspace w;
+    w.visitedBy.assign(domain.triangles().size(), -1);
+    for (size_t k = begin; k < end; ++k) {
+      const Delaunay::Vertex_handle v = vertices[k];
+      const int id = v->info();
+      const int hint = hints ? (*hints)[id] : -1;
+      const int start =
+          (hint >= 0 ? domain.locate(sites[id], hint) : domain.locate(sites[id])).triangle;
+      if (hints) (*hints)[id] = start;
+      BoundedCell& cell = cells[id];
+      const std::vector<Vec2> polygon = voronoiPolygon(dt, v);
+      clipAndIntegrate(domain, polygon, sites[id], start, id, keepGeometry, w, cell);
+      if (keepGeometry) {
+        cell.voronoi = polygon;
+        auto n = dt.incident_vertices(v), end = n;
+        do {
+          if (!dt.is_infinite(n) && n->info() != kDummy) cell.neighbours.push_back(n->info());
+        } while (++n != end);
+      }
+    }
+  };
+  const size_t threads =
+      vertices.size() < 500 ? 1 : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t)
+    pool.emplace_back(work, vertices.size() * t / threads, vertices.size() * (t + 1) / threads);
+  work(0, vertices.size() / threads);
+  for (std::thread& thread : pool) thread.join();
+  return cells;
+}
+
+}  // namespace lloydscope

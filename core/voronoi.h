@@ -1,0 +1,45 @@
+// Voronoi cells of a set of sites, bounded by the parameter domain, with their exact mass,
+// centroid and energy under the domain's piecewise-linear density.
+#pragma once
+
+#include "domain.h"
+
+#include <vector>
+
+namespace lloydscope {
+
+struct CellPiece {
+  int triangle;                // the parameter triangle this piece lies in
+  std::vector<Vec2> polygon;   // Voronoi cell ∩ that triangle, counter-clockwise
+};
+
+struct BoundedCell {
+  // Geometry, filled only when asked for (the solver needs just the integrals).
+  std::vector<Vec2> voronoi;        // the whole Voronoi cell, counter-clockwise (not clipped)
+  std::vector<CellPiece> pieces;    // its parts inside the domain, one per parameter triangle
+  std::vector<int> neighbours;      // sites whose cells share an edge with this one
+
+  double area = 0;    // of cell ∩ domain, in the parameter domain
+  double mass = 0;    // ∫ rho over cell ∩ domain
+  Vec2 centroid = Vec2::Zero();  // ∫ x rho / mass; the site itself when the mass is 0
+  double energy = 0;  // ∫ rho |x - site|^2: the cell's share of the CVT energy
+};
+
+// Exact integrals of a density that is linear over a convex polygon: the polygon is split into
+// a fan of triangles, each integrated in closed form (formula (1) of the reference). With a
+// constant density they are the shoelace area and centroid, formulas (2)-(4).
+struct PolygonIntegrals {
+  double area = 0, mass = 0, energy = 0;
+  Vec2 moment = Vec2::Zero();  // ∫ x rho
+};
+// density(i) is the density at polygon[i]; energy is taken about `site`.
+PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
+                                  const std::vector<double>& density, const Vec2& site);
+
+// Cells of all `sites`, in their order. Deterministic: the same sites give bit-identical cells,
+// whatever the hints. `hints`, if given, holds for each site a triangle near it (or -1) and
+// receives the triangle that holds it: pass it back next iteration to skip the spatial search.
+std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
+                                      bool keepGeometry, std::vector<int>* hints = nullptr);
+
+}  // namespace lloydscope

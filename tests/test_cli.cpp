@@ -1,0 +1,139 @@
+// The command line as a user meets it: exit codes, one-line errors, JSON, files left alone.
+#include "test_support.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <sys/wait.h>
+
+using namespace lloydscope;
+
+namespace {
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun runCli(const std::string& args) {
+  const std::string out = test::tempPath("cli.out"), err = test::tempPath("cli.err");
+  const int status = std::system((std::string(LLOYDSCOPE_CLI) + " " + args + " >" + out + " 2>" + err).c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::readText(out), test::readText(err)};
+}
+
+// Exits with 1 (an Error, not a crash or an internal error) and one line naming the file.
+void expectCleanFailure(const std::string& file, const std::string& contents,
+                        const std::string& words) {
+  const std::string path = test::tempPath(file);
+  test::writeText(path, contents);
+  const CliRun r = runCli("remesh " + path + " -o " + test::tempPath("never.off"));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+}
+
+const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
+}  // namespace
+
+TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
+  const std::string out = test::tempPath("grid_out.ply");
+  const std::string rec = test::tempPath("grid.lsrec");
+  const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") + " -o " + out +
+                           " --record " + rec + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["converged"].get<bool>());
+  EXPECT_EQ(j["input"]["vertices"], 441);
+  EXPECT_GT(j["output"]["avg_min_angle_deg"].get<double>(), 50.0);
+  EXPECT_GE(j["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>(), 0.0);
+  for (const char* stage : {"parameterize", "density", "lloyd", "remesh", "metrics", "total"})
+    EXPECT_TRUE(j["milliseconds"].contains(stage)) << stage;
+  EXPECT_EQ(j["settings"]["param"], "auto");
+  EXPECT_EQ(j["settings"]["param_used"], "lscm");
+
+  const CliRun metrics = runCli("metrics " + out + " --reference " +
+                                 test::assetPath("jittered_grid.off") + " --json");
+  ASSERT_EQ(metrics.code, 0) << metrics.err;
+  EXPECT_EQ(nlohmann::json::parse(metrics.out)["faces"], j["output"]["faces"]);
+
+  const CliRun info = runCli("info " + rec + " --json");
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_EQ(nlohmann::json::parse(info.out)["iterations"].size(), j["iterations"].get<size_t>());
+}
+
+TEST(Cli, ReferencePresetPrintsTheTable) {
+  const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") +
+                           " --preset reference --max-iterations 5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("param=authalic border=square density=uniform"), std::string::npos);
+  EXPECT_NE(r.out.find("Avg. min angle"), std::string::npos);
+  EXPECT_NE(r.out.find("Irregularity"), std::string::npos);
+}
+
+TEST(Cli, MissingFile) {
+  const CliRun r = runCli("remesh /no/such/mesh.off -o x.off");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("/no/such/mesh.off"), std::string::npos) << r.err;
+}
+
+TEST(Cli, Garbage) { expectCleanFailure("garbage.off", "\x01\x02garbage\xff\n", "bad header"); }
+TEST(Cli, Empty) { expectCleanFailure("empty.obj", "", "empty"); }
+TEST(Cli, Truncated) { expectCleanFailure("cut.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n", "truncated"); }
+TEST(Cli, NaN) {
+  expectCleanFailure("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", "non-finite");
+}
+TEST(Cli, IndexOutOfRange) {
+  expectCleanFailure("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "vertex 7");
+}
+TEST(Cli, Degenerate) {
+  expectCleanFailure("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n", "zero area");
+}
+TEST(Cli, DuplicateVertices) {
+  expectCleanFailure("dup.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 0 3 2\n",
+                     "same position");
+}
+TEST(Cli, NonManifoldEdge) {
+  expectCleanFailure("fin.off",
+                     "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
+                     "shared by 3 faces");
+}
+TEST(Cli, NotADisk) {
+  expectCleanFailure("tet.off",
+                     "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n",
+                     "closed");
+}
+TEST(Cli, TwoComponents) {
+  expectCleanFailure("two.off",
+                     "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n",
+                     "2 connected components");
+}
+
+TEST(Cli, TruncatedRecording) {
+  const std::string rec = test::tempPath("cli_cut.lsrec");
+  ASSERT_EQ(runCli("remesh " + test::assetPath("jittered_grid.off") +
+                       " --max-iterations 3 --no-fidelity --record " + rec).code, 0);
+  const std::string bytes = test::readText(rec);
+  test::writeText(rec, bytes.substr(0, bytes.size() - 100));
+  const CliRun r = runCli("info " + rec);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
+}
+
+TEST(Cli, AFailedRunLeavesTheUsersFileAlone) {
+  const std::string out = test::tempPath("precious.off");
+  test::writeText(out, kTriangle);
+  const std::string bad = test::tempPath("bad.off");
+  test::writeText(bad, "OFF\n3 1 0\n0 0 0\n");
+  EXPECT_EQ(runCli("remesh " + bad + " -o " + out).code, 1);
+  EXPECT_EQ(test::readText(out), kTriangle);
+}
+
+TEST(Cli, UnknownOptionValues) {
+  const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") + " --param nope");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("unknown parameterization 'nope'"), std::string::npos) << r.err;
+  EXPECT_NE(runCli("remesh " + test::assetPath("jittered_grid.off") +
+                       " --method relocate --sites 100").code, 0);
+}

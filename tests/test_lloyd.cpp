@@ -1,0 +1,77 @@
+#include "lloyd.h"
+#include "test_support.h"
+
+using namespace lloydscope;
+
+namespace {
+Domain unitSquare() {
+  return Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {});
+}
+}  // namespace
+
+class FourSites : public ::testing::TestWithParam<CvtSolver> {};
+
+TEST_P(FourSites, ConvergeToTheCentresOfThe2x2Grid) {
+  const Domain domain = unitSquare();
+  LloydOptions options;
+  options.solver = GetParam();
+  options.percentThreshold = 1e-9;  // every site must be still
+  LloydSolver solver(domain, {}, {{0.1, 0.2}, {0.6, 0.1}, {0.3, 0.55}, {0.9, 0.8}}, options);
+  solver.run();
+  ASSERT_TRUE(solver.converged());
+  std::vector<Vec2> sites = solver.movableSites();
+  std::sort(sites.begin(), sites.end(), [](const Vec2& a, const Vec2& b) {
+    return a.y() < b.y() - 1e-3 || (std::abs(a.y() - b.y()) < 1e-3 && a.x() < b.x());
+  });
+  const std::vector<Vec2> expected = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
+  for (size_t i = 0; i < 4; ++i) EXPECT_NEAR((sites[i] - expected[i]).norm(), 0.0, 1e-5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, FourSites,
+                         ::testing::Values(CvtSolver::Lloyd, CvtSolver::Lbfgs));
+
+TEST(Lloyd, EnergyNeverIncreasesAndSitesMoveToCentroids) {
+  const Domain domain = unitSquare();
+  LloydOptions options;
+  options.solver = CvtSolver::Lloyd;
+  options.maxIterations = 30;
+  std::vector<Vec2> sites;
+  for (int i = 0; i < 30; ++i) sites.emplace_back(0.05 + 0.03 * i, 0.5 + 0.4 * std::sin(i));
+  LloydSolver solver(domain, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, sites, options);
+  solver.run();
+  const auto& its = solver.iterations();
+  ASSERT_EQ(its.size(), 30u);
+  for (size_t k = 1; k < its.size(); ++k) {
+    EXPECT_LE(its[k].energy, its[k - 1].energy * (1 + 1e-12));
+    EXPECT_EQ(its[k].sites, its[k - 1].centroids);  // Lloyd: site <- centroid, exactly
+    EXPECT_EQ(its[k].index, static_cast<int>(k));
+  }
+  EXPECT_EQ(solver.fixedSites().size(), 4u);
+}
+
+TEST(Lloyd, LbfgsReachesALowerEnergyInFewerIterations) {
+  const Domain domain = unitSquare();
+  std::vector<Vec2> sites;
+  for (int i = 0; i < 60; ++i) sites.emplace_back(0.5 + 0.45 * std::cos(i * 2.4) * i / 60.0,
+                                                  0.5 + 0.45 * std::sin(i * 2.4) * i / 60.0);
+  LloydOptions options;
+  options.maxIterations = 40;
+  options.solver = CvtSolver::Lloyd;
+  LloydSolver lloyd(domain, {}, sites, options);
+  lloyd.run();
+  options.solver = CvtSolver::Lbfgs;
+  LloydSolver lbfgs(domain, {}, sites, options);
+  lbfgs.run();
+  EXPECT_LT(lbfgs.iterations().back().energy, lloyd.iterations().back().energy);
+}
+
+TEST(Lloyd, ConvergenceUsesBothThresholds) {
+  const Domain domain = unitSquare();
+  LloydOptions options;
+  options.solver = CvtSolver::Lloyd;
+  options.distanceThreshold = 0.5;  // nobody moves that far: converged after one iteration
+  LloydSolver solver(domain, {}, {{0.1, 0.1}, {0.9, 0.9}}, options);
+  solver.run();
+  EXPECT_EQ(solver.iterations().size(), 1u);
+  EXPECT_TRUE(solver.converged());
+}

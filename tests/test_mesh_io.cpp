@@ -1,0 +1,548 @@
+// Reading, validating and writing meshes: one test per kind of bad input, round trips for every
+// format, and a crude fuzz test (random bytes and cut-off files must give an Error, not a crash).
+
+#include "mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace lloydscope {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string tempPath(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "lloydscope_mesh_io";
+  fs::create_directories(dir);
+  return (dir / name).string();
+}
+
+std::string writeFile(const std::string& name, const std::string& content) {
+  const std::string path = tempPath(name);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << content;
+  return path;
+}
+
+// The message of the Error readMesh() throws, or "" when it throws none.
+std::string readError(const std::string& path) {
+  try {
+    readMesh(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Reading `path` fails with a one-line message that starts with the path and contains `word`.
+void expectReadError(const std::string& path, const std::string& word) {
+  const std::string message = readError(path);
+  ASSERT_FALSE(message.empty()) << "no error for " << path;
+  EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find(word), std::string::npos) << "'" << word << "' missing from: " << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+void expectFileError(const std::string& name, const std::string& content, const std::string& word) {
+  SCOPED_TRACE(name);
+  expectReadError(writeFile(name, content), word);
+}
+
+std::string validateError(const Mesh& mesh) {
+  try {
+    validateMesh(mesh, "mesh");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Binary encoders for the hand-written binary files.
+template <class T>
+void append(std::string& out, T value, bool bigEndian) {
+  unsigned char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  const std::uint16_t one = 1;
+  const bool hostLittle = *reinterpret_cast<const unsigned char*>(&one) == 1;
+  if (bigEndian == hostLittle) std::reverse(bytes, bytes + sizeof(T));
+  out.append(reinterpret_cast<const char*>(bytes), sizeof(T));
+}
+
+// A unit square of two triangles (ASCII OFF), the smallest valid input.
+const char* const kSquareOff =
+    "OFF\n"
+    "4 2 0\n"
+    "0 0 0\n"
+    "1 0 0\n"
+    "1 1 0\n"
+    "0 1 0\n"
+    "3 0 1 2\n"
+    "3 0 2 3\n";
+
+std::string binaryOffSquare() {
+  std::string data = "OFF BINARY\n";
+  for (std::int32_t count : {4, 2, 0}) append(data, count, true);
+  const float xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (const auto& p : xyz) {
+    for (float c : p) append(data, c, true);
+  }
+  const std::int32_t faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  for (const auto& f : faces) {
+    append<std::int32_t>(data, 3, true);
+    for (std::int32_t v : f) append(data, v, true);
+    append<std::int32_t>(data, 0, true);  // no colour
+  }
+  return data;
+}
+
+// Little- or big-endian PLY with extra vertex properties of several types, a second list in the
+// face element and an extra element, all of which must be skipped by their type sizes.
+std::string binaryPlySquare(bool bigEndian) {
+  std::string data = std::string("ply\nformat ") + (bigEndian ? "binary_big_endian" : "binary_little_endian") +
+                     " 1.0\n"
+                     "comment written by hand\n"
+                     "element vertex 4\n"
+                     "property uchar flags\n"
+                     "property double x\n"
+                     "property double y\n"
+                     "property float z\n"
+                     "property short label\n"
+                     "property list uchar float weights\n"
+                     "element face 2\n"
+                     "property list int uint vertex_index\n"
+                     "property list uchar float texcoord\n"
+                     "element edge 1\n"
+                     "property int vertex1\n"
+                     "property int vertex2\n"
+                     "end_header\n";
+  const double xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.25}};
+  for (const auto& p : xyz) {
+    append<std::uint8_t>(data, 7, bigEndian);
+    append<double>(data, p[0], bigEndian);
+    append<double>(data, p[1], bigEndian);
+    append<float>(data, static_cast<float>(p[2]), bigEndian);
+    append<std::int16_t>(data, -3, bigEndian);
+    append<std::uint8_t>(data, 2, bigEndian);
+    append<float>(data, 0.5f, bigEndian);
+    append<float>(data, 1.5f, bigEndian);
+  }
+  const std::uint32_t faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  for (const auto& f : faces) {
+    append<std::int32_t>(data, 3, bigEndian);
+    for (std::uint32_t v : f) append(data, v, bigEndian);
+    append<std::uint8_t>(data, 6, bigEndian);
+    for (int k = 0; k < 6; ++k) append<float>(data, 0.0f, bigEndian);
+  }
+  append<std::int32_t>(data, 0, bigEndian);
+  append<std::int32_t>(data, 1, bigEndian);
+  return data;
+}
+
+void expectUnitSquare(const Mesh& mesh, double lastZ = 0.0) {
+  ASSERT_EQ(mesh.vertexCount(), 4);
+  ASSERT_EQ(mesh.faceCount(), 2);
+  EXPECT_EQ(mesh.points[2], Vec3(1, 1, 0));
+  EXPECT_EQ(mesh.points[3], Vec3(0, 1, lastZ));
+  EXPECT_EQ(mesh.triangles[0], (Triangle{0, 1, 2}));
+  EXPECT_EQ(mesh.triangles[1], (Triangle{0, 2, 3}));
+}
+
+// Coordinates that only survive a round trip with all 17 significant digits.
+Mesh awkwardMesh() {
+  Mesh mesh;
+  mesh.points = {{0.1, 1.0 / 3.0, -2.0 / 7.0}, {1e-300 + 1.0, 0.2, 3.14159265358979}, {0.7, 1e10 / 3.0, 0.3},
+                 {-5.5, 0.123456789012345678, 1.0 / 9.0}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return mesh;
+}
+
+// ----------------------------------------------------------------------------- valid inputs
+
+TEST(MeshIo, ReadsAsciiOffWithCommentsAndColours) {
+  const std::string path = writeFile("comments.off",
+                                     "# a comment before the header\n"
+                                     "OFF # keyword\n"
+                                     "\n"
+                                     "# counts next\n"
+                                     "4 2 5\n"
+                                     "0 0 0\n"
+                                     "1 0 0   # a vertex\n"
+                                     "1 1 0\n"
+                                     "0 1 0\r\n"
+                                     "3 0 1 2 255 0 0\n"
+                                     "3 0 2 3\n"
+                                     "\n# trailing comment\n");
+  const ReadResult result = readMesh(path);
+  expectUnitSquare(result.mesh);
+  EXPECT_TRUE(result.notes.empty());
+}
+
+TEST(MeshIo, ReadsOffVariantsAndCountsOnTheKeywordLine) {
+  expectUnitSquare(readMesh(writeFile("counts.off", "OFF 4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3"))
+                       .mesh);
+  expectUnitSquare(readMesh(writeFile("colours.COFF.off",
+                                      "COFF\n4 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n1 1 0 1 0 0 1\n"
+                                      "0 1 0 1 0 0 1\n3 0 1 2\n3 0 2 3\n"))
+                       .mesh);
+}
+
+TEST(MeshIo, ReadsHandWrittenBinaryOff) {
+  const ReadResult result = readMesh(writeFile("square_binary.off", binaryOffSquare()));
+  expectUnitSquare(result.mesh);
+}
+
+TEST(MeshIo, ReadsObjWithSlashesNegativeIndicesAndQuads) {
+  const std::string path = writeFile("quads.obj",
+                                     "# two quads side by side\n"
+                                     "mtllib none.mtl\n"
+                                     "o grid\n"
+                                     "v 0 0 0\nv 1 0 0\nv 2 0 0\n"
+                                     "v 0 1 0\nv 1 1 0\nv 2 1 0\n"
+                                     "vt 0 0\nvn 0 0 1\n"
+                                     "s off\n"
+                                     "f 1/1/1 2/1/1 5/1/1 4/1/1\n"
+                                     "f -5//1 -4//1 -1//1 -2//1\n");
+  const ReadResult result = readMesh(path);
+  EXPECT_EQ(result.mesh.vertexCount(), 6);
+  EXPECT_EQ(result.mesh.faceCount(), 4);
+  ASSERT_EQ(result.notes.size(), 1u);
+  EXPECT_EQ(result.notes[0], path + ": 2 polygons with more than 3 vertices were triangulated");
+  // All triangles keep the quads' counter-clockwise orientation.
+  for (const Triangle& t : result.mesh.triangles) {
+    const Vec3 n = (result.mesh.points[t[1]] - result.mesh.points[t[0]])
+                       .cross(result.mesh.points[t[2]] - result.mesh.points[t[0]]);
+    EXPECT_GT(n.z(), 0.0);
+  }
+}
+
+TEST(MeshIo, ConvexPolygonWithStraightCornerGetsNoZeroAreaTriangle) {
+  // Vertex 1 lies on the side from 0 to 2: a fan from vertex 0 would make triangle 0-1-2 flat.
+  const std::string path = writeFile("pentagon.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n2 0 0\n2 2 0\n0 2 0\n5 0 1 2 3 4\n");
+  const ReadResult result = readMesh(path);
+  EXPECT_EQ(result.mesh.faceCount(), 3);
+  ASSERT_EQ(result.notes.size(), 1u);
+  EXPECT_EQ(result.notes[0], path + ": 1 polygon with more than 3 vertices was triangulated");
+}
+
+TEST(MeshIo, ReadsAsciiPlyWithExtraPropertiesAndElements) {
+  const std::string path = writeFile("square_ascii.ply",
+                                     "ply\n"
+                                     "format ascii 1.0\n"
+                                     "comment hand written\n"
+                                     "element vertex 4\n"
+                                     "property float x\n"
+                                     "property uchar red\n"
+                                     "property float y\n"
+                                     "property double z\n"
+                                     "element face 2\n"
+                                     "property list uchar int vertex_indices\n"
+                                     "property int flags\n"
+                                     "element material 1\n"
+                                     "property list int float values\n"
+                                     "end_header\n"
+                                     "0 255 0 0\n1 255 0 0\n1 255 1 0\n0 255 1 0.25\n"
+                                     "3 0 1 2 9\n3 0 2 3 9\n"
+                                     "2 0.5 0.75\n");
+  expectUnitSquare(readMesh(path).mesh, 0.25);
+}
+
+TEST(MeshIo, ReadsBinaryLittleEndianPly) {
+  expectUnitSquare(readMesh(writeFile("square_le.ply", binaryPlySquare(false))).mesh, 0.25);
+}
+
+TEST(MeshIo, ReadsBinaryBigEndianPly) {
+  expectUnitSquare(readMesh(writeFile("square_be.ply", binaryPlySquare(true))).mesh, 0.25);
+}
+
+TEST(MeshIo, ExtensionIsCaseInsensitive) {
+  expectUnitSquare(readMesh(writeFile("upper.OFF", kSquareOff)).mesh);
+}
+
+TEST(MeshIo, RemovesUnreferencedVerticesWithANote) {
+  const std::string path =
+      writeFile("unused.off", "OFF\n6 2 0\n9 9 9\n0 0 0\n1 0 0\n5 5 5\n1 1 0\n0 1 0\n3 1 2 4\n3 1 4 5\n");
+  const ReadResult result = readMesh(path);
+  expectUnitSquare(result.mesh);
+  ASSERT_EQ(result.notes.size(), 1u);
+  EXPECT_EQ(result.notes[0], path + ": 2 vertices used by no face were removed");
+}
+
+// -------------------------------------------------------------------------------- round trips
+
+void expectRoundTrip(const std::string& name) {
+  SCOPED_TRACE(name);
+  const Mesh mesh = awkwardMesh();
+  const std::string path = tempPath(name);
+  writeMesh(mesh, path);
+  EXPECT_FALSE(fs::exists(path + ".tmp"));
+  const ReadResult result = readMesh(path);
+  EXPECT_TRUE(result.notes.empty());
+  EXPECT_EQ(result.mesh.triangles, mesh.triangles);
+  ASSERT_EQ(result.mesh.points.size(), mesh.points.size());
+  for (size_t i = 0; i < mesh.points.size(); ++i) EXPECT_EQ(result.mesh.points[i], mesh.points[i]) << i;
+}
+
+TEST(MeshIo, RoundTripOff) { expectRoundTrip("round.off"); }
+TEST(MeshIo, RoundTripObj) { expectRoundTrip("round.obj"); }
+TEST(MeshIo, RoundTripPly) { expectRoundTrip("round.ply"); }
+
+TEST(MeshIo, WriteReplacesAnExistingFile) {
+  const std::string path = writeFile("replace.off", "old content");
+  writeMesh(awkwardMesh(), path);
+  EXPECT_EQ(readMesh(path).mesh.faceCount(), 2);
+}
+
+TEST(MeshIo, WriteFailuresSayCannotWriteAndLeaveNoTemporaryFile) {
+  const std::string missingDir = tempPath("no_such_dir") + "/out.off";
+  try {
+    writeMesh(awkwardMesh(), missingDir);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(missingDir + ": cannot write", 0), 0u) << e.what();
+  }
+  const std::string badExtension = tempPath("out.stl");
+  try {
+    writeMesh(awkwardMesh(), badExtension);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(badExtension + ": cannot write", 0), 0u) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(badExtension + ".tmp"));
+  // Renaming onto a directory fails after the temporary file was written: it must be removed.
+  const std::string directory = tempPath("a_directory.off");
+  fs::create_directories(directory + "/inside");
+  EXPECT_THROW(writeMesh(awkwardMesh(), directory), Error);
+  EXPECT_FALSE(fs::exists(directory + ".tmp"));
+}
+
+// ------------------------------------------------------------------ one test per kind of error
+
+TEST(MeshIoErrors, MissingFile) { expectReadError(tempPath("does_not_exist.off"), "no such file"); }
+
+TEST(MeshIoErrors, DirectoryIsNotAMesh) {
+  const std::string path = tempPath("folder.obj");
+  fs::create_directories(path);
+  expectReadError(path, "directory");
+}
+
+TEST(MeshIoErrors, UnreadableFile) {
+  if (geteuid() == 0) GTEST_SKIP() << "root can read any file";
+  const std::string path = writeFile("unreadable.off", kSquareOff);
+  fs::permissions(path, fs::perms::none);
+  expectReadError(path, "cannot read");
+  fs::permissions(path, fs::perms::owner_all);
+}
+
+TEST(MeshIoErrors, EmptyFile) {
+  expectFileError("empty.off", "", "empty");
+  expectFileError("blank.ply", " \n\n", "empty");
+}
+
+TEST(MeshIoErrors, UnknownExtension) {
+  expectFileError("mesh.stl", kSquareOff, "unknown extension '.stl'");
+  expectFileError("mesh", kSquareOff, "no extension");
+}
+
+TEST(MeshIoErrors, BadHeader) {
+  expectFileError("header.off", "OFX\n3 1 0\n", "bad header");
+  expectFileError("counts.off", "OFF\n4 two 0\n", "bad header");
+  expectFileError("negative.off", "OFF\n-4 2 0\n", "bad header");
+  expectFileError("header.ply", "plx\nformat ascii 1.0\nend_header\n", "bad header");
+  expectFileError("format.ply", "ply\nformat ascii 2.0\nend_header\n", "bad header");
+  expectFileError("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n",
+                  "unknown property type");
+  expectFileError("noend.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", "end_header");
+  expectFileError("noz.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                  "element face 0\nproperty list uchar int vertex_indices\nend_header\n0 0\n",
+                  "no 'z' property");
+}
+
+TEST(MeshIoErrors, TruncatedFile) {
+  expectFileError("few_vertices.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n", "truncated");
+  expectFileError("few_faces.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n", "truncated");
+  expectFileError("few_faces.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                  "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1\n",
+                  "truncated");
+  const std::string binaryOff = binaryOffSquare();
+  expectFileError("cut_binary.off", binaryOff.substr(0, binaryOff.size() - 6), "truncated");
+  const std::string binaryPly = binaryPlySquare(false);
+  expectFileError("cut_binary.ply", binaryPly.substr(0, binaryPly.size() - 3), "truncated");
+}
+
+TEST(MeshIoErrors, AbsurdCountsAreRefusedBeforeAllocating) {
+  expectFileError("huge.off", "OFF\n2000000000 2000000000 0\n0 0 0\n", "truncated");
+  std::string binary = "OFF BINARY\n";
+  for (std::int32_t count : {2000000000, 2000000000, 0}) append(binary, count, true);
+  expectFileError("huge_binary.off", binary, "truncated");
+  expectFileError("huge.ply",
+                  "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty double x\n"
+                  "property double y\nproperty double z\nelement face 1\n"
+                  "property list int int vertex_indices\nend_header\n",
+                  "truncated");
+  // A face claiming a huge list length.
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
+  append<std::int32_t>(ply, 1000000000, false);
+  append<std::int32_t>(ply, 0, false);
+  expectFileError("huge_list.ply", ply, "truncated");
+  expectFileError("huge_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", "should have");
+}
+
+TEST(MeshIoErrors, MoreDataThanTheHeaderSays) {
+  expectFileError("extra.off", std::string(kSquareOff) + "3 1 2 3\n", "header says 2 faces but the file has more data");
+  expectFileError("extra_binary.off", binaryOffSquare() + "garbage", "more data");
+  expectFileError("extra.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                  "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n",
+                  "more data");
+}
+
+TEST(MeshIoErrors, NumberDoesNotParse) {
+  expectFileError("word.off", "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", "line 4: 'x' is not a number");
+  expectFileError("suffix.obj", "v 0 0 0\nv 1 0 0abc\nv 0 1 0\nf 1 2 3\n", "'0abc' is not a number");
+  expectFileError("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", "'1.5' is not an integer");
+  expectFileError("index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 b 3\n", "'b' is not a vertex index");
+  expectFileError("word.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                  "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n",
+                  "'zero' is not a number");
+}
+
+TEST(MeshIoErrors, NonFiniteCoordinate) {
+  expectFileError("nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n", "vertex 2 has a non-finite coordinate");
+  expectFileError("inf.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", "vertex 2 has a non-finite coordinate");
+}
+
+TEST(MeshIoErrors, FaceIndexOutOfRange) {
+  expectFileError("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 900\n",
+                  "face 0 uses vertex 900 but there are 3 vertices");
+  expectFileError("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "uses vertex -1");
+  // OBJ messages count from 1, like the file.
+  expectFileError("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 9\n",
+                  "face 2 uses vertex 9 but there are 3 vertices");
+  expectFileError("relative.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n", "face 1 uses vertex -3");
+  expectFileError("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "uses vertex 0");
+}
+
+TEST(MeshIoErrors, FaceWithTooFewVertices) {
+  expectFileError("two.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "face 0 has 2 vertices");
+  expectFileError("two.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\n", "face 2 has 2 vertices");
+}
+
+TEST(MeshIoErrors, RepeatedVertexInAFace) {
+  expectFileError("repeat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", "face 0 uses vertex 1 twice");
+}
+
+TEST(MeshIoErrors, ZeroAreaFace) {
+  expectFileError("flat.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0.3 0.7 0\n3 0 1 2\n3 1 3 2\n",
+                  "face 1 has zero area");
+  // A polygon with all corners on a line: the message names the polygon as the file numbers it.
+  expectFileError("flat_polygon.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nv 4 0 0\nf 1 2 3\nf 4 5 6 2\n",
+                  "face 2 has zero area");
+}
+
+TEST(MeshIoErrors, DuplicateVertices) {
+  expectFileError("duplicate.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 0 3 2\n",
+                  "vertices 1 and 3 are at the same position");
+}
+
+TEST(MeshIoErrors, NonManifoldEdge) {
+  expectFileError("fin.off",
+                  "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
+                  "edge 0-1 is shared by 3 faces");
+}
+
+TEST(MeshIoErrors, NonManifoldVertex) {
+  // Two triangles touching only at vertex 0 (a bow tie).
+  expectFileError("bowtie.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n",
+                  "vertex 0 is non-manifold (two fans of faces meet there)");
+}
+
+TEST(MeshIoErrors, InconsistentOrientation) {
+  expectFileError("flipped.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n",
+                  "faces 0 and 1 have opposite orientations across edge 0-2");
+}
+
+TEST(MeshIoErrors, NoFaces) {
+  expectFileError("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "the mesh has no faces");
+  expectFileError("points.obj", "v 0 0 0\nv 1 0 0\n", "no faces");
+  expectFileError("points.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                  "property float z\nend_header\n0 0 0\n",
+                  "no faces");
+}
+
+TEST(MeshIoErrors, BinaryDataInATextObj) {
+  expectFileError("binary.obj", std::string("v 0 0 0\n\0\x01\x02", 11), "binary");
+}
+
+// Random bytes, random bytes after a valid header, and valid files cut at every length must all
+// give an Error (or, for some cuts, a valid mesh) and never crash, hang or allocate wildly.
+TEST(MeshIoErrors, GarbageNeverCrashes) {
+  std::mt19937 random(12345);
+  const std::vector<std::pair<std::string, std::string>> seeds = {
+      {"fuzz.off", kSquareOff},
+      {"fuzz_binary.off", binaryOffSquare()},
+      {"fuzz.ply", binaryPlySquare(false)},
+      {"fuzz_be.ply", binaryPlySquare(true)},
+      {"fuzz.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"}};
+  for (const auto& [name, valid] : seeds) {
+    const std::string path = tempPath(name);
+    for (size_t cut = 0; cut < valid.size(); ++cut) {
+      writeFile(name, valid.substr(0, cut));
+      try {
+        readMesh(path);
+      } catch (const Error&) {
+      }
+    }
+    for (int round = 0; round < 200; ++round) {
+      std::string bytes = valid;
+      const int flips = 1 + static_cast<int>(random() % 8);
+      for (int k = 0; k < flips; ++k) bytes[random() % bytes.size()] = static_cast<char>(random() % 256);
+      writeFile(name, bytes);
+      try {
+        readMesh(path);
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------- validateMesh
+
+TEST(ValidateMesh, AcceptsAValidMeshAndRefusesAnUnusedVertex) {
+  Mesh mesh = awkwardMesh();
+  EXPECT_EQ(validateError(mesh), "");
+  mesh.points.emplace_back(5, 5, 5);
+  EXPECT_EQ(validateError(mesh), "mesh: vertex 4 is not used by any face");
+}
+
+TEST(ValidateMesh, ChecksTrianglesItself) {
+  Mesh mesh = awkwardMesh();
+  EXPECT_EQ(validateError(Mesh{mesh.points, {}}), "mesh: the mesh has no faces");
+  mesh.triangles[1] = {0, 2, 7};
+  EXPECT_EQ(validateError(mesh), "mesh: face 1 uses vertex 7 but there are 4 vertices");
+  mesh.triangles[1] = {0, 2, 2};
+  EXPECT_EQ(validateError(mesh), "mesh: face 1 uses vertex 2 twice");
+  mesh.triangles[1] = {0, 3, 2};
+  EXPECT_EQ(validateError(mesh), "mesh: faces 0 and 1 have opposite orientations across edge 0-2");
+}
+
+}  // namespace
+}  // namespace lloydscope

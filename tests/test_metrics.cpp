@@ -1,0 +1,79 @@
+#include "metrics.h"
+#include "test_support.h"
+
+#include <map>
+
+using namespace lloydscope;
+
+namespace {
+// A patch of the regular triangular lattice: hexagonal rings around a centre.
+Mesh hexPatch(int rings) {
+  Mesh m;
+  std::map<std::pair<int, int>, int> index;
+  const Vec2 a(1, 0), b(0.5, std::sqrt(3.0) / 2);
+  auto inside = [&](int i, int j) { return std::abs(i) <= rings && std::abs(j) <= rings && std::abs(i + j) <= rings; };
+  for (int i = -rings; i <= rings; ++i)
+    for (int j = -rings; j <= rings; ++j)
+      if (inside(i, j)) {
+        const Vec2 p = i * a + j * b;
+        index[{i, j}] = m.vertexCount();
+        m.points.emplace_back(p.x(), p.y(), 0);
+      }
+  for (const auto& [ij, v] : index) {
+    const auto [i, j] = ij;
+    if (inside(i + 1, j) && inside(i, j + 1)) m.triangles.push_back({v, index[{i + 1, j}], index[{i, j + 1}]});
+    if (inside(i + 1, j) && inside(i + 1, j - 1)) m.triangles.push_back({v, index[{i + 1, j - 1}], index[{i + 1, j}]});
+  }
+  return m;
+}
+}  // namespace
+
+TEST(Quality, EquilateralLatticeIsPerfectInside) {
+  const Mesh m = hexPatch(3);  // 37 vertices, 54 triangles
+  const QualityMetrics q = measureQuality(m);
+  EXPECT_EQ(q.vertices, 37);
+  EXPECT_EQ(q.faces, 54);
+  EXPECT_NEAR(q.minAngle, 60.0, 1e-9);
+  EXPECT_NEAR(q.avgMinAngle, 60.0, 1e-9);
+  EXPECT_NEAR(q.maxAngle, 60.0, 1e-9);
+  EXPECT_EQ(q.percentUnder30, 0.0);
+  // 19 interior vertices have valence 6; of the 18 border ones, the 6 corners have valence 3
+  // and the 12 others valence 4.
+  EXPECT_EQ(q.boundaryVertices, 18);
+  EXPECT_NEAR(q.irregularPercent, 100.0 * 18 / 37, 1e-9);
+  EXPECT_NEAR(q.irregularBoundaryAware, 100.0 * 6 / 37, 1e-9);
+  EXPECT_EQ(q.angleHistogram[5] + q.angleHistogram[6], 3 * 54);  // 60 degrees, give or take
+}
+
+TEST(Quality, RightIsoscelesGrid) {
+  const QualityMetrics q = measureQuality(test::grid(3));
+  EXPECT_NEAR(q.minAngle, 45.0, 1e-9);
+  EXPECT_NEAR(q.maxAngle, 90.0, 1e-9);
+  EXPECT_NEAR(q.avgMinAngle, 45.0, 1e-9);
+  EXPECT_EQ(q.percentUnder30, 0.0);
+}
+
+TEST(Fidelity, IdenticalSurfacesAreAtDistanceZero) {
+  const Fidelity f = measureFidelity(test::grid(4), test::grid(4));
+  EXPECT_NEAR(f.hausdorffPercent, 0.0, 1e-12);
+  EXPECT_GT(f.samples, 20000);
+}
+
+TEST(Fidelity, ShiftedPlaneIsAtTheShift) {
+  Mesh shifted = test::grid(4);
+  for (Vec3& p : shifted.points) p.z() += 0.01;
+  const Fidelity f = measureFidelity(shifted, test::grid(4));
+  const double expected = 100.0 * 0.01 / std::sqrt(2.0);
+  EXPECT_NEAR(f.hausdorffPercent, expected, 1e-9);
+  EXPECT_NEAR(f.rmsPercent, expected, 1e-9);
+}
+
+TEST(Fidelity, IsTwoSided) {
+  // Half a square against the whole one: nothing of the half is far from the whole, but the
+  // whole's far corner is 0.5 from the half.
+  Mesh half;
+  half.points = {{0, 0, 0}, {0.5, 0, 0}, {0.5, 1, 0}, {0, 1, 0}};
+  half.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const Fidelity f = measureFidelity(half, test::grid(2));
+  EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.5 / std::sqrt(2.0), 1e-9);
+}

@@ -1,0 +1,115 @@
+#include "mesh_io.h"
+#include "pipeline.h"
+#include "test_support.h"
+
+#include <cstdio>
+
+using namespace lloydscope;
+
+namespace {
+
+// A short recorded run on the bundled sphere cap.
+const RemeshResult& sphereCapRun() {
+  static const RemeshResult result = [] {
+    RemeshOptions o;
+    o.lloyd.maxIterations = 12;
+    o.measureFidelity = false;
+    return remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, o, "sphere_cap.off");
+  }();
+  return result;
+}
+
+void expectError(const std::string& path, const std::string& words) {
+  try {
+    loadRecording(path);
+    FAIL() << "expected an error for " << path;
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(words), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+
+TEST(Recording, RoundTripIsExact) {
+  const Recording& r = sphereCapRun().recording;
+  const std::string path = test::tempPath("roundtrip.lsrec");
+  saveRecording(r, path);
+  const Recording back = loadRecording(path);
+  EXPECT_EQ(back.settings, r.settings);
+  EXPECT_EQ(back.input.points, r.input.points);
+  EXPECT_EQ(back.input.triangles, r.input.triangles);
+  EXPECT_EQ(back.uv, r.uv);
+  EXPECT_EQ(back.density, r.density);
+  EXPECT_EQ(back.fixedSites, r.fixedSites);
+  ASSERT_EQ(back.iterations.size(), r.iterations.size());
+  for (size_t k = 0; k < r.iterations.size(); ++k) {
+    EXPECT_EQ(back.iterations[k].sites, r.iterations[k].sites);
+    EXPECT_EQ(back.iterations[k].centroids, r.iterations[k].centroids);
+    EXPECT_EQ(back.iterations[k].energy, r.iterations[k].energy);
+  }
+}
+
+TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {
+  const Recording& r = sphereCapRun().recording;
+  const Domain domain = r.domain();
+  for (int k : {7, 0, 11, 3}) {
+    const auto cells = r.cells(domain, k, /*keepGeometry=*/true);
+    double energy = 0;
+    for (const BoundedCell& c : cells) energy += c.energy;
+    EXPECT_EQ(energy, r.iterations[k].energy) << "iteration " << k;
+    for (size_t i = 0; i < r.iterations[k].centroids.size(); ++i)
+      ASSERT_EQ(cells[r.fixedSites.size() + i].centroid, r.iterations[k].centroids[i]);
+  }
+}
+
+TEST(Recording, MissingFile) { expectError(test::tempPath("nope.lsrec"), "missing"); }
+
+TEST(Recording, NotARecording) {
+  const std::string path = test::tempPath("mesh.lsrec");
+  test::writeText(path, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expectError(path, "not a Lloydscope recording");
+}
+
+TEST(Recording, Truncated) {
+  const std::string path = test::tempPath("cut.lsrec");
+  saveRecording(sphereCapRun().recording, path);
+  const std::string bytes = test::readText(path);
+  for (size_t keep : {size_t(10), bytes.size() / 2, bytes.size() - 1}) {
+    test::writeText(path, bytes.substr(0, keep));
+    expectError(path, "truncated");
+  }
+}
+
+TEST(Recording, CorruptByte) {
+  const std::string path = test::tempPath("corrupt.lsrec");
+  saveRecording(sphereCapRun().recording, path);
+  std::string bytes = test::readText(path);
+  bytes[bytes.size() / 2] ^= 0x40;
+  test::writeText(path, bytes);
+  expectError(path, "checksum");
+}
+
+TEST(Recording, OtherVersion) {
+  const std::string path = test::tempPath("v9.lsrec");
+  saveRecording(sphereCapRun().recording, path);
+  std::string bytes = test::readText(path);
+  bytes[8] = 9;  // the version follows the 8-byte magic
+  test::writeText(path, bytes);
+  expectError(path, "version 9");
+}
+
+TEST(Recording, SavingReplacesTheFileWholeAndLeavesNoTemporary) {
+  const std::string path = test::tempPath("replace.lsrec");
+  test::writeText(path, "old contents");
+  saveRecording(sphereCapRun().recording, path);
+  EXPECT_NO_THROW(loadRecording(path));
+  EXPECT_FALSE(std::ifstream(path + ".tmp").good());
+}
+
+TEST(Recording, SavingToAnUnwritablePlaceKeepsNothingHalfWritten) {
+  const std::string path = test::tempPath("no-such-dir/x.lsrec");
+  EXPECT_THROW(saveRecording(sphereCapRun().recording, path), Error);
+}

@@ -1,0 +1,91 @@
+#include "mesh_io.h"
+#include "parameterization.h"
+#include "remesh.h"
+#include "test_support.h"
+#include "topology.h"
+
+using namespace lloydscope;
+
+namespace {
+Mesh wavyGrid(int n) {
+  Mesh mesh = test::grid(n);
+  for (Vec3& p : mesh.points) p.z() = 0.2 * std::sin(4 * p.x()) * std::cos(3 * p.y());
+  return mesh;
+}
+}  // namespace
+
+TEST(Lift, AVertexOwnUVReturnsThatVertex) {
+  const Mesh mesh = wavyGrid(10);
+  const Parameterization p = parameterize(mesh, {}, "wavy");
+  const Domain domain(p.uv, mesh.triangles, {});
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    EXPECT_NEAR((lift(mesh, domain, p.uv[v]) - mesh.points[v]).norm(), 0.0, 1e-12) << v;
+}
+
+TEST(Lift, BarycentricInsideATriangle) {
+  const Mesh mesh = wavyGrid(4);
+  const Parameterization p = parameterize(mesh, {}, "wavy");
+  const Domain domain(p.uv, mesh.triangles, {});
+  const Triangle& t = mesh.triangles[7];
+  const Vec2 uv = 0.2 * p.uv[t[0]] + 0.3 * p.uv[t[1]] + 0.5 * p.uv[t[2]];
+  const Vec3 expected = 0.2 * mesh.points[t[0]] + 0.3 * mesh.points[t[1]] + 0.5 * mesh.points[t[2]];
+  EXPECT_NEAR((lift(mesh, domain, uv) - expected).norm(), 0.0, 1e-12);
+  const Location l = domain.locate(uv, 0);  // by walking from triangle 0
+  EXPECT_EQ(l.triangle, 7);
+  EXPECT_TRUE(l.inside);
+}
+
+TEST(Lift, PointsOutsideGoToTheClosestPointOfTheDomain) {
+  const Mesh mesh = test::grid(2);
+  const Domain domain(std::vector<Vec2>{{0, 0}, {0.5, 0}, {1, 0}, {0, 0.5}, {0.5, 0.5}, {1, 0.5},
+                                        {0, 1}, {0.5, 1}, {1, 1}},
+                      mesh.triangles, {});
+  const Location l = domain.locate(Vec2(1.5, 0.25));
+  EXPECT_FALSE(l.inside);
+  EXPECT_NEAR((domain.pointAt(l) - Vec2(1.0, 0.25)).norm(), 0.0, 1e-12);
+}
+
+TEST(Relocate, KeepsConnectivityAndMovesOnlyInsideVertices) {
+  const Mesh mesh = wavyGrid(6);
+  const Parameterization p = parameterize(mesh, {}, "wavy");
+  const Domain domain(p.uv, mesh.triangles, {});
+  std::vector<int> inside;
+  std::vector<Vec2> sites;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (!p.onBoundary[v]) {
+      inside.push_back(v);
+      sites.push_back(0.5 * p.uv[v] + Vec2(0.25, 0.25));  // pulled towards the centre
+    }
+  const Mesh out = relocate(mesh, domain, inside, sites);
+  EXPECT_EQ(out.triangles, mesh.triangles);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (p.onBoundary[v]) EXPECT_EQ(out.points[v], mesh.points[v]);
+  for (size_t i = 0; i < inside.size(); ++i)
+    EXPECT_NEAR((out.points[inside[i]] - lift(mesh, domain, sites[i])).norm(), 0, 1e-15);
+}
+
+TEST(Retriangulate, GivesAValidDiskWithAllSitesUsed) {
+  const Mesh mesh = wavyGrid(8);
+  const Parameterization p = parameterize(mesh, {}, "wavy");
+  const Domain domain(p.uv, mesh.triangles, {});
+  std::vector<Vec2> border, sites;
+  for (int v : p.boundaryLoop) border.push_back(p.uv[v]);
+  for (int i = 0; i < 40; ++i)
+    sites.push_back(Vec2(0.5, 0.5) + 0.3 * (i / 40.0) * Vec2(std::cos(i * 2.4), std::sin(i * 2.4)));
+  const Mesh out = retriangulate(mesh, domain, border, sites);
+  EXPECT_EQ(out.vertexCount(), static_cast<int>(border.size() + sites.size()));
+  EXPECT_NO_THROW(validateMesh(out, "out"));
+  EXPECT_TRUE(analyzeTopology(out).isDisk());
+  // Euler: a disk with V vertices, B on the border, has 2V - B - 2 triangles.
+  EXPECT_EQ(out.faceCount(), 2 * out.vertexCount() - static_cast<int>(border.size()) - 2);
+}
+
+TEST(Retriangulate, RespectsANonConvexBorder) {
+  // L-shaped border: without constraints the Delaunay triangulation would fill the notch.
+  const std::vector<Vec2> border = {{0, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}};
+  const std::vector<Triangle> triangles = triangulateSites(border, {{0.25, 0.25}});
+  double area = 0;
+  auto point = [&](int i) { return i < 6 ? border[i] : Vec2(0.25, 0.25); };
+  for (const Triangle& t : triangles) area += triangleArea(point(t[0]), point(t[1]), point(t[2]));
+  EXPECT_NEAR(area, 0.75, 1e-12);
+}

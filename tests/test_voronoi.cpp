@@ -1,0 +1,118 @@
+#include "test_support.h"
+#include "voronoi.h"
+
+#include <random>
+
+using namespace lloydscope;
+
+namespace {
+
+// The unit square as a parameter domain of two triangles, with a density given per corner.
+Domain unitSquare(std::vector<double> density = {1, 1, 1, 1}) {
+  return Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, std::move(density));
+}
+
+// Formulas (2)-(4) of the reference, written out independently of the code under test.
+void shoelace(const std::vector<Vec2>& p, double& area, Vec2& centroid) {
+  area = 0;
+  centroid = Vec2::Zero();
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Vec2 &a = p[i], &b = p[(i + 1) % p.size()];
+    const double c = a.x() * b.y() - b.x() * a.y();
+    area += c / 2;
+    centroid += (a + b) * c;
+  }
+  centroid /= 6 * area;
+}
+
+}  // namespace
+
+TEST(Integrals, UniformDensityIsTheShoelaceFormula) {
+  const std::vector<Vec2> pentagon = {{0, 0}, {4, 0}, {5, 2}, {2, 4}, {-1, 2}};
+  double area;
+  Vec2 centroid;
+  shoelace(pentagon, area, centroid);
+  const PolygonIntegrals i = integratePolygon(pentagon, std::vector<double>(5, 1.0), {0, 0});
+  EXPECT_NEAR(i.area, area, 1e-12);
+  EXPECT_NEAR(i.mass, area, 1e-12);
+  EXPECT_NEAR((i.moment / i.mass - centroid).norm(), 0.0, 1e-12);
+}
+
+TEST(Integrals, KnownPolygonCentroid) {
+  // Trapezoid (0,0) (4,0) (3,2) (1,2): area 6, centroid (2, 8/9).
+  const PolygonIntegrals i =
+      integratePolygon({{0, 0}, {4, 0}, {3, 2}, {1, 2}}, std::vector<double>(4, 1.0), {0, 0});
+  EXPECT_DOUBLE_EQ(i.area, 6.0);
+  EXPECT_NEAR(i.moment.x() / i.mass, 2.0, 1e-12);
+  EXPECT_NEAR(i.moment.y() / i.mass, 8.0 / 9.0, 1e-12);
+}
+
+TEST(Integrals, LinearDensityOnTheUnitSquare) {
+  // rho = x: mass 1/2, ∫ x rho = 1/3, ∫ y rho = 1/4, so the centroid is (2/3, 1/2).
+  // Energy about (0,0): ∫ x (x^2 + y^2) = 1/4 + 1/6.
+  const PolygonIntegrals i =
+      integratePolygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0, 1, 1, 0}, {0, 0});
+  EXPECT_NEAR(i.mass, 0.5, 1e-14);
+  EXPECT_NEAR(i.moment.x(), 1.0 / 3.0, 1e-14);
+  EXPECT_NEAR(i.moment.y(), 0.25, 1e-14);
+  EXPECT_NEAR(i.energy, 0.25 + 1.0 / 6.0, 1e-14);
+}
+
+TEST(Integrals, UniformEnergyOfASquareAboutItsCentre) {
+  const PolygonIntegrals i =
+      integratePolygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, std::vector<double>(4, 1.0), {0.5, 0.5});
+  EXPECT_NEAR(i.energy, 1.0 / 6.0, 1e-14);
+}
+
+TEST(BoundedCells, FourSitesAtTheCentresOfA2x2GridAreCentroidal) {
+  const Domain domain = unitSquare();
+  const std::vector<Vec2> sites = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
+  const auto cells = computeCells(domain, sites, true);
+  for (size_t i = 0; i < sites.size(); ++i) {
+    EXPECT_NEAR(cells[i].area, 0.25, 1e-12);
+    EXPECT_NEAR((cells[i].centroid - sites[i]).norm(), 0.0, 1e-12);
+    // Two edge neighbours, and the diagonal one if the (cocircular) Delaunay picked that diagonal.
+    EXPECT_GE(cells[i].neighbours.size(), 2u);
+  }
+}
+
+TEST(BoundedCells, CellsTileTheDomainAndMassesAddUp) {
+  const Domain domain = unitSquare({1, 2, 3, 4});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec2> sites;
+  for (int i = 0; i < 200; ++i) sites.emplace_back(u(rng), u(rng));
+  double area = 0, mass = 0;
+  for (const BoundedCell& c : computeCells(domain, sites, false)) {
+    area += c.area;
+    mass += c.mass;
+  }
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  EXPECT_NEAR(mass, 0.5 * 2.0 + 0.5 * 8.0 / 3.0, 1e-12);  // ∫ rho over each triangle
+}
+
+TEST(BoundedCells, NonConvexDomainIsClippedToItsTriangles) {
+  // An L-shaped domain: the unit square minus its top-right quarter, area 3/4.
+  const Domain domain({{0, 0}, {0.5, 0}, {1, 0}, {0, 0.5}, {0.5, 0.5}, {1, 0.5}, {0, 1}, {0.5, 1}},
+                      {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}}, {});
+  const std::vector<Vec2> sites = {{0.2, 0.2}, {0.8, 0.2}, {0.2, 0.8}, {0.6, 0.6}};
+  double area = 0;
+  for (const BoundedCell& c : computeCells(domain, sites, true)) area += c.area;
+  EXPECT_NEAR(area, 0.75, 1e-12);
+}
+
+TEST(BoundedCells, HintsDoNotChangeABit) {
+  const Domain domain = unitSquare({1, 2, 3, 4});
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec2> sites;
+  for (int i = 0; i < 600; ++i) sites.emplace_back(u(rng), u(rng));
+  std::vector<int> hints(sites.size(), 1);
+  const auto a = computeCells(domain, sites, false);
+  const auto b = computeCells(domain, sites, false, &hints);
+  for (size_t i = 0; i < sites.size(); ++i) {
+    EXPECT_EQ(a[i].mass, b[i].mass);
+    EXPECT_EQ(a[i].energy, b[i].energy);
+    EXPECT_EQ(a[i].centroid, b[i].centroid);
+  }
+}
