@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <thread>
 
 namespace lloydscope {
 
@@ -111,18 +112,33 @@ std::vector<Vec3> samplePoints(const Mesh& mesh, int randomCount) {
   return samples;
 }
 
-// Largest and summed squared distance from the samples of `from` to the surface `to`.
+// Largest and summed squared distance from the samples of `from` to the surface `to`. The
+// queries are independent: they are split over the cores.
 void oneSided(const Mesh& from, const Mesh& to, double& maxDistance, double& sumSquared,
               int& count) {
   const std::vector<Triangle3> triangles = cgalTriangles(to);
   Tree tree(triangles.cbegin(), triangles.cend());
   tree.accelerate_distance_queries();
-  for (const Vec3& s : samplePoints(from, 10000 + 10 * from.faceCount())) {
-    const double d2 = tree.squared_distance(Point3(s.x(), s.y(), s.z()));
-    maxDistance = std::max(maxDistance, std::sqrt(d2));
-    sumSquared += d2;
-    ++count;
+  const std::vector<Vec3> samples = samplePoints(from, 10000 + 10 * from.faceCount());
+  const size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<double> maxOf(threads, 0.0), sumOf(threads, 0.0);
+  auto work = [&](size_t t) {
+    for (size_t i = samples.size() * t / threads; i < samples.size() * (t + 1) / threads; ++i) {
+      const Vec3& s = samples[i];
+      const double d2 = tree.squared_distance(Point3(s.x(), s.y(), s.z()));
+      maxOf[t] = std::max(maxOf[t], d2);
+      sumOf[t] += d2;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& thread : pool) thread.join();
+  for (size_t t = 0; t < threads; ++t) {  // in a fixed order: the sum does not depend on timing
+    maxDistance = std::max(maxDistance, std::sqrt(maxOf[t]));
+    sumSquared += sumOf[t];
   }
+  count += static_cast<int>(samples.size());
 }
 
 }  // namespace

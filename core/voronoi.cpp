@@ -6,6 +6,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
 
 namespace lloydscope {
@@ -140,11 +141,20 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
     if (part.area <= 0) continue;
     w.parts.emplace_back(t, part);
     if (keepGeometry) cell.pieces.push_back({t, w.piece});
-    for (int n : domain.neighbours()[t])
-      if (n >= 0 && w.visitedBy[n] != cellId) {
-        w.visitedBy[n] = cellId;
-        w.queue.push_back(n);
-      }
+    // Go on only across the edges this piece reaches: the cell overlaps a neighbour with
+    // positive area only through a stretch of their common edge.
+    for (int k = 0; k < 3; ++k) {
+      const int n = domain.neighbours()[t][(k + 2) % 3];  // across edge (corner k, corner k+1)
+      if (n < 0 || w.visitedBy[n] == cellId) continue;
+      const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
+      const double tolerance = 1e-9 * edge.norm();
+      for (const Vec2& p : w.piece)
+        if (std::abs(cross(edge, p - a)) <= tolerance) {
+          w.visitedBy[n] = cellId;
+          w.queue.push_back(n);
+          break;
+        }
+    }
   }
   std::sort(w.parts.begin(), w.parts.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });

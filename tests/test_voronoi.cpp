@@ -116,3 +116,32 @@ TEST(BoundedCells, HintsDoNotChangeABit) {
     EXPECT_EQ(a[i].centroid, b[i].centroid);
   }
 }
+
+TEST(BoundedCells, CellsTileAFineDomainExactly) {
+  // Cells much larger and much smaller than the parameter triangles, over a 12 x 12 grid.
+  const Mesh grid = test::grid(12);
+  std::vector<Vec2> uv;
+  std::vector<double> density;
+  for (const Vec3& p : grid.points) {
+    uv.emplace_back(p.x(), p.y());
+    density.push_back(1.0 + 3.0 * p.x() * p.y());
+  }
+  const Domain domain(uv, grid.triangles, density);
+  double domainMass = 0;
+  for (const Triangle& t : grid.triangles)
+    domainMass += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]) *
+                  (density[t[0]] + density[t[1]] + density[t[2]]) / 3.0;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int count : {7, 60, 900}) {
+    std::vector<Vec2> sites;
+    for (int i = 0; i < count; ++i) sites.emplace_back(u(rng), u(rng));
+    double area = 0, mass = 0;
+    for (const BoundedCell& c : computeCells(domain, sites, false)) {
+      area += c.area;
+      mass += c.mass;
+    }
+    EXPECT_NEAR(area, 1.0, 1e-12) << count;
+    EXPECT_NEAR(mass, domainMass, 1e-12) << count;
+  }
+}
