@@ -20,38 +20,44 @@ constexpr int kDummy = -1;
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-// Sutherland-Hodgman: the part of a convex polygon left of each edge of a CCW triangle.
-// `scratch` is reused between calls to keep allocation out of the inner loop.
-void clipToTriangle(const std::vector<Vec2>& polygon, const Vec2 (&corner)[3],
-                    std::vector<Vec2>& result, std::vector<Vec2>& scratch) {
-  // Most (cell, triangle) pairs are either disjoint or nested: settle those without clipping.
-  bool allInside = true;
+// Sutherland-Hodgman: the part of a convex polygon left of each edge of a CCW triangle, in
+// `result`. Returns which edges of the triangle the part reaches (bit k: the edge from corner k
+// to corner k+1): only across those can the cell overlap a neighbouring triangle.
+// `side` and `scratch` are reused between calls to keep allocation out of the inner loop.
+int clipToTriangle(const std::vector<Vec2>& polygon, const Vec2 (&corner)[3],
+                   std::vector<Vec2>& result, std::vector<Vec2>& scratch,
+                   std::vector<double>& side) {
+  int reaches = 0;
+  const std::vector<Vec2>* in = &polygon;
   for (int k = 0; k < 3; ++k) {
     const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
-    bool anyIn = false, anyOut = false;
-    for (const Vec2& p : polygon) (cross(edge, p - a) >= 0 ? anyIn : anyOut) = true;
+    const double onEdge = 1e-9 * edge.norm();  // cross() is |edge| times the distance
+    const size_t n = in->size();
+    side.resize(n);
+    bool anyIn = false, anyOut = false, anyOn = false;
+    for (size_t i = 0; i < n; ++i) {
+      side[i] = cross(edge, (*in)[i] - a);
+      (side[i] >= 0 ? anyIn : anyOut) = true;
+      anyOn = anyOn || std::abs(side[i]) <= onEdge;
+    }
     if (!anyIn) {
       result.clear();
-      return;
+      return 0;
     }
-    allInside = allInside && !anyOut;
-  }
-  result = polygon;
-  if (allInside) return;
-  for (int k = 0; k < 3 && result.size() >= 3; ++k) {
-    const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
-    scratch.clear();
-    const size_t n = result.size();
-    double sp = cross(edge, result[n - 1] - a);  // walk edges (p, q) from the last vertex
-    for (size_t i = 0; i < n; ++i) {
-      const Vec2 &p = result[(i + n - 1) % n], &q = result[i];
-      const double sq = cross(edge, q - a);
-      if ((sp >= 0) != (sq >= 0)) scratch.push_back(p + (sp / (sp - sq)) * (q - p));
-      if (sq >= 0) scratch.push_back(q);
-      sp = sq;
+    if (anyOn || anyOut) reaches |= 1 << k;
+    if (!anyOut) continue;  // nothing to cut on this side
+    std::vector<Vec2>& out = (in == &result) ? scratch : result;
+    out.clear();
+    for (size_t i = 0, j = n - 1; i < n; j = i++) {  // edge (p, q) = (in[j], in[i])
+      const Vec2 &p = (*in)[j], &q = (*in)[i];
+      if ((side[j] >= 0) != (side[i] >= 0))
+        out.push_back(p + (side[j] / (side[j] - side[i])) * (q - p));
+      if (side[i] >= 0) out.push_back(q);
     }
-    result.swap(scratch);
+    in = &out;
   }
+  if (in != &result) result = *in;
+  return reaches;
 }
 
 void integrateTriangle(const Vec2 (&p)[3], const double (&rho)[3], const Vec2& site,
@@ -115,7 +121,7 @@ std::vector<Vec2> voronoiPolygon(const Delaunay& dt, Delaunay::Vertex_handle v) 
 struct Workspace {
   std::vector<int> visitedBy, queue;
   std::vector<Vec2> piece, scratch;
-  std::vector<double> rho;
+  std::vector<double> rho, side;
   std::vector<std::pair<int, PolygonIntegrals>> parts;  // (triangle, integrals of the piece)
 };
 
@@ -133,7 +139,7 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
     const int t = w.queue[head];
     const Triangle& tri = domain.triangles()[t];
     const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
-    clipToTriangle(voronoi, corner, w.piece, w.scratch);
+    const int reaches = clipToTriangle(voronoi, corner, w.piece, w.scratch, w.side);
     if (w.piece.size() < 3) continue;
     w.rho.resize(w.piece.size());
     for (size_t i = 0; i < w.piece.size(); ++i) w.rho[i] = domain.densityAt(t, w.piece[i]);
@@ -141,19 +147,12 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
     if (part.area <= 0) continue;
     w.parts.emplace_back(t, part);
     if (keepGeometry) cell.pieces.push_back({t, w.piece});
-    // Go on only across the edges this piece reaches: the cell overlaps a neighbour with
-    // positive area only through a stretch of their common edge.
     for (int k = 0; k < 3; ++k) {
       const int n = domain.neighbours()[t][(k + 2) % 3];  // across edge (corner k, corner k+1)
-      if (n < 0 || w.visitedBy[n] == cellId) continue;
-      const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
-      const double tolerance = 1e-9 * edge.norm();
-      for (const Vec2& p : w.piece)
-        if (std::abs(cross(edge, p - a)) <= tolerance) {
-          w.visitedBy[n] = cellId;
-          w.queue.push_back(n);
-          break;
-        }
+      if ((reaches & (1 << k)) && n >= 0 && w.visitedBy[n] != cellId) {
+        w.visitedBy[n] = cellId;
+        w.queue.push_back(n);
+      }
     }
   }
   std::sort(w.parts.begin(), w.parts.end(),
