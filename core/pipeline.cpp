@@ -94,8 +94,10 @@ std::string describe(const RemeshOptions& o) {
     << " border=" << toString(o.param.border) << " density=" << toString(o.density.kind);
   if (o.density.kind == DensityKind::Curvature)
     s << " alpha=" << o.density.alpha << " beta=" << o.density.beta;
-  s << " sites=" << (o.sites.fromInputVertices ? std::string("input-vertices")
-                                               : std::to_string(o.sites.count))
+  s << " sites="
+    << (o.sites.fromInputVertices ? std::string("input-vertices")
+        : o.sites.count > 0       ? std::to_string(o.sites.count)
+                                  : std::string("as-many-as-input"))
     << " solver=" << toString(o.lloyd.solver)
     << " distance-threshold=" << o.lloyd.distanceThreshold
     << " percent-threshold=" << o.lloyd.percentThreshold
