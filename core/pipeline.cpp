@@ -77,6 +77,7 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& requested, const std
 
   Recording& r = result.recording;
   r.settings = describe(options);
+  r.method = options.method;
   r.distanceThreshold = options.lloyd.distanceThreshold;
   r.percentThreshold = options.lloyd.percentThreshold;
   r.input = input;

@@ -13,8 +13,6 @@
 
 namespace lloydscope {
 
-enum class RemeshMethod { Relocate, Retriangulate };
-
 struct RemeshOptions {
   RemeshMethod method = RemeshMethod::Retriangulate;
   ParamOptions param;

@@ -90,6 +90,7 @@ class Reader {
 std::string encodePayload(const Recording& r) {
   Writer w;
   w.putString(r.settings);
+  w.put<std::uint8_t>(r.method == RemeshMethod::Relocate ? 0 : 1);
   w.put(r.distanceThreshold);
   w.put(r.percentThreshold);
   w.put<std::uint32_t>(static_cast<std::uint32_t>(r.input.points.size()));
@@ -118,6 +119,7 @@ std::string encodePayload(const Recording& r) {
 Recording decodePayload(Reader& in, const std::string& path) {
   Recording r;
   r.settings = in.getString();
+  r.method = in.get<std::uint8_t>() == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate;
   r.distanceThreshold = in.get<double>();
   r.percentThreshold = in.get<double>();
   r.input.points.resize(in.getCount(24));

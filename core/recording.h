@@ -3,6 +3,7 @@
 #pragma once
 
 #include "lloyd.h"
+#include "remesh.h"
 
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@ struct Recording {
   static constexpr std::uint32_t kVersion = 1;
 
   std::string settings;  // the settings that produced it, one line ("param=conformal ...")
+  RemeshMethod method = RemeshMethod::Retriangulate;
   double distanceThreshold = 1e-6, percentThreshold = 5.0;
   Mesh input;                      // the disk mesh that was parameterized
   std::vector<Vec2> uv;            // per input vertex

@@ -7,6 +7,8 @@
 
 namespace lloydscope {
 
+enum class RemeshMethod { Relocate, Retriangulate };
+
 // The 3D point of the input surface at parameter point p (barycentric coordinates in the
 // parameter triangle that holds p; points outside the domain go to its closest point).
 Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p);

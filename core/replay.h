@@ -1,0 +1,39 @@
+// One recorded iteration at a time, as the inspector shows it: the cells of that iteration and
+// the mesh its sites make, computed when the iteration is chosen and not before.
+#pragma once
+
+#include "pipeline.h"
+
+namespace lloydscope {
+
+struct IterationView {
+  int index = -1;
+  std::vector<Vec2> sites;         // all of them: fixed first, then movable
+  std::vector<BoundedCell> cells;  // with geometry, in site order
+  std::vector<Vec3> liftedSites;   // on the input surface
+  Mesh output;                     // what these sites would give as the result
+};
+
+class Replay {
+ public:
+  // Shows the result the way the recording was made (relocate or retriangulate).
+  explicit Replay(Recording recording);
+  // Switches between the two where the recording allows relocate (sites from input vertices).
+  void setMethod(RemeshMethod method);
+
+  const Recording& recording() const { return recording_; }
+  const Domain& domain() const { return domain_; }
+  RemeshMethod method() const { return method_; }
+  int iterationCount() const { return static_cast<int>(recording_.iterations.size()); }
+
+  // The view of iteration k (clamped to the recorded range), recomputed only when k changes.
+  const IterationView& view(int k);
+
+ private:
+  Recording recording_;
+  Domain domain_;
+  RemeshMethod method_;
+  IterationView view_;
+};
+
+}  // namespace lloydscope

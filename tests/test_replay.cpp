@@ -1,0 +1,48 @@
+#include "mesh_io.h"
+#include "replay.h"
+#include "test_support.h"
+
+using namespace lloydscope;
+
+TEST(Replay, ShowsExactlyWhatTheSolverComputed) {
+  RemeshOptions o;
+  o.measureFidelity = false;
+  o.lloyd.maxIterations = 15;
+  const Mesh input = readMesh(test::assetPath("jittered_grid.off")).mesh;
+  const RemeshResult run = remesh(input, o, "grid");
+  Replay replay(run.recording);
+  ASSERT_EQ(replay.iterationCount(), 15);
+  for (int k : {14, 3, 0, 9}) {  // any order
+    const IterationView& v = replay.view(k);
+    EXPECT_EQ(v.index, k);
+    const IterationRecord& it = run.recording.iterations[k];
+    ASSERT_EQ(v.cells.size(), run.recording.fixedSites.size() + it.sites.size());
+    for (size_t i = 0; i < it.sites.size(); ++i) {
+      EXPECT_EQ(v.cells[run.recording.fixedSites.size() + i].centroid, it.centroids[i]);
+      EXPECT_FALSE(v.cells[run.recording.fixedSites.size() + i].pieces.empty());
+    }
+    EXPECT_EQ(v.liftedSites.size(), v.sites.size());
+    EXPECT_NO_THROW(validateMesh(v.output, "view"));
+  }
+  EXPECT_EQ(&replay.view(9), &replay.view(9));  // same k: nothing recomputed
+  EXPECT_EQ(replay.view(1000).index, 14);      // clamped
+}
+
+TEST(Replay, RelocateOnlyWhereSitesAreInputVertices) {
+  RemeshOptions o = referencePreset(RemeshMethod::Relocate);
+  o.measureFidelity = false;
+  o.lloyd.maxIterations = 3;
+  const Mesh input = readMesh(test::assetPath("jittered_grid.off")).mesh;
+  Replay relocated(remesh(input, o, "grid").recording);
+  EXPECT_EQ(relocated.method(), RemeshMethod::Relocate);
+  EXPECT_EQ(relocated.view(2).output.triangles, input.triangles);
+  relocated.setMethod(RemeshMethod::Retriangulate);
+  EXPECT_EQ(relocated.method(), RemeshMethod::Retriangulate);
+
+  RemeshOptions sampled;
+  sampled.measureFidelity = false;
+  sampled.lloyd.maxIterations = 3;
+  Replay replay(remesh(input, sampled, "grid").recording);
+  replay.setMethod(RemeshMethod::Relocate);
+  EXPECT_EQ(replay.method(), RemeshMethod::Retriangulate);
+}
