@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Lloydscope set-up on Debian 12: installs the missing packages, builds, then
-#   ./build.sh run    remeshes the bundled default mesh and prints the before/after table
+#   ./build.sh run    opens the inspector on the bundled default mesh (without a display:
+#                     remeshes it, prints the before/after table and renders the inspector to
+#                     build/inspector.png)
 #   ./build.sh test   runs every test (what CI runs)
 #   ./build.sh        only installs and builds
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(cmake g++ make libcgal-dev libcgal-demo libeigen3-dev libgtest-dev libcli11-dev
-          nlohmann-json3-dev)
+PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgtest-dev
+          libcli11-dev nlohmann-json3-dev
+          libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools libglfw3-dev
+          libimgui-dev libglm-dev libstb-dev xvfb xauth)
 # CGAL's sample meshes used by tests and benchmarks (disk topology), from libcgal-demo.
 CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil)
 
@@ -43,7 +47,15 @@ install_missing
 extract_cgal_samples
 build
 case "${1:-}" in
-  run) ./build/app/lloydscope remesh assets/bumpy_disk.off -o build/bumpy_disk_remeshed.off ;;
+  run)
+    if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+      ./build/app/lloydscope inspect assets/bumpy_disk.off
+    else
+      echo "No display: remeshing headless (under xvfb-run you get the window)."
+      ./build/app/lloydscope remesh assets/bumpy_disk.off -o build/bumpy_disk_remeshed.off
+      ./build/app/lloydscope inspect assets/bumpy_disk.off --no-fidelity --screenshot build/inspector.png
+      echo "The inspector's picture: build/inspector.png"
+    fi ;;
   test) ctest --test-dir build --output-on-failure -j"$(nproc)" ;;
   "") ;;
   *) echo "usage: ./build.sh [run|test]" >&2; exit 2 ;;

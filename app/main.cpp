@@ -1,10 +1,15 @@
 // lloydscope: the command line. Every command runs headless; errors are one line on stderr.
+#include "gpu.h"
+#include "headless.h"
 #include "mesh_io.h"
+#include "window.h"
 #include "pipeline.h"
 #include "report.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <iostream>
 
 using namespace lloydscope;
@@ -69,6 +74,58 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
 
 }  // namespace
 
+void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
+  cmd.add_option("--preset", r.preset,
+                 "best (default) or reference: the report's settings (authalic, square border, "
+                 "uniform density, input vertices as sites, plain Lloyd)");
+  cmd.add_option("--method", r.method, "relocate or retriangulate (default)");
+  cmd.add_option("--param", r.param,
+                 "auto (default: lscm, or mean-value where lscm folds), authalic, conformal, "
+                 "mean-value, tutte or lscm");
+  cmd.add_option("--border", r.border, "square or circle (default), for the fixed-border methods");
+  cmd.add_option("--density", r.density, "uniform, area (default) or curvature");
+  cmd.add_option("--alpha", r.alpha, "curvature density: weight of |K|");
+  cmd.add_option("--beta", r.beta, "curvature density: weight of H^2");
+  cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(CLI::PositiveNumber);
+  cmd.add_option("--solver", r.solver,
+                 "lbfgs (default: quasi-Newton, converges in far fewer iterations) or lloyd (the "
+                 "reference's)");
+  cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--distance-threshold", r.distanceThreshold,
+                 "a site closer than this to its centroid (fraction of the domain size) is still")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--percent-threshold", r.percentThreshold,
+                 "converged when fewer than this % of the sites are not still")
+      ->check(CLI::Range(0.0, 100.0));
+  cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
+}
+
+// "1280x800" -> width, height.
+void parseSize(const std::string& text, int& width, int& height) {
+  if (text.empty()) return;
+  if (std::sscanf(text.c_str(), "%dx%d", &width, &height) != 2)
+    throw Error("--size must look like 1280x800, not '" + text + "'");
+}
+
+// A mesh is remeshed first; a recording is replayed as it is.
+RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshOptions& options) {
+  options = remeshOptions(a, cmd);
+  const std::string& in = a.input;
+  if (in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) {
+    RemeshResult result;
+    result.recording = loadRecording(in);
+    result.before = measureQuality(result.recording.input);
+    result.iterations = static_cast<int>(result.recording.iterations.size());
+    result.converged = !result.recording.iterations.empty() &&
+                       100.0 * result.recording.iterations.back().fractionMoving <
+                           result.recording.percentThreshold;
+    result.paramUsed = options.param.method;
+    return result;
+  }
+  return remesh(load(in), options, in);
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Lloydscope: variational surface remeshing by weighted Lloyd relaxation"};
   app.require_subcommand(1);
@@ -77,32 +134,36 @@ int main(int argc, char** argv) {
   CLI::App* remeshCmd = app.add_subcommand("remesh", "Remesh a disk-topology triangle mesh");
   remeshCmd->add_option("input", r.input, "Input mesh (OFF, OBJ or PLY)")->required();
   remeshCmd->add_option("-o,--output", r.output, "Output mesh (OFF, OBJ or PLY)");
-  remeshCmd->add_option("--preset", r.preset,
-                        "best (default) or reference: the report's settings (authalic, square "
-                        "border, uniform density, input vertices as sites)");
-  remeshCmd->add_option("--method", r.method, "relocate or retriangulate (default)");
-  remeshCmd->add_option("--param", r.param,
-                        "auto (default: lscm, or mean-value where lscm folds), authalic, conformal, mean-value, tutte or lscm");
-  remeshCmd->add_option("--border", r.border, "square or circle (default), for the fixed-border methods");
-  remeshCmd->add_option("--density", r.density, "uniform, area (default) or curvature");
-  remeshCmd->add_option("--alpha", r.alpha, "curvature density: weight of |K|");
-  remeshCmd->add_option("--beta", r.beta, "curvature density: weight of H^2");
-  remeshCmd->add_option("--sites", r.sites, "number of vertices of the result")
-      ->check(CLI::PositiveNumber);
-  remeshCmd->add_option("--solver", r.solver,
-                        "lbfgs (default: quasi-Newton, converges in far fewer iterations) or "
-                        "lloyd (the reference's)");
-  remeshCmd->add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
-      ->check(CLI::PositiveNumber);
-  remeshCmd->add_option("--distance-threshold", r.distanceThreshold,
-                        "a site moving less than this (fraction of the domain size) is still")
-      ->check(CLI::PositiveNumber);
-  remeshCmd->add_option("--percent-threshold", r.percentThreshold,
-                        "converged when fewer than this % of the sites move")
-      ->check(CLI::Range(0.0, 100.0));
   remeshCmd->add_option("--record", r.record, "Save every Lloyd iteration to this file");
   remeshCmd->add_flag("--json", r.json, "Print the results as one JSON object");
-  remeshCmd->add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
+  addRemeshOptions(*remeshCmd, r);
+
+  RemeshArgs ir;
+  ScreenshotOptions shot;
+  std::string size;
+  CLI::App* inspectCmd = app.add_subcommand(
+      "inspect", "Open the inspector on a mesh or a recording; with --screenshot, render it "
+                 "headless to a PNG and exit");
+  inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (.lsrec)")
+      ->required();
+  inspectCmd->add_option("--screenshot", shot.path, "Render offscreen to this PNG and exit");
+  inspectCmd->add_option("--iteration", shot.iteration, "Iteration to show (default: the last)");
+  inspectCmd->add_option("--size", size, "Picture size WxH (default 1280x800)");
+  inspectCmd->add_flag("--validation", shot.validation,
+                       "Enable the Vulkan validation layer; fail if it reports anything");
+  bool noTimings = false;
+  inspectCmd->add_flag("--no-timings", noTimings,
+                       "Leave timings out of the picture, so that it is the same on every run");
+  addRemeshOptions(*inspectCmd, ir);
+
+  CLI::App* benchCmd = app.add_subcommand(
+      "bench-frames", "Median frame time of the inspector while scrubbing a recording (headless)");
+  RemeshArgs br;
+  int frames = 100;
+  benchCmd->add_option("input", br.input, "Mesh")->required();
+  benchCmd->add_option("--frames", frames, "Frames to time");
+  benchCmd->add_option("--size", size, "Frame size WxH (default 1280x800)");
+  addRemeshOptions(*benchCmd, br);
 
   std::string metricsMesh, metricsReference;
   bool metricsJson = false;
@@ -123,6 +184,38 @@ int main(int argc, char** argv) {
 
   try {
     if (remeshCmd->parsed()) return runRemesh(r, *remeshCmd);
+    if (inspectCmd->parsed()) {
+      RemeshOptions options;
+      RemeshResult result = openForInspection(ir, *inspectCmd, options);
+      parseSize(size, shot.width, shot.height);
+      shot.timings = !noTimings;
+      if (shot.path.empty()) return runWindow(ir.input, options, std::move(result), shot.validation);
+      renderScreenshot(ir.input, options, std::move(result), shot);
+      return 0;
+    }
+    if (benchCmd->parsed()) {
+      int width = 1280, height = 800;
+      parseSize(size, width, height);
+      RemeshOptions options;
+      RemeshResult result = openForInspection(br, *benchCmd, options);
+      const size_t sites = result.recording.fixedSites.size() +
+                           (result.recording.iterations.empty() ? 0 : result.recording.iterations[0].sites.size());
+      const int iterations = result.iterations;
+      auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+      };
+      const FrameTimes still = benchmarkScrub(br.input, options, result, width, height, frames, false);
+      const FrameTimes scrub =
+          benchmarkScrub(br.input, options, std::move(result), width, height, frames, true);
+      std::printf("| sites | iterations | size | frames | median ms, still | median ms, scrubbing | "
+                  "max ms, scrubbing |\n|---|---|---|---|---|---|---|\n"
+                  "| %zu | %d | %dx%d | %d | %.1f | %.1f | %.1f |\n",
+                  sites, iterations, width, height, frames, median(still.milliseconds),
+                  median(scrub.milliseconds),
+                  *std::max_element(scrub.milliseconds.begin(), scrub.milliseconds.end()));
+      return 0;
+    }
     if (metricsCmd->parsed()) {
       const Mesh mesh = load(metricsMesh);
       const QualityMetrics quality = measureQuality(mesh);
@@ -147,6 +240,9 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const Error& e) {
+    std::cerr << "lloydscope: " << e.what() << "\n";
+    return 1;
+  } catch (const gpu::GpuError& e) {
     std::cerr << "lloydscope: " << e.what() << "\n";
     return 1;
   } catch (const std::exception& e) {

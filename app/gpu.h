@@ -1,0 +1,68 @@
+// The Vulkan device the inspector draws with: lavapipe (software) on machines without a GPU.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lloydscope::gpu {
+
+struct GpuError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+void check(VkResult result, const char* what);
+
+struct Buffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+  void* mapped = nullptr;  // host-visible buffers stay mapped
+};
+
+struct Image {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+};
+
+class Context {
+ public:
+  // instanceExtensions: what a window surface needs (none when headless). With `validation`,
+  // the Khronos validation layer is enabled and every message it reports is counted and printed.
+  Context(const std::vector<const char*>& instanceExtensions, bool swapchain, bool validation);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queueFamily = 0;
+  VkQueue queue = VK_NULL_HANDLE;
+  VkCommandPool commandPool = VK_NULL_HANDLE;
+  VkDescriptorPool descriptorPool = VK_NULL_HANDLE;  // for ImGui's font texture
+  std::string deviceName;
+  int validationMessages = 0;
+
+  Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);  // host-visible, mapped
+  void destroy(Buffer& buffer);
+  Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                    VkImageAspectFlags aspect);
+  void destroy(Image& image);
+  // Records commands into a fresh command buffer, submits them and waits.
+  void submitNow(const std::function<void(VkCommandBuffer)>& record);
+
+ private:
+  uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags properties) const;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+};
+
+// A render pass with one colour and one depth attachment; the colour ends in `finalLayout`
+// (TRANSFER_SRC to read it back, PRESENT_SRC for a swapchain).
+VkRenderPass createRenderPass(VkDevice device, VkFormat color, VkImageLayout finalLayout);
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+}  // namespace lloydscope::gpu

@@ -1,0 +1,171 @@
+#include "headless.h"
+
+#include "gpu.h"
+#include "inspector.h"
+
+#include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
+#include <stb_image_write.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace lloydscope {
+
+namespace {
+
+// An offscreen frame: colour and depth images, the render pass, ImGui on top, a read-back
+// buffer for the pixels.
+class OffscreenRenderer {
+ public:
+  OffscreenRenderer(int width, int height, bool validation)
+      : width_(width), height_(height), gpu_({}, false, validation) {
+    renderPass_ = gpu::createRenderPass(gpu_.device, VK_FORMAT_R8G8B8A8_UNORM,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    color_ = gpu_.createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
+                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT);
+    depth_ = gpu_.createImage(width, height, gpu::kDepthFormat,
+                              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    const VkImageView views[2] = {color_.view, depth_.view};
+    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    fb.renderPass = renderPass_;
+    fb.attachmentCount = 2;
+    fb.pAttachments = views;
+    fb.width = width;
+    fb.height = height;
+    fb.layers = 1;
+    gpu::check(vkCreateFramebuffer(gpu_.device, &fb, nullptr, &framebuffer_), "creating a framebuffer");
+    pixels_ = gpu_.createBuffer(static_cast<VkDeviceSize>(width) * height * 4,
+                                VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // reproducible pictures: no saved layout
+    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+    io.DeltaTime = 1.0f / 60.0f;
+    ImGui::StyleColorsLight();
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = gpu_.instance;
+    info.PhysicalDevice = gpu_.physical;
+    info.Device = gpu_.device;
+    info.QueueFamily = gpu_.queueFamily;
+    info.Queue = gpu_.queue;
+    info.DescriptorPool = gpu_.descriptorPool;
+    info.MinImageCount = 2;  // asserted even offscreen
+    info.ImageCount = 2;
+    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    ImGui_ImplVulkan_Init(&info, renderPass_);
+    gpu_.submitNow([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+  }
+
+  ~OffscreenRenderer() {
+    vkDeviceWaitIdle(gpu_.device);
+    ImGui_ImplVulkan_Shutdown();
+    ImGui::DestroyContext();
+    gpu_.destroy(pixels_);
+    vkDestroyFramebuffer(gpu_.device, framebuffer_, nullptr);
+    gpu_.destroy(depth_);
+    gpu_.destroy(color_);
+    vkDestroyRenderPass(gpu_.device, renderPass_, nullptr);
+  }
+
+  gpu::Context& gpu() { return gpu_; }
+  VkRenderPass renderPass() const { return renderPass_; }
+
+  // One frame of `build`, rendered and (with readBack) copied to the pixel buffer.
+  void frame(const std::function<void()>& build, bool readBack) {
+    ImGui_ImplVulkan_NewFrame();
+    ImGui::NewFrame();
+    build();
+    ImGui::Render();
+    if (std::getenv("LLOYDSCOPE_DEBUG_VERTICES"))
+      std::fprintf(stderr, "vertices %d indices %d\n", ImGui::GetDrawData()->TotalVtxCount,
+                   ImGui::GetDrawData()->TotalIdxCount);
+    gpu_.submitNow([&](VkCommandBuffer cmd) {
+      VkClearValue clear[2] = {};
+      clear[0].color = {{0.94f, 0.94f, 0.94f, 1.0f}};
+      clear[1].depthStencil = {1.0f, 0};
+      VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+      begin.renderPass = renderPass_;
+      begin.framebuffer = framebuffer_;
+      begin.renderArea = {{0, 0}, {static_cast<uint32_t>(width_), static_cast<uint32_t>(height_)}};
+      begin.clearValueCount = 2;
+      begin.pClearValues = clear;
+      vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+      Inspector::setCommandBuffer(cmd);
+      ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+      vkCmdEndRenderPass(cmd);
+      if (readBack) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {static_cast<uint32_t>(width_), static_cast<uint32_t>(height_), 1};
+        vkCmdCopyImageToBuffer(cmd, color_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               pixels_.buffer, 1, &region);
+      }
+    });
+  }
+
+  void writePng(const std::string& path) const {
+    const std::string temporary = path + ".tmp";
+    if (!stbi_write_png(temporary.c_str(), width_, height_, 4, pixels_.mapped, width_ * 4)) {
+      std::remove(temporary.c_str());
+      throw Error(path + ": cannot write the PNG");
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+      std::remove(temporary.c_str());
+      throw Error(path + ": cannot write the PNG (rename failed)");
+    }
+  }
+
+  int validationMessages() const { return gpu_.validationMessages; }
+
+ private:
+  int width_, height_;
+  gpu::Context gpu_;
+  VkRenderPass renderPass_ = VK_NULL_HANDLE;
+  gpu::Image color_, depth_;
+  VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+  gpu::Buffer pixels_;
+};
+
+}  // namespace
+
+void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
+                      RemeshResult result, const ScreenshotOptions& shot) {
+  if (shot.width < 320 || shot.height < 240 || shot.width > 8192 || shot.height > 8192)
+    throw Error("--size must be between 320x240 and 8192x8192");
+  OffscreenRenderer renderer(shot.width, shot.height, shot.validation);
+  {
+    Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result));
+    if (shot.iteration >= 0) inspector.setIteration(shot.iteration);
+    inspector.showTimings(shot.timings);
+    // ImGui settles its layout over the first frames; the third is the picture.
+    for (int i = 0; i < 3; ++i) renderer.frame([&] { inspector.frame(); }, i == 2);
+  }
+  renderer.writePng(shot.path);
+  if (renderer.validationMessages() > 0)
+    throw Error("the Vulkan validation layer reported " +
+                std::to_string(renderer.validationMessages()) + " problems");
+}
+
+FrameTimes benchmarkScrub(const std::string& meshName, const RemeshOptions& options,
+                          RemeshResult result, int width, int height, int frames, bool scrub) {
+  OffscreenRenderer renderer(width, height, false);
+  Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result));
+  FrameTimes times;
+  const int count = static_cast<int>(inspector.iteration()) + 1;
+  for (int i = 0; i < frames; ++i) {
+    if (scrub) inspector.setIteration((i * 7) % count);  // jump around, as a dragged slider
+    const auto start = std::chrono::steady_clock::now();
+    renderer.frame([&] { inspector.frame(); }, false);
+    times.milliseconds.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return times;
+}
+
+}  // namespace lloydscope

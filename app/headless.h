@@ -1,0 +1,32 @@
+// Renders the inspector offscreen (no window, no X server) and writes a PNG.
+#pragma once
+
+#include "pipeline.h"
+
+#include <string>
+
+namespace lloydscope {
+
+struct ScreenshotOptions {
+  std::string path;
+  int width = 1280, height = 800;
+  int iteration = -1;  // -1: the last one
+  bool validation = false;
+  bool timings = true;  // off: the picture depends only on the mesh and the settings
+};
+
+struct FrameTimes {
+  std::vector<double> milliseconds;
+};
+
+// Throws Error (or gpu::GpuError) with a one-line message on failure; the PNG is written to a
+// temporary file and renamed, so an existing picture is replaced whole or not at all.
+void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
+                      RemeshResult result, const ScreenshotOptions& shot);
+
+// Renders `frames` frames, timing each: jumping to another iteration every frame (a scrub), or
+// staying on the last one.
+FrameTimes benchmarkScrub(const std::string& meshName, const RemeshOptions& options,
+                          RemeshResult result, int width, int height, int frames, bool scrub);
+
+}  // namespace lloydscope

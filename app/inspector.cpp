@@ -1,0 +1,576 @@
+#include "inspector.h"
+
+#define GLM_FORCE_DEPTH_ZERO_TO_ONE
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace lloydscope {
+
+namespace {
+
+VkCommandBuffer gCommandBuffer = VK_NULL_HANDLE;
+
+constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                        ImGuiWindowFlags_NoCollapse |
+                                        ImGuiWindowFlags_NoSavedSettings;
+
+ImU32 rgb(float r, float g, float b, float a = 1.0f) {
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a));
+}
+
+// Minimum angle 0..60 degrees: red (bad) through yellow (30) to green (equilateral).
+std::array<float, 3> angleColor(double degrees) {
+  const float t = static_cast<float>(std::clamp(degrees / 60.0, 0.0, 1.0));
+  if (t < 0.5f) {
+    const float s = t / 0.5f;
+    return {0.85f + 0.1f * s, 0.2f + 0.6f * s, 0.15f + 0.05f * s};
+  }
+  const float s = (t - 0.5f) / 0.5f;
+  return {0.95f - 0.65f * s, 0.8f - 0.05f * s, 0.2f + 0.2f * s};
+}
+
+// A perceptually ordered map (viridis-like) for cell quantities, t in 0..1.
+ImU32 quantityColor(float t, float alpha = 1.0f) {
+  t = std::clamp(t, 0.0f, 1.0f);
+  const float r = 0.27f + t * (0.99f - 0.27f) * t;
+  const float g = 0.0f + 0.9f * t;
+  const float b = 0.33f + 0.4f * std::sin(3.1f * (1.0f - t)) * (1.0f - t);
+  return rgb(r, g, b, alpha);
+}
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, const char* bottom,
+                  const std::function<ImU32(float)>& color) {
+  const float width = 12.0f;
+  const int steps = 24;
+  for (int i = 0; i < steps; ++i) {
+    const float t0 = static_cast<float>(i) / steps, t1 = static_cast<float>(i + 1) / steps;
+    dl->AddRectFilled(ImVec2(at.x, at.y + height * (1 - t1)), ImVec2(at.x + width, at.y + height * (1 - t0)),
+                      color(0.5f * (t0 + t1)));
+  }
+  dl->AddRect(at, ImVec2(at.x + width, at.y + height), rgb(0.2f, 0.2f, 0.2f));
+  dl->AddText(ImVec2(at.x + width + 4, at.y - 6), rgb(0.1f, 0.1f, 0.1f), top);
+  dl->AddText(ImVec2(at.x + width + 4, at.y + height - 8), rgb(0.1f, 0.1f, 0.1f), bottom);
+}
+
+void drawMeshCallback(const ImDrawList*, const ImDrawCmd* cmd) {
+  const auto* draw = static_cast<const std::pair<const MeshRenderer*, MeshDraw>*>(cmd->UserCallbackData);
+  draw->first->draw(gCommandBuffer, draw->second);
+}
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+}  // namespace
+
+void Inspector::setCommandBuffer(VkCommandBuffer cmd) { gCommandBuffer = cmd; }
+
+Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
+                     RemeshOptions options, RemeshResult result)
+    : gpu_(gpu), renderer_(gpu, renderPass),
+      meshName_(meshName.substr(meshName.find_last_of('/') + 1)),  // the file, not where it lives
+      options_(std::move(options)), result_(std::move(result)),
+      replay_(std::make_unique<Replay>(result_.recording)) {
+  iteration_ = replay_->iterationCount() - 1;
+  fitCamera();
+}
+
+void Inspector::setIteration(int k) {
+  iteration_ = std::clamp(k, 0, std::max(0, replay_->iterationCount() - 1));
+}
+
+void Inspector::fitCamera() {
+  const Mesh& mesh = result_.recording.input;
+  Vec3 lo = mesh.points.front(), hi = lo;
+  for (const Vec3& p : mesh.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  camera_.target = 0.5 * (lo + hi);
+  camera_.distance = static_cast<float>(1.05 * (hi - lo).norm());
+  camera_.yaw = -1.2f;
+  camera_.pitch = 0.75f;
+}
+
+const QualityMetrics& Inspector::currentQuality() {
+  if (measuredIteration_ != iteration_ || measuredMethod_ != replay_->method()) {
+    quality_ = measureQuality(replay_->view(iteration_).output);
+    measuredIteration_ = iteration_;
+    measuredMethod_ = replay_->method();
+  }
+  return quality_;
+}
+
+void Inspector::uploadMesh() {
+  const IterationView& view = replay_->view(iteration_);
+  const Mesh& mesh = showInput_ ? result_.recording.input : view.output;
+  std::vector<std::array<float, 3>> colors;
+  for (const Triangle& t : mesh.triangles) {
+    if (!colorByAngle_) {
+      colors.push_back({0.78f, 0.8f, 0.85f});
+      continue;
+    }
+    const auto a = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    colors.push_back(angleColor(*std::min_element(a.begin(), a.end())));
+  }
+  renderer_.upload(mesh, colors);
+  uploadedIteration_ = iteration_;
+  uploadedInput_ = showInput_;
+  uploadedMethod_ = replay_->method();
+}
+
+void Inspector::frame() {
+  handleKeys();
+  if (playing_) {
+    playClock_ += ImGui::GetIO().DeltaTime * playSpeed_;
+    while (playClock_ >= 1.0f) {
+      playClock_ -= 1.0f;
+      if (iteration_ + 1 >= replay_->iterationCount()) playing_ = false;
+      else setIteration(iteration_ + 1);
+    }
+  }
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float left = std::max(280.0f, display.x * 0.23f);
+  const float timelineHeight = 64.0f, plotsHeight = std::max(170.0f, display.y * 0.27f);
+  const float viewsHeight = display.y - timelineHeight - plotsHeight;
+  const float viewWidth = (display.x - left) / 2;
+  controlsPane(ImVec2(0, 0), ImVec2(left, display.y));
+  viewPane3D(ImVec2(left, 0), ImVec2(viewWidth, viewsHeight));
+  domainPane2D(ImVec2(left + viewWidth, 0), ImVec2(display.x - left - viewWidth, viewsHeight));
+  plotsPane(ImVec2(left, viewsHeight), ImVec2(display.x - left, plotsHeight));
+  timelinePane(ImVec2(left, viewsHeight + plotsHeight), ImVec2(display.x - left, timelineHeight));
+}
+
+void Inspector::handleKeys() {
+  ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  const int step = io.KeyShift ? 10 : 1;
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) setIteration(iteration_ - step);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) setIteration(iteration_ + step);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) setIteration(0);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) setIteration(replay_->iterationCount() - 1);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
+    if (!playing_ && iteration_ + 1 >= replay_->iterationCount()) setIteration(0);
+    playing_ = !playing_;
+  }
+}
+
+void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Lloydscope", nullptr, kPaneFlags);
+  ImGui::TextWrapped("Mesh: %s", meshName_.c_str());
+  ImGui::TextWrapped("Parameterization: %s (%s border), density: %s, solver: %s",
+                     toString(result_.paramUsed), toString(options_.param.border),
+                     toString(options_.density.kind), toString(options_.lloyd.solver));
+  ImGui::Text("Sites: %zu fixed, %zu movable", result_.recording.fixedSites.size(),
+              result_.recording.iterations.empty() ? size_t(0)
+                                                   : result_.recording.iterations[0].sites.size());
+  ImGui::Text("Thresholds: %.0e, %.0f%%", options_.lloyd.distanceThreshold,
+              options_.lloyd.percentThreshold);
+  ImGui::Separator();
+  int method = replay_->method() == RemeshMethod::Relocate ? 0 : 1;
+  ImGui::TextUnformatted("Result");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("relocate", &method, 0)) replay_->setMethod(RemeshMethod::Relocate);
+  ImGui::SameLine();
+  if (ImGui::RadioButton("retriangulate", &method, 1)) replay_->setMethod(RemeshMethod::Retriangulate);
+  if (replay_->method() != (method == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate))
+    ImGui::TextDisabled("(relocate needs one site per input vertex)");
+
+  ImGui::Separator();
+  ImGui::TextWrapped("Input and the current iteration's result (the report's Table II)");
+  const QualityMetrics& current = currentQuality();
+  if (ImGui::BeginTable("metrics", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("Input", ImGuiTableColumnFlags_WidthFixed, 52.0f);
+    ImGui::TableSetupColumn(("It. " + std::to_string(iteration_)).c_str(),
+                            ImGuiTableColumnFlags_WidthFixed, 52.0f);
+    ImGui::TableHeadersRow();
+    auto row = [](const char* label, const std::string& a, const std::string& b) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(label);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(a.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(b.c_str());
+    };
+    const QualityMetrics& in = result_.before;
+    row("Vertices", std::to_string(in.vertices), std::to_string(current.vertices));
+    row("Faces", std::to_string(in.faces), std::to_string(current.faces));
+    row("Irregular %", format("%.1f", in.irregularPercent), format("%.1f", current.irregularPercent));
+    row("  border-aware %", format("%.1f", in.irregularBoundaryAware),
+        format("%.1f", current.irregularBoundaryAware));
+    row("Min angle", format("%.1f", in.minAngle), format("%.1f", current.minAngle));
+    row("Avg min angle", format("%.1f", in.avgMinAngle), format("%.1f", current.avgMinAngle));
+    row("Under 30 deg %", format("%.1f", in.percentUnder30), format("%.1f", current.percentUnder30));
+    ImGui::EndTable();
+  }
+  ImGui::Text("Final: %d iterations, %s", result_.iterations,
+              result_.converged ? "converged" : "not converged");
+  ImGui::Text("Hausdorff %.3f%%, RMS %.3f%% of diagonal", result_.fidelity.hausdorffPercent,
+              result_.fidelity.rmsPercent);
+  if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
+  ImGui::Separator();
+  ImGui::TextUnformatted("2D view");
+  ImGui::Checkbox("parameter triangles", &showTriangles_);
+  ImGui::Checkbox("site -> centroid arrows", &showArrows_);
+  const char* fills[] = {"no fill", "mass", "area", "energy", "distance to centroid"};
+  int fill = static_cast<int>(fill_);
+  if (ImGui::Combo("cell fill", &fill, fills, 5)) fill_ = static_cast<CellFill>(fill);
+  ImGui::TextUnformatted("3D view");
+  bool showInput = showInput_;
+  if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
+  bool byAngle = colorByAngle_;
+  if (ImGui::Checkbox("colour by minimum angle", &byAngle)) {
+    colorByAngle_ = byAngle;
+    uploadedIteration_ = -1;
+  }
+  ImGui::Checkbox("wireframe", &wireframe_);
+  if (ImGui::Button("Fit view (F)")) fitCamera();
+  ImGui::End();
+}
+
+void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("3D view", nullptr, kPaneFlags);
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImVec2 extent = ImGui::GetContentRegionAvail();
+  extent.x = std::max(extent.x, 2.0f);
+  extent.y = std::max(extent.y, 2.0f);
+  ImGui::InvisibleButton("canvas3d", extent,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    camera_.yaw -= io.MouseDelta.x * 0.01f;
+    camera_.pitch = std::clamp(camera_.pitch + io.MouseDelta.y * 0.01f, -1.5f, 1.5f);
+  }
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0)
+    camera_.distance *= std::pow(0.9f, io.MouseWheel);
+  if (ImGui::IsItemHovered() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + ('F' - 'A')))
+    fitCamera();
+
+  if (uploadedIteration_ != iteration_ || uploadedInput_ != showInput_ ||
+      uploadedMethod_ != replay_->method())
+    uploadMesh();
+
+  const glm::vec3 target(camera_.target.x(), camera_.target.y(), camera_.target.z());
+  const glm::vec3 eye = target + camera_.distance * glm::vec3(std::cos(camera_.pitch) * std::cos(camera_.yaw),
+                                                              std::cos(camera_.pitch) * std::sin(camera_.yaw),
+                                                              std::sin(camera_.pitch));
+  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / extent.y,
+                                    camera_.distance * 0.01f, camera_.distance * 10.0f);
+  proj[1][1] *= -1.0f;  // Vulkan's y points down
+  const glm::mat4 viewProjection = proj * glm::lookAt(eye, target, glm::vec3(0, 0, 1));
+
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), rgb(0.93f, 0.94f, 0.96f));
+  meshDraw_.wireframe = wireframe_;
+  std::copy(glm::value_ptr(viewProjection), glm::value_ptr(viewProjection) + 16,
+            meshDraw_.viewProjection.begin());
+  meshDraw_.viewport[0] = p0.x;
+  meshDraw_.viewport[1] = p0.y;
+  meshDraw_.viewport[2] = extent.x;
+  meshDraw_.viewport[3] = extent.y;
+  static std::pair<const MeshRenderer*, MeshDraw> callbackData;
+  callbackData = {&renderer_, meshDraw_};
+  dl->AddCallback(drawMeshCallback, &callbackData);
+  dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+
+  // The lifted sites as points, on top.
+  if (!showInput_) {
+    const IterationView& view = replay_->view(iteration_);
+    for (const Vec3& s : view.liftedSites) {
+      const glm::vec4 c = viewProjection * glm::vec4(s.x(), s.y(), s.z(), 1.0f);
+      if (c.w <= 0) continue;
+      const ImVec2 screen(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
+                          p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
+      // Squares, not circles: two thousand of them must stay cheap for lavapipe.
+      dl->AddRectFilled(ImVec2(screen.x - 1.5f, screen.y - 1.5f),
+                        ImVec2(screen.x + 1.5f, screen.y + 1.5f), rgb(0.1f, 0.15f, 0.45f));
+    }
+  }
+  if (colorByAngle_)
+    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, "60 deg", "0 deg", [](float t) {
+      const auto c = angleColor(60.0 * t);
+      return rgb(c[0], c[1], c[2]);
+    });
+  dl->AddText(ImVec2(p0.x + 8, p0.y + 4), rgb(0.1f, 0.1f, 0.1f),
+              showInput_ ? "input mesh" : (std::string("result at iteration ") + std::to_string(iteration_) +
+                                           " (" + toString(replay_->method()) + ")").c_str());
+  ImGui::End();
+}
+
+const std::vector<std::pair<Vec2, Vec2>>& Inspector::cellEdges() {
+  if (edgesIteration_ == iteration_) return cellEdges_;
+  // The Voronoi edges inside the domain: the edges of each piece that do not lie on its
+  // parameter triangle's sides. Each appears in the two cells it separates, in opposite
+  // directions: keep one.
+  cellEdges_.clear();
+  const Domain& domain = replay_->domain();
+  for (const BoundedCell& cell : replay_->view(iteration_).cells)
+    for (const CellPiece& piece : cell.pieces) {
+      const Triangle& tri = domain.triangles()[piece.triangle];
+      const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
+      const size_t n = piece.polygon.size();
+      for (size_t i = 0; i < n; ++i) {
+        const Vec2 &p = piece.polygon[i], &q = piece.polygon[(i + 1) % n];
+        if (std::make_pair(p.x(), p.y()) > std::make_pair(q.x(), q.y())) continue;
+        bool onSide = false;
+        for (int k = 0; k < 3 && !onSide; ++k) {
+          const Vec2 edge = corner[(k + 1) % 3] - corner[k];
+          const double tolerance = 1e-9 * edge.norm();
+          onSide = std::abs(cross2(edge, p - corner[k])) <= tolerance &&
+                   std::abs(cross2(edge, q - corner[k])) <= tolerance;
+        }
+        if (!onSide) cellEdges_.emplace_back(p, q);
+      }
+    }
+  edgesIteration_ = iteration_;
+  return cellEdges_;
+}
+
+void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("2D parameter domain", nullptr, kPaneFlags);
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImVec2 extent = ImGui::GetContentRegionAvail();
+  extent.x = std::max(extent.x, 2.0f);
+  extent.y = std::max(extent.y, 2.0f);
+  ImGui::InvisibleButton("canvas2d", extent, ImGuiButtonFlags_MouseButtonLeft);
+  ImGuiIO& io = ImGui::GetIO();
+  const float base = 0.92f * std::min(extent.x, extent.y);
+  const ImVec2 center(p0.x + extent.x / 2 + pan2D_.x, p0.y + extent.y / 2 + pan2D_.y);
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    pan2D_.x += io.MouseDelta.x;
+    pan2D_.y += io.MouseDelta.y;
+  }
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) zoom2D_ *= std::pow(1.15f, io.MouseWheel);
+  const float scale = base * zoom2D_;
+  auto screen = [&](const Vec2& uv) {
+    return ImVec2(center.x + static_cast<float>(uv.x() - 0.5) * scale,
+                  center.y - static_cast<float>(uv.y() - 0.5) * scale);
+  };
+
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  // Thousands of thin lines: anti-aliasing would double the geometry lavapipe has to fill.
+  const ImDrawListFlags flags = dl->Flags;
+  dl->Flags &= ~(ImDrawListFlags_AntiAliasedLines | ImDrawListFlags_AntiAliasedFill);
+  dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
+  dl->AddRectFilled(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), rgb(1, 1, 1));
+  const Domain& domain = replay_->domain();
+  const IterationView& view = replay_->view(iteration_);
+  const size_t fixedCount = replay_->recording().fixedSites.size();
+
+  // Cell fill by a per-cell quantity.
+  if (fill_ != CellFill::None) {
+    auto quantity = [&](size_t i) {
+      const BoundedCell& c = view.cells[i];
+      switch (fill_) {
+        case CellFill::Mass: return c.mass;
+        case CellFill::Area: return c.area;
+        case CellFill::Energy: return c.energy;
+        default: return (c.centroid - view.sites[i]).norm();
+      }
+    };
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t i = 0; i < view.cells.size(); ++i) {
+      lo = std::min(lo, quantity(i));
+      hi = std::max(hi, quantity(i));
+    }
+    std::vector<ImVec2> points;
+    for (size_t i = 0; i < view.cells.size(); ++i) {
+      const float t = hi > lo ? static_cast<float>((quantity(i) - lo) / (hi - lo)) : 0.5f;
+      for (const CellPiece& piece : view.cells[i].pieces) {
+        points.clear();
+        for (const Vec2& p : piece.polygon) points.push_back(screen(p));
+        dl->AddConvexPolyFilled(points.data(), static_cast<int>(points.size()), quantityColor(t, 0.85f));
+      }
+    }
+    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, format("%.2e", hi).c_str(),
+                 format("%.2e", lo).c_str(), [](float t) { return quantityColor(t); });
+  }
+  // Parameter triangles, faint; the domain's border, dark.
+  for (size_t t = 0; t < domain.triangles().size(); ++t) {
+    const Triangle& tri = domain.triangles()[t];
+    for (int k = 0; k < 3; ++k) {
+      const bool border = domain.neighbours()[t][(k + 2) % 3] < 0;
+      if (!border && !showTriangles_) continue;
+      const Vec2 &a = domain.uv()[tri[k]], &b = domain.uv()[tri[(k + 1) % 3]];
+      if (border) dl->AddLine(screen(a), screen(b), rgb(0.15f, 0.15f, 0.15f), 2.0f);
+      else if (tri[k] < tri[(k + 1) % 3]) dl->AddLine(screen(a), screen(b), rgb(0.82f, 0.84f, 0.88f), 1.0f);
+    }
+  }
+  const ImU32 cellEdge = rgb(0.2f, 0.35f, 0.7f);
+  for (const auto& [p, q] : cellEdges()) dl->AddLine(screen(p), screen(q), cellEdge, 1.2f);
+  // Sites (filled), centroids (hollow), arrows from site to centroid.
+  // Dots a sixth of the site spacing: the cells stay visible between them.
+  const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f);
+  for (size_t i = 0; i < view.sites.size(); ++i) {
+    const ImVec2 s = screen(view.sites[i]);
+    if (i < fixedCount) {
+      dl->AddRectFilled(ImVec2(s.x - r, s.y - r), ImVec2(s.x + r, s.y + r), rgb(0.35f, 0.35f, 0.35f));
+      continue;
+    }
+    const ImVec2 c = screen(view.cells[i].centroid);
+    if (showArrows_) {
+      const float dx = c.x - s.x, dy = c.y - s.y, len = std::sqrt(dx * dx + dy * dy);
+      if (len > 1.0f) {
+        dl->AddLine(s, c, rgb(0.85f, 0.3f, 0.1f), 1.3f);
+        const float ux = dx / len, uy = dy / len, h = std::min(5.0f, len * 0.5f);
+        dl->AddTriangleFilled(c, ImVec2(c.x - h * ux + 0.5f * h * uy, c.y - h * uy - 0.5f * h * ux),
+                              ImVec2(c.x - h * ux - 0.5f * h * uy, c.y - h * uy + 0.5f * h * ux),
+                              rgb(0.85f, 0.3f, 0.1f));
+      }
+    }
+    dl->AddCircle(c, r + 1.0f, rgb(0.85f, 0.3f, 0.1f), 6, 1.2f);
+    dl->AddCircleFilled(s, r, rgb(0.1f, 0.15f, 0.45f), 6);
+  }
+  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - 18), rgb(0.1f, 0.1f, 0.1f),
+              "dots: sites  rings: centroids  squares: fixed border sites");
+  dl->PopClipRect();
+  dl->Flags = flags;
+  ImGui::End();
+}
+
+namespace {
+
+// A plot with axes and ticks over the whole recording; returns the iteration clicked, or -1.
+int plot(const char* title, const std::vector<double>& values, bool logScale, double threshold,
+         int current, const ImVec2& size) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton(title, size);
+  const bool active = ImGui::IsItemActive();
+  const float left = 58, right = 8, top = 18, bottom = 22;
+  const ImVec2 a(p0.x + left, p0.y + top), b(p0.x + size.x - right, p0.y + size.y - bottom);
+  dl->AddRectFilled(p0, ImVec2(p0.x + size.x, p0.y + size.y), rgb(1, 1, 1));
+  dl->AddRect(a, b, rgb(0.5f, 0.5f, 0.5f));
+  dl->AddText(ImVec2(p0.x + left, p0.y + 1), rgb(0.1f, 0.1f, 0.1f), title);
+  if (values.empty()) return -1;
+  auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values)
+    if (!logScale || v > 0) {
+      lo = std::min(lo, transform(v));
+      hi = std::max(hi, transform(v));
+    }
+  if (threshold > 0) {
+    lo = std::min(lo, transform(threshold));
+    hi = std::max(hi, transform(threshold));
+  }
+  if (!(hi > lo)) hi = lo + 1;
+  if (logScale) {
+    lo = std::floor(lo);
+    hi = std::ceil(hi);
+  }
+  const int n = static_cast<int>(values.size());
+  auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
+  auto y = [&](double v) { return b.y - static_cast<float>((transform(v) - lo) / (hi - lo)) * (b.y - a.y); };
+  // Y ticks: every power of ten on a log axis, five steps on a linear one.
+  const int ticks = logScale ? static_cast<int>(hi - lo) : 4;
+  for (int i = 0; i <= ticks; ++i) {
+    const double t = lo + (hi - lo) * i / std::max(ticks, 1);
+    const float ty = b.y - static_cast<float>((t - lo) / (hi - lo)) * (b.y - a.y);
+    dl->AddLine(ImVec2(a.x - 4, ty), ImVec2(b.x, ty), rgb(0.9f, 0.9f, 0.9f));
+    const std::string label = logScale ? "1e" + std::to_string(static_cast<int>(std::lround(t))) : format("%.3g", t);
+    dl->AddText(ImVec2(p0.x + 2, ty - 7), rgb(0.3f, 0.3f, 0.3f), label.c_str());
+  }
+  // X ticks: iterations.
+  // At most about five labels: steps of 1, 2 or 5 times a power of ten.
+  const double rough = std::max(1.0, n / 5.0), power = std::pow(10, std::floor(std::log10(rough)));
+  const int step = static_cast<int>(rough / power < 2 ? power : rough / power < 5 ? 2 * power : 5 * power);
+  for (int k = 0; k < n; k += step) {
+    dl->AddLine(ImVec2(x(k), b.y), ImVec2(x(k), b.y + 4), rgb(0.3f, 0.3f, 0.3f));
+    dl->AddText(ImVec2(x(k) - 6, b.y + 5), rgb(0.3f, 0.3f, 0.3f), std::to_string(k).c_str());
+  }
+  dl->PushClipRect(a, b, true);
+  if (threshold > 0) dl->AddLine(ImVec2(a.x, y(threshold)), ImVec2(b.x, y(threshold)), rgb(0.2f, 0.6f, 0.2f), 1.5f);
+  std::vector<ImVec2> line;
+  for (int k = 0; k < n; ++k)
+    if (!logScale || values[k] > 0) line.emplace_back(x(k), y(values[k]));
+  dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgb(0.15f, 0.3f, 0.7f), 0, 1.5f);
+  dl->AddLine(ImVec2(x(current), a.y), ImVec2(x(current), b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
+  if (current < n && (!logScale || values[current] > 0))
+    dl->AddCircleFilled(ImVec2(x(current), y(values[current])), 4.0f, rgb(0.85f, 0.3f, 0.1f));
+  dl->PopClipRect();
+  if (active) {
+    const float mx = ImGui::GetIO().MousePos.x;
+    return std::clamp(static_cast<int>(std::lround((mx - a.x) / (b.x - a.x) * (n - 1))), 0, n - 1);
+  }
+  return -1;
+}
+
+}  // namespace
+
+void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Convergence", nullptr, kPaneFlags);
+  const auto& its = replay_->recording().iterations;
+  std::vector<double> energy, displacement, moving;
+  for (const IterationRecord& it : its) {
+    energy.push_back(it.energy);
+    displacement.push_back(it.maxDisplacement);
+    moving.push_back(100.0 * it.fractionMoving);
+  }
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const ImVec2 each((avail.x - 2 * ImGui::GetStyle().ItemSpacing.x) / 3, avail.y);
+  int jump = plot("CVT energy", energy, false, 0, iteration_, each);
+  ImGui::SameLine();
+  int k = plot("max distance site-centroid (log)", displacement, true,
+               replay_->recording().distanceThreshold, iteration_, each);
+  if (k >= 0) jump = k;
+  ImGui::SameLine();
+  k = plot("% sites farther than threshold (log)", moving, true, replay_->recording().percentThreshold,
+           iteration_, each);
+  if (k >= 0) jump = k;
+  if (jump >= 0) setIteration(jump);
+  ImGui::End();
+}
+
+void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Timeline", nullptr, kPaneFlags | ImGuiWindowFlags_NoTitleBar);
+  const int last = std::max(0, replay_->iterationCount() - 1);
+  if (ImGui::Button("|<")) setIteration(0);
+  ImGui::SameLine();
+  if (ImGui::Button("<")) setIteration(iteration_ - 1);
+  ImGui::SameLine();
+  if (ImGui::Button(playing_ ? "Pause" : "Play ")) {
+    if (!playing_ && iteration_ >= last) setIteration(0);
+    playing_ = !playing_;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button(">")) setIteration(iteration_ + 1);
+  ImGui::SameLine();
+  if (ImGui::Button(">|")) setIteration(last);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(std::max(100.0f, ImGui::GetContentRegionAvail().x - 230));
+  int k = iteration_;
+  if (ImGui::SliderInt("##iteration", &k, 0, last, "iteration %d")) setIteration(k);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderFloat("it/s", &playSpeed_, 1.0f, 60.0f, "%.0f");
+  const IterationRecord& it = replay_->recording().iterations[iteration_];
+  ImGui::Text("iteration %d of %d   energy %.6e   max move %.2e   %.1f%% moving   %s"
+              "keys: <- -> (Shift: 10), Home, End, Space",
+              iteration_, last, it.energy, it.maxDisplacement, 100.0 * it.fractionMoving,
+              showTimings_ ? format("%.1f ms   ", it.milliseconds).c_str() : "");
+  ImGui::End();
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,77 @@
+// The inspector's panes, drawn with Dear ImGui: 3D view, 2D parameter domain with the bounded
+// Voronoi cells, convergence plots, timeline, controls and results. All linked to one current
+// iteration of a recording; windowed and headless front ends both call frame().
+#pragma once
+
+#include "mesh_renderer.h"
+#include "pipeline.h"
+#include "replay.h"
+
+#include <imgui.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace lloydscope {
+
+struct Camera {
+  float yaw = 0.6f, pitch = 0.7f, distance = 2.5f;
+  Vec3 target = Vec3::Zero();
+};
+
+enum class CellFill { None, Mass, Area, Energy, Displacement };
+
+class Inspector {
+ public:
+  // `result` is the finished run the inspector opens on (its recording drives every pane).
+  Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
+            RemeshOptions options, RemeshResult result);
+
+  // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
+  void frame();
+  void setIteration(int k);
+  // Off for reproducible pictures: timings differ from run to run.
+  void showTimings(bool show) { showTimings_ = show; }
+  int iteration() const { return iteration_; }
+  // The command buffer of the frame being recorded: the 3D pane's draw callback needs it
+  // (ImGui 1.86 passes callbacks no command buffer).
+  static void setCommandBuffer(VkCommandBuffer cmd);
+
+ private:
+  void controlsPane(const ImVec2& pos, const ImVec2& size);
+  void viewPane3D(const ImVec2& pos, const ImVec2& size);
+  void domainPane2D(const ImVec2& pos, const ImVec2& size);
+  void plotsPane(const ImVec2& pos, const ImVec2& size);
+  void timelinePane(const ImVec2& pos, const ImVec2& size);
+  void handleKeys();
+  void uploadMesh();
+  const QualityMetrics& currentQuality();
+  const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached  // of the current iteration's result, cached
+  void fitCamera();
+
+  gpu::Context& gpu_;
+  MeshRenderer renderer_;
+  std::string meshName_;
+  RemeshOptions options_;
+  RemeshResult result_;
+  std::unique_ptr<Replay> replay_;
+  int iteration_ = 0;
+  int uploadedIteration_ = -1, measuredIteration_ = -1;
+  RemeshMethod uploadedMethod_ = RemeshMethod::Retriangulate;
+  RemeshMethod measuredMethod_ = RemeshMethod::Retriangulate;
+  QualityMetrics quality_;
+  std::vector<std::pair<Vec2, Vec2>> cellEdges_;
+  int edgesIteration_ = -1;
+  bool showInput_ = false, uploadedInput_ = false;
+  bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;
+  bool playing_ = false, showTimings_ = true;
+  float playSpeed_ = 10.0f, playClock_ = 0.0f;
+  CellFill fill_ = CellFill::None;
+  Camera camera_;
+  float zoom2D_ = 1.0f;
+  ImVec2 pan2D_{0, 0};
+  MeshDraw meshDraw_{};
+};
+
+}  // namespace lloydscope

@@ -1,0 +1,38 @@
+// Draws a triangle mesh, shaded with a one-pass wireframe, inside an ImGui pane: an ImDrawList
+// callback binds this pipeline with the pane's viewport (ImGui 1.86's Vulkan backend cannot
+// show a texture of ours).
+#pragma once
+
+#include "gpu.h"
+#include "mesh.h"
+
+#include <array>
+#include <vector>
+
+namespace lloydscope {
+
+struct MeshDraw {
+  std::array<float, 16> viewProjection;  // column-major, Vulkan clip space
+  float viewport[4];                     // x, y, width, height in framebuffer pixels
+  bool wireframe = true;
+  float wireWidth = 1.2f;
+};
+
+class MeshRenderer {
+ public:
+  MeshRenderer(gpu::Context& gpu, VkRenderPass renderPass);
+  ~MeshRenderer();
+
+  // One colour per triangle (linear RGB, 0..1).
+  void upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors);
+  void draw(VkCommandBuffer cmd, const MeshDraw& draw) const;
+
+ private:
+  gpu::Context& gpu_;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  gpu::Buffer vertices_;
+  uint32_t vertexCount_ = 0;
+};
+
+}  // namespace lloydscope

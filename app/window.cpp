@@ -1,0 +1,240 @@
+#include "window.h"
+
+#include "gpu.h"
+#include "inspector.h"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+#include <cstdlib>
+#include <vector>
+
+namespace lloydscope {
+
+namespace {
+
+std::vector<const char*> surfaceExtensions() {
+  uint32_t count = 0;
+  const char** names = glfwGetRequiredInstanceExtensions(&count);
+  if (!names) throw Error("Vulkan cannot present to this display (no surface extension)");
+  return std::vector<const char*>(names, names + count);
+}
+
+// The swapchain and everything sized like it; rebuilt when the window changes size.
+struct Swapchain {
+  VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+  VkExtent2D extent{};
+  std::vector<VkImage> images;
+  std::vector<VkImageView> views;
+  std::vector<VkFramebuffer> framebuffers;
+  gpu::Image depth;
+
+  void create(gpu::Context& gpu, VkSurfaceKHR surface, VkRenderPass pass, VkFormat format,
+              GLFWwindow* window) {
+    VkSurfaceCapabilitiesKHR caps;
+    vkGetPhysicalDeviceSurfaceCapabilitiesKHR(gpu.physical, surface, &caps);
+    int w, h;
+    glfwGetFramebufferSize(window, &w, &h);
+    extent = caps.currentExtent.width != UINT32_MAX
+                 ? caps.currentExtent
+                 : VkExtent2D{static_cast<uint32_t>(w), static_cast<uint32_t>(h)};
+    VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+    info.surface = surface;
+    info.minImageCount = std::max(2u, caps.minImageCount);
+    if (caps.maxImageCount) info.minImageCount = std::min(info.minImageCount, caps.maxImageCount);
+    info.imageFormat = format;
+    info.imageColorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
+    info.imageExtent = extent;
+    info.imageArrayLayers = 1;
+    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.preTransform = caps.currentTransform;
+    info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+    info.presentMode = VK_PRESENT_MODE_FIFO_KHR;
+    info.clipped = VK_TRUE;
+    gpu::check(vkCreateSwapchainKHR(gpu.device, &info, nullptr, &swapchain), "creating the swapchain");
+    uint32_t count = 0;
+    vkGetSwapchainImagesKHR(gpu.device, swapchain, &count, nullptr);
+    images.resize(count);
+    vkGetSwapchainImagesKHR(gpu.device, swapchain, &count, images.data());
+    depth = gpu.createImage(extent.width, extent.height, gpu::kDepthFormat,
+                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    for (VkImage image : images) {
+      VkImageViewCreateInfo v{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+      v.image = image;
+      v.viewType = VK_IMAGE_VIEW_TYPE_2D;
+      v.format = format;
+      v.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+      VkImageView view;
+      gpu::check(vkCreateImageView(gpu.device, &v, nullptr, &view), "creating a swapchain view");
+      views.push_back(view);
+      const VkImageView attachments[2] = {view, depth.view};
+      VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+      fb.renderPass = pass;
+      fb.attachmentCount = 2;
+      fb.pAttachments = attachments;
+      fb.width = extent.width;
+      fb.height = extent.height;
+      fb.layers = 1;
+      VkFramebuffer framebuffer;
+      gpu::check(vkCreateFramebuffer(gpu.device, &fb, nullptr, &framebuffer), "creating a framebuffer");
+      framebuffers.push_back(framebuffer);
+    }
+  }
+
+  void destroy(gpu::Context& gpu) {
+    vkDeviceWaitIdle(gpu.device);
+    for (VkFramebuffer f : framebuffers) vkDestroyFramebuffer(gpu.device, f, nullptr);
+    for (VkImageView v : views) vkDestroyImageView(gpu.device, v, nullptr);
+    gpu.destroy(depth);
+    if (swapchain) vkDestroySwapchainKHR(gpu.device, swapchain, nullptr);
+    *this = Swapchain{};
+  }
+};
+
+}  // namespace
+
+int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
+              bool validation) {
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((!display || !*display) && (!wayland || !*wayland))
+    throw Error("no display to open a window on: use 'lloydscope inspect MESH --screenshot "
+                "OUT.png' for a picture, 'lloydscope remesh MESH -o OUT' for the result, or run "
+                "under xvfb-run");
+  if (!glfwInit()) throw Error("cannot open a window (GLFW could not start on this display)");
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+  GLFWwindow* window = glfwCreateWindow(1280, 800, "Lloydscope", nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    throw Error("cannot open a window on this display");
+  }
+  {
+    gpu::Context gpu(surfaceExtensions(), true, validation);
+    VkSurfaceKHR surface;
+    gpu::check(glfwCreateWindowSurface(gpu.instance, window, nullptr, &surface), "creating the surface");
+    VkBool32 supported = VK_FALSE;
+    vkGetPhysicalDeviceSurfaceSupportKHR(gpu.physical, gpu.queueFamily, surface, &supported);
+    if (!supported) throw Error("the Vulkan device cannot present to this window");
+    const VkFormat format = VK_FORMAT_B8G8R8A8_UNORM;  // UNORM: ImGui's colours are already sRGB
+    VkRenderPass pass = gpu::createRenderPass(gpu.device, format, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+    Swapchain chain;
+    chain.create(gpu, surface, pass, format, window);
+
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsLight();
+    ImGui_ImplGlfw_InitForVulkan(window, true);
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = gpu.instance;
+    info.PhysicalDevice = gpu.physical;
+    info.Device = gpu.device;
+    info.QueueFamily = gpu.queueFamily;
+    info.Queue = gpu.queue;
+    info.DescriptorPool = gpu.descriptorPool;
+    info.MinImageCount = 2;
+    info.ImageCount = static_cast<uint32_t>(chain.images.size());
+    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    ImGui_ImplVulkan_Init(&info, pass);
+    gpu.submitNow([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+
+    VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore acquired, rendered;
+    vkCreateSemaphore(gpu.device, &semaphoreInfo, nullptr, &acquired);
+    vkCreateSemaphore(gpu.device, &semaphoreInfo, nullptr, &rendered);
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence done;
+    vkCreateFence(gpu.device, &fenceInfo, nullptr, &done);
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = gpu.commandPool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer cmd;
+    vkAllocateCommandBuffers(gpu.device, &alloc, &cmd);
+    {
+      Inspector inspector(gpu, pass, meshName, options, std::move(result));
+      while (!glfwWindowShouldClose(window)) {
+        glfwPollEvents();
+        int w, h;
+        glfwGetFramebufferSize(window, &w, &h);
+        if (w == 0 || h == 0) continue;  // minimized
+        if (static_cast<uint32_t>(w) != chain.extent.width ||
+            static_cast<uint32_t>(h) != chain.extent.height) {
+          chain.destroy(gpu);
+          chain.create(gpu, surface, pass, format, window);
+        }
+        uint32_t index;
+        VkResult r = vkAcquireNextImageKHR(gpu.device, chain.swapchain, UINT64_MAX, acquired,
+                                           VK_NULL_HANDLE, &index);
+        if (r == VK_ERROR_OUT_OF_DATE_KHR) {
+          chain.destroy(gpu);
+          chain.create(gpu, surface, pass, format, window);
+          continue;
+        }
+        ImGui_ImplVulkan_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        inspector.frame();
+        ImGui::Render();
+        vkResetCommandBuffer(cmd, 0);
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        vkBeginCommandBuffer(cmd, &begin);
+        VkClearValue clear[2] = {};
+        clear[0].color = {{0.94f, 0.94f, 0.94f, 1.0f}};
+        clear[1].depthStencil = {1.0f, 0};
+        VkRenderPassBeginInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        rp.renderPass = pass;
+        rp.framebuffer = chain.framebuffers[index];
+        rp.renderArea = {{0, 0}, chain.extent};
+        rp.clearValueCount = 2;
+        rp.pClearValues = clear;
+        vkCmdBeginRenderPass(cmd, &rp, VK_SUBPASS_CONTENTS_INLINE);
+        Inspector::setCommandBuffer(cmd);
+        ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+        vkCmdEndRenderPass(cmd);
+        vkEndCommandBuffer(cmd);
+        const VkPipelineStageFlags wait = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        submit.waitSemaphoreCount = 1;
+        submit.pWaitSemaphores = &acquired;
+        submit.pWaitDstStageMask = &wait;
+        submit.commandBufferCount = 1;
+        submit.pCommandBuffers = &cmd;
+        submit.signalSemaphoreCount = 1;
+        submit.pSignalSemaphores = &rendered;
+        gpu::check(vkQueueSubmit(gpu.queue, 1, &submit, done), "submitting a frame");
+        VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+        present.waitSemaphoreCount = 1;
+        present.pWaitSemaphores = &rendered;
+        present.swapchainCount = 1;
+        present.pSwapchains = &chain.swapchain;
+        present.pImageIndices = &index;
+        vkQueuePresentKHR(gpu.queue, &present);
+        vkWaitForFences(gpu.device, 1, &done, VK_TRUE, UINT64_MAX);  // one frame in flight
+        vkResetFences(gpu.device, 1, &done);
+      }
+      vkDeviceWaitIdle(gpu.device);
+    }
+    vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
+    vkDestroyFence(gpu.device, done, nullptr);
+    vkDestroySemaphore(gpu.device, rendered, nullptr);
+    vkDestroySemaphore(gpu.device, acquired, nullptr);
+    ImGui_ImplVulkan_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    chain.destroy(gpu);
+    vkDestroyRenderPass(gpu.device, pass, nullptr);
+    vkDestroySurfaceKHR(gpu.instance, surface, nullptr);
+    if (gpu.validationMessages > 0)
+      throw Error("the Vulkan validation layer reported " + std::to_string(gpu.validationMessages) +
+                  " problems");
+  }
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return 0;
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,103 @@
+// Image snapshots of the whole inspector, rendered headless by the lloydscope binary, compared
+// with committed PNGs under a per-pixel tolerance. After an intended change of the pictures:
+//   LLOYDSCOPE_UPDATE_SNAPSHOTS=1 build/tests/lloydscope_tests --gtest_filter='Inspector*'
+#include "test_support.h"
+
+#include <stb_image.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <sys/wait.h>
+
+using namespace lloydscope;
+
+namespace {
+
+struct Picture {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgba;
+};
+
+Picture readPng(const std::string& path) {
+  Picture p;
+  int channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &p.width, &p.height, &channels, 4);
+  if (data) {
+    p.rgba.assign(data, data + static_cast<size_t>(p.width) * p.height * 4);
+    stbi_image_free(data);
+  }
+  return p;
+}
+
+int run(const std::string& args) {
+  const int status = std::system((std::string(LLOYDSCOPE_CLI) + " " + args).c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void checkScene(const std::string& name, const std::string& args) {
+  const std::string actualPath = test::tempPath(name);
+  ASSERT_EQ(run("inspect " + test::assetPath("sphere_cap.off") + " --screenshot " + actualPath +
+                " --size 960x600 --no-timings " + args),
+            0);
+  const std::string expectedPath = std::string(LLOYDSCOPE_SOURCE_DIR) + "/tests/snapshots/" + name;
+  if (std::getenv("LLOYDSCOPE_UPDATE_SNAPSHOTS")) {
+    std::rename(actualPath.c_str(), expectedPath.c_str());
+    GTEST_SKIP() << "snapshot written: " << expectedPath;
+  }
+  const Picture expected = readPng(expectedPath), actual = readPng(actualPath);
+  ASSERT_FALSE(expected.rgba.empty()) << "missing snapshot " << expectedPath;
+  ASSERT_EQ(actual.width, expected.width);
+  ASSERT_EQ(actual.height, expected.height);
+  // A pixel differs if a channel is off by more than 24; allow 0.5% of them (antialiasing).
+  size_t differing = 0;
+  for (size_t i = 0; i < actual.rgba.size(); i += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(actual.rgba[i + c] - expected.rgba[i + c]) > 24) {
+        ++differing;
+        break;
+      }
+  EXPECT_LE(differing, actual.rgba.size() / 4 / 200) << name << ": " << differing << " pixels differ";
+}
+
+}  // namespace
+
+TEST(Inspector, FirstIteration) { checkScene("inspector_iteration0.png", "--iteration 0"); }
+TEST(Inspector, SecondIteration) { checkScene("inspector_iteration1.png", "--iteration 1"); }
+TEST(Inspector, LastIteration) { checkScene("inspector_last.png", ""); }
+
+TEST(Inspector, PicturesDifferBetweenIterations) {
+  // Guards the snapshots themselves: the scenes must show different iterations.
+  const std::string dir = std::string(LLOYDSCOPE_SOURCE_DIR) + "/tests/snapshots/";
+  const Picture a = readPng(dir + "inspector_iteration0.png"), b = readPng(dir + "inspector_last.png");
+  ASSERT_FALSE(a.rgba.empty());
+  EXPECT_NE(a.rgba, b.rgba);
+}
+
+TEST(Inspector, WithoutADisplayItSaysWhatToDo) {
+  const std::string err = test::tempPath("nodisplay.err");
+  const int status = std::system(("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(LLOYDSCOPE_CLI) +
+                                  " inspect " + test::assetPath("jittered_grid.off") +
+                                  " --max-iterations 2 --no-fidelity 2>" + err).c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string message = test::readText(err);
+  EXPECT_NE(message.find("--screenshot"), std::string::npos) << message;
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+}
+
+TEST(Inspector, ValidationLayerReportsNothingHeadless) {
+  EXPECT_EQ(run("inspect " + test::assetPath("jittered_grid.off") + " --max-iterations 5 "
+                "--no-fidelity --validation --size 640x400 --screenshot " +
+                test::tempPath("validated.png")),
+            0);
+}
+
+TEST(Inspector, ReplaysARecording) {
+  const std::string rec = test::tempPath("inspect.lsrec");
+  ASSERT_EQ(run("remesh " + test::assetPath("jittered_grid.off") +
+                " --max-iterations 4 --no-fidelity --record " + rec + " > /dev/null"),
+            0);
+  const std::string png = test::tempPath("from_recording.png");
+  ASSERT_EQ(run("inspect " + rec + " --iteration 2 --size 640x400 --screenshot " + png), 0);
+  EXPECT_EQ(readPng(png).width, 640);
+}
