@@ -1,6 +1,7 @@
 #include "gpu.h"
 
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 
 namespace lloydscope::gpu {
@@ -236,6 +237,104 @@ void Context::submitNow(const std::function<void(VkCommandBuffer)>& record) {
   check(vkQueueSubmit(queue, 1, &submit, VK_NULL_HANDLE), "submitting commands");
   vkQueueWaitIdle(queue);
   vkFreeCommandBuffers(device, commandPool, 1, &cmd);
+}
+
+void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d,
+                    VkPipelineLayout& layout, VkPipeline& pipeline) {
+  VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                            d.pushConstantBytes};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &range;
+  check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout), "creating a pipeline layout");
+
+  auto module = [&](const uint32_t* code, size_t bytes) {
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = bytes;
+    info.pCode = code;
+    VkShaderModule m;
+    check(vkCreateShaderModule(device, &info, nullptr, &m), "creating a shader module");
+    return m;
+  };
+  const VkShaderModule vert = module(d.vertexCode, d.vertexBytes);
+  const VkShaderModule frag = module(d.fragmentCode, d.fragmentBytes);
+  VkPipelineShaderStageCreateInfo stages[2] = {};
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
+               VK_SHADER_STAGE_VERTEX_BIT, vert, "main", nullptr};
+  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
+               VK_SHADER_STAGE_FRAGMENT_BIT, frag, "main", nullptr};
+  VkVertexInputBindingDescription binding{0, d.stride, VK_VERTEX_INPUT_RATE_VERTEX};
+  VkPipelineVertexInputStateCreateInfo input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  input.vertexBindingDescriptionCount = 1;
+  input.pVertexBindingDescriptions = &binding;
+  input.vertexAttributeDescriptionCount = static_cast<uint32_t>(d.attributes.size());
+  input.pVertexAttributeDescriptions = d.attributes.data();
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = d.topology;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = d.depthTest;
+  depth.depthWriteEnable = d.depthTest;
+  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  VkPipelineColorBlendAttachmentState blendAttachment{};
+  blendAttachment.blendEnable = VK_TRUE;
+  blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+  blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
+  blendAttachment.colorWriteMask = 0xF;
+  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = 1;
+  blend.pAttachments = &blendAttachment;
+  const VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = 2;
+  dynamic.pDynamicStates = dynamicStates;
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = 2;
+  info.pStages = stages;
+  info.pVertexInputState = &input;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout;
+  info.renderPass = renderPass;
+  check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "creating a pipeline");
+  vkDestroyShaderModule(device, vert, nullptr);
+  vkDestroyShaderModule(device, frag, nullptr);
+}
+
+void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes) {
+  if (buffer.size < bytes || buffer.buffer == VK_NULL_HANDLE) {
+    vkDeviceWaitIdle(gpu.device);  // the old buffer may still be in use by a frame
+    gpu.destroy(buffer);
+    buffer = gpu.createBuffer(std::max<VkDeviceSize>(bytes, 256), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  }
+  if (bytes) std::memcpy(buffer.mapped, data, bytes);
+}
+
+void setViewport(VkCommandBuffer cmd, const float (&rect)[4]) {
+  const VkViewport viewport{rect[0], rect[1], rect[2], rect[3], 0.0f, 1.0f};
+  const VkRect2D scissor{{static_cast<int32_t>(rect[0]), static_cast<int32_t>(rect[1])},
+                         {static_cast<uint32_t>(rect[2]), static_cast<uint32_t>(rect[3])}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
 VkRenderPass createRenderPass(VkDevice device, VkFormat color, VkImageLayout finalLayout) {

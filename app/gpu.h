@@ -60,6 +60,28 @@ class Context {
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
 };
 
+// What differs between the inspector's pipelines; everything else (dynamic viewport and
+// scissor, no culling, one colour attachment, alpha blending) is shared.
+struct PipelineDescription {
+  const uint32_t* vertexCode;
+  size_t vertexBytes;
+  const uint32_t* fragmentCode;
+  size_t fragmentBytes;
+  std::vector<VkVertexInputAttributeDescription> attributes;  // all in binding 0
+  uint32_t stride;
+  VkPrimitiveTopology topology;
+  bool depthTest;
+  uint32_t pushConstantBytes;  // visible to both stages
+};
+// Creates the layout (push constants only) and the pipeline.
+void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d,
+                    VkPipelineLayout& layout, VkPipeline& pipeline);
+
+// Copies `bytes` into `buffer` (a host-visible vertex buffer), growing it when needed.
+void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes);
+// Viewport and scissor to a pane: x, y, width, height in framebuffer pixels.
+void setViewport(VkCommandBuffer cmd, const float (&rect)[4]);
+
 // A render pass with one colour and one depth attachment; the colour ends in `finalLayout`
 // (TRANSFER_SRC to read it back, PRESENT_SRC for a swapchain).
 VkRenderPass createRenderPass(VkDevice device, VkFormat color, VkImageLayout finalLayout);

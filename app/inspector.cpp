@@ -79,7 +79,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
     : gpu_(gpu), renderer_(gpu, renderPass),
       meshName_(meshName.substr(meshName.find_last_of('/') + 1)),  // the file, not where it lives
       options_(std::move(options)), result_(std::move(result)),
-      replay_(std::make_unique<Replay>(result_.recording)) {
+      replay_(std::make_unique<Replay>(result_.recording)), canvas_(gpu, renderPass) {
   iteration_ = replay_->iterationCount() - 1;
   fitCamera();
 }
@@ -365,16 +365,45 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   };
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  // Thousands of thin lines: anti-aliasing would double the geometry lavapipe has to fill.
-  const ImDrawListFlags flags = dl->Flags;
-  dl->Flags &= ~(ImDrawListFlags_AntiAliasedLines | ImDrawListFlags_AntiAliasedFill);
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
   dl->AddRectFilled(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), rgb(1, 1, 1));
+  const CanvasKey key{iteration_, fill_, showTriangles_, showArrows_, scale};
+  if (!(key == canvasKey_)) {
+    canvas_.upload(buildCanvas(scale));
+    canvasKey_ = key;
+  }
+  static std::pair<const CanvasRenderer*, CanvasDraw> callbackData;
+  callbackData = {&canvas_, CanvasDraw{{p0.x, p0.y, extent.x, extent.y}, center.x, center.y, scale}};
+  dl->AddCallback(
+      [](const ImDrawList*, const ImDrawCmd* cmd) {
+        const auto* d = static_cast<const std::pair<const CanvasRenderer*, CanvasDraw>*>(cmd->UserCallbackData);
+        d->first->draw(gCommandBuffer, d->second);
+      },
+      &callbackData);
+  dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+  // The domain's border, thick, on top (a few hundred lines: ImDrawList is fine for those).
+  const Domain& domain = replay_->domain();
+  for (size_t t = 0; t < domain.triangles().size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (domain.neighbours()[t][(k + 2) % 3] < 0) {
+        const Triangle& tri = domain.triangles()[t];
+        dl->AddLine(screen(domain.uv()[tri[k]]), screen(domain.uv()[tri[(k + 1) % 3]]),
+                    rgb(0.15f, 0.15f, 0.15f), 2.0f);
+      }
+  if (fill_ != CellFill::None)
+    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, format("%.2e", fillRange_[1]).c_str(),
+                 format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
+  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - 18), rgb(0.1f, 0.1f, 0.1f),
+              "dots: sites  rings: centroids  squares: fixed border sites");
+  dl->PopClipRect();
+  ImGui::End();
+}
+
+CanvasGeometry Inspector::buildCanvas(float scale) {
+  CanvasGeometry g;
   const Domain& domain = replay_->domain();
   const IterationView& view = replay_->view(iteration_);
   const size_t fixedCount = replay_->recording().fixedSites.size();
-
-  // Cell fill by a per-cell quantity.
   if (fill_ != CellFill::None) {
     auto quantity = [&](size_t i) {
       const BoundedCell& c = view.cells[i];
@@ -390,59 +419,48 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
       lo = std::min(lo, quantity(i));
       hi = std::max(hi, quantity(i));
     }
-    std::vector<ImVec2> points;
+    fillRange_[0] = lo;
+    fillRange_[1] = hi;
     for (size_t i = 0; i < view.cells.size(); ++i) {
       const float t = hi > lo ? static_cast<float>((quantity(i) - lo) / (hi - lo)) : 0.5f;
-      for (const CellPiece& piece : view.cells[i].pieces) {
-        points.clear();
-        for (const Vec2& p : piece.polygon) points.push_back(screen(p));
-        dl->AddConvexPolyFilled(points.data(), static_cast<int>(points.size()), quantityColor(t, 0.85f));
-      }
-    }
-    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, format("%.2e", hi).c_str(),
-                 format("%.2e", lo).c_str(), [](float t) { return quantityColor(t); });
-  }
-  // Parameter triangles, faint; the domain's border, dark.
-  for (size_t t = 0; t < domain.triangles().size(); ++t) {
-    const Triangle& tri = domain.triangles()[t];
-    for (int k = 0; k < 3; ++k) {
-      const bool border = domain.neighbours()[t][(k + 2) % 3] < 0;
-      if (!border && !showTriangles_) continue;
-      const Vec2 &a = domain.uv()[tri[k]], &b = domain.uv()[tri[(k + 1) % 3]];
-      if (border) dl->AddLine(screen(a), screen(b), rgb(0.15f, 0.15f, 0.15f), 2.0f);
-      else if (tri[k] < tri[(k + 1) % 3]) dl->AddLine(screen(a), screen(b), rgb(0.82f, 0.84f, 0.88f), 1.0f);
+      const ImU32 color = quantityColor(t, 0.85f);
+      for (const CellPiece& piece : view.cells[i].pieces)
+        for (size_t k = 1; k + 1 < piece.polygon.size(); ++k)
+          g.fill(piece.polygon[0], piece.polygon[k], piece.polygon[k + 1], color);
     }
   }
-  const ImU32 cellEdge = rgb(0.2f, 0.35f, 0.7f);
-  for (const auto& [p, q] : cellEdges()) dl->AddLine(screen(p), screen(q), cellEdge, 1.2f);
-  // Sites (filled), centroids (hollow), arrows from site to centroid.
+  if (showTriangles_)
+    for (size_t t = 0; t < domain.triangles().size(); ++t) {
+      const Triangle& tri = domain.triangles()[t];
+      for (int k = 0; k < 3; ++k)
+        if (tri[k] < tri[(k + 1) % 3] || domain.neighbours()[t][(k + 2) % 3] < 0)
+          g.line(domain.uv()[tri[k]], domain.uv()[tri[(k + 1) % 3]], rgb(0.82f, 0.84f, 0.88f));
+    }
+  for (const auto& [p, q] : cellEdges()) g.line(p, q, rgb(0.2f, 0.35f, 0.7f));
   // Dots a sixth of the site spacing: the cells stay visible between them.
   const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f);
+  const ImU32 orange = rgb(0.85f, 0.3f, 0.1f);
   for (size_t i = 0; i < view.sites.size(); ++i) {
-    const ImVec2 s = screen(view.sites[i]);
+    const Vec2& s = view.sites[i];
     if (i < fixedCount) {
-      dl->AddRectFilled(ImVec2(s.x - r, s.y - r), ImVec2(s.x + r, s.y + r), rgb(0.35f, 0.35f, 0.35f));
+      g.square(s, r, rgb(0.35f, 0.35f, 0.35f));
       continue;
     }
-    const ImVec2 c = screen(view.cells[i].centroid);
-    if (showArrows_) {
-      const float dx = c.x - s.x, dy = c.y - s.y, len = std::sqrt(dx * dx + dy * dy);
-      if (len > 1.0f) {
-        dl->AddLine(s, c, rgb(0.85f, 0.3f, 0.1f), 1.3f);
-        const float ux = dx / len, uy = dy / len, h = std::min(5.0f, len * 0.5f);
-        dl->AddTriangleFilled(c, ImVec2(c.x - h * ux + 0.5f * h * uy, c.y - h * uy - 0.5f * h * ux),
-                              ImVec2(c.x - h * ux - 0.5f * h * uy, c.y - h * uy + 0.5f * h * ux),
-                              rgb(0.85f, 0.3f, 0.1f));
-      }
+    const Vec2& c = view.cells[i].centroid;
+    const Vec2 d = (c - s) * scale;  // in pixels, v up
+    const float length = static_cast<float>(d.norm());
+    if (showArrows_ && length > 1.0f) {
+      g.line(s, c, orange);
+      const float ux = static_cast<float>(d.x()) / length, uy = -static_cast<float>(d.y()) / length;
+      const float h = std::min(5.0f, 0.5f * length);  // screen y points down: flip v
+      g.markTriangle(c, {0, 0, -h * ux + 0.5f * h * uy, -h * uy - 0.5f * h * ux,
+                         -h * ux - 0.5f * h * uy, -h * uy + 0.5f * h * ux},
+                     orange);
     }
-    dl->AddCircle(c, r + 1.0f, rgb(0.85f, 0.3f, 0.1f), 6, 1.2f);
-    dl->AddCircleFilled(s, r, rgb(0.1f, 0.15f, 0.45f), 6);
+    g.ring(c, r + 1.0f, orange);
+    g.dot(s, r, rgb(0.1f, 0.15f, 0.45f));
   }
-  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - 18), rgb(0.1f, 0.1f, 0.1f),
-              "dots: sites  rings: centroids  squares: fixed border sites");
-  dl->PopClipRect();
-  dl->Flags = flags;
-  ImGui::End();
+  return g;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 // iteration of a recording; windowed and headless front ends both call frame().
 #pragma once
 
+#include "canvas_renderer.h"
 #include "mesh_renderer.h"
 #include "pipeline.h"
 #include "replay.h"
@@ -47,7 +48,8 @@ class Inspector {
   void handleKeys();
   void uploadMesh();
   const QualityMetrics& currentQuality();
-  const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached  // of the current iteration's result, cached
+  const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
+  CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks  // of the current iteration's result, cached
   void fitCamera();
 
   gpu::Context& gpu_;
@@ -56,6 +58,20 @@ class Inspector {
   RemeshOptions options_;
   RemeshResult result_;
   std::unique_ptr<Replay> replay_;
+  CanvasRenderer canvas_;
+  // What the 2D pane's geometry was built for: rebuilt when any of it changes.
+  struct CanvasKey {
+    int iteration = -1;
+    CellFill fill = CellFill::None;
+    bool triangles = false, arrows = false;
+    float scale = 0;
+    bool operator==(const CanvasKey& o) const {
+      return iteration == o.iteration && fill == o.fill && triangles == o.triangles &&
+             arrows == o.arrows && scale == o.scale;
+    }
+  };
+  CanvasKey canvasKey_;
+  double fillRange_[2] = {0, 0};
   int iteration_ = 0;
   int uploadedIteration_ = -1, measuredIteration_ = -1;
   RemeshMethod uploadedMethod_ = RemeshMethod::Retriangulate;

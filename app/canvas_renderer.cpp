@@ -1,0 +1,121 @@
+#include "canvas_renderer.h"
+
+#include <cstdint>
+// Generated from shaders/ by glslangValidator at build time.
+#include "canvas.frag.h"
+#include "canvas.vert.h"
+
+#include <cmath>
+
+namespace lloydscope {
+
+namespace {
+
+struct Push {
+  float transform[4];
+  float pixel[4];
+};
+
+CanvasVertex vertex(const Vec2& p, float dx, float dy, uint32_t color) {
+  return {{static_cast<float>(p.x()), static_cast<float>(p.y())}, {dx, dy}, color};
+}
+
+// The corners of a hexagon of the given radius, in pixels.
+constexpr int kSides = 6;
+float cornerX(int k, float r) { return r * std::cos(k * 2.0f * 3.14159265f / kSides); }
+float cornerY(int k, float r) { return r * std::sin(k * 2.0f * 3.14159265f / kSides); }
+
+}  // namespace
+
+void CanvasGeometry::line(const Vec2& a, const Vec2& b, uint32_t color) {
+  lines.push_back(vertex(a, 0, 0, color));
+  lines.push_back(vertex(b, 0, 0, color));
+}
+
+void CanvasGeometry::fill(const Vec2& a, const Vec2& b, const Vec2& c, uint32_t color) {
+  fills.push_back(vertex(a, 0, 0, color));
+  fills.push_back(vertex(b, 0, 0, color));
+  fills.push_back(vertex(c, 0, 0, color));
+}
+
+void CanvasGeometry::markTriangle(const Vec2& at, const float (&o)[6], uint32_t color) {
+  for (int k = 0; k < 3; ++k) marks.push_back(vertex(at, o[2 * k], o[2 * k + 1], color));
+}
+
+void CanvasGeometry::dot(const Vec2& at, float r, uint32_t color) {
+  for (int k = 0; k < kSides; ++k) {
+    markTriangle(at, {0, 0, cornerX(k, r), cornerY(k, r), cornerX(k + 1, r), cornerY(k + 1, r)},
+                 color);
+  }
+}
+
+void CanvasGeometry::ring(const Vec2& at, float r, uint32_t color) {
+  for (int k = 0; k < kSides; ++k) {
+    lines.push_back(vertex(at, cornerX(k, r), cornerY(k, r), color));
+    lines.push_back(vertex(at, cornerX(k + 1, r), cornerY(k + 1, r), color));
+  }
+}
+
+void CanvasGeometry::square(const Vec2& at, float h, uint32_t color) {
+  markTriangle(at, {-h, -h, h, -h, h, h}, color);
+  markTriangle(at, {-h, -h, h, h, -h, h}, color);
+}
+
+CanvasRenderer::CanvasRenderer(gpu::Context& gpu, VkRenderPass renderPass) : gpu_(gpu) {
+  const std::vector<VkVertexInputAttributeDescription> attributes = {
+      {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, position)},
+      {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, pixelOffset)},
+      {2, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(CanvasVertex, color)}};
+  for (auto [topology, layout, pipeline] :
+       {std::tuple{VK_PRIMITIVE_TOPOLOGY_LINE_LIST, &lineLayout_, &linePipeline_},
+        std::tuple{VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, &triangleLayout_, &trianglePipeline_}})
+    gpu::createPipeline(gpu.device, renderPass,
+                        {canvas_vert, sizeof(canvas_vert), canvas_frag, sizeof(canvas_frag),
+                         attributes, sizeof(CanvasVertex), topology, false, sizeof(Push)},
+                        *layout, *pipeline);
+}
+
+CanvasRenderer::~CanvasRenderer() {
+  vkDeviceWaitIdle(gpu_.device);
+  for (gpu::Buffer* b : {&fills_, &lines_, &marks_}) gpu_.destroy(*b);
+  for (VkPipeline p : {linePipeline_, trianglePipeline_}) vkDestroyPipeline(gpu_.device, p, nullptr);
+  for (VkPipelineLayout l : {lineLayout_, triangleLayout_})
+    vkDestroyPipelineLayout(gpu_.device, l, nullptr);
+}
+
+void CanvasRenderer::upload(const CanvasGeometry& g) {
+  for (auto [buffer, count, vertices] :
+       {std::tuple{&fills_, &fillCount_, &g.fills}, std::tuple{&lines_, &lineCount_, &g.lines},
+        std::tuple{&marks_, &markCount_, &g.marks}}) {
+    gpu::uploadVertices(gpu_, *buffer, vertices->data(), vertices->size() * sizeof(CanvasVertex));
+    *count = static_cast<uint32_t>(vertices->size());
+  }
+}
+
+void CanvasRenderer::draw(VkCommandBuffer cmd, const CanvasDraw& d) const {
+  // Screen x = centerX + (u - 0.5) scale; clip = 2 (x - left) / width - 1. Likewise for y,
+  // which points down on screen while v points up.
+  const float w = d.viewport[2], h = d.viewport[3];
+  Push push{};
+  push.transform[0] = 2.0f * d.scale / w;
+  push.transform[1] = -2.0f * d.scale / h;
+  push.transform[2] = 2.0f * (d.centerX - 0.5f * d.scale - d.viewport[0]) / w - 1.0f;
+  push.transform[3] = 2.0f * (d.centerY + 0.5f * d.scale - d.viewport[1]) / h - 1.0f;
+  push.pixel[0] = 2.0f / w;
+  push.pixel[1] = 2.0f / h;
+  gpu::setViewport(cmd, d.viewport);
+  const VkDeviceSize offset = 0;
+  for (auto [pipeline, layout, buffer, count] :
+       {std::tuple{trianglePipeline_, triangleLayout_, fills_.buffer, fillCount_},
+        std::tuple{linePipeline_, lineLayout_, lines_.buffer, lineCount_},
+        std::tuple{trianglePipeline_, triangleLayout_, marks_.buffer, markCount_}}) {
+    if (count == 0) continue;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(Push), &push);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
+    vkCmdDraw(cmd, count, 1, 0, 0);
+  }
+}
+
+}  // namespace lloydscope

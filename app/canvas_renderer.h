@@ -1,0 +1,54 @@
+// Draws the 2D pane's many lines, dots and cell fills with a pipeline of its own, from
+// vertex buffers rebuilt only when the iteration or a display switch changes: thousands of
+// ImDrawList primitives per frame were the inspector's largest cost on lavapipe.
+#pragma once
+
+#include "gpu.h"
+#include "mesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace lloydscope {
+
+struct CanvasVertex {
+  float position[2];     // in the parameter domain
+  float pixelOffset[2];  // added on screen, in pixels
+  uint32_t color;        // RGBA8, as ImGui's IM_COL32
+};
+
+// Geometry in the parameter domain, drawn in three layers: fills, then lines, then marks
+// (dots, squares, arrow heads) on top.
+struct CanvasGeometry {
+  std::vector<CanvasVertex> fills, lines, marks;
+  void line(const Vec2& a, const Vec2& b, uint32_t color);
+  void fill(const Vec2& a, const Vec2& b, const Vec2& c, uint32_t color);
+  // A mark at `at`: a triangle whose corners are offsets in pixels.
+  void markTriangle(const Vec2& at, const float (&offsets)[6], uint32_t color);
+  void dot(const Vec2& at, float radius, uint32_t color);     // filled hexagon, pixel-sized
+  void ring(const Vec2& at, float radius, uint32_t color);    // hexagon outline, pixel-sized
+  void square(const Vec2& at, float half, uint32_t color);    // filled, pixel-sized
+};
+
+struct CanvasDraw {
+  float viewport[4];  // pane: x, y, width, height in framebuffer pixels
+  // Screen = centre + (uv - 0.5) * scale, v pointing up.
+  float centerX, centerY, scale;
+};
+
+class CanvasRenderer {
+ public:
+  CanvasRenderer(gpu::Context& gpu, VkRenderPass renderPass);
+  ~CanvasRenderer();
+  void upload(const CanvasGeometry& geometry);
+  void draw(VkCommandBuffer cmd, const CanvasDraw& draw) const;
+
+ private:
+  gpu::Context& gpu_;
+  VkPipelineLayout lineLayout_ = VK_NULL_HANDLE, triangleLayout_ = VK_NULL_HANDLE;
+  VkPipeline linePipeline_ = VK_NULL_HANDLE, trianglePipeline_ = VK_NULL_HANDLE;
+  gpu::Buffer fills_, lines_, marks_;
+  uint32_t fillCount_ = 0, lineCount_ = 0, markCount_ = 0;  // vertices
+};
+
+}  // namespace lloydscope
