@@ -40,52 +40,94 @@ Mesh buildOutput(const Mesh& input, const Domain& domain, RemeshMethod method,
   return retriangulate(input, domain, fixedSites, movableSites);
 }
 
-RemeshResult remesh(const Mesh& input, const RemeshOptions& requested, const std::string& name) {
-  RemeshOptions options = requested;
-  // Relocation moves the input's own vertices: it needs one site per inside vertex.
+namespace {
+
+// Relocation moves the input's own vertices: it needs one site per inside vertex.
+RemeshOptions effective(RemeshOptions options) {
   if (options.method == RemeshMethod::Relocate) options.sites.fromInputVertices = true;
+  return options;
+}
 
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
+                             const std::string& name)
+    : input_(input), options_(effective(options)),
+      param_([&] {
+        Stopwatch stage;
+        Parameterization p = parameterize(input, options_.param, name);
+        ms_.parameterize = stage.lap();
+        return p;
+      }()),
+      density_([&] {
+        Stopwatch stage;
+        std::vector<double> d = computeDensity(input, param_.uv, options_.density);
+        ms_.density = stage.lap();
+        return d;
+      }()),
+      domain_(param_.uv, input.triangles, density_) {
+  Stopwatch stage;
+  sites_ = initialSites(input_, param_, domain_, options_.sites);
+  ms_.sites = stage.lap();
+  solver_ = std::make_unique<LloydSolver>(domain_, sites_.fixed, sites_.movable, options_.lloyd);
+}
+
+const IterationRecord& RemeshSession::step() {
+  const IterationRecord& record = solver_->step();
+  ms_.lloyd += record.milliseconds;
+  return record;
+}
+
+bool RemeshSession::finished() const {
+  return converged() || iterationCount() >= options_.lloyd.maxIterations;
+}
+
+Recording RemeshSession::header() const {
+  Recording r;
+  r.settings = describe(options_);
+  r.method = options_.method;
+  r.distanceThreshold = options_.lloyd.distanceThreshold;
+  r.percentThreshold = options_.lloyd.percentThreshold;
+  r.input = input_;
+  r.uv = param_.uv;
+  r.density = density_;
+  r.fixedSites = solver_->fixedSites();
+  r.movableVertex = sites_.movableVertex;
+  return r;
+}
+
+RemeshResult RemeshSession::finish() {
   RemeshResult result;
-  Stopwatch total, stage;
-  const Parameterization param = parameterize(input, options.param, name);
-  result.paramUsed = param.method;
-  result.distortion = param.distortion;
-  result.ms.parameterize = stage.lap();
-
-  std::vector<double> density = computeDensity(input, param.uv, options.density);
-  Domain domain(param.uv, input.triangles, density);
-  result.ms.density = stage.lap();
-
-  InitialSites sites = initialSites(input, param, domain, options.sites);
-  result.ms.sites = stage.lap();
-
-  LloydSolver solver(domain, sites.fixed, sites.movable, options.lloyd);
-  solver.run();
-  result.iterations = static_cast<int>(solver.iterations().size());
-  result.converged = solver.converged();
-  result.ms.lloyd = stage.lap();
-
-  result.output = buildOutput(input, domain, options.method, solver.fixedSites(),
-                              solver.movableSites(), sites.movableVertex);
+  result.paramUsed = param_.method;
+  result.distortion = param_.distortion;
+  result.ms = ms_;
+  result.iterations = iterationCount();
+  result.converged = converged();
+  Stopwatch stage;
+  result.output = buildOutput(input_, domain_, options_.method, solver_->fixedSites(),
+                              solver_->movableSites(), sites_.movableVertex);
   result.ms.remesh = stage.lap();
-
-  result.before = measureQuality(input);
+  result.before = measureQuality(input_);
   result.after = measureQuality(result.output);
-  if (options.measureFidelity) result.fidelity = measureFidelity(result.output, input);
+  if (options_.measureFidelity) result.fidelity = measureFidelity(result.output, input_);
   result.ms.metrics = stage.lap();
-  result.ms.total = total.lap();
+  result.ms.total = result.ms.parameterize + result.ms.density + result.ms.sites +
+                    result.ms.lloyd + result.ms.remesh + result.ms.metrics;
+  result.recording = header();
+  result.recording.iterations = solver_->takeIterations();
+  return result;
+}
 
-  Recording& r = result.recording;
-  r.settings = describe(options);
-  r.method = options.method;
-  r.distanceThreshold = options.lloyd.distanceThreshold;
-  r.percentThreshold = options.lloyd.percentThreshold;
-  r.input = input;
-  r.uv = param.uv;
-  r.density = std::move(density);
-  r.fixedSites = solver.fixedSites();
-  r.movableVertex = sites.movableVertex;
-  r.iterations = solver.takeIterations();
+RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  const auto start = std::chrono::steady_clock::now();
+  RemeshSession session(input, options, name);
+  while (!session.finished()) session.step();
+  RemeshResult result = session.finish();
+  result.ms.total = millisecondsSince(start);
   return result;
 }
 

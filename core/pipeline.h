@@ -9,6 +9,7 @@
 #include "remesh.h"
 #include "sites.h"
 
+#include <memory>
 #include <string>
 
 namespace lloydscope {
@@ -44,6 +45,36 @@ struct RemeshResult {
 
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
+
+// The same pipeline one stage at a time, for the inspector's Step and Run: the constructor
+// parameterizes, computes the density and places the sites; step() is one iteration; finish()
+// lifts, measures and hands over the recording.
+class RemeshSession {
+ public:
+  RemeshSession(const Mesh& input, const RemeshOptions& options, const std::string& name);
+  RemeshSession(const RemeshSession&) = delete;
+  RemeshSession& operator=(const RemeshSession&) = delete;
+
+  const IterationRecord& step();
+  bool converged() const { return solver_->converged(); }
+  // Converged, or options.lloyd.maxIterations recorded.
+  bool finished() const;
+  int iterationCount() const { return static_cast<int>(solver_->iterations().size()); }
+  // The recording with no iterations: what a Replay needs before the first step.
+  Recording header() const;
+  // Builds the result from the current sites (converged or not). Call once.
+  RemeshResult finish();
+
+ private:
+  Mesh input_;
+  RemeshOptions options_;
+  StageTimes ms_;  // before the members whose initializers time themselves into it
+  Parameterization param_;
+  std::vector<double> density_;
+  Domain domain_;
+  InitialSites sites_;
+  std::unique_ptr<LloydSolver> solver_;
+};
 
 // Builds the output mesh from a (possibly partial) run's current sites.
 Mesh buildOutput(const Mesh& input, const Domain& domain, RemeshMethod method,
