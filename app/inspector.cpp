@@ -5,6 +5,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "mesh_io.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -75,13 +77,89 @@ std::string format(const char* pattern, double value) {
 void Inspector::setCommandBuffer(VkCommandBuffer cmd) { gCommandBuffer = cmd; }
 
 Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
-                     RemeshOptions options, RemeshResult result)
+                     RemeshOptions options, RemeshResult result, std::optional<Mesh> input)
     : gpu_(gpu), renderer_(gpu, renderPass),
       meshName_(meshName.substr(meshName.find_last_of('/') + 1)),  // the file, not where it lives
       options_(std::move(options)), result_(std::move(result)),
-      replay_(std::make_unique<Replay>(result_.recording)), canvas_(gpu, renderPass) {
+      replay_(std::make_unique<Replay>(result_.recording)), canvas_(gpu, renderPass),
+      input_(std::move(input)) {
+  result_.recording = Recording{};  // the replay holds it
+  std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
+  std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
   iteration_ = replay_->iterationCount() - 1;
   fitCamera();
+}
+
+Inspector::~Inspector() { stopRun(); }
+
+void Inspector::openReplay(Recording recording) {
+  replay_ = std::make_unique<Replay>(std::move(recording));
+  uploadedIteration_ = measuredIteration_ = edgesIteration_ = -1;
+  canvasKey_ = CanvasKey{};
+  iteration_ = std::max(0, replay_->iterationCount() - 1);
+  fitCamera();
+}
+
+void Inspector::startSession() {
+  stopRun();
+  try {
+    session_ = std::make_unique<RemeshSession>(*input_, options_, meshName_);
+    session_->step();  // the panes need one iteration to show
+    Recording header = session_->header();
+    header.iterations.push_back(session_->iterationRecord(0));
+    openReplay(std::move(header));
+    result_.iterations = 1;
+    result_.converged = false;
+    message_.clear();
+  } catch (const Error& e) {
+    session_.reset();
+    message_ = e.what();
+  }
+}
+
+void Inspector::startRun() {
+  if (!session_ || !workerDone_ || session_->finished()) return;
+  stopRequested_ = false;
+  workerDone_ = false;
+  worker_ = std::thread([this] {
+    while (!stopRequested_ && !session_->finished()) {
+      IterationRecord record = session_->step();
+      std::lock_guard<std::mutex> lock(pendingMutex_);
+      pending_.push_back(std::move(record));
+    }
+    workerDone_ = true;
+  });
+}
+
+void Inspector::stopRun() {
+  stopRequested_ = true;
+  if (worker_.joinable()) worker_.join();
+  collectIterations();
+}
+
+void Inspector::collectIterations() {
+  std::vector<IterationRecord> fresh;
+  {
+    std::lock_guard<std::mutex> lock(pendingMutex_);
+    fresh.swap(pending_);
+  }
+  if (fresh.empty()) return;
+  const bool following = iteration_ + 1 >= replay_->iterationCount();
+  for (IterationRecord& r : fresh) replay_->append(std::move(r));
+  if (following) setIteration(replay_->iterationCount() - 1);
+  result_.iterations = replay_->iterationCount();
+}
+
+// A finished run: the final result's metrics for the table. The session is spent.
+void Inspector::finishSession() {
+  RemeshResult done = session_->finish();
+  session_.reset();
+  result_.before = done.before;
+  result_.after = done.after;
+  result_.fidelity = done.fidelity;
+  result_.converged = done.converged;
+  result_.paramUsed = done.paramUsed;
+  result_.ms = done.ms;
 }
 
 void Inspector::setIteration(int k) {
@@ -89,7 +167,7 @@ void Inspector::setIteration(int k) {
 }
 
 void Inspector::fitCamera() {
-  const Mesh& mesh = result_.recording.input;
+  const Mesh& mesh = replay_->recording().input;
   Vec3 lo = mesh.points.front(), hi = lo;
   for (const Vec3& p : mesh.points) {
     lo = lo.cwiseMin(p);
@@ -112,7 +190,7 @@ const QualityMetrics& Inspector::currentQuality() {
 
 void Inspector::uploadMesh() {
   const IterationView& view = replay_->view(iteration_);
-  const Mesh& mesh = showInput_ ? result_.recording.input : view.output;
+  const Mesh& mesh = showInput_ ? replay_->recording().input : view.output;
   std::vector<std::array<float, 3>> colors;
   for (const Triangle& t : mesh.triangles) {
     if (!colorByAngle_) {
@@ -129,6 +207,12 @@ void Inspector::uploadMesh() {
 }
 
 void Inspector::frame() {
+  collectIterations();
+  if (session_ && workerDone_ && worker_.joinable()) {
+    worker_.join();
+    collectIterations();
+    if (session_->finished()) finishSession();
+  }
   handleKeys();
   if (playing_) {
     playClock_ += ImGui::GetIO().DeltaTime * playSpeed_;
@@ -172,9 +256,10 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::TextWrapped("Parameterization: %s (%s border), density: %s, solver: %s",
                      toString(result_.paramUsed), toString(options_.param.border),
                      toString(options_.density.kind), toString(options_.lloyd.solver));
-  ImGui::Text("Sites: %zu fixed, %zu movable", result_.recording.fixedSites.size(),
-              result_.recording.iterations.empty() ? size_t(0)
-                                                   : result_.recording.iterations[0].sites.size());
+  ImGui::Text("Sites: %zu fixed, %zu movable", replay_->recording().fixedSites.size(),
+              replay_->recording().iterations.empty()
+                  ? size_t(0)
+                  : replay_->recording().iterations[0].sites.size());
   ImGui::Text("Thresholds: %.0e, %.0f%%", options_.lloyd.distanceThreshold,
               options_.lloyd.percentThreshold);
   ImGui::Separator();
@@ -216,8 +301,11 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     row("Under 30 deg %", format("%.1f", in.percentUnder30), format("%.1f", current.percentUnder30));
     ImGui::EndTable();
   }
-  ImGui::Text("Final: %d iterations, %s", result_.iterations,
-              result_.converged ? "converged" : "not converged");
+  if (session_)
+    ImGui::Text("Running: %d iterations so far", replay_->iterationCount());
+  else
+    ImGui::Text("Final: %d iterations, %s", result_.iterations,
+                result_.converged ? "converged" : "not converged");
   ImGui::Text("Hausdorff %.3f%%, RMS %.3f%% of diagonal", result_.fidelity.hausdorffPercent,
               result_.fidelity.rmsPercent);
   if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
@@ -238,7 +326,109 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   }
   ImGui::Checkbox("wireframe", &wireframe_);
   if (ImGui::Button("Fit view (F)")) fitCamera();
+  settingsControls();
+  fileControls();
+  if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::End();
+}
+
+void Inspector::settingsControls() {
+  if (!input_ || !ImGui::CollapsingHeader("Settings (remesh again)")) return;
+  auto combo = [](const char* label, int& value, const char* items) {
+    ImGui::SetNextItemWidth(130);
+    return ImGui::Combo(label, &value, items);
+  };
+  int param = static_cast<int>(options_.param.method);
+  if (combo("parameterization", param, "auto\0authalic\0conformal\0mean-value\0tutte\0lscm\0"))
+    options_.param.method = static_cast<ParamMethod>(param);
+  int border = options_.param.border == Border::Square ? 0 : 1;
+  if (combo("border", border, "square\0circle\0"))
+    options_.param.border = border == 0 ? Border::Square : Border::Circle;
+  int density = static_cast<int>(options_.density.kind);
+  if (combo("density", density, "uniform\0area\0curvature\0"))
+    options_.density.kind = static_cast<DensityKind>(density);
+  if (options_.density.kind == DensityKind::Curvature) {
+    ImGui::SetNextItemWidth(130);
+    ImGui::InputDouble("alpha", &options_.density.alpha, 0.1, 1.0, "%.2f");
+    ImGui::SetNextItemWidth(130);
+    ImGui::InputDouble("beta", &options_.density.beta, 0.1, 1.0, "%.2f");
+  }
+  int method = options_.method == RemeshMethod::Relocate ? 0 : 1;
+  if (combo("method", method, "relocate\0retriangulate\0"))
+    options_.method = method == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate;
+  int solver = options_.lloyd.solver == CvtSolver::Lloyd ? 0 : 1;
+  if (combo("solver", solver, "lloyd\0lbfgs\0"))
+    options_.lloyd.solver = solver == 0 ? CvtSolver::Lloyd : CvtSolver::Lbfgs;
+  bool own = options_.sites.fromInputVertices;
+  if (ImGui::Checkbox("sites = input vertices", &own)) options_.sites.fromInputVertices = own;
+  if (!own) {
+    ImGui::SetNextItemWidth(130);
+    ImGui::InputInt("sites (0: as input)", &options_.sites.count, 100, 1000);
+    options_.sites.count = std::max(0, options_.sites.count);
+  }
+  ImGui::SetNextItemWidth(130);
+  ImGui::InputDouble("distance thr.", &options_.lloyd.distanceThreshold, 0, 0, "%.1e");
+  ImGui::SetNextItemWidth(130);
+  ImGui::InputDouble("percent thr.", &options_.lloyd.percentThreshold, 1, 5, "%.1f");
+  ImGui::SetNextItemWidth(130);
+  ImGui::InputInt("max iterations", &options_.lloyd.maxIterations, 10, 100);
+  options_.lloyd.maxIterations = std::max(1, options_.lloyd.maxIterations);
+  ImGui::TextDisabled("then Restart, Step or Run below the plots");
+}
+
+void Inspector::fileControls() {
+  if (!ImGui::CollapsingHeader("Files")) return;
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##mesh", meshPath_, sizeof meshPath_);
+  const std::string samples[] = {"assets/bumpy_disk.off", "assets/sphere_cap.off",
+                                 "assets/jittered_grid.off", "data/cgal/nefertiti.off",
+                                 "data/cgal/mushroom.off"};
+  ImGui::SetNextItemWidth(170);
+  if (ImGui::BeginCombo("##samples", "bundled meshes")) {
+    for (const std::string& sample : samples)
+      if (ImGui::Selectable(sample.c_str()))
+        std::snprintf(meshPath_, sizeof meshPath_, "%s/%s", LLOYDSCOPE_SOURCE_DIR, sample.c_str());
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Open mesh")) {
+    try {
+      stopRun();
+      input_ = readMesh(meshPath_).mesh;
+      meshName_ = meshPath_;
+      meshName_ = meshName_.substr(meshName_.find_last_of('/') + 1);
+      result_.before = measureQuality(*input_);
+      startSession();
+      startRun();
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  }
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##recording", recordingPath_, sizeof recordingPath_);
+  if (ImGui::Button("Save recording")) {
+    try {
+      stopRun();
+      saveRecording(replay_->recording(), recordingPath_);
+      message_ = std::string("saved ") + recordingPath_;
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Open recording")) {
+    try {
+      stopRun();
+      Recording r = loadRecording(recordingPath_);
+      session_.reset();
+      input_.reset();
+      result_.before = measureQuality(r.input);
+      openReplay(std::move(r));
+      message_.clear();
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  }
 }
 
 void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
@@ -577,7 +767,28 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   if (ImGui::Button(">|")) setIteration(last);
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(std::max(100.0f, ImGui::GetContentRegionAvail().x - 230));
+  const bool running = !workerDone_;
+  if (!input_) ImGui::BeginDisabled();
+  if (ImGui::Button("Restart")) startSession();  // from initial sites, with the settings
+  if (!input_) ImGui::EndDisabled();
+  ImGui::SameLine();
+  const bool canStep = session_ && !running && !session_->finished();
+  if (!canStep) ImGui::BeginDisabled();
+  if (ImGui::Button("Step")) {
+    replay_->append(session_->step());
+    setIteration(replay_->iterationCount() - 1);
+    result_.iterations = replay_->iterationCount();
+    if (session_->finished()) finishSession();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Run")) startRun();
+  if (!canStep) ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (!running) ImGui::BeginDisabled();
+  if (ImGui::Button("Stop")) stopRun();
+  if (!running) ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(std::max(100.0f, ImGui::GetContentRegionAvail().x - 180));
   int k = iteration_;
   if (ImGui::SliderInt("##iteration", &k, 0, last, "iteration %d")) setIteration(k);
   ImGui::SameLine();

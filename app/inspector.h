@@ -10,7 +10,11 @@
 
 #include <imgui.h>
 
+#include <atomic>
 #include <functional>
+#include <mutex>
+#include <optional>
+#include <thread>
 #include <memory>
 #include <string>
 
@@ -26,8 +30,10 @@ enum class CellFill { None, Mass, Area, Energy, Displacement };
 class Inspector {
  public:
   // `result` is the finished run the inspector opens on (its recording drives every pane).
+  // With the input mesh, the controls can change the settings and step or run again.
   Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
-            RemeshOptions options, RemeshResult result);
+            RemeshOptions options, RemeshResult result, std::optional<Mesh> input = {});
+  ~Inspector();
 
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
@@ -46,6 +52,15 @@ class Inspector {
   void plotsPane(const ImVec2& pos, const ImVec2& size);
   void timelinePane(const ImVec2& pos, const ImVec2& size);
   void handleKeys();
+  void settingsControls();
+  void fileControls();
+  // Live runs: a session steps on a worker thread; its iterations reach the replay here.
+  void startSession();
+  void startRun();
+  void stopRun();
+  void collectIterations();
+  void finishSession();
+  void openReplay(Recording recording);
   void uploadMesh();
   const QualityMetrics& currentQuality();
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
@@ -58,6 +73,14 @@ class Inspector {
   RemeshOptions options_;
   RemeshResult result_;
   std::unique_ptr<Replay> replay_;
+  std::optional<Mesh> input_;
+  std::unique_ptr<RemeshSession> session_;
+  std::thread worker_;
+  std::atomic<bool> stopRequested_{false}, workerDone_{true};
+  std::mutex pendingMutex_;
+  std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
+  std::string message_;                   // the last error or note, shown in the controls
+  char meshPath_[512] = {}, recordingPath_[512] = {};
   CanvasRenderer canvas_;
   // What the 2D pane's geometry was built for: rebuilt when any of it changes.
   struct CanvasKey {

@@ -108,8 +108,9 @@ void parseSize(const std::string& text, int& width, int& height) {
     throw Error("--size must look like 1280x800, not '" + text + "'");
 }
 
-// A mesh is remeshed first; a recording is replayed as it is.
-RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshOptions& options) {
+// A mesh is remeshed first (and kept in `input`); a recording is replayed as it is.
+RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshOptions& options,
+                               std::optional<Mesh>* input = nullptr) {
   options = remeshOptions(a, cmd);
   const std::string& in = a.input;
   if (in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) {
@@ -123,12 +124,15 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
     result.paramUsed = options.param.method;
     return result;
   }
-  return remesh(load(in), options, in);
+  Mesh mesh = load(in);
+  RemeshResult result = remesh(mesh, options, in);
+  if (input) *input = std::move(mesh);
+  return result;
 }
 
 int main(int argc, char** argv) {
   CLI::App app{"Lloydscope: variational surface remeshing by weighted Lloyd relaxation"};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
 
   RemeshArgs r;
   CLI::App* remeshCmd = app.add_subcommand("remesh", "Remesh a disk-topology triangle mesh");
@@ -181,15 +185,33 @@ int main(int argc, char** argv) {
   infoCmd->add_flag("--json", infoJson, "Print JSON");
 
   CLI11_PARSE(app, argc, argv);
+  if (app.get_subcommands().empty()) {  // plain `lloydscope`: the inspector on the default mesh
+    ir.input = LLOYDSCOPE_SOURCE_DIR "/assets/bumpy_disk.off";
+    try {
+      requireDisplay();
+      RemeshOptions options;
+      std::optional<Mesh> input;
+      RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
+      return runWindow(ir.input, options, std::move(result), false, std::move(input));
+    } catch (const std::exception& e) {
+      std::cerr << "lloydscope: " << e.what() << "\n";
+      return 1;
+    }
+  }
 
   try {
     if (remeshCmd->parsed()) return runRemesh(r, *remeshCmd);
     if (inspectCmd->parsed()) {
       RemeshOptions options;
-      RemeshResult result = openForInspection(ir, *inspectCmd, options);
+      std::optional<Mesh> input;
       parseSize(size, shot.width, shot.height);
       shot.timings = !noTimings;
-      if (shot.path.empty()) return runWindow(ir.input, options, std::move(result), shot.validation);
+      if (shot.path.empty()) {
+        requireDisplay();  // before minutes of work that no window would show
+        RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
+        return runWindow(ir.input, options, std::move(result), shot.validation, std::move(input));
+      }
+      RemeshResult result = openForInspection(ir, *inspectCmd, options);
       renderScreenshot(ir.input, options, std::move(result), shot);
       return 0;
     }

@@ -96,14 +96,18 @@ struct Swapchain {
 
 }  // namespace
 
-int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
-              bool validation) {
+void requireDisplay() {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!display || !*display) && (!wayland || !*wayland))
     throw Error("no display to open a window on: use 'lloydscope inspect MESH --screenshot "
                 "OUT.png' for a picture, 'lloydscope remesh MESH -o OUT' for the result, or run "
                 "under xvfb-run");
+}
+
+int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
+              bool validation, std::optional<Mesh> input) {
+  requireDisplay();
   if (!glfwInit()) throw Error("cannot open a window (GLFW could not start on this display)");
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   GLFWwindow* window = glfwCreateWindow(1280, 800, "Lloydscope", nullptr, nullptr);
@@ -155,7 +159,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     VkCommandBuffer cmd;
     vkAllocateCommandBuffers(gpu.device, &alloc, &cmd);
     {
-      Inspector inspector(gpu, pass, meshName, options, std::move(result));
+      Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
       while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
         int w, h;

@@ -3,12 +3,17 @@
 
 #include "pipeline.h"
 
+#include <optional>
 #include <string>
 
 namespace lloydscope {
 
 // Runs until the window is closed. Without a display, throws Error with a one-line hint.
+// Throws Error with a one-line hint (screenshot mode, remesh, xvfb-run) when there is none.
+void requireDisplay();
+
+// With the input mesh, the inspector can step, run and remesh again.
 int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
-              bool validation);
+              bool validation, std::optional<Mesh> input);
 
 }  // namespace lloydscope

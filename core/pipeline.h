@@ -60,6 +60,7 @@ class RemeshSession {
   // Converged, or options.lloyd.maxIterations recorded.
   bool finished() const;
   int iterationCount() const { return static_cast<int>(solver_->iterations().size()); }
+  const IterationRecord& iterationRecord(int k) const { return solver_->iterations().at(k); }
   // The recording with no iterations: what a Replay needs before the first step.
   Recording header() const;
   // Builds the result from the current sites (converged or not). Call once.

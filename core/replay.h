@@ -26,6 +26,9 @@ class Replay {
   RemeshMethod method() const { return method_; }
   int iterationCount() const { return static_cast<int>(recording_.iterations.size()); }
 
+  // A new iteration from a run in progress.
+  void append(IterationRecord record) { recording_.iterations.push_back(std::move(record)); }
+
   // The view of iteration k (clamped to the recorded range), recomputed only when k changes.
   const IterationView& view(int k);
 

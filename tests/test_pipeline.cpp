@@ -131,3 +131,24 @@ INSTANTIATE_TEST_SUITE_P(Meshes, CgalHard,
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
+
+TEST(Session, SteppingByHandGivesTheSameRunAsRemesh) {
+  const Mesh input = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  RemeshOptions o;
+  o.measureFidelity = false;
+  const RemeshResult whole = remesh(input, o, "cap");
+  RemeshSession session(input, o, "cap");
+  EXPECT_EQ(session.header().iterations.size(), 0u);
+  int steps = 0;
+  while (!session.finished()) {
+    const IterationRecord& r = session.step();
+    EXPECT_EQ(r.sites, whole.recording.iterations[steps].sites);
+    ++steps;
+  }
+  EXPECT_EQ(steps, whole.iterations);
+  const RemeshResult stepped = session.finish();
+  EXPECT_EQ(stepped.output.points, whole.output.points);
+  EXPECT_EQ(stepped.output.triangles, whole.output.triangles);
+  EXPECT_EQ(stepped.after.avgMinAngle, whole.after.avgMinAngle);
+  EXPECT_TRUE(stepped.converged);
+}

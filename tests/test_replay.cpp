@@ -46,3 +46,18 @@ TEST(Replay, RelocateOnlyWhereSitesAreInputVertices) {
   replay.setMethod(RemeshMethod::Relocate);
   EXPECT_EQ(replay.method(), RemeshMethod::Retriangulate);
 }
+
+TEST(Replay, GrowsWhileARunGoesOn) {
+  RemeshOptions o;
+  o.measureFidelity = false;
+  const Mesh input = readMesh(test::assetPath("jittered_grid.off")).mesh;
+  RemeshSession session(input, o, "grid");
+  Recording header = session.header();
+  header.iterations.push_back(session.step());
+  Replay replay(std::move(header));
+  EXPECT_EQ(replay.view(0).index, 0);
+  for (int k = 1; k <= 3; ++k) replay.append(session.step());
+  EXPECT_EQ(replay.iterationCount(), 4);
+  EXPECT_EQ(replay.view(3).sites.size(), replay.view(0).sites.size());
+  EXPECT_EQ(replay.view(3).index, 3);
+}
