@@ -13,22 +13,6 @@ void scaleToMeanOne(std::vector<double>& values) {
   for (double& v : values) v /= mean;
 }
 
-std::vector<bool> boundaryVertices(const Mesh& mesh) {
-  std::vector<std::pair<int, int>> edges;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
-  std::sort(edges.begin(), edges.end());
-  std::vector<bool> boundary(mesh.points.size(), false);
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i == 1) boundary[edges[i].first] = boundary[edges[i].second] = true;
-    i = j;
-  }
-  return boundary;
-}
-
 double cotangent(const Vec3& a, const Vec3& b, const Vec3& c) {  // of the angle at a
   const Vec3 u = b - a, v = c - a;
   return u.dot(v) / std::max(u.cross(v).norm(), 1e-300);
@@ -75,7 +59,7 @@ Curvature computeCurvature(const Mesh& mesh) {
       laplacian[l] += w * (pj - pl);
     }
   }
-  const std::vector<bool> boundary = boundaryVertices(mesh);
+  const std::vector<bool> boundary = vertexEdges(mesh).onBoundary;
   Curvature c;
   c.gaussian.assign(n, 0.0);
   c.mean.assign(n, 0.0);

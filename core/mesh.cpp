@@ -1,6 +1,30 @@
 #include "mesh.h"
 
+#include <algorithm>
+
 namespace lloydscope {
+
+VertexEdges vertexEdges(const Mesh& mesh) {
+  // Sorted edge list: each undirected edge appears once per face that uses it.
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  VertexEdges v{std::vector<int>(mesh.points.size(), 0),
+                std::vector<bool>(mesh.points.size(), false)};
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    const auto [a, b] = edges[i];
+    ++v.valence[a];
+    ++v.valence[b];
+    if (j - i == 1) v.onBoundary[a] = v.onBoundary[b] = true;
+    i = j;
+  }
+  return v;
+}
 
 double boundingBoxDiagonal(const Mesh& mesh) {
   if (mesh.points.empty()) return 0.0;

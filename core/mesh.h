@@ -29,6 +29,14 @@ struct Mesh {
   int faceCount() const { return static_cast<int>(triangles.size()); }
 };
 
+// Per vertex: the number of distinct neighbours, and whether an edge with a single face
+// touches it (the vertex is on a boundary).
+struct VertexEdges {
+  std::vector<int> valence;
+  std::vector<bool> onBoundary;
+};
+VertexEdges vertexEdges(const Mesh& mesh);
+
 // Length of the diagonal of the axis-aligned bounding box (0 for an empty mesh).
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);

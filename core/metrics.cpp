@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <random>
 #include <thread>
 
@@ -27,19 +26,9 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   m.faces = mesh.faceCount();
   if (mesh.triangles.empty()) return m;
 
-  // Valence = number of distinct neighbours; a vertex is on the boundary if one of its edges
-  // has a single face.
-  std::map<std::pair<int, int>, int> edgeFaces;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++edgeFaces[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
-  std::vector<int> valence(mesh.points.size(), 0);
-  std::vector<bool> boundary(mesh.points.size(), false);
-  for (const auto& [edge, faces] : edgeFaces) {
-    ++valence[edge.first];
-    ++valence[edge.second];
-    if (faces == 1) boundary[edge.first] = boundary[edge.second] = true;
-  }
+  const VertexEdges edges = vertexEdges(mesh);
+  const std::vector<int>& valence = edges.valence;
+  const std::vector<bool>& boundary = edges.onBoundary;
   int irregular = 0, irregularAware = 0, used = 0;
   for (size_t v = 0; v < valence.size(); ++v) {
     if (valence[v] == 0) continue;
