@@ -87,25 +87,27 @@ std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
   return triangles;
 }
 
-Mesh retriangulate(const Mesh& input, const Domain& domain, const std::vector<Vec2>& border,
-                   const std::vector<Vec2>& movableSites) {
-  const std::vector<Triangle> triangles = triangulateSites(border, movableSites);
-  // Keep only the vertices some triangle uses (a site on top of another, or outside the domain,
-  // has none), numbered in order.
-  const size_t total = border.size() + movableSites.size();
-  std::vector<int> newIndex(total, -1);
+Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points) {
+  std::vector<int> newIndex(points.size(), -1);
   for (const Triangle& t : triangles)
     for (int v : t) newIndex[v] = 0;
   Mesh output;
-  for (size_t v = 0; v < total; ++v) {
+  for (size_t v = 0; v < points.size(); ++v) {
     if (newIndex[v] < 0) continue;
     newIndex[v] = output.vertexCount();
-    const Vec2& p = v < border.size() ? border[v] : movableSites[v - border.size()];
-    output.points.push_back(lift(input, domain, p));
+    output.points.push_back(points[v]);
   }
   for (const Triangle& t : triangles)
     output.triangles.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
   return output;
+}
+
+Mesh retriangulate(const Mesh& input, const Domain& domain, const std::vector<Vec2>& border,
+                   const std::vector<Vec2>& movableSites) {
+  std::vector<Vec3> points;
+  for (const Vec2& p : border) points.push_back(lift(input, domain, p));
+  for (const Vec2& p : movableSites) points.push_back(lift(input, domain, p));
+  return assemble(triangulateSites(border, movableSites), points);
 }
 
 }  // namespace lloydscope

@@ -28,4 +28,8 @@ Mesh retriangulate(const Mesh& input, const Domain& domain, const std::vector<Ve
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
                                        const std::vector<Vec2>& movableSites);
 
+// The mesh of `triangles` over `points`, keeping only the points some triangle uses (a site on
+// top of another, or outside the domain, has none), numbered in order.
+Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points);
+
 }  // namespace lloydscope

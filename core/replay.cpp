@@ -29,8 +29,10 @@ const IterationView& Replay::view(int k) {
   view_.cells = recording_.cells(domain_, k, /*keepGeometry=*/true);
   view_.liftedSites.clear();
   for (const Vec2& s : view_.sites) view_.liftedSites.push_back(lift(recording_.input, domain_, s));
-  view_.output = buildOutput(recording_.input, domain_, method_, recording_.fixedSites, it.sites,
-                             recording_.movableVertex);
+  // Retriangulating needs exactly these lifted points: no second lift.
+  view_.output = method_ == RemeshMethod::Retriangulate
+                     ? assemble(triangulateSites(recording_.fixedSites, it.sites), view_.liftedSites)
+                     : relocate(recording_.input, domain_, recording_.movableVertex, it.sites);
   return view_;
 }
 
