@@ -1,5 +1,7 @@
 #include "gpu.h"
 
+#include <backends/imgui_impl_vulkan.h>
+
 #include <cstdio>
 #include <algorithm>
 #include <cstring>
@@ -156,6 +158,16 @@ uint32_t Context::memoryType(uint32_t bits, VkMemoryPropertyFlags properties) co
   throw GpuError("Vulkan: no suitable memory type");
 }
 
+VkDeviceMemory Context::allocate(const VkMemoryRequirements& req,
+                                 VkMemoryPropertyFlags properties) {
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = req.size;
+  alloc.memoryTypeIndex = memoryType(req.memoryTypeBits, properties);
+  VkDeviceMemory memory;
+  check(vkAllocateMemory(device, &alloc, nullptr, &memory), "allocating memory");
+  return memory;
+}
+
 Buffer Context::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
   Buffer b;
   b.size = size;
@@ -166,11 +178,7 @@ Buffer Context::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
   check(vkCreateBuffer(device, &info, nullptr, &b.buffer), "creating a buffer");
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device, b.buffer, &req);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                             VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  check(vkAllocateMemory(device, &alloc, nullptr, &b.memory), "allocating buffer memory");
+  b.memory = allocate(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   vkBindBufferMemory(device, b.buffer, b.memory, 0);
   check(vkMapMemory(device, b.memory, 0, size, 0, &b.mapped), "mapping a buffer");
   return b;
@@ -198,10 +206,7 @@ Image Context::createImage(uint32_t width, uint32_t height, VkFormat format,
   check(vkCreateImage(device, &info, nullptr, &im.image), "creating an image");
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(device, im.image, &req);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  check(vkAllocateMemory(device, &alloc, nullptr, &im.memory), "allocating image memory");
+  im.memory = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   vkBindImageMemory(device, im.image, im.memory, 0);
   VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   view.image = im.image;
@@ -318,6 +323,23 @@ void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDesc
         "creating a pipeline");
   vkDestroyShaderModule(device, vert, nullptr);
   vkDestroyShaderModule(device, frag, nullptr);
+}
+
+void initImGuiRenderer(Context& gpu, VkRenderPass renderPass, uint32_t imageCount) {
+  ImGui_ImplVulkan_InitInfo info{};
+  info.Instance = gpu.instance;
+  info.PhysicalDevice = gpu.physical;
+  info.Device = gpu.device;
+  info.QueueFamily = gpu.queueFamily;
+  info.Queue = gpu.queue;
+  info.DescriptorPool = gpu.descriptorPool;
+  info.MinImageCount = 2;  // asserted even offscreen
+  info.ImageCount = std::max(2u, imageCount);
+  info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+  ImGui_ImplVulkan_Init(&info, renderPass);
+  // 1.86 uploads the font texture only when asked, with a command buffer of ours.
+  gpu.submitNow([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+  ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 
 void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes) {

@@ -56,6 +56,7 @@ class Context {
   void submitNow(const std::function<void(VkCommandBuffer)>& record);
 
  private:
+  VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags properties);
   uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags properties) const;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
 };
@@ -76,6 +77,10 @@ struct PipelineDescription {
 // Creates the layout (push constants only) and the pipeline.
 void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d,
                     VkPipelineLayout& layout, VkPipeline& pipeline);
+
+// Dear ImGui's Vulkan backend on this device and render pass, fonts uploaded (the ImGui
+// context must exist).
+void initImGuiRenderer(Context& gpu, VkRenderPass renderPass, uint32_t imageCount);
 
 // Copies `bytes` into `buffer` (a host-visible vertex buffer), growing it when needed.
 void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes);

@@ -47,19 +47,7 @@ class OffscreenRenderer {
     io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
     io.DeltaTime = 1.0f / 60.0f;
     ImGui::StyleColorsLight();
-    ImGui_ImplVulkan_InitInfo info{};
-    info.Instance = gpu_.instance;
-    info.PhysicalDevice = gpu_.physical;
-    info.Device = gpu_.device;
-    info.QueueFamily = gpu_.queueFamily;
-    info.Queue = gpu_.queue;
-    info.DescriptorPool = gpu_.descriptorPool;
-    info.MinImageCount = 2;  // asserted even offscreen
-    info.ImageCount = 2;
-    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
-    ImGui_ImplVulkan_Init(&info, renderPass_);
-    gpu_.submitNow([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
-    ImGui_ImplVulkan_DestroyFontUploadObjects();
+    gpu::initImGuiRenderer(gpu_, renderPass_, 2);
   }
 
   ~OffscreenRenderer() {
@@ -86,19 +74,8 @@ class OffscreenRenderer {
       std::fprintf(stderr, "vertices %d indices %d\n", ImGui::GetDrawData()->TotalVtxCount,
                    ImGui::GetDrawData()->TotalIdxCount);
     gpu_.submitNow([&](VkCommandBuffer cmd) {
-      VkClearValue clear[2] = {};
-      clear[0].color = {{0.94f, 0.94f, 0.94f, 1.0f}};
-      clear[1].depthStencil = {1.0f, 0};
-      VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-      begin.renderPass = renderPass_;
-      begin.framebuffer = framebuffer_;
-      begin.renderArea = {{0, 0}, {static_cast<uint32_t>(width_), static_cast<uint32_t>(height_)}};
-      begin.clearValueCount = 2;
-      begin.pClearValues = clear;
-      vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-      Inspector::setCommandBuffer(cmd);
-      ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
-      vkCmdEndRenderPass(cmd);
+      Inspector::recordFrame(cmd, renderPass_, framebuffer_,
+                             {static_cast<uint32_t>(width_), static_cast<uint32_t>(height_)});
       if (readBack) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

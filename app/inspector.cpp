@@ -7,6 +7,8 @@
 
 #include "mesh_io.h"
 
+#include <backends/imgui_impl_vulkan.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -45,6 +47,23 @@ ImU32 quantityColor(float t, float alpha = 1.0f) {
   return rgb(r, g, b, alpha);
 }
 
+// The panes are fixed windows: a layout that stays put for a lecture and for snapshots.
+void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
+               ImGuiWindowFlags extra = 0) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin(name, nullptr, kPaneFlags | extra);
+}
+
+// The rest of the pane as a drawing area: its top-left corner and size.
+std::pair<ImVec2, ImVec2> canvasArea() {
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImVec2 extent = ImGui::GetContentRegionAvail();
+  extent.x = std::max(extent.x, 2.0f);
+  extent.y = std::max(extent.y, 2.0f);
+  return {p0, extent};
+}
+
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, const char* bottom,
@@ -74,7 +93,22 @@ std::string format(const char* pattern, double value) {
 
 }  // namespace
 
-void Inspector::setCommandBuffer(VkCommandBuffer cmd) { gCommandBuffer = cmd; }
+void Inspector::recordFrame(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer,
+                            VkExtent2D extent) {
+  VkClearValue clear[2] = {};
+  clear[0].color = {{0.94f, 0.94f, 0.94f, 1.0f}};
+  clear[1].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = pass;
+  begin.framebuffer = framebuffer;
+  begin.renderArea = {{0, 0}, extent};
+  begin.clearValueCount = 2;
+  begin.pClearValues = clear;
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  gCommandBuffer = cmd;
+  ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+  vkCmdEndRenderPass(cmd);
+}
 
 Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
                      RemeshOptions options, RemeshResult result, std::optional<Mesh> input)
@@ -249,9 +283,7 @@ void Inspector::handleKeys() {
 }
 
 void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowSize(size);
-  ImGui::Begin("Lloydscope", nullptr, kPaneFlags);
+  beginPane("Lloydscope", pos, size);
   ImGui::TextWrapped("Mesh: %s", meshName_.c_str());
   ImGui::TextWrapped("Parameterization: %s (%s border), density: %s, solver: %s",
                      toString(result_.paramUsed), toString(options_.param.border),
@@ -432,13 +464,8 @@ void Inspector::fileControls() {
 }
 
 void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowSize(size);
-  ImGui::Begin("3D view", nullptr, kPaneFlags);
-  const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  ImVec2 extent = ImGui::GetContentRegionAvail();
-  extent.x = std::max(extent.x, 2.0f);
-  extent.y = std::max(extent.y, 2.0f);
+  beginPane("3D view", pos, size);
+  const auto [p0, extent] = canvasArea();
   ImGui::InvisibleButton("canvas3d", extent,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
   ImGuiIO& io = ImGui::GetIO();
@@ -532,13 +559,8 @@ const std::vector<std::pair<Vec2, Vec2>>& Inspector::cellEdges() {
 }
 
 void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowSize(size);
-  ImGui::Begin("2D parameter domain", nullptr, kPaneFlags);
-  const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  ImVec2 extent = ImGui::GetContentRegionAvail();
-  extent.x = std::max(extent.x, 2.0f);
-  extent.y = std::max(extent.y, 2.0f);
+  beginPane("2D parameter domain", pos, size);
+  const auto [p0, extent] = canvasArea();
   ImGui::InvisibleButton("canvas2d", extent, ImGuiButtonFlags_MouseButtonLeft);
   ImGuiIO& io = ImGui::GetIO();
   const float base = 0.92f * std::min(extent.x, extent.y);
@@ -724,9 +746,7 @@ int plot(const char* title, const std::vector<double>& values, bool logScale, do
 }  // namespace
 
 void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowSize(size);
-  ImGui::Begin("Convergence", nullptr, kPaneFlags);
+  beginPane("Convergence", pos, size);
   const auto& its = replay_->recording().iterations;
   std::vector<double> energy, displacement, moving;
   for (const IterationRecord& it : its) {
@@ -750,9 +770,7 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
 }
 
 void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowSize(size);
-  ImGui::Begin("Timeline", nullptr, kPaneFlags | ImGuiWindowFlags_NoTitleBar);
+  beginPane("Timeline", pos, size, ImGuiWindowFlags_NoTitleBar);
   const int last = std::max(0, replay_->iterationCount() - 1);
   if (ImGui::Button("|<")) setIteration(0);
   ImGui::SameLine();

@@ -41,9 +41,11 @@ class Inspector {
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }
   int iteration() const { return iteration_; }
-  // The command buffer of the frame being recorded: the 3D pane's draw callback needs it
-  // (ImGui 1.86 passes callbacks no command buffer).
-  static void setCommandBuffer(VkCommandBuffer cmd);
+  // Records the frame ImGui::Render() produced into `framebuffer`: clears it and draws every
+  // pane, our own pipelines included (ImGui 1.86 passes its draw callbacks no command buffer,
+  // so this is where they get it).
+  static void recordFrame(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer,
+                          VkExtent2D extent);
 
  private:
   void controlsPane(const ImVec2& pos, const ImVec2& size);
