@@ -21,7 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string tempPath(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "lloydscope_mesh_io";
+  // Per process: CTest runs the tests in parallel.
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("lloydscope_mesh_io_" + std::to_string(getpid()));
   fs::create_directories(dir);
   return (dir / name).string();
 }

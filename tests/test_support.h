@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace lloydscope::test {
 
 // A flat n x n grid of unit-spaced squares, each split along its diagonal, scaled by `size`.
@@ -28,7 +30,10 @@ inline std::string assetPath(const std::string& name) {
   return std::string(LLOYDSCOPE_SOURCE_DIR) + "/assets/" + name;
 }
 
-inline std::string tempPath(const std::string& name) { return ::testing::TempDir() + name; }
+// CTest runs test processes in parallel: every process gets names of its own.
+inline std::string tempPath(const std::string& name) {
+  return ::testing::TempDir() + "lloydscope_" + std::to_string(getpid()) + "_" + name;
+}
 
 inline void writeText(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
