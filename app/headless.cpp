@@ -70,9 +70,6 @@ class OffscreenRenderer {
     ImGui::NewFrame();
     build();
     ImGui::Render();
-    if (std::getenv("LLOYDSCOPE_DEBUG_VERTICES"))
-      std::fprintf(stderr, "vertices %d indices %d\n", ImGui::GetDrawData()->TotalVtxCount,
-                   ImGui::GetDrawData()->TotalIdxCount);
     gpu_.submitNow([&](VkCommandBuffer cmd) {
       Inspector::recordFrame(cmd, renderPass_, framebuffer_,
                              {static_cast<uint32_t>(width_), static_cast<uint32_t>(height_)});

@@ -493,16 +493,16 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), rgb(0.93f, 0.94f, 0.96f));
-  meshDraw_.wireframe = wireframe_;
+  MeshDraw& draw = meshCallback_.second;
+  meshCallback_.first = &renderer_;
+  draw.wireframe = wireframe_;
   std::copy(glm::value_ptr(viewProjection), glm::value_ptr(viewProjection) + 16,
-            meshDraw_.viewProjection.begin());
-  meshDraw_.viewport[0] = p0.x;
-  meshDraw_.viewport[1] = p0.y;
-  meshDraw_.viewport[2] = extent.x;
-  meshDraw_.viewport[3] = extent.y;
-  static std::pair<const MeshRenderer*, MeshDraw> callbackData;
-  callbackData = {&renderer_, meshDraw_};
-  dl->AddCallback(drawMeshCallback, &callbackData);
+            draw.viewProjection.begin());
+  draw.viewport[0] = p0.x;
+  draw.viewport[1] = p0.y;
+  draw.viewport[2] = extent.x;
+  draw.viewport[3] = extent.y;
+  dl->AddCallback(drawMeshCallback, &meshCallback_);
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
 
   // The lifted sites as points, on top.
@@ -584,14 +584,13 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     canvas_.upload(buildCanvas(scale));
     canvasKey_ = key;
   }
-  static std::pair<const CanvasRenderer*, CanvasDraw> callbackData;
-  callbackData = {&canvas_, CanvasDraw{{p0.x, p0.y, extent.x, extent.y}, center.x, center.y, scale}};
+  canvasCallback_ = {&canvas_, CanvasDraw{{p0.x, p0.y, extent.x, extent.y}, center.x, center.y, scale}};
   dl->AddCallback(
       [](const ImDrawList*, const ImDrawCmd* cmd) {
         const auto* d = static_cast<const std::pair<const CanvasRenderer*, CanvasDraw>*>(cmd->UserCallbackData);
         d->first->draw(gCommandBuffer, d->second);
       },
-      &callbackData);
+      &canvasCallback_);
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
   // The domain's border, thick, on top (a few hundred lines: ImDrawList is fine for those).
   const Domain& domain = replay_->domain();

@@ -112,7 +112,9 @@ class Inspector {
   Camera camera_;
   float zoom2D_ = 1.0f;
   ImVec2 pan2D_{0, 0};
-  MeshDraw meshDraw_{};
+  // What the draw callbacks of the current frame read (they must outlive ImGui::Render()).
+  std::pair<const MeshRenderer*, MeshDraw> meshCallback_;
+  std::pair<const CanvasRenderer*, CanvasDraw> canvasCallback_;
 };
 
 }  // namespace lloydscope
