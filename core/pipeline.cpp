@@ -69,7 +69,12 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         ms_.density = stage.lap();
         return d;
       }()),
-      domain_(param_.uv, input.triangles, density_) {
+      domain_([&] {
+        Stopwatch stage;  // the domain's adjacency and spatial index count with the density
+        Domain d(param_.uv, input.triangles, density_);
+        ms_.density += stage.lap();
+        return d;
+      }()) {
   Stopwatch stage;
   sites_ = initialSites(input_, param_, domain_, options_.sites);
   ms_.sites = stage.lap();
