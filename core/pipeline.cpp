@@ -48,10 +48,6 @@ RemeshOptions effective(RemeshOptions options) {
   return options;
 }
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
@@ -128,11 +124,11 @@ RemeshResult RemeshSession::finish() {
 }
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch total;
   RemeshSession session(input, options, name);
   while (!session.finished()) session.step();
   RemeshResult result = session.finish();
-  result.ms.total = millisecondsSince(start);
+  result.ms.total = total.lap();
   return result;
 }
 
