@@ -118,9 +118,7 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
     result.recording = loadRecording(in);
     result.before = measureQuality(result.recording.input);
     result.iterations = static_cast<int>(result.recording.iterations.size());
-    result.converged = !result.recording.iterations.empty() &&
-                       100.0 * result.recording.iterations.back().fractionMoving <
-                           result.recording.percentThreshold;
+    result.converged = result.recording.converged();
     result.paramUsed = options.param.method;
     return result;
   }

@@ -145,8 +145,6 @@ nlohmann::json recordingSummary(const Recording& r) {
                           {"mean_displacement", it.meanDisplacement},
                           {"percent_moving", 100.0 * it.fractionMoving},
                           {"milliseconds", it.milliseconds}});
-  const bool converged =
-      !r.iterations.empty() && 100.0 * r.iterations.back().fractionMoving < r.percentThreshold;
   return {{"settings", r.settings},
           {"input_vertices", r.input.vertexCount()},
           {"input_faces", r.input.faceCount()},
@@ -154,7 +152,7 @@ nlohmann::json recordingSummary(const Recording& r) {
           {"movable_sites", r.iterations.empty() ? 0 : r.iterations.front().sites.size()},
           {"distance_threshold", r.distanceThreshold},
           {"percent_threshold", r.percentThreshold},
-          {"converged", converged},
+          {"converged", r.converged()},
           {"iterations", iterations}};
 }
 
