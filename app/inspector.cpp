@@ -201,12 +201,7 @@ void Inspector::setIteration(int k) {
 }
 
 void Inspector::fitCamera() {
-  const Mesh& mesh = replay_->recording().input;
-  Vec3 lo = mesh.points.front(), hi = lo;
-  for (const Vec3& p : mesh.points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const auto [lo, hi] = boundingBox(replay_->recording().input);
   camera_.target = 0.5 * (lo + hi);
   camera_.distance = static_cast<float>(1.05 * (hi - lo).norm());
   camera_.yaw = -1.2f;

@@ -26,13 +26,18 @@ VertexEdges vertexEdges(const Mesh& mesh) {
   return v;
 }
 
-double boundingBoxDiagonal(const Mesh& mesh) {
-  if (mesh.points.empty()) return 0.0;
+std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh) {
+  if (mesh.points.empty()) return {Vec3::Zero(), Vec3::Zero()};
   Vec3 lo = mesh.points.front(), hi = lo;
   for (const Vec3& p : mesh.points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
+  return {lo, hi};
+}
+
+double boundingBoxDiagonal(const Mesh& mesh) {
+  const auto [lo, hi] = boundingBox(mesh);
   return (hi - lo).norm();
 }
 

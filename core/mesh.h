@@ -37,7 +37,9 @@ struct VertexEdges {
 };
 VertexEdges vertexEdges(const Mesh& mesh);
 
-// Length of the diagonal of the axis-aligned bounding box (0 for an empty mesh).
+// Lowest and highest corner of the axis-aligned bounding box (zeros for an empty mesh).
+std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh);
+// Length of its diagonal.
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
 double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c);  // signed, > 0 if CCW
