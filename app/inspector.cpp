@@ -64,8 +64,6 @@ std::pair<ImVec2, ImVec2> canvasArea() {
   return {p0, extent};
 }
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, const char* bottom,
                   const std::function<ImU32(float)>& color) {
   const float width = 12.0f;
@@ -525,31 +523,10 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
 }
 
 const std::vector<std::pair<Vec2, Vec2>>& Inspector::cellEdges() {
-  if (edgesIteration_ == iteration_) return cellEdges_;
-  // The Voronoi edges inside the domain: the edges of each piece that do not lie on its
-  // parameter triangle's sides. Each appears in the two cells it separates, in opposite
-  // directions: keep one.
-  cellEdges_.clear();
-  const Domain& domain = replay_->domain();
-  for (const BoundedCell& cell : replay_->view(iteration_).cells)
-    for (const CellPiece& piece : cell.pieces) {
-      const Triangle& tri = domain.triangles()[piece.triangle];
-      const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
-      const size_t n = piece.polygon.size();
-      for (size_t i = 0; i < n; ++i) {
-        const Vec2 &p = piece.polygon[i], &q = piece.polygon[(i + 1) % n];
-        if (std::make_pair(p.x(), p.y()) > std::make_pair(q.x(), q.y())) continue;
-        bool onSide = false;
-        for (int k = 0; k < 3 && !onSide; ++k) {
-          const Vec2 edge = corner[(k + 1) % 3] - corner[k];
-          const double tolerance = 1e-9 * edge.norm();
-          onSide = std::abs(cross2(edge, p - corner[k])) <= tolerance &&
-                   std::abs(cross2(edge, q - corner[k])) <= tolerance;
-        }
-        if (!onSide) cellEdges_.emplace_back(p, q);
-      }
-    }
-  edgesIteration_ = iteration_;
+  if (edgesIteration_ != iteration_) {
+    cellEdges_ = voronoiEdges(replay_->domain(), replay_->view(iteration_).cells);
+    edgesIteration_ = iteration_;
+  }
   return cellEdges_;
 }
 

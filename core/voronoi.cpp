@@ -20,6 +20,9 @@ constexpr int kDummy = -1;
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+// A point within this distance (in the unit parameter domain) of a triangle's side is on it.
+constexpr double kOnSide = 1e-9;
+
 // Sutherland-Hodgman: the part of a convex polygon left of each edge of a CCW triangle, in
 // `result`. Returns which edges of the triangle the part reaches (bit k: the edge from corner k
 // to corner k+1): only across those can the cell overlap a neighbouring triangle.
@@ -31,7 +34,7 @@ int clipToTriangle(const std::vector<Vec2>& polygon, const Vec2 (&corner)[3],
   const std::vector<Vec2>* in = &polygon;
   for (int k = 0; k < 3; ++k) {
     const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
-    const double onEdge = 1e-9 * edge.norm();  // cross() is |edge| times the distance
+    const double onEdge = kOnSide * edge.norm();  // cross() is |edge| times the distance
     const size_t n = in->size();
     side.resize(n);
     bool anyIn = false, anyOut = false, anyOn = false;
@@ -174,6 +177,31 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
 }
 
 }  // namespace
+
+std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
+                                                const std::vector<BoundedCell>& cells) {
+  std::vector<std::pair<Vec2, Vec2>> edges;
+  for (const BoundedCell& cell : cells)
+    for (const CellPiece& piece : cell.pieces) {
+      const Triangle& tri = domain.triangles()[piece.triangle];
+      const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
+      const size_t n = piece.polygon.size();
+      for (size_t i = 0; i < n; ++i) {
+        const Vec2 &p = piece.polygon[i], &q = piece.polygon[(i + 1) % n];
+        // The two cells an edge separates hold it in opposite directions: keep one.
+        if (std::make_pair(p.x(), p.y()) > std::make_pair(q.x(), q.y())) continue;
+        bool onSide = false;
+        for (int k = 0; k < 3 && !onSide; ++k) {
+          const Vec2 side = corner[(k + 1) % 3] - corner[k];
+          const double tolerance = kOnSide * side.norm();
+          onSide = std::abs(cross(side, p - corner[k])) <= tolerance &&
+                   std::abs(cross(side, q - corner[k])) <= tolerance;
+        }
+        if (!onSide) edges.emplace_back(p, q);
+      }
+    }
+  return edges;
+}
 
 PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
                                   const std::vector<double>& density, const Vec2& site) {

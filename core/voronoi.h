@@ -36,6 +36,11 @@ struct PolygonIntegrals {
 PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
                                   const std::vector<double>& density, const Vec2& site);
 
+// The edges between cells, inside the domain, each once: the sides of the cells' pieces that
+// do not lie on their parameter triangle's sides (what a picture of the diagram draws).
+std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
+                                                const std::vector<BoundedCell>& cells);
+
 // Cells of all `sites`, in their order. Deterministic: the same sites give bit-identical cells,
 // whatever the hints. `hints`, if given, holds for each site a triangle near it (or -1) and
 // receives the triangle that holds it: pass it back next iteration to skip the spatial search.

@@ -145,3 +145,19 @@ TEST(BoundedCells, CellsTileAFineDomainExactly) {
     EXPECT_NEAR(mass, domainMass, 1e-12) << count;
   }
 }
+
+TEST(BoundedCells, VoronoiEdgesAreTheLinesBetweenCellsEachOnce) {
+  // Four sites in the 2x2 grid of the unit square: the diagram is the lines x = 1/2 and
+  // y = 1/2, total length 2, split where they cross the domain's diagonal and each other.
+  const Domain domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {});
+  const auto cells =
+      computeCells(domain, {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}}, true);
+  double length = 0;
+  for (const auto& [p, q] : voronoiEdges(domain, cells)) {
+    length += (q - p).norm();
+    const bool vertical = std::abs(p.x() - 0.5) < 1e-12 && std::abs(q.x() - 0.5) < 1e-12;
+    const bool horizontal = std::abs(p.y() - 0.5) < 1e-12 && std::abs(q.y() - 0.5) < 1e-12;
+    EXPECT_TRUE(vertical || horizontal) << p.transpose() << " - " << q.transpose();
+  }
+  EXPECT_NEAR(length, 2.0, 1e-12);
+}
