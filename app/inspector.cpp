@@ -140,8 +140,6 @@ void Inspector::startSession() {
     Recording header = session_->header();
     header.iterations.push_back(session_->iterationRecord(0));
     openReplay(std::move(header));
-    result_.iterations = 1;
-    result_.converged = false;
     message_.clear();
   } catch (const Error& e) {
     session_.reset();
@@ -179,19 +177,13 @@ void Inspector::collectIterations() {
   const bool following = iteration_ + 1 >= replay_->iterationCount();
   for (IterationRecord& r : fresh) replay_->append(std::move(r));
   if (following) setIteration(replay_->iterationCount() - 1);
-  result_.iterations = replay_->iterationCount();
 }
 
 // A finished run: the final result's metrics for the table. The session is spent.
 void Inspector::finishSession() {
-  RemeshResult done = session_->finish();
+  result_ = session_->finish();
+  result_.recording = Recording{};  // the replay holds its iterations already
   session_.reset();
-  result_.before = done.before;
-  result_.after = done.after;
-  result_.fidelity = done.fidelity;
-  result_.converged = done.converged;
-  result_.paramUsed = done.paramUsed;
-  result_.ms = done.ms;
 }
 
 void Inspector::setIteration(int k) {
@@ -329,8 +321,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   if (session_)
     ImGui::Text("Running: %d iterations so far", replay_->iterationCount());
   else
-    ImGui::Text("Final: %d iterations, %s", result_.iterations,
-                result_.converged ? "converged" : "not converged");
+    ImGui::Text("Final: %d iterations, %s", replay_->iterationCount(),
+                replay_->recording().converged() ? "converged" : "not converged");
   ImGui::Text("Hausdorff %.3f%%, RMS %.3f%% of diagonal", result_.fidelity.hausdorffPercent,
               result_.fidelity.rmsPercent);
   if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
@@ -766,7 +758,6 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::Button("Step")) {
     replay_->append(session_->step());
     setIteration(replay_->iterationCount() - 1);
-    result_.iterations = replay_->iterationCount();
     if (session_->finished()) finishSession();
   }
   ImGui::SameLine();
