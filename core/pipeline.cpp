@@ -36,7 +36,11 @@ RemeshOptions referencePreset(RemeshMethod method) {
 Mesh buildOutput(const Mesh& input, const Domain& domain, RemeshMethod method,
                  const std::vector<Vec2>& fixedSites, const std::vector<Vec2>& movableSites,
                  const std::vector<int>& movableVertex) {
-  if (method == RemeshMethod::Relocate) return relocate(input, domain, movableVertex, movableSites);
+  if (method == RemeshMethod::Relocate) {
+    std::vector<Vec3> lifted;
+    for (const Vec2& s : movableSites) lifted.push_back(lift(input, domain, s));
+    return relocate(input, movableVertex, lifted);
+  }
   return retriangulate(input, domain, fixedSites, movableSites);
 }
 

@@ -162,8 +162,9 @@ Recording decodePayload(Reader& in, const std::string& path) {
 }  // namespace
 
 std::vector<BoundedCell> Recording::cells(const Domain& domain, int iteration,
-                                          bool keepGeometry) const {
-  return computeCells(domain, allSites(fixedSites, iterations.at(iteration).sites), keepGeometry);
+                                          bool keepGeometry, std::vector<int>* hints) const {
+  return computeCells(domain, allSites(fixedSites, iterations.at(iteration).sites), keepGeometry,
+                      hints);
 }
 
 void saveRecording(const Recording& recording, const std::string& path) {

@@ -29,7 +29,9 @@ struct Recording {
     return !iterations.empty() && 100.0 * iterations.back().fractionMoving < percentThreshold;
   }
   // The cells of iteration k, recomputed from its sites: bit-identical to those of the run.
-  std::vector<BoundedCell> cells(const Domain& domain, int iteration, bool keepGeometry) const;
+  // `hints` as computeCells takes them.
+  std::vector<BoundedCell> cells(const Domain& domain, int iteration, bool keepGeometry,
+                                 std::vector<int>* hints = nullptr) const;
 };
 
 // Written to "<path>.tmp" and renamed, so an existing file is replaced whole or not at all.

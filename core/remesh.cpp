@@ -48,18 +48,18 @@ void markDomain(Cdt& cdt) {
 
 }  // namespace
 
-Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p) {
-  const Location l = domain.locate(p);
+Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p, int hint) {
+  const Location l = hint >= 0 ? domain.locate(p, hint) : domain.locate(p);
   const Triangle& t = input.triangles[l.triangle];
   return l.weights[0] * input.points[t[0]] + l.weights[1] * input.points[t[1]] +
          l.weights[2] * input.points[t[2]];
 }
 
-Mesh relocate(const Mesh& input, const Domain& domain, const std::vector<int>& movableVertex,
-              const std::vector<Vec2>& movableSites) {
+Mesh relocate(const Mesh& input, const std::vector<int>& movableVertex,
+              const std::vector<Vec3>& movablePoints) {
   Mesh output = input;
-  for (size_t i = 0; i < movableSites.size(); ++i)
-    if (movableVertex[i] >= 0) output.points[movableVertex[i]] = lift(input, domain, movableSites[i]);
+  for (size_t i = 0; i < movablePoints.size(); ++i)
+    if (movableVertex[i] >= 0) output.points[movableVertex[i]] = movablePoints[i];
   return output;
 }
 

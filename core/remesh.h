@@ -11,12 +11,14 @@ enum class RemeshMethod { Relocate, Retriangulate };
 
 // The 3D point of the input surface at parameter point p (barycentric coordinates in the
 // parameter triangle that holds p; points outside the domain go to its closest point).
-Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p);
+// `hint`, a triangle at or near p (as computeCells reports), skips the spatial search.
+Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p, int hint = -1);
 
 // The reference's area-based method: the input's connectivity, each inside vertex moved to the
-// lifted position of the site that started at it (movableVertex[i] for site i).
-Mesh relocate(const Mesh& input, const Domain& domain, const std::vector<int>& movableVertex,
-              const std::vector<Vec2>& movableSites);
+// lifted position of the site that started at it (movableVertex[i] for site i, whose lifted
+// point is movablePoints[i]).
+Mesh relocate(const Mesh& input, const std::vector<int>& movableVertex,
+              const std::vector<Vec3>& movablePoints);
 
 // The reference's alternative: a new mesh, the constrained Delaunay triangulation of the
 // border samples (in order, counter-clockwise, joined by constraint edges) and the movable

@@ -26,13 +26,17 @@ const IterationView& Replay::view(int k) {
   const IterationRecord& it = recording_.iterations[k];
   view_.index = k;
   view_.sites = allSites(recording_.fixedSites, it.sites);
-  view_.cells = recording_.cells(domain_, k, /*keepGeometry=*/true);
+  view_.cells = recording_.cells(domain_, k, /*keepGeometry=*/true, &hints_);
   view_.liftedSites.clear();
-  for (const Vec2& s : view_.sites) view_.liftedSites.push_back(lift(recording_.input, domain_, s));
-  // Retriangulating needs exactly these lifted points: no second lift.
-  view_.output = method_ == RemeshMethod::Retriangulate
-                     ? assemble(triangulateSites(recording_.fixedSites, it.sites), view_.liftedSites)
-                     : relocate(recording_.input, domain_, recording_.movableVertex, it.sites);
+  for (size_t i = 0; i < view_.sites.size(); ++i)
+    view_.liftedSites.push_back(lift(recording_.input, domain_, view_.sites[i], hints_[i]));
+  // Both outputs are made of exactly these lifted points: no second lift.
+  const size_t fixedCount = recording_.fixedSites.size();
+  view_.output =
+      method_ == RemeshMethod::Retriangulate
+          ? assemble(triangulateSites(recording_.fixedSites, it.sites), view_.liftedSites)
+          : relocate(recording_.input, recording_.movableVertex,
+                     {view_.liftedSites.begin() + fixedCount, view_.liftedSites.end()});
   return view_;
 }
 

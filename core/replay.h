@@ -37,6 +37,8 @@ class Replay {
   Domain domain_;
   RemeshMethod method_;
   IterationView view_;
+  std::vector<int> hints_;  // each site's parameter triangle in the last view: nearby iterations
+                            // start their searches there
 };
 
 }  // namespace lloydscope
