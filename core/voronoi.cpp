@@ -178,10 +178,37 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
 
 }  // namespace
 
+namespace {
+
+// Which side of the (unclipped) Voronoi polygon the piece edge p -> q lies on: the nearest.
+size_t voronoiSideOf(const std::vector<Vec2>& voronoi, const Vec2& p, const Vec2& q) {
+  size_t best = 0;
+  double bestDistance = INFINITY;
+  for (size_t k = 0; k < voronoi.size(); ++k) {
+    const Vec2 &a = voronoi[k], side = voronoi[(k + 1) % voronoi.size()] - a;
+    const double distance =
+        (std::abs(cross(side, p - a)) + std::abs(cross(side, q - a))) / side.norm();
+    if (distance < bestDistance) {
+      bestDistance = distance;
+      best = k;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
 std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
                                                 const std::vector<BoundedCell>& cells) {
   std::vector<std::pair<Vec2, Vec2>> edges;
-  for (const BoundedCell& cell : cells)
+  struct Part {
+    size_t side;
+    double start;  // along the side
+    Vec2 p, q;
+  };
+  std::vector<Part> parts;
+  for (const BoundedCell& cell : cells) {
+    parts.clear();
     for (const CellPiece& piece : cell.pieces) {
       const Triangle& tri = domain.triangles()[piece.triangle];
       const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
@@ -189,7 +216,7 @@ std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
       for (size_t i = 0; i < n; ++i) {
         const Vec2 &p = piece.polygon[i], &q = piece.polygon[(i + 1) % n];
         // The two cells an edge separates hold it in opposite directions: keep one.
-        if (std::make_pair(p.x(), p.y()) > std::make_pair(q.x(), q.y())) continue;
+        if (std::make_pair(p.x(), p.y()) >= std::make_pair(q.x(), q.y())) continue;
         bool onSide = false;
         for (int k = 0; k < 3 && !onSide; ++k) {
           const Vec2 side = corner[(k + 1) % 3] - corner[k];
@@ -197,9 +224,28 @@ std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
           onSide = std::abs(cross(side, p - corner[k])) <= tolerance &&
                    std::abs(cross(side, q - corner[k])) <= tolerance;
         }
-        if (!onSide) edges.emplace_back(p, q);
+        if (onSide) continue;
+        const size_t side = voronoiSideOf(cell.voronoi, p, q);
+        parts.push_back({side, (p - cell.voronoi[side]).norm(), p, q});
       }
     }
+    // Along each side of the cell, pieces that meet (on a parameter triangle's side) are one
+    // edge: half as many lines to draw.
+    std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) {
+      return a.side != b.side ? a.side < b.side : a.start < b.start;
+    });
+    for (size_t i = 0; i < parts.size();) {
+      const Vec2 p = parts[i].p;
+      Vec2 q = parts[i].q;
+      size_t j = i + 1;
+      for (; j < parts.size() && parts[j].side == parts[i].side &&
+             (parts[j].p - q).norm() <= kOnSide * (1.0 + (q - p).norm());
+           ++j)
+        q = parts[j].q;
+      edges.emplace_back(p, q);
+      i = j;
+    }
+  }
   return edges;
 }
 

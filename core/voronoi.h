@@ -37,7 +37,8 @@ PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
                                   const std::vector<double>& density, const Vec2& site);
 
 // The edges between cells, inside the domain, each once: the sides of the cells' pieces that
-// do not lie on their parameter triangle's sides (what a picture of the diagram draws).
+// do not lie on their parameter triangle's sides (what a picture of the diagram draws). The
+// pieces of one Voronoi edge in consecutive parameter triangles are joined into one segment.
 std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
                                                 const std::vector<BoundedCell>& cells);
 
