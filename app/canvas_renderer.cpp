@@ -5,7 +5,7 @@
 #include "canvas.frag.h"
 #include "canvas.vert.h"
 
-#include <cmath>
+#include <array>
 
 namespace lloydscope {
 
@@ -19,11 +19,6 @@ struct Push {
 CanvasVertex vertex(const Vec2& p, float dx, float dy, uint32_t color) {
   return {{static_cast<float>(p.x()), static_cast<float>(p.y())}, {dx, dy}, color};
 }
-
-// The corners of a hexagon of the given radius, in pixels.
-constexpr int kSides = 6;
-float cornerX(int k, float r) { return r * std::cos(k * 2.0f * 3.14159265f / kSides); }
-float cornerY(int k, float r) { return r * std::sin(k * 2.0f * 3.14159265f / kSides); }
 
 }  // namespace
 
@@ -42,26 +37,12 @@ void CanvasGeometry::markTriangle(const Vec2& at, const float (&o)[6], uint32_t 
   for (int k = 0; k < 3; ++k) marks.push_back(vertex(at, o[2 * k], o[2 * k + 1], color));
 }
 
-void CanvasGeometry::dot(const Vec2& at, float r, uint32_t color) {
-  for (int k = 0; k < kSides; ++k) {
-    markTriangle(at, {0, 0, cornerX(k, r), cornerY(k, r), cornerX(k + 1, r), cornerY(k + 1, r)},
-                 color);
-  }
+void CanvasGeometry::point(const Vec2& at, float radius, MarkerShape shape, uint32_t color) {
+  points.push_back(marker(Vec3(at.x(), at.y(), 0.0), 2.0f * radius, shape, color));
 }
 
-void CanvasGeometry::ring(const Vec2& at, float r, uint32_t color) {
-  for (int k = 0; k < kSides; ++k) {
-    lines.push_back(vertex(at, cornerX(k, r), cornerY(k, r), color));
-    lines.push_back(vertex(at, cornerX(k + 1, r), cornerY(k + 1, r), color));
-  }
-}
-
-void CanvasGeometry::square(const Vec2& at, float h, uint32_t color) {
-  markTriangle(at, {-h, -h, h, -h, h, h}, color);
-  markTriangle(at, {-h, -h, h, h, -h, h}, color);
-}
-
-CanvasRenderer::CanvasRenderer(gpu::Context& gpu, VkRenderPass renderPass) : gpu_(gpu) {
+CanvasRenderer::CanvasRenderer(gpu::Context& gpu, VkRenderPass renderPass)
+    : gpu_(gpu), points_(gpu, renderPass) {
   const std::vector<VkVertexInputAttributeDescription> attributes = {
       {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, position)},
       {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, pixelOffset)},
@@ -90,6 +71,7 @@ void CanvasRenderer::upload(const CanvasGeometry& g) {
     gpu::uploadVertices(gpu_, *buffer, vertices->data(), vertices->size() * sizeof(CanvasVertex));
     *count = static_cast<uint32_t>(vertices->size());
   }
+  points_.upload(g.points);
 }
 
 void CanvasRenderer::draw(VkCommandBuffer cmd, const CanvasDraw& d) const {
@@ -103,6 +85,9 @@ void CanvasRenderer::draw(VkCommandBuffer cmd, const CanvasDraw& d) const {
   push.transform[3] = 2.0f * (d.centerY + 0.5f * d.scale - d.viewport[1]) / h - 1.0f;
   push.pixel[0] = 2.0f / w;
   push.pixel[1] = 2.0f / h;
+  VkClearAttachment clear[1] = {{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}}};
+  clear[0].clearValue.color = d.background;
+  gpu::clearRect(cmd, clear, d.viewport);
   gpu::setViewport(cmd, d.viewport);
   const VkDeviceSize offset = 0;
   for (auto [pipeline, layout, buffer, count] :
@@ -116,6 +101,10 @@ void CanvasRenderer::draw(VkCommandBuffer cmd, const CanvasDraw& d) const {
     vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
     vkCmdDraw(cmd, count, 1, 0, 0);
   }
+  // The same map as a matrix: clip = transform.xy * uv + transform.zw.
+  const std::array<float, 16> transform = {push.transform[0], 0, 0, 0, 0, push.transform[1], 0, 0,
+                                           0, 0, 1, 0, push.transform[2], push.transform[3], 0, 1};
+  points_.draw(cmd, d.viewport, transform);
 }
 
 }  // namespace lloydscope

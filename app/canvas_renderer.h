@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gpu.h"
+#include "marker_renderer.h"
 #include "mesh.h"
 
 #include <cstdint>
@@ -17,23 +18,24 @@ struct CanvasVertex {
   uint32_t color;        // RGBA8, as ImGui's IM_COL32
 };
 
-// Geometry in the parameter domain, drawn in three layers: fills, then lines, then marks
-// (dots, squares, arrow heads) on top.
+// Geometry in the parameter domain, drawn in four layers: fills, then lines, then marks
+// (arrow heads), then dots, rings and squares on top.
 struct CanvasGeometry {
   std::vector<CanvasVertex> fills, lines, marks;
+  std::vector<Marker> points;
   void line(const Vec2& a, const Vec2& b, uint32_t color);
   void fill(const Vec2& a, const Vec2& b, const Vec2& c, uint32_t color);
   // A mark at `at`: a triangle whose corners are offsets in pixels.
   void markTriangle(const Vec2& at, const float (&offsets)[6], uint32_t color);
-  void dot(const Vec2& at, float radius, uint32_t color);     // filled hexagon, pixel-sized
-  void ring(const Vec2& at, float radius, uint32_t color);    // hexagon outline, pixel-sized
-  void square(const Vec2& at, float half, uint32_t color);    // filled, pixel-sized
+  // Pixel-sized, whatever the zoom.
+  void point(const Vec2& at, float radius, MarkerShape shape, uint32_t color);
 };
 
 struct CanvasDraw {
   float viewport[4];  // pane: x, y, width, height in framebuffer pixels
   // Screen = centre + (uv - 0.5) * scale, v pointing up.
   float centerX, centerY, scale;
+  VkClearColorValue background = {{1.0f, 1.0f, 1.0f, 1.0f}};  // the pane is cleared to it
 };
 
 class CanvasRenderer {
@@ -48,6 +50,7 @@ class CanvasRenderer {
   VkPipelineLayout lineLayout_ = VK_NULL_HANDLE, triangleLayout_ = VK_NULL_HANDLE;
   VkPipeline linePipeline_ = VK_NULL_HANDLE, trianglePipeline_ = VK_NULL_HANDLE;
   gpu::Buffer fills_, lines_, marks_;
+  MarkerRenderer points_;
   uint32_t fillCount_ = 0, lineCount_ = 0, markCount_ = 0;  // vertices
 };
 

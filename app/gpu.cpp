@@ -116,6 +116,11 @@ Context::Context(const std::vector<const char*>& instanceExtensions, bool swapch
   deviceInfo.pQueueCreateInfos = &queueInfo;
   deviceInfo.enabledExtensionCount = swapchain ? 1 : 0;
   deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
+  // Marks are point sprites of a few pixels (lavapipe offers sizes up to 255).
+  VkPhysicalDeviceFeatures supported{}, features{};
+  vkGetPhysicalDeviceFeatures(physical, &supported);
+  features.largePoints = supported.largePoints;
+  deviceInfo.pEnabledFeatures = &features;
   check(vkCreateDevice(physical, &deviceInfo, nullptr, &device), "creating the device");
   vkGetDeviceQueue(device, queueFamily, 0, &queue);
 
@@ -136,7 +141,9 @@ Context::Context(const std::vector<const char*>& instanceExtensions, bool swapch
 
 Context::~Context() {
   if (device) {
+    waitSubmitted();
     vkDeviceWaitIdle(device);
+    if (submitted_) vkDestroyFence(device, submitted_, nullptr);
     vkDestroyDescriptorPool(device, descriptorPool, nullptr);
     vkDestroyCommandPool(device, commandPool, nullptr);
     vkDestroyDevice(device, nullptr);
@@ -225,6 +232,24 @@ void Context::destroy(Image& im) {
 }
 
 void Context::submitNow(const std::function<void(VkCommandBuffer)>& record) {
+  submit(record);
+  waitSubmitted();
+}
+
+void Context::waitSubmitted() {
+  if (submittedCommands_ == VK_NULL_HANDLE) return;
+  check(vkWaitForFences(device, 1, &submitted_, VK_TRUE, UINT64_MAX), "waiting for a frame");
+  vkFreeCommandBuffers(device, commandPool, 1, &submittedCommands_);
+  submittedCommands_ = VK_NULL_HANDLE;
+}
+
+void Context::submit(const std::function<void(VkCommandBuffer)>& record) {
+  waitSubmitted();
+  if (submitted_ == VK_NULL_HANDLE) {
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    check(vkCreateFence(device, &fenceInfo, nullptr, &submitted_), "creating a fence");
+  }
+  vkResetFences(device, 1, &submitted_);
   VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   alloc.commandPool = commandPool;
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -236,12 +261,11 @@ void Context::submitNow(const std::function<void(VkCommandBuffer)>& record) {
   vkBeginCommandBuffer(cmd, &begin);
   record(cmd);
   vkEndCommandBuffer(cmd);
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  check(vkQueueSubmit(queue, 1, &submit, VK_NULL_HANDLE), "submitting commands");
-  vkQueueWaitIdle(queue);
-  vkFreeCommandBuffers(device, commandPool, 1, &cmd);
+  VkSubmitInfo info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  info.commandBufferCount = 1;
+  info.pCommandBuffers = &cmd;
+  check(vkQueueSubmit(queue, 1, &info, submitted_), "submitting commands");
+  submittedCommands_ = cmd;
 }
 
 void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d,

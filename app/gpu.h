@@ -54,11 +54,17 @@ class Context {
   void destroy(Image& image);
   // Records commands into a fresh command buffer, submits them and waits.
   void submitNow(const std::function<void(VkCommandBuffer)>& record);
+  // The same without waiting: the CPU can go on while lavapipe renders. The next submit, or
+  // waitSubmitted(), waits for it first.
+  void submit(const std::function<void(VkCommandBuffer)>& record);
+  void waitSubmitted();
 
  private:
   VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags properties);
   uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags properties) const;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkFence submitted_ = VK_NULL_HANDLE;
+  VkCommandBuffer submittedCommands_ = VK_NULL_HANDLE;  // until its fence signals
 };
 
 // What differs between the inspector's pipelines; everything else (dynamic viewport and
@@ -86,6 +92,14 @@ void initImGuiRenderer(Context& gpu, VkRenderPass renderPass, uint32_t imageCoun
 void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes);
 // Viewport and scissor to a pane: x, y, width, height in framebuffer pixels.
 void setViewport(VkCommandBuffer cmd, const float (&rect)[4]);
+// Clears a pane (in a render pass) to the given values: colour, depth or both.
+template <size_t N>
+void clearRect(VkCommandBuffer cmd, const VkClearAttachment (&clears)[N], const float (&rect)[4]) {
+  const VkClearRect area{{{static_cast<int32_t>(rect[0]), static_cast<int32_t>(rect[1])},
+                          {static_cast<uint32_t>(rect[2]), static_cast<uint32_t>(rect[3])}},
+                         0, 1};
+  vkCmdClearAttachments(cmd, N, clears, 1, &area);
+}
 
 // A render pass with one colour and one depth attachment; the colour ends in `finalLayout`
 // (TRANSFER_SRC to read it back, PRESENT_SRC for a swapchain).

@@ -64,13 +64,15 @@ class OffscreenRenderer {
   gpu::Context& gpu() { return gpu_; }
   VkRenderPass renderPass() const { return renderPass_; }
 
-  // One frame of `build`, rendered and (with readBack) copied to the pixel buffer.
+  // One frame of `build`, rendered and (with readBack) copied to the pixel buffer. Without
+  // readBack it returns while the frame renders; the next frame waits for it.
   void frame(const std::function<void()>& build, bool readBack) {
+    gpu_.waitSubmitted();  // the frame before may still read buffers that build() refills
     ImGui_ImplVulkan_NewFrame();
     ImGui::NewFrame();
     build();
     ImGui::Render();
-    gpu_.submitNow([&](VkCommandBuffer cmd) {
+    gpu_.submit([&](VkCommandBuffer cmd) {
       Inspector::recordFrame(cmd, renderPass_, framebuffer_,
                              {static_cast<uint32_t>(width_), static_cast<uint32_t>(height_)});
       if (readBack) {
@@ -81,6 +83,7 @@ class OffscreenRenderer {
                                pixels_.buffer, 1, &region);
       }
     });
+    if (readBack) gpu_.waitSubmitted();
   }
 
   void writePng(const std::string& path) const {
@@ -95,6 +98,7 @@ class OffscreenRenderer {
     }
   }
 
+  void finish() { gpu_.waitSubmitted(); }
   int validationMessages() const { return gpu_.validationMessages; }
 
  private:
@@ -132,13 +136,18 @@ FrameTimes benchmarkScrub(const std::string& meshName, const RemeshOptions& opti
   Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result));
   FrameTimes times;
   const int count = static_cast<int>(inspector.iteration()) + 1;
-  for (int i = 0; i < frames; ++i) {
+  // As the window does: the next iteration is prepared while the last frame renders, and a
+  // frame's time is from one frame's start to the next one's.
+  auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i <= frames; ++i) {
     if (scrub) inspector.setIteration((i * 7) % count);  // jump around, as a dragged slider
-    const auto start = std::chrono::steady_clock::now();
+    inspector.prepare();
     renderer.frame([&] { inspector.frame(); }, false);
-    times.milliseconds.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    const auto now = std::chrono::steady_clock::now();
+    if (i > 0) times.milliseconds.push_back(std::chrono::duration<double, std::milli>(now - start).count());
+    start = now;
   }
+  renderer.finish();
   return times;
 }
 

@@ -19,9 +19,12 @@ namespace {
 
 VkCommandBuffer gCommandBuffer = VK_NULL_HANDLE;
 
+// No backgrounds: the panes tile the window and the frame is cleared to ImGui's window colour.
+// On lavapipe every blended full-window layer costs milliseconds.
 constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                         ImGuiWindowFlags_NoCollapse |
-                                        ImGuiWindowFlags_NoSavedSettings;
+                                        ImGuiWindowFlags_NoSavedSettings |
+                                        ImGuiWindowFlags_NoBackground;
 
 ImU32 rgb(float r, float g, float b, float a = 1.0f) {
   return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a));
@@ -54,6 +57,10 @@ void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
   ImGui::SetNextWindowSize(size);
   ImGui::Begin(name, nullptr, kPaneFlags | extra);
 }
+
+// Panes that are one drawing area: a scroll bar would only eat into it.
+constexpr ImGuiWindowFlags kCanvasPaneFlags =
+    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
 
 // The rest of the pane as a drawing area: its top-left corner and size.
 std::pair<ImVec2, ImVec2> canvasArea() {
@@ -94,7 +101,7 @@ std::string format(const char* pattern, double value) {
 void Inspector::recordFrame(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer,
                             VkExtent2D extent) {
   VkClearValue clear[2] = {};
-  clear[0].color = {{0.94f, 0.94f, 0.94f, 1.0f}};
+  clear[0].color = {{0.94f, 0.94f, 0.94f, 1.0f}};  // StyleColorsLight's WindowBg
   clear[1].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   begin.renderPass = pass;
@@ -190,6 +197,11 @@ void Inspector::setIteration(int k) {
   iteration_ = std::clamp(k, 0, std::max(0, replay_->iterationCount() - 1));
 }
 
+void Inspector::prepare() {
+  currentQuality();
+  cellEdges();
+}
+
 void Inspector::fitCamera() {
   const auto [lo, hi] = boundingBox(replay_->recording().input);
   camera_.target = 0.5 * (lo + hi);
@@ -220,6 +232,11 @@ void Inspector::uploadMesh() {
     colors.push_back(angleColor(*std::min_element(a.begin(), a.end())));
   }
   renderer_.upload(mesh, colors);
+  std::vector<Marker> sites;
+  if (!showInput_)
+    for (const Vec3& s : view.liftedSites)
+      sites.push_back(marker(s, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+  renderer_.uploadMarkers(sites);
   uploadedIteration_ = iteration_;
   uploadedInput_ = showInput_;
   uploadedMethod_ = replay_->method();
@@ -449,7 +466,7 @@ void Inspector::fileControls() {
 }
 
 void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
-  beginPane("3D view", pos, size);
+  beginPane("3D view", pos, size, kCanvasPaneFlags);
   const auto [p0, extent] = canvasArea();
   ImGui::InvisibleButton("canvas3d", extent,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
@@ -477,7 +494,6 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   const glm::mat4 viewProjection = proj * glm::lookAt(eye, target, glm::vec3(0, 0, 1));
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), rgb(0.93f, 0.94f, 0.96f));
   MeshDraw& draw = meshCallback_.second;
   meshCallback_.first = &renderer_;
   draw.wireframe = wireframe_;
@@ -490,19 +506,6 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   dl->AddCallback(drawMeshCallback, &meshCallback_);
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
 
-  // The lifted sites as points, on top.
-  if (!showInput_) {
-    const IterationView& view = replay_->view(iteration_);
-    for (const Vec3& s : view.liftedSites) {
-      const glm::vec4 c = viewProjection * glm::vec4(s.x(), s.y(), s.z(), 1.0f);
-      if (c.w <= 0) continue;
-      const ImVec2 screen(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
-                          p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
-      // Squares, not circles: two thousand of them must stay cheap for lavapipe.
-      dl->AddRectFilled(ImVec2(screen.x - 1.5f, screen.y - 1.5f),
-                        ImVec2(screen.x + 1.5f, screen.y + 1.5f), rgb(0.1f, 0.15f, 0.45f));
-    }
-  }
   if (colorByAngle_)
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, "60 deg", "0 deg", [](float t) {
       const auto c = angleColor(60.0 * t);
@@ -523,7 +526,7 @@ const std::vector<std::pair<Vec2, Vec2>>& Inspector::cellEdges() {
 }
 
 void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
-  beginPane("2D parameter domain", pos, size);
+  beginPane("2D parameter domain", pos, size, kCanvasPaneFlags);
   const auto [p0, extent] = canvasArea();
   ImGui::InvisibleButton("canvas2d", extent, ImGuiButtonFlags_MouseButtonLeft);
   ImGuiIO& io = ImGui::GetIO();
@@ -542,7 +545,6 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
-  dl->AddRectFilled(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), rgb(1, 1, 1));
   const CanvasKey key{iteration_, fill_, showTriangles_, showArrows_, scale};
   if (!(key == canvasKey_)) {
     canvas_.upload(buildCanvas(scale));
@@ -618,7 +620,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   for (size_t i = 0; i < view.sites.size(); ++i) {
     const Vec2& s = view.sites[i];
     if (i < fixedCount) {
-      g.square(s, r, rgb(0.35f, 0.35f, 0.35f));
+      g.point(s, r, MarkerShape::Square, rgb(0.35f, 0.35f, 0.35f));
       continue;
     }
     const Vec2& c = view.cells[i].centroid;
@@ -632,8 +634,8 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
                          -h * ux - 0.5f * h * uy, -h * uy + 0.5f * h * ux},
                      orange);
     }
-    g.ring(c, r + 1.0f, orange);
-    g.dot(s, r, rgb(0.1f, 0.15f, 0.45f));
+    g.point(c, r + 1.0f, MarkerShape::Ring, orange);
+    g.point(s, r, MarkerShape::Dot, rgb(0.1f, 0.15f, 0.45f));
   }
   return g;
 }
@@ -709,7 +711,7 @@ int plot(const char* title, const std::vector<double>& values, bool logScale, do
 }  // namespace
 
 void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
-  beginPane("Convergence", pos, size);
+  beginPane("Convergence", pos, size, kCanvasPaneFlags);
   const auto& its = replay_->recording().iterations;
   std::vector<double> energy, displacement, moving;
   for (const IterationRecord& it : its) {

@@ -37,6 +37,10 @@ class Inspector {
 
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
+  // The CPU work of the current iteration's panes (its cells, lifted mesh, metrics and cell
+  // edges), cached for frame(). Front ends call it while the previous frame renders: on two
+  // cores, scrubbing then overlaps the geometry with lavapipe's rasterization.
+  void prepare();
   void setIteration(int k);
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }

@@ -22,7 +22,8 @@ struct Push {
 
 }  // namespace
 
-MeshRenderer::MeshRenderer(gpu::Context& gpu, VkRenderPass renderPass) : gpu_(gpu) {
+MeshRenderer::MeshRenderer(gpu::Context& gpu, VkRenderPass renderPass)
+    : gpu_(gpu), markers_(gpu, renderPass) {
   gpu::createPipeline(
       gpu.device, renderPass,
       {mesh_vert, sizeof(mesh_vert), mesh_frag, sizeof(mesh_frag),
@@ -66,14 +67,12 @@ void MeshRenderer::upload(const Mesh& mesh, const std::vector<std::array<float, 
 }
 
 void MeshRenderer::draw(VkCommandBuffer cmd, const MeshDraw& d) const {
+  // The pane's background and a clean depth buffer: clears, cheaper than drawing a rectangle.
+  VkClearAttachment clear[2] = {{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}}, {VK_IMAGE_ASPECT_DEPTH_BIT, 1, {}}};
+  clear[0].clearValue.color = d.background;
+  clear[1].clearValue.depthStencil = {1.0f, 0};
+  gpu::clearRect(cmd, clear, d.viewport);
   if (vertexCount_ == 0) return;
-  // A clean depth buffer for this pane only.
-  VkClearAttachment clear{VK_IMAGE_ASPECT_DEPTH_BIT, 1, {}};
-  clear.clearValue.depthStencil = {1.0f, 0};
-  const VkClearRect rect{{{static_cast<int32_t>(d.viewport[0]), static_cast<int32_t>(d.viewport[1])},
-                          {static_cast<uint32_t>(d.viewport[2]), static_cast<uint32_t>(d.viewport[3])}},
-                         0, 1};
-  vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   gpu::setViewport(cmd, d.viewport);
   Push push{};
@@ -85,6 +84,7 @@ void MeshRenderer::draw(VkCommandBuffer cmd, const MeshDraw& d) const {
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertices_.buffer, &offset);
   vkCmdDraw(cmd, vertexCount_, 1, 0, 0);
+  markers_.draw(cmd, d.viewport, d.viewProjection);
 }
 
 }  // namespace lloydscope

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gpu.h"
+#include "marker_renderer.h"
 #include "mesh.h"
 
 #include <array>
@@ -16,6 +17,7 @@ struct MeshDraw {
   float viewport[4];                     // x, y, width, height in framebuffer pixels
   bool wireframe = true;
   float wireWidth = 1.2f;
+  VkClearColorValue background = {{0.93f, 0.94f, 0.96f, 1.0f}};  // the pane is cleared to it
 };
 
 class MeshRenderer {
@@ -25,6 +27,8 @@ class MeshRenderer {
 
   // One colour per triangle (linear RGB, 0..1).
   void upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors);
+  // Marks on the surface (the lifted sites), drawn on top of the mesh.
+  void uploadMarkers(const std::vector<Marker>& markers) { markers_.upload(markers); }
   void draw(VkCommandBuffer cmd, const MeshDraw& draw) const;
 
  private:
@@ -33,6 +37,7 @@ class MeshRenderer {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   gpu::Buffer vertices_;
   uint32_t vertexCount_ = 0;
+  MarkerRenderer markers_;
 };
 
 }  // namespace lloydscope

@@ -193,6 +193,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
         present.pSwapchains = &chain.swapchain;
         present.pImageIndices = &index;
         vkQueuePresentKHR(gpu.queue, &present);
+        inspector.prepare();  // while lavapipe renders: the iteration the slider chose
         vkWaitForFences(gpu.device, 1, &done, VK_TRUE, UINT64_MAX);  // one frame in flight
         vkResetFences(gpu.device, 1, &done);
       }

@@ -1,0 +1,53 @@
+#include "marker_renderer.h"
+
+#include <cstdint>
+// Generated from shaders/ by glslangValidator at build time.
+#include "marker.frag.h"
+#include "marker.vert.h"
+
+namespace lloydscope {
+
+Marker marker(const Vec3& at, float diameter, MarkerShape shape, uint32_t color) {
+  return {{static_cast<float>(at.x()), static_cast<float>(at.y()), static_cast<float>(at.z())},
+          diameter,
+          static_cast<float>(shape),
+          color};
+}
+
+MarkerRenderer::MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass) : gpu_(gpu) {
+  gpu::createPipeline(gpu.device, renderPass,
+                      {marker_vert, sizeof(marker_vert), marker_frag, sizeof(marker_frag),
+                       {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Marker, position)},
+                        {1, 0, VK_FORMAT_R32_SFLOAT, offsetof(Marker, diameter)},
+                        {2, 0, VK_FORMAT_R32_SFLOAT, offsetof(Marker, shape)},
+                        {3, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(Marker, color)}},
+                       sizeof(Marker), VK_PRIMITIVE_TOPOLOGY_POINT_LIST, false,
+                       sizeof(float) * 16},
+                      layout_, pipeline_);
+}
+
+MarkerRenderer::~MarkerRenderer() {
+  vkDeviceWaitIdle(gpu_.device);
+  gpu_.destroy(markers_);
+  vkDestroyPipeline(gpu_.device, pipeline_, nullptr);
+  vkDestroyPipelineLayout(gpu_.device, layout_, nullptr);
+}
+
+void MarkerRenderer::upload(const std::vector<Marker>& markers) {
+  gpu::uploadVertices(gpu_, markers_, markers.data(), markers.size() * sizeof(Marker));
+  count_ = static_cast<uint32_t>(markers.size());
+}
+
+void MarkerRenderer::draw(VkCommandBuffer cmd, const float (&viewport)[4],
+                          const std::array<float, 16>& transform) const {
+  if (count_ == 0) return;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+  gpu::setViewport(cmd, viewport);
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                     sizeof(float) * 16, transform.data());
+  const VkDeviceSize offset = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &markers_.buffer, &offset);
+  vkCmdDraw(cmd, count_, 1, 0, 0);
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,46 @@
+// Many small marks of a fixed size on screen (the sites and centroids of the 2D pane, the
+// lifted sites of the 3D view), drawn as point sprites: one primitive per mark, where lavapipe's
+// cost is per primitive.
+#pragma once
+
+#include "gpu.h"
+#include "mesh.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace lloydscope {
+
+enum class MarkerShape { Dot, Ring, Square };
+
+struct Marker {
+  float position[3];
+  float diameter;  // pixels
+  float shape;     // MarkerShape, as the shader reads it
+  uint32_t color;  // RGBA8, as ImGui's IM_COL32
+};
+
+Marker marker(const Vec3& at, float diameter, MarkerShape shape, uint32_t color);
+
+class MarkerRenderer {
+ public:
+  MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass);
+  ~MarkerRenderer();
+  MarkerRenderer(const MarkerRenderer&) = delete;
+  MarkerRenderer& operator=(const MarkerRenderer&) = delete;
+
+  void upload(const std::vector<Marker>& markers);
+  // `transform` (column-major) takes positions to clip space; the viewport is the pane.
+  void draw(VkCommandBuffer cmd, const float (&viewport)[4],
+            const std::array<float, 16>& transform) const;
+
+ private:
+  gpu::Context& gpu_;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  gpu::Buffer markers_;
+  uint32_t count_ = 0;
+};
+
+}  // namespace lloydscope
