@@ -120,8 +120,8 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
     : gpu_(gpu), renderer_(gpu, renderPass),
       meshName_(meshName.substr(meshName.find_last_of('/') + 1)),  // the file, not where it lives
       options_(std::move(options)), result_(std::move(result)),
-      replay_(std::make_unique<Replay>(result_.recording)), canvas_(gpu, renderPass),
-      input_(std::move(input)) {
+      replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
+      canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
   std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");

@@ -32,11 +32,22 @@ const IterationView& Replay::view(int k) {
     view_.liftedSites.push_back(lift(recording_.input, domain_, view_.sites[i], hints_[i]));
   // Both outputs are made of exactly these lifted points: no second lift.
   const size_t fixedCount = recording_.fixedSites.size();
-  view_.output =
-      method_ == RemeshMethod::Retriangulate
-          ? assemble(triangulateSites(recording_.fixedSites, it.sites), view_.liftedSites)
-          : relocate(recording_.input, recording_.movableVertex,
-                     {view_.liftedSites.begin() + fixedCount, view_.liftedSites.end()});
+  view_.outputUV.clear();
+  view_.outputSite.clear();
+  if (method_ == RemeshMethod::Retriangulate) {
+    view_.output = assemble(triangulateSites(recording_.fixedSites, it.sites), view_.liftedSites,
+                            &view_.outputSite);
+    for (int s : view_.outputSite) view_.outputUV.push_back(view_.sites[s]);
+  } else {
+    view_.output = relocate(recording_.input, recording_.movableVertex,
+                            {view_.liftedSites.begin() + fixedCount, view_.liftedSites.end()});
+    view_.outputUV = recording_.uv;
+    view_.outputSite.assign(recording_.uv.size(), -1);
+    for (size_t i = 0; i < it.sites.size(); ++i) {
+      view_.outputUV[recording_.movableVertex[i]] = it.sites[i];
+      view_.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
+    }
+  }
   return view_;
 }
 

@@ -12,6 +12,9 @@ struct IterationView {
   std::vector<BoundedCell> cells;  // with geometry, in site order
   std::vector<Vec3> liftedSites;   // on the input surface
   Mesh output;                     // what these sites would give as the result
+  std::vector<Vec2> outputUV;      // where each output vertex lies in the parameter domain
+  std::vector<int> outputSite;     // the site each output vertex is, or -1 (an input vertex
+                                   // that relocate leaves in place)
 };
 
 class Replay {

@@ -1,0 +1,140 @@
+#include "inspection.h"
+#include "mesh_io.h"
+#include "metrics.h"
+#include "test_support.h"
+
+#include <map>
+
+using namespace lloydscope;
+
+namespace {
+
+// A short run on the bundled sphere cap with a uniform density, so that each cell's centroid
+// is also its shoelace centroid.
+const RemeshResult& uniformRun(RemeshMethod method) {
+  static std::map<RemeshMethod, RemeshResult> runs;
+  auto found = runs.find(method);
+  if (found != runs.end()) return found->second;
+  RemeshOptions o = method == RemeshMethod::Relocate ? referencePreset(method) : RemeshOptions{};
+  o.density.kind = DensityKind::Uniform;
+  o.lloyd.maxIterations = 8;
+  o.measureFidelity = false;
+  return runs[method] = remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, o, "cap");
+}
+
+double surfaceArea(const Mesh& mesh) {
+  double area = 0;
+  for (const Triangle& t : mesh.triangles)
+    area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  return area;
+}
+
+}  // namespace
+
+TEST(Inspection, CellNumbersMatchTheShoelaceFormulas) {
+  const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
+  Replay replay(r);
+  const IterationView& view = replay.view(5);
+  double area = 0, surface = 0;
+  for (int i = 0; i < static_cast<int>(view.cells.size()); ++i) {
+    const CellDetails d = describeCell(r, replay.domain(), view, i);
+    ASSERT_EQ(d.index, i);
+    EXPECT_NEAR(d.shoelaceArea, d.area, 1e-14);
+    if (d.area > 0) {
+      const Vec2 unweighted = d.shoelaceSums / (6.0 * d.shoelaceArea);
+      EXPECT_NEAR((unweighted - d.centroid).norm(), 0.0, 1e-9) << i;  // rho = 1
+    }
+    EXPECT_NEAR((d.moment / d.mass - d.centroid).norm(), 0.0, 1e-12);
+    area += d.area;
+    surface += d.surfaceArea;
+  }
+  // The cells tile the domain, so their surface patches tile the input surface.
+  double domainArea = 0;
+  const Domain& domain = replay.domain();
+  for (const Triangle& t : domain.triangles())
+    domainArea += triangleArea(domain.uv()[t[0]], domain.uv()[t[1]], domain.uv()[t[2]]);
+  EXPECT_NEAR(area, domainArea, 1e-12);
+  EXPECT_NEAR(surface, surfaceArea(r.input), 1e-9 * surfaceArea(r.input));
+}
+
+TEST(Inspection, CellMovementAndTrajectoryComeFromTheRecording) {
+  const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
+  Replay replay(r);
+  const int fixed = static_cast<int>(r.fixedSites.size());
+  const int cell = fixed + 17;
+  const CellDetails d = describeCell(r, replay.domain(), replay.view(3), cell);
+  EXPECT_FALSE(d.fixed);
+  EXPECT_EQ(d.site, r.iterations[3].sites[17]);
+  EXPECT_DOUBLE_EQ(d.moved, (r.iterations[3].sites[17] - r.iterations[2].sites[17]).norm());
+  EXPECT_DOUBLE_EQ(d.toCentroid, (r.iterations[3].centroids[17] - d.site).norm());
+  EXPECT_EQ(describeCell(r, replay.domain(), replay.view(0), cell).moved, 0.0);
+  EXPECT_TRUE(describeCell(r, replay.domain(), replay.view(3), 0).fixed);
+
+  const std::vector<Vec2> path = siteTrajectory(r, cell);
+  ASSERT_EQ(path.size(), r.iterations.size());
+  for (size_t k = 0; k < path.size(); ++k) EXPECT_EQ(path[k], r.iterations[k].sites[17]);
+}
+
+TEST(Inspection, CellValenceIsTheSiteVertexDegreeInTheResult) {
+  const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
+  Replay replay(r);
+  const IterationView& view = replay.view(7);
+  // Every site is a vertex of the retriangulated result.
+  const VertexEdges edges = vertexEdges(view.output);
+  for (int v = 0; v < view.output.vertexCount(); ++v)
+    EXPECT_EQ(describeCell(r, replay.domain(), view, view.outputSite[v]).valence, edges.valence[v]);
+}
+
+TEST(Inspection, CellAtIsTheNearestSiteInsideTheDomain) {
+  const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
+  Replay replay(r);
+  const IterationView& view = replay.view(2);
+  for (int i : {0, 40, 200}) EXPECT_EQ(cellAt(replay.domain(), view, view.sites[i]), i);
+  EXPECT_EQ(cellAt(replay.domain(), view, Vec2(-0.5, -0.5)), -1);
+}
+
+TEST(Inspection, TriangleNumbers) {
+  for (RemeshMethod method : {RemeshMethod::Retriangulate, RemeshMethod::Relocate}) {
+    const Recording& r = uniformRun(method).recording;
+    Replay replay(r);
+    ASSERT_EQ(replay.method(), method);
+    const IterationView& view = replay.view(4);
+    double total = 0;
+    for (int f = 0; f < static_cast<int>(view.output.triangles.size()); ++f) {
+      const TriangleDetails d = describeTriangle(view, f);
+      EXPECT_NEAR(d.angles3D[0] + d.angles3D[1] + d.angles3D[2], 180.0, 1e-9);
+      EXPECT_NEAR(d.anglesUV[0] + d.anglesUV[1] + d.anglesUV[2], 180.0, 1e-9);
+      EXPECT_EQ(d.minAngle, std::min({d.angles3D[0], d.angles3D[1], d.angles3D[2]}));
+      total += d.area3D;
+      for (int k = 0; k < 3; ++k)
+        if (d.sites[k] >= 0) EXPECT_EQ(view.outputUV[d.corners[k]], view.sites[d.sites[k]]);
+    }
+    EXPECT_NEAR(total, surfaceArea(view.output), 1e-12);
+    if (method == RemeshMethod::Retriangulate) {
+      // Every corner is a site.
+      const TriangleDetails d = describeTriangle(view, 10);
+      for (int s : d.sites) EXPECT_GE(s, 0);
+    }
+  }
+}
+
+TEST(Inspection, PickingTrianglesInUVAndAlongARay) {
+  const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
+  Replay replay(r);
+  const IterationView& view = replay.view(6);
+  for (int f : {0, 33, 250}) {
+    const Triangle& t = view.output.triangles[f];
+    const Vec2 uv = (view.outputUV[t[0]] + view.outputUV[t[1]] + view.outputUV[t[2]]) / 3.0;
+    EXPECT_EQ(triangleAtUV(view, uv), f);
+    const Vec3 centre =
+        (view.output.points[t[0]] + view.output.points[t[1]] + view.output.points[t[2]]) / 3.0;
+    const Vec3 normal = (view.output.points[t[1]] - view.output.points[t[0]])
+                            .cross(view.output.points[t[2]] - view.output.points[t[0]])
+                            .normalized();
+    // From just above the triangle, looking down at it: the sphere cap is convex, so nothing
+    // else is nearer.
+    EXPECT_EQ(triangleOnRay(view.output, centre + 1e-3 * normal, -normal), f);
+  }
+  EXPECT_EQ(triangleAtUV(view, Vec2(-1, -1)), -1);
+  EXPECT_EQ(triangleOnRay(view.output, Vec3(100, 100, 100), Vec3(1, 0, 0)), -1);
+}
