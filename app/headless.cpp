@@ -119,7 +119,7 @@ void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
   OffscreenRenderer renderer(shot.width, shot.height, shot.validation);
   {
     Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result));
-    if (shot.iteration >= 0) inspector.setIteration(shot.iteration);
+    shot.view.applyTo(inspector);
     inspector.showTimings(shot.timings);
     // ImGui settles its layout over the first frames; the third is the picture.
     for (int i = 0; i < 3; ++i) renderer.frame([&] { inspector.frame(); }, i == 2);

@@ -1,6 +1,7 @@
 // Renders the inspector offscreen (no window, no X server) and writes a PNG.
 #pragma once
 
+#include "inspector.h"
 #include "pipeline.h"
 
 #include <string>
@@ -10,7 +11,7 @@ namespace lloydscope {
 struct ScreenshotOptions {
   std::string path;
   int width = 1280, height = 800;
-  int iteration = -1;  // -1: the last one
+  OpeningView view;  // iteration, pinned cells and triangles, camera
   bool validation = false;
   bool timings = true;  // off: the picture depends only on the mesh and the settings
 };

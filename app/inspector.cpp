@@ -202,6 +202,97 @@ void Inspector::prepare() {
   cellEdges();
 }
 
+std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent) const {
+  const glm::vec3 target(camera_.target.x(), camera_.target.y(), camera_.target.z());
+  const glm::vec3 eye = target + camera_.distance * glm::vec3(std::cos(camera_.pitch) * std::cos(camera_.yaw),
+                                                              std::cos(camera_.pitch) * std::sin(camera_.yaw),
+                                                              std::sin(camera_.pitch));
+  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / extent.y,
+                                    camera_.distance * 0.01f, camera_.distance * 10.0f);
+  proj[1][1] *= -1.0f;  // Vulkan's y points down
+  return {proj * glm::lookAt(eye, target, glm::vec3(0, 0, 1)), eye};
+}
+
+void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent) {
+  if (showInput_) return;  // triangles are the result's
+  const auto [viewProjection, eye] = cameraMatrices(extent);
+  const glm::mat4 inverse = glm::inverse(viewProjection);
+  const float x = (mouse.x - p0.x) / extent.x * 2 - 1, y = (mouse.y - p0.y) / extent.y * 2 - 1;
+  const glm::vec4 far = inverse * glm::vec4(x, y, 1.0f, 1.0f);
+  const glm::vec3 through = glm::vec3(far) / far.w - eye;
+  selection_.toggleTriangle(triangleOnRay(replay_->view(iteration_).output,
+                                          Vec3(eye.x, eye.y, eye.z),
+                                          Vec3(through.x, through.y, through.z)));
+}
+
+void Inspector::pinCell(int cell) {
+  const int count = static_cast<int>(replay_->view(iteration_).sites.size());
+  if (cell < 0 || cell >= count)
+    throw Error("cell " + std::to_string(cell) + " does not exist (" + std::to_string(count) +
+                " sites, numbered from 0)");
+  if (std::find(selection_.cells().begin(), selection_.cells().end(), cell) == selection_.cells().end())
+    selection_.toggleCell(cell);
+}
+
+void Inspector::pinTriangle(int triangle) {
+  const int count = static_cast<int>(replay_->view(iteration_).output.triangles.size());
+  if (triangle < 0 || triangle >= count)
+    throw Error("triangle " + std::to_string(triangle) + " does not exist (" +
+                std::to_string(count) + " in the result at iteration " +
+                std::to_string(iteration_) + ")");
+  if (std::find(selection_.triangles().begin(), selection_.triangles().end(), triangle) ==
+      selection_.triangles().end())
+    selection_.toggleTriangle(triangle);
+}
+
+void Inspector::pick2D(const Vec2& uv) {
+  const IterationView& view = replay_->view(iteration_);
+  if (pickTriangles2D_) selection_.toggleTriangle(triangleAtUV(view, uv));
+  else selection_.toggleCell(cellAt(replay_->domain(), view, uv));
+}
+
+void Inspector::hoverTooltip2D(const Vec2& uv) {
+  const IterationView& view = replay_->view(iteration_);
+  const int cell = cellAt(replay_->domain(), view, uv);
+  if (cell < 0) return;
+  const BoundedCell& c = view.cells[cell];
+  ImGui::BeginTooltip();
+  ImGui::Text("cell %d%s", cell, cell < static_cast<int>(replay_->recording().fixedSites.size())
+                                     ? " (fixed border site)" : "");
+  ImGui::Text("area %.3e  mass %.3e", c.area, c.mass);
+  ImGui::Text("site to centroid %.2e", (c.centroid - view.sites[cell]).norm());
+  ImGui::TextDisabled("click to pin");
+  ImGui::EndTooltip();
+}
+
+std::string Inspector::cameraText() const {
+  char text[160];
+  std::snprintf(text, sizeof text, "%.4f %.4f %.6g %.6g %.6g %.6g", camera_.yaw, camera_.pitch,
+                camera_.distance, camera_.target.x(), camera_.target.y(), camera_.target.z());
+  return text;
+}
+
+void Inspector::setCamera(const std::string& text) {
+  Camera c;
+  double x, y, z;
+  char rest;
+  if (std::sscanf(text.c_str(), "%f %f %f %lf %lf %lf %c", &c.yaw, &c.pitch, &c.distance, &x, &y,
+                  &z, &rest) != 6 ||
+      !std::isfinite(c.yaw) || !std::isfinite(c.pitch) || !(c.distance > 0) ||
+      !std::isfinite(c.distance) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+    throw Error("camera \"" + text + "\": expected \"yaw pitch distance x y z\" (six numbers, distance > 0)");
+  c.pitch = std::clamp(c.pitch, -1.5f, 1.5f);
+  c.target = Vec3(x, y, z);
+  camera_ = c;
+}
+
+void OpeningView::applyTo(Inspector& inspector) const {
+  if (iteration >= 0) inspector.setIteration(iteration);
+  for (int cell : cells) inspector.pinCell(cell);
+  for (int triangle : triangles) inspector.pinTriangle(triangle);
+  if (!camera.empty()) inspector.setCamera(camera);
+}
+
 void Inspector::fitCamera() {
   const auto [lo, hi] = boundingBox(replay_->recording().input);
   camera_.target = 0.5 * (lo + hi);
@@ -277,6 +368,7 @@ void Inspector::handleKeys() {
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) setIteration(iteration_ - step);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) setIteration(iteration_ + step);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) setIteration(0);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) selection_.clear();
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) setIteration(replay_->iterationCount() - 1);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
     if (!playing_ && iteration_ + 1 >= replay_->iterationCount()) setIteration(0);
@@ -343,13 +435,24 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::Text("Hausdorff %.3f%%, RMS %.3f%% of diagonal", result_.fidelity.hausdorffPercent,
               result_.fidelity.rmsPercent);
   if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
+  if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int pick = pickTriangles2D_ ? 1 : 0;
+    ImGui::TextUnformatted("2D click pins a");
+    ImGui::SameLine();
+    ImGui::RadioButton("cell", &pick, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("triangle", &pick, 1);
+    pickTriangles2D_ = pick == 1;
+    selection_.detailsPanel(replay_->recording(), replay_->domain(), replay_->view(iteration_));
+  }
   ImGui::Separator();
   ImGui::TextUnformatted("2D view");
   ImGui::Checkbox("parameter triangles", &showTriangles_);
   ImGui::Checkbox("site -> centroid arrows", &showArrows_);
-  const char* fills[] = {"no fill", "mass", "area", "energy", "distance to centroid"};
+  const char* fills[] = {"no fill", "mass", "area", "energy", "distance to centroid",
+                         "moved since k-1"};
   int fill = static_cast<int>(fill_);
-  if (ImGui::Combo("cell fill", &fill, fills, 5)) fill_ = static_cast<CellFill>(fill);
+  if (ImGui::Combo("cell fill", &fill, fills, 6)) fill_ = static_cast<CellFill>(fill);
   ImGui::TextUnformatted("3D view");
   bool showInput = showInput_;
   if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
@@ -359,11 +462,27 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     uploadedIteration_ = -1;
   }
   ImGui::Checkbox("wireframe", &wireframe_);
-  if (ImGui::Button("Fit view (F)")) fitCamera();
+  cameraControls();
   settingsControls();
   fileControls();
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::End();
+}
+
+void Inspector::cameraControls() {
+  if (ImGui::Button("Fit view (F)")) fitCamera();
+  ImGui::SameLine();
+  if (ImGui::Button("Copy view")) ImGui::SetClipboardText(cameraText().c_str());
+  ImGui::SameLine();
+  if (ImGui::Button("Paste view")) {
+    const char* text = ImGui::GetClipboardText();
+    try {
+      setCamera(text ? text : "");
+      message_.clear();
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  }
 }
 
 void Inspector::settingsControls() {
@@ -484,14 +603,10 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
       uploadedMethod_ != replay_->method())
     uploadMesh();
 
-  const glm::vec3 target(camera_.target.x(), camera_.target.y(), camera_.target.z());
-  const glm::vec3 eye = target + camera_.distance * glm::vec3(std::cos(camera_.pitch) * std::cos(camera_.yaw),
-                                                              std::cos(camera_.pitch) * std::sin(camera_.yaw),
-                                                              std::sin(camera_.pitch));
-  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / extent.y,
-                                    camera_.distance * 0.01f, camera_.distance * 10.0f);
-  proj[1][1] *= -1.0f;  // Vulkan's y points down
-  const glm::mat4 viewProjection = proj * glm::lookAt(eye, target, glm::vec3(0, 0, 1));
+  if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+      io.MouseDragMaxDistanceSqr[0] < 9.0f)
+    pick3D(io.MousePos, p0, extent);  // a click, not the end of an orbit
+  const glm::mat4 viewProjection = cameraMatrices(extent).first;
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   MeshDraw& draw = meshCallback_.second;
@@ -505,6 +620,18 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   draw.viewport[3] = extent.y;
   dl->AddCallback(drawMeshCallback, &meshCallback_);
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+  dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
+  selection_.draw3D(
+      dl, replay_->recording(), replay_->domain(), replay_->view(iteration_),
+      [&](const Vec3& p, ImVec2& screen) {
+        const glm::vec4 c = viewProjection * glm::vec4(p.x(), p.y(), p.z(), 1.0f);
+        if (c.w <= 0) return false;
+        screen = ImVec2(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
+                        p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
+        return true;
+      },
+      !showInput_);
+  dl->PopClipRect();
 
   if (colorByAngle_)
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, "60 deg", "0 deg", [](float t) {
@@ -542,6 +669,12 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     return ImVec2(center.x + static_cast<float>(uv.x() - 0.5) * scale,
                   center.y - static_cast<float>(uv.y() - 0.5) * scale);
   };
+  const Vec2 mouseUV(0.5 + (io.MousePos.x - center.x) / scale, 0.5 - (io.MousePos.y - center.y) / scale);
+  if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+      io.MouseDragMaxDistanceSqr[0] < 9.0f)
+    pick2D(mouseUV);  // a click, not the end of a pan
+  else if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    hoverTooltip2D(mouseUV);
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
@@ -567,6 +700,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
         dl->AddLine(screen(domain.uv()[tri[k]]), screen(domain.uv()[tri[(k + 1) % 3]]),
                     rgb(0.15f, 0.15f, 0.15f), 2.0f);
       }
+  selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale);
   if (fill_ != CellFill::None)
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, format("%.2e", fillRange_[1]).c_str(),
                  format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
@@ -582,12 +716,19 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   const IterationView& view = replay_->view(iteration_);
   const size_t fixedCount = replay_->recording().fixedSites.size();
   if (fill_ != CellFill::None) {
+    const auto& iterations = replay_->recording().iterations;
     auto quantity = [&](size_t i) {
       const BoundedCell& c = view.cells[i];
       switch (fill_) {
         case CellFill::Mass: return c.mass;
         case CellFill::Area: return c.area;
         case CellFill::Energy: return c.energy;
+        case CellFill::Moved:  // fixed sites never move; iteration 0 has no predecessor
+          return i < fixedCount || view.index == 0
+                     ? 0.0
+                     : (iterations[view.index].sites[i - fixedCount] -
+                        iterations[view.index - 1].sites[i - fixedCount])
+                           .norm();
         default: return (c.centroid - view.sites[i]).norm();
       }
     };

@@ -7,7 +7,9 @@
 #include "mesh_renderer.h"
 #include "pipeline.h"
 #include "replay.h"
+#include "selection.h"
 
+#include <glm/mat4x4.hpp>
 #include <imgui.h>
 
 #include <atomic>
@@ -25,7 +27,20 @@ struct Camera {
   Vec3 target = Vec3::Zero();
 };
 
-enum class CellFill { None, Mass, Area, Energy, Displacement };
+// What colours the 2D cells: Moved is how far each site went from iteration k-1 to k, where
+// the diagram is still changing.
+enum class CellFill { None, Mass, Area, Energy, ToCentroid, Moved };
+
+class Inspector;
+
+// What the inspector opens on beyond the recording, from the command line: the same for the
+// window and for headless pictures.
+struct OpeningView {
+  int iteration = -1;                 // -1: the last
+  std::vector<int> cells, triangles;  // pinned
+  std::string camera;                 // "yaw pitch distance x y z"; empty: fit to the mesh
+  void applyTo(Inspector& inspector) const;
+};
 
 class Inspector {
  public:
@@ -45,6 +60,13 @@ class Inspector {
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }
   int iteration() const { return iteration_; }
+  // Pins a cell, or a triangle of the current iteration's result; throws Error (one line) if
+  // there is no such one.
+  void pinCell(int cell);
+  void pinTriangle(int triangle);
+  // The 3D camera as one line of text ("yaw pitch distance x y z"), to save and restore a view.
+  std::string cameraText() const;
+  void setCamera(const std::string& text);  // throws Error on a malformed line
   // Records the frame ImGui::Render() produced into `framebuffer`: clears it and draws every
   // pane, our own pipelines included (ImGui 1.86 passes its draw callbacks no command buffer,
   // so this is where they get it).
@@ -58,6 +80,10 @@ class Inspector {
   void plotsPane(const ImVec2& pos, const ImVec2& size);
   void timelinePane(const ImVec2& pos, const ImVec2& size);
   void handleKeys();
+  void pick2D(const Vec2& uv);
+  void pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent);
+  void hoverTooltip2D(const Vec2& uv);
+  void cameraControls();
   void settingsControls();
   void fileControls();
   // Live runs: a session steps on a worker thread; its iterations reach the replay here.
@@ -72,6 +98,8 @@ class Inspector {
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks  // of the current iteration's result, cached
   void fitCamera();
+  // The 3D view's view-projection matrix (Vulkan clip space) and eye, for a pane this size.
+  std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent) const;
 
   gpu::Context& gpu_;
   MeshRenderer renderer_;
@@ -114,6 +142,8 @@ class Inspector {
   float playSpeed_ = 10.0f, playClock_ = 0.0f;
   CellFill fill_ = CellFill::None;
   Camera camera_;
+  Selection selection_;
+  bool pickTriangles2D_ = false;  // a click in the 2D view pins a result triangle, not a cell
   float zoom2D_ = 1.0f;
   ImVec2 pan2D_{0, 0};
   // What the draw callbacks of the current frame read (they must outlive ImGui::Render()).

@@ -149,7 +149,12 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (.lsrec)")
       ->required();
   inspectCmd->add_option("--screenshot", shot.path, "Render offscreen to this PNG and exit");
-  inspectCmd->add_option("--iteration", shot.iteration, "Iteration to show (default: the last)");
+  inspectCmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)");
+  inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)");
+  inspectCmd->add_option("--select-triangle", shot.view.triangles,
+                         "Pin this triangle of the result (repeatable)");
+  inspectCmd->add_option("--camera", shot.view.camera,
+                         "3D view as \"yaw pitch distance x y z\" (the inspector's Copy view)");
   inspectCmd->add_option("--size", size, "Picture size WxH (default 1280x800)");
   inspectCmd->add_flag("--validation", shot.validation,
                        "Enable the Vulkan validation layer; fail if it reports anything");
@@ -207,7 +212,8 @@ int main(int argc, char** argv) {
       if (shot.path.empty()) {
         requireDisplay();  // before minutes of work that no window would show
         RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
-        return runWindow(ir.input, options, std::move(result), shot.validation, std::move(input));
+        return runWindow(ir.input, options, std::move(result), shot.validation, std::move(input),
+                         shot.view);
       }
       RemeshResult result = openForInspection(ir, *inspectCmd, options);
       renderScreenshot(ir.input, options, std::move(result), shot);

@@ -106,7 +106,8 @@ void requireDisplay() {
 }
 
 int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
-              bool validation, std::optional<Mesh> input) {
+              bool validation, std::optional<Mesh> input,
+              const OpeningView& view) {
   requireDisplay();
   if (!glfwInit()) throw Error("cannot open a window (GLFW could not start on this display)");
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
@@ -148,6 +149,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     vkAllocateCommandBuffers(gpu.device, &alloc, &cmd);
     {
       Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
+      view.applyTo(inspector);
       while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
         int w, h;

@@ -1,6 +1,7 @@
 // The inspector in a real window (GLFW + a Vulkan swapchain).
 #pragma once
 
+#include "inspector.h"
 #include "pipeline.h"
 
 #include <optional>
@@ -14,6 +15,6 @@ void requireDisplay();
 
 // With the input mesh, the inspector can step, run and remesh again.
 int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
-              bool validation, std::optional<Mesh> input);
+              bool validation, std::optional<Mesh> input, const OpeningView& view = {});
 
 }  // namespace lloydscope

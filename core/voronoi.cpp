@@ -180,6 +180,21 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
 
 namespace {
 
+// Whether the segment p q lies along a side of the parameter triangle (it is then a cut made
+// by the clipping, not an edge of the diagram).
+bool onTriangleSide(const Domain& domain, int triangle, const Vec2& p, const Vec2& q) {
+  const Triangle& tri = domain.triangles()[triangle];
+  const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 side = corner[(k + 1) % 3] - corner[k];
+    const double tolerance = kOnSide * side.norm();
+    if (std::abs(cross(side, p - corner[k])) <= tolerance &&
+        std::abs(cross(side, q - corner[k])) <= tolerance)
+      return true;
+  }
+  return false;
+}
+
 // Which side of the (unclipped) Voronoi polygon the piece edge p -> q lies on: the nearest.
 size_t voronoiSideOf(const std::vector<Vec2>& voronoi, const Vec2& p, const Vec2& q) {
   size_t best = 0;
@@ -210,21 +225,12 @@ std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
   for (const BoundedCell& cell : cells) {
     parts.clear();
     for (const CellPiece& piece : cell.pieces) {
-      const Triangle& tri = domain.triangles()[piece.triangle];
-      const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
       const size_t n = piece.polygon.size();
       for (size_t i = 0; i < n; ++i) {
         const Vec2 &p = piece.polygon[i], &q = piece.polygon[(i + 1) % n];
         // The two cells an edge separates hold it in opposite directions: keep one.
         if (std::make_pair(p.x(), p.y()) >= std::make_pair(q.x(), q.y())) continue;
-        bool onSide = false;
-        for (int k = 0; k < 3 && !onSide; ++k) {
-          const Vec2 side = corner[(k + 1) % 3] - corner[k];
-          const double tolerance = kOnSide * side.norm();
-          onSide = std::abs(cross(side, p - corner[k])) <= tolerance &&
-                   std::abs(cross(side, q - corner[k])) <= tolerance;
-        }
-        if (onSide) continue;
+        if (onTriangleSide(domain, piece.triangle, p, q)) continue;
         const size_t side = voronoiSideOf(cell.voronoi, p, q);
         parts.push_back({side, (p - cell.voronoi[side]).norm(), p, q});
       }
@@ -246,6 +252,16 @@ std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
       i = j;
     }
   }
+  return edges;
+}
+
+std::vector<std::pair<Vec2, Vec2>> cellOutline(const Domain& domain, const BoundedCell& cell) {
+  std::vector<std::pair<Vec2, Vec2>> edges;
+  for (const CellPiece& piece : cell.pieces)
+    for (size_t i = 0; i < piece.polygon.size(); ++i) {
+      const Vec2 &p = piece.polygon[i], &q = piece.polygon[(i + 1) % piece.polygon.size()];
+      if (!onTriangleSide(domain, piece.triangle, p, q)) edges.emplace_back(p, q);
+    }
   return edges;
 }
 

@@ -42,6 +42,9 @@ PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
 std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
                                                 const std::vector<BoundedCell>& cells);
 
+// One cell's edges with its neighbours (the same segments as voronoiEdges, both directions).
+std::vector<std::pair<Vec2, Vec2>> cellOutline(const Domain& domain, const BoundedCell& cell);
+
 // Cells of all `sites`, in their order. Deterministic: the same sites give bit-identical cells,
 // whatever the hints. `hints`, if given, holds for each site a triangle near it (or -1) and
 // receives the triangle that holds it: pass it back next iteration to skip the spatial search.

@@ -5,6 +5,7 @@
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -100,4 +101,26 @@ TEST(Inspector, ReplaysARecording) {
   const std::string png = test::tempPath("from_recording.png");
   ASSERT_EQ(run("inspect " + rec + " --iteration 2 --size 640x400 --screenshot " + png), 0);
   EXPECT_EQ(readPng(png).width, 640);
+}
+
+TEST(Inspector, PinnedCellAndTriangle) {
+  // Cell 100 and triangle 50 highlighted in both views, their numbers in the details panel.
+  checkScene("inspector_selection.png", "--iteration 3 --select-cell 100 --select-triangle 50");
+}
+
+TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
+  const std::string mesh = test::assetPath("sphere_cap.off");
+  const std::string out = test::tempPath("never.png"), err = test::tempPath("select.err");
+  for (const std::string& args :
+       {std::string("--select-cell 500"), std::string("--select-triangle -1"),
+        std::string("--camera 'one two'"), std::string("--camera '0 0 -1 0 0 0'")}) {
+    EXPECT_EQ(run("inspect " + mesh + " --screenshot " + out + " " + args + " 2> " + err), 1) << args;
+    const std::string message = test::readText(err);
+    EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+    EXPECT_TRUE(message.find("cell 500 does not exist") != std::string::npos ||
+                message.find("triangle -1 does not exist") != std::string::npos ||
+                message.find("camera") != std::string::npos)
+        << message;
+    EXPECT_FALSE(std::ifstream(out).good()) << args;
+  }
 }

@@ -150,26 +150,23 @@ TEST(BoundedCells, VoronoiEdgesAreJoinedAcrossParameterTriangles) {
   // Four sites in general position over the unit square cut into 8x8x2 triangles: five
   // Voronoi edges, each one segment however many parameter triangles it crosses, and the
   // same diagram as over the square made of two triangles.
+  const Mesh grid = test::grid(8);
   std::vector<Vec2> uv;
-  std::vector<Triangle> triangles;
-  const int n = 8;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) uv.emplace_back(double(i) / n, double(j) / n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-      triangles.push_back({a, b, c});
-      triangles.push_back({a, c, d});
-    }
+  for (const Vec3& p : grid.points) uv.emplace_back(p.x(), p.y());
   const std::vector<Vec2> sites = {{0.2, 0.3}, {0.7, 0.2}, {0.3, 0.8}, {0.75, 0.7}};
   auto totalLength = [](const std::vector<std::pair<Vec2, Vec2>>& edges) {
     double length = 0;
     for (const auto& [p, q] : edges) length += (q - p).norm();
     return length;
   };
-  const Domain fine(uv, triangles, {});
+  const Domain fine(uv, grid.triangles, {});
   const auto edges = voronoiEdges(fine, computeCells(fine, sites, true));
   EXPECT_EQ(edges.size(), 5u);
+  // Each edge bounds two cells: the outlines hold every edge twice.
+  const auto cells = computeCells(fine, sites, true);
+  double outlines = 0;
+  for (const BoundedCell& cell : cells) outlines += totalLength(cellOutline(fine, cell));
+  EXPECT_NEAR(outlines, 2 * totalLength(edges), 1e-12);
   const Domain coarse({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {});
   const auto reference = voronoiEdges(coarse, computeCells(coarse, sites, true));
   EXPECT_EQ(reference.size(), 5u);

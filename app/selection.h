@@ -1,0 +1,47 @@
+// Pinned cells and triangles: they stay selected, by index, while the user scrubs, so one cell
+// can be watched as it evolves. Drawn in both views and described in a details panel.
+#pragma once
+
+#include "inspection.h"
+
+#include <imgui.h>
+
+#include <functional>
+#include <vector>
+
+namespace lloydscope {
+
+// Where a point of the parameter domain, or of the surface, is on screen (false: behind the
+// camera).
+using ScreenOfUV = std::function<ImVec2(const Vec2&)>;
+using ScreenOf3D = std::function<bool(const Vec3&, ImVec2&)>;
+
+class Selection {
+ public:
+  // Pins the index, or unpins it if it was pinned.
+  void toggleCell(int cell);
+  void toggleTriangle(int triangle);
+  void clear();
+  bool empty() const { return cells_.empty() && triangles_.empty(); }
+  const std::vector<int>& cells() const { return cells_; }
+  const std::vector<int>& triangles() const { return triangles_; }
+
+  // Highlights: each pinned cell filled, with its site's path over all iterations; each pinned
+  // triangle outlined (in the parameter domain by its corners' UV positions).
+  void draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
+              const ScreenOfUV& screen, float scale) const;
+  // The cells' outlines and sites lifted to the surface, the triangles' outlines (these only
+  // when the result is shown).
+  void draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,
+              const IterationView& view, const ScreenOf3D& screen, bool resultShown) const;
+  // The numbers of each pinned element at this iteration, with the formulas they enter.
+  void detailsPanel(const Recording& recording, const Domain& domain, const IterationView& view);
+
+  static ImU32 cellColor(float alpha = 1.0f);
+  static ImU32 triangleColor(float alpha = 1.0f);
+
+ private:
+  std::vector<int> cells_, triangles_;
+};
+
+}  // namespace lloydscope
