@@ -2,10 +2,10 @@
 
 #include "gpu.h"
 #include "inspector.h"
+#include "png.h"
 
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
-#include <stb_image_write.h>
 
 #include <chrono>
 #include <cstdio>
@@ -86,16 +86,12 @@ class OffscreenRenderer {
     if (readBack) gpu_.waitSubmitted();
   }
 
-  void writePng(const std::string& path) const {
-    const std::string temporary = path + ".tmp";
-    if (!stbi_write_png(temporary.c_str(), width_, height_, 4, pixels_.mapped, width_ * 4)) {
-      std::remove(temporary.c_str());
-      throw Error(path + ": cannot write the PNG");
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-      std::remove(temporary.c_str());
-      throw Error(path + ": cannot write the PNG (rename failed)");
-    }
+  // Writes the part `crop` (x, y, width, height) of the last frame read back.
+  void writePng(const std::string& path, const float (&crop)[4]) const {
+    lloydscope::writePng(path, static_cast<const unsigned char*>(pixels_.mapped), width_, height_,
+                         false,
+                         {static_cast<int>(crop[0]), static_cast<int>(crop[1]),
+                          static_cast<int>(crop[2]), static_cast<int>(crop[3])});
   }
 
   void finish() { gpu_.waitSubmitted(); }
@@ -121,10 +117,15 @@ void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
     Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result));
     shot.view.applyTo(inspector);
     inspector.showTimings(shot.timings);
-    // ImGui settles its layout over the first frames; the third is the picture.
-    for (int i = 0; i < 3; ++i) renderer.frame([&] { inspector.frame(); }, i == 2);
+    // ImGui settles its layout over the first frames; the pictures come after them.
+    for (int i = 0; i < 2; ++i) renderer.frame([&] { inspector.frame(); }, false);
+    inspector.startExport(shot.picture);
+    while (inspector.exporting()) {
+      renderer.frame([&] { inspector.frame(); }, true);
+      renderer.writePng(inspector.exportRequest()->path, inspector.exportRequest()->crop);
+      inspector.exported();
+    }
   }
-  renderer.writePng(shot.path);
   if (renderer.validationMessages() > 0)
     throw Error("the Vulkan validation layer reported " +
                 std::to_string(renderer.validationMessages()) + " problems");

@@ -9,7 +9,7 @@
 namespace lloydscope {
 
 struct ScreenshotOptions {
-  std::string path;
+  ExportJob picture;  // the PNG (or numbered PNGs), the pane, the iterations
   int width = 1280, height = 800;
   OpeningView view;  // iteration, pinned cells and triangles, camera
   bool validation = false;

@@ -286,6 +286,35 @@ void Inspector::setCamera(const std::string& text) {
   camera_ = c;
 }
 
+Pane parsePane(const std::string& name) {
+  if (name == "window") return Pane::Window;
+  if (name == "3d") return Pane::View3D;
+  if (name == "2d") return Pane::Domain2D;
+  if (name == "plots") return Pane::Plots;
+  throw Error("pane \"" + name + "\": expected window, 3d, 2d or plots");
+}
+
+void Inspector::startExport(ExportJob job) {
+  const std::string& p = job.path;
+  if (p.size() < 5 || p.compare(p.size() - 4, 4, ".png") != 0)
+    throw Error(p + ": exports are PNG files (end the name with .png)");
+  const int count = replay_->iterationCount();
+  if (job.first >= 0 && (job.last < job.first || job.last >= count))
+    throw Error("iterations " + std::to_string(job.first) + ":" + std::to_string(job.last) +
+                ": expected FIRST:LAST within 0:" + std::to_string(count - 1));
+  exportNext_ = job.first >= 0 ? job.first : iteration_;
+  exportJob_ = std::move(job);
+}
+
+void Inspector::exported(const std::string& error) {
+  if (exportRequest_) message_ = error.empty() ? "saved " + exportRequest_->path : error;
+  exportRequest_.reset();
+  if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last)
+    ++exportNext_;
+  else
+    exportJob_.reset();
+}
+
 void OpeningView::applyTo(Inspector& inspector) const {
   if (iteration >= 0) inspector.setIteration(iteration);
   for (int cell : cells) inspector.pinCell(cell);
@@ -349,11 +378,29 @@ void Inspector::frame() {
       else setIteration(iteration_ + 1);
     }
   }
+  if (exportJob_ && exportJob_->first >= 0) setIteration(exportNext_);
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float left = std::max(280.0f, display.x * 0.23f);
   const float timelineHeight = 64.0f, plotsHeight = std::max(170.0f, display.y * 0.27f);
   const float viewsHeight = display.y - timelineHeight - plotsHeight;
   const float viewWidth = (display.x - left) / 2;
+  const float rects[4][4] = {{0, 0, display.x, display.y},
+                             {left, 0, viewWidth, viewsHeight},
+                             {left + viewWidth, 0, display.x - left - viewWidth, viewsHeight},
+                             {left, viewsHeight, display.x - left, plotsHeight}};
+  std::copy(&rects[0][0], &rects[0][0] + 16, &paneRects_[0][0]);
+  if (exportJob_) {
+    std::string path = exportJob_->path;
+    if (exportJob_->first >= 0) {
+      char number[16];
+      std::snprintf(number, sizeof number, "_%04d", exportNext_);
+      path.insert(path.size() - 4, number);
+    }
+    ExportRequest request{path, {}};
+    std::copy(rects[static_cast<int>(exportJob_->pane)], rects[static_cast<int>(exportJob_->pane)] + 4,
+              request.crop);
+    exportRequest_ = request;
+  }
   controlsPane(ImVec2(0, 0), ImVec2(left, display.y));
   viewPane3D(ImVec2(left, 0), ImVec2(viewWidth, viewsHeight));
   domainPane2D(ImVec2(left + viewWidth, 0), ImVec2(display.x - left - viewWidth, viewsHeight));
@@ -465,6 +512,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   cameraControls();
   settingsControls();
   fileControls();
+  exportControls();
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::End();
 }
@@ -483,6 +531,34 @@ void Inspector::cameraControls() {
       message_ = e.what();
     }
   }
+}
+
+void Inspector::exportControls() {
+  if (!ImGui::CollapsingHeader("Export PNG")) return;
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##export", exportPath_, sizeof exportPath_);
+  ImGui::SetNextItemWidth(110);
+  ImGui::Combo("pane", &exportPane_, "window\0" "3D view\0" "2D view\0" "plots\0");
+  const Pane pane = static_cast<Pane>(exportPane_);
+  auto start = [&](ExportJob job) {
+    try {
+      startExport(std::move(job));
+      message_ = std::string("saving ") + exportPath_;
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  };
+  if (ImGui::Button("Save this iteration")) start({exportPath_, pane});
+  ImGui::SetNextItemWidth(60);
+  ImGui::InputInt("##first", &exportFirst_, 0);
+  ImGui::SameLine();
+  ImGui::TextUnformatted("to");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(60);
+  ImGui::InputInt("##last", &exportLast_, 0);
+  ImGui::SameLine();
+  if (ImGui::Button("Save sequence")) start({exportPath_, pane, exportFirst_, exportLast_});
+  ImGui::TextDisabled("a sequence is numbered: name_0000.png, ...");
 }
 
 void Inspector::settingsControls() {

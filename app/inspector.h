@@ -35,6 +35,25 @@ class Inspector;
 
 // What the inspector opens on beyond the recording, from the command line: the same for the
 // window and for headless pictures.
+// What an export saves: the whole window or one pane.
+enum class Pane { Window, View3D, Domain2D, Plots };
+Pane parsePane(const std::string& name);  // "window", "3d", "2d", "plots"; throws Error
+
+// A PNG of the current frame, or a numbered sequence over iterations first..last (for slides
+// and GIFs): path "out.png" gives out_0000.png, out_0001.png, ... named by iteration.
+struct ExportJob {
+  std::string path;
+  Pane pane = Pane::Window;
+  int first = -1, last = -1;  // -1: just the current iteration
+};
+
+// One picture the front end must save: after rendering the frame, read it back, write `crop`
+// of it to `path`, and call Inspector::exported().
+struct ExportRequest {
+  std::string path;
+  float crop[4];  // x, y, width, height in framebuffer pixels
+};
+
 struct OpeningView {
   int iteration = -1;                 // -1: the last
   std::vector<int> cells, triangles;  // pinned
@@ -67,6 +86,12 @@ class Inspector {
   // The 3D camera as one line of text ("yaw pitch distance x y z"), to save and restore a view.
   std::string cameraText() const;
   void setCamera(const std::string& text);  // throws Error on a malformed line
+  // Exports: the frames that frame() draws next are saved, one per iteration of the job.
+  void startExport(ExportJob job);  // throws Error on a bad path or range
+  const std::optional<ExportRequest>& exportRequest() const { return exportRequest_; }
+  bool exporting() const { return exportJob_.has_value(); }
+  // The picture was saved, or could not be (`error`, one line, ends the job and is shown).
+  void exported(const std::string& error = {});
   // Records the frame ImGui::Render() produced into `framebuffer`: clears it and draws every
   // pane, our own pipelines included (ImGui 1.86 passes its draw callbacks no command buffer,
   // so this is where they get it).
@@ -143,6 +168,13 @@ class Inspector {
   CellFill fill_ = CellFill::None;
   Camera camera_;
   Selection selection_;
+  std::optional<ExportJob> exportJob_;
+  int exportNext_ = 0;
+  std::optional<ExportRequest> exportRequest_;
+  float paneRects_[4][4] = {};  // Pane -> x, y, width, height, from the last frame's layout
+  char exportPath_[512] = "lloydscope.png";
+  int exportPane_ = 0, exportFirst_ = 0, exportLast_ = 0;
+  void exportControls();
   bool pickTriangles2D_ = false;  // a click in the 2D view pins a result triangle, not a cell
   float zoom2D_ = 1.0f;
   ImVec2 pan2D_{0, 0};

@@ -148,7 +148,11 @@ int main(int argc, char** argv) {
                  "headless to a PNG and exit");
   inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (.lsrec)")
       ->required();
-  inspectCmd->add_option("--screenshot", shot.path, "Render offscreen to this PNG and exit");
+  inspectCmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit");
+  std::string pane = "window", iterations;
+  inspectCmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots");
+  inspectCmd->add_option("--iterations", iterations,
+                         "With --screenshot: FIRST:LAST, one numbered PNG per iteration");
   inspectCmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)");
   inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)");
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
@@ -209,7 +213,14 @@ int main(int argc, char** argv) {
       std::optional<Mesh> input;
       parseSize(size, shot.width, shot.height);
       shot.timings = !noTimings;
-      if (shot.path.empty()) {
+      shot.picture.pane = parsePane(pane);
+      if (!iterations.empty()) {
+        char rest;
+        if (std::sscanf(iterations.c_str(), "%d:%d%c", &shot.picture.first, &shot.picture.last,
+                        &rest) != 2 || shot.picture.first < 0)
+          throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
+      }
+      if (shot.picture.path.empty()) {
         requireDisplay();  // before minutes of work that no window would show
         RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
         return runWindow(ir.input, options, std::move(result), shot.validation, std::move(input),

@@ -2,6 +2,7 @@
 
 #include "gpu.h"
 #include "inspector.h"
+#include "png.h"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
@@ -30,6 +31,7 @@ struct Swapchain {
   std::vector<VkImageView> views;
   std::vector<VkFramebuffer> framebuffers;
   gpu::Image depth;
+  bool readable = false;  // frames can be copied out (for exports)
 
   void create(gpu::Context& gpu, VkSurfaceKHR surface, VkRenderPass pass, VkFormat format,
               GLFWwindow* window) {
@@ -48,7 +50,10 @@ struct Swapchain {
     info.imageColorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
     info.imageExtent = extent;
     info.imageArrayLayers = 1;
-    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    // TRANSFER_SRC: exports read the frame back (lavapipe offers it; other drivers may not).
+    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                      (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    readable = caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.preTransform = caps.currentTransform;
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
@@ -93,6 +98,56 @@ struct Swapchain {
     *this = Swapchain{};
   }
 };
+
+// Copies the rendered swapchain image (in PRESENT_SRC layout) into `pixels`, growing it as
+// needed, and gives the image back for presenting.
+void copyToBuffer(gpu::Context& gpu, VkCommandBuffer cmd, VkImage image, VkExtent2D extent,
+                  gpu::Buffer& pixels) {
+  const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+  if (pixels.size < bytes) {
+    gpu.destroy(pixels);
+    pixels = gpu.createBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  }
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  barrier.oldLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+  barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {extent.width, extent.height, 1};
+  vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, pixels.buffer, 1,
+                         &region);
+  barrier.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  barrier.dstAccessMask = 0;
+  barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  barrier.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT,
+                       0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
+// Writes the frame just read back, or tells the inspector why it could not.
+void saveExport(Inspector& inspector, const Swapchain& chain, const gpu::Buffer& pixels) {
+  if (!chain.readable) {
+    inspector.exported("this display cannot read frames back: use inspect --screenshot");
+    return;
+  }
+  const ExportRequest& r = *inspector.exportRequest();
+  try {
+    writePng(r.path, static_cast<const unsigned char*>(pixels.mapped),
+             static_cast<int>(chain.extent.width), static_cast<int>(chain.extent.height), true,
+             {static_cast<int>(r.crop[0]), static_cast<int>(r.crop[1]), static_cast<int>(r.crop[2]),
+              static_cast<int>(r.crop[3])});
+    inspector.exported();
+  } catch (const Error& e) {
+    inspector.exported(e.what());
+  }
+}
 
 }  // namespace
 
@@ -148,6 +203,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     VkCommandBuffer cmd;
     vkAllocateCommandBuffers(gpu.device, &alloc, &cmd);
     {
+      gpu::Buffer pixels;  // frames read back for exports
       Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
       view.applyTo(inspector);
       while (!glfwWindowShouldClose(window)) {
@@ -177,6 +233,8 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         vkBeginCommandBuffer(cmd, &begin);
         Inspector::recordFrame(cmd, pass, chain.framebuffers[index], chain.extent);
+        const bool exporting = inspector.exportRequest().has_value();
+        if (exporting && chain.readable) copyToBuffer(gpu, cmd, chain.images[index], chain.extent, pixels);
         vkEndCommandBuffer(cmd);
         const VkPipelineStageFlags wait = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
@@ -198,8 +256,10 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
         inspector.prepare();  // while lavapipe renders: the iteration the slider chose
         vkWaitForFences(gpu.device, 1, &done, VK_TRUE, UINT64_MAX);  // one frame in flight
         vkResetFences(gpu.device, 1, &done);
+        if (exporting) saveExport(inspector, chain, pixels);
       }
       vkDeviceWaitIdle(gpu.device);
+      gpu.destroy(pixels);
     }
     vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
     vkDestroyFence(gpu.device, done, nullptr);

@@ -124,3 +124,39 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
     EXPECT_FALSE(std::ifstream(out).good()) << args;
   }
 }
+
+TEST(Inspector, ExportsANumberedSequenceOfOnePane) {
+  const std::string base = test::tempPath("sequence.png");
+  const std::string stem = base.substr(0, base.size() - 4);
+  ASSERT_EQ(run("inspect " + test::assetPath("sphere_cap.off") + " --screenshot " + base +
+                " --size 960x600 --no-timings --pane 3d --iterations 2:4"),
+            0);
+  const Picture first = readPng(stem + "_0002.png"), last = readPng(stem + "_0004.png");
+  ASSERT_FALSE(first.rgba.empty());
+  ASSERT_FALSE(readPng(stem + "_0003.png").rgba.empty());
+  ASSERT_FALSE(last.rgba.empty());
+  EXPECT_TRUE(readPng(stem + "_0001.png").rgba.empty());
+  EXPECT_TRUE(readPng(stem + "_0005.png").rgba.empty());
+  EXPECT_TRUE(readPng(base).rgba.empty());
+  // The 3D pane only: narrower and lower than the window, the same size in every picture.
+  EXPECT_LT(first.width, 960 / 2);
+  EXPECT_GT(first.width, 200);
+  EXPECT_LT(first.height, 600);
+  EXPECT_EQ(first.width, last.width);
+  EXPECT_EQ(first.height, last.height);
+  EXPECT_NE(first.rgba, last.rgba);  // the result changed between iterations 2 and 4
+}
+
+TEST(Inspector, ExportErrorsAreOneLine) {
+  const std::string mesh = test::assetPath("sphere_cap.off"), err = test::tempPath("export.err");
+  for (const std::string& args :
+       {"--screenshot " + test::tempPath("x.png") + " --iterations 5:2",
+        "--screenshot " + test::tempPath("x.png") + " --iterations 0:100000",
+        "--screenshot " + test::tempPath("x.jpg"),
+        "--screenshot " + test::tempPath("x.png") + " --pane left"}) {
+    EXPECT_EQ(run("inspect " + mesh + " " + args + " 2> " + err), 1) << args;
+    const std::string message = test::readText(err);
+    EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+  }
+  EXPECT_TRUE(readPng(test::tempPath("x.png")).rgba.empty());
+}

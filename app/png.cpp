@@ -1,0 +1,42 @@
+#include "png.h"
+
+#include "mesh.h"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+namespace lloydscope {
+
+void writePng(const std::string& path, const unsigned char* pixels, int width, int height,
+              bool bgra, PixelRect crop) {
+  crop.x = std::clamp(crop.x, 0, width);
+  crop.y = std::clamp(crop.y, 0, height);
+  crop.width = std::clamp(crop.width, 0, width - crop.x);
+  crop.height = std::clamp(crop.height, 0, height - crop.y);
+  if (crop.width == 0 || crop.height == 0) throw Error(path + ": nothing to write (empty picture)");
+  std::vector<unsigned char> rgba(static_cast<size_t>(crop.width) * crop.height * 4);
+  for (int row = 0; row < crop.height; ++row) {
+    const unsigned char* from = pixels + (static_cast<size_t>(crop.y + row) * width + crop.x) * 4;
+    unsigned char* to = rgba.data() + static_cast<size_t>(row) * crop.width * 4;
+    for (int i = 0; i < crop.width; ++i, from += 4, to += 4) {
+      to[0] = from[bgra ? 2 : 0];
+      to[1] = from[1];
+      to[2] = from[bgra ? 0 : 2];
+      to[3] = 255;  // the frame is opaque
+    }
+  }
+  const std::string temporary = path + ".tmp";
+  if (!stbi_write_png(temporary.c_str(), crop.width, crop.height, 4, rgba.data(), crop.width * 4)) {
+    std::remove(temporary.c_str());
+    throw Error(path + ": cannot write the PNG");
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw Error(path + ": cannot write the PNG (rename failed)");
+  }
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,19 @@
+// Writes frames (or a part of one) as PNG files, whole or not at all.
+#pragma once
+
+#include <string>
+
+namespace lloydscope {
+
+// A part of a picture, in pixels.
+struct PixelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+// `pixels`: width x height, 4 bytes each, rows packed; `bgra` when the frame's format stores
+// blue first (a swapchain). Writes `crop` of it to a temporary file, then renames it to `path`:
+// an existing picture is replaced whole or not at all. Throws Error naming the file.
+void writePng(const std::string& path, const unsigned char* pixels, int width, int height,
+              bool bgra, PixelRect crop);
+
+}  // namespace lloydscope
