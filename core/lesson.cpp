@@ -1,0 +1,154 @@
+#include "lesson.h"
+
+#include <cstdio>
+
+namespace lloydscope {
+
+namespace {
+
+constexpr const char* kNames[] = {"load", "parameterize", "voronoi", "centroids",
+                                  "move", "lift",         "result"};
+
+template <typename... Args>
+std::string format(const char* pattern, Args... args) {
+  char text[512];
+  std::snprintf(text, sizeof text, pattern, args...);
+  return text;
+}
+
+}  // namespace
+
+const char* toString(Stage stage) { return kNames[static_cast<int>(stage)]; }
+
+Stage parseStage(const std::string& name) {
+  for (int s = 0; s < 7; ++s)
+    if (name == kNames[s]) return static_cast<Stage>(s);
+  throw Error("stage \"" + name +
+              "\": expected load, parameterize, voronoi, centroids, move, lift or result");
+}
+
+Layers layersFor(Stage stage) {
+  Layers l;
+  l.input3D = stage != Stage::Result;
+  l.sites3D = stage >= Stage::Voronoi;
+  l.triangles2D = stage != Stage::Load;
+  l.cells2D = stage >= Stage::Voronoi;
+  l.sites2D = stage >= Stage::Voronoi;
+  l.centroids2D = stage >= Stage::Centroids && stage <= Stage::Move;
+  l.arrows2D = stage == Stage::Move;
+  return l;
+}
+
+std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations) {
+  std::vector<LessonStep> plan = {{Stage::Load, 0, 4.0f}, {Stage::Parameterize, 0, 4.0f}};
+  for (int k = 0; k < iterationCount; ++k) {
+    if (k < slowIterations) {
+      plan.push_back({Stage::Voronoi, k, 3.0f});
+      plan.push_back({Stage::Centroids, k, 3.0f});
+      plan.push_back({Stage::Move, k, 3.0f});
+    } else {
+      plan.push_back({Stage::Move, k, 0.1f});
+    }
+  }
+  const int last = std::max(0, iterationCount - 1);
+  plan.push_back({Stage::Lift, last, 4.0f});
+  plan.push_back({Stage::Result, last, 6.0f});
+  return plan;
+}
+
+void LessonPlayer::start(std::vector<LessonStep> plan) {
+  plan_ = std::move(plan);
+  next_ = 0;
+  clock_ = 0;
+}
+
+void LessonPlayer::advance(float seconds) {
+  if (!playing()) return;
+  clock_ += seconds;
+  while (clock_ >= plan_[next_].seconds) {
+    clock_ -= plan_[next_].seconds;
+    if (next_ + 1 == plan_.size()) {  // the last step stays on screen
+      clock_ = 0;
+      return;
+    }
+    ++next_;
+  }
+}
+
+Caption caption(Stage stage, const CaptionFacts& f) {
+  Caption c;
+  constexpr const char* kTitles[] = {"Load",      "Parameterize", "Voronoi", "Centroids",
+                                     "Move",      "Lift",         "Result"};
+  c.title = format("%d  %s", static_cast<int>(stage) + 1, kTitles[static_cast<int>(stage)]);
+  const CellDetails* cell = f.cell ? &*f.cell : nullptr;
+  switch (stage) {
+    case Stage::Load:
+      c.formula = "The input: a triangle mesh of a topological disk.";
+      c.numbers = format("%s: %d vertices, %d triangles, %.0f%% irregular vertices, "
+                         "smallest angle %.1f°, average smallest angle %.1f°",
+                         f.mesh.c_str(), f.input.vertices, f.input.faces, f.input.irregularPercent,
+                         f.input.minAngle, f.input.avgMinAngle);
+      break;
+    case Stage::Parameterize:
+      c.formula = format("The %s map flattens the disk onto the plane (%s border): every "
+                         "point of the surface gets coordinates (u, v).",
+                         f.param.c_str(), f.border.c_str());
+      c.numbers = format("Area distortion r = (3D area share) / (UV area share): %.2f to %.2f; "
+                         "mean |ln r| = %.2f. The density ρ makes up for it.",
+                         f.distortion.minAreaRatio, f.distortion.maxAreaRatio,
+                         f.distortion.meanLogAreaRatio);
+      break;
+    case Stage::Voronoi:
+      c.formula = "Each site sᵢ owns the points nearer to it than to any other site, clipped "
+                  "to the domain: its Voronoi cell Vᵢ.";
+      c.numbers = cell ? format("Cell %d: area A = ½ Σ (xⱼ yⱼ₊₁ − xⱼ₊₁ yⱼ) = %.3e, "
+                                "%d neighbours", cell->index, cell->shoelaceArea, cell->neighbours)
+                       : format("Iteration %d of %d. Pin a cell to see its numbers.", f.iteration,
+                                f.iterations - 1);
+      break;
+    case Stage::Centroids:
+      c.formula = "Each cell's centroid weighs its points by the density: "
+                  "cᵢ = ∫ x ρ dA / ∫ ρ dA (rings).";
+      c.numbers = cell ? format("Cell %d: M = ∫ ρ dA = %.3e, ∫ x ρ dA = (%.3e, %.3e), "
+                                "c = (%.5f, %.5f)", cell->index, cell->mass, cell->moment.x(),
+                                cell->moment.y(), cell->centroid.x(), cell->centroid.y())
+                       : format("Iteration %d: energy E = Σ ∫ ρ |x − sᵢ|² dA = %.4e",
+                                f.iteration, f.energy);
+      break;
+    case Stage::Move:
+      c.formula = f.solver == "lloyd"
+                      ? "Lloyd: every site moves to its centroid, sᵢ ← cᵢ (arrows), and the "
+                        "cells are drawn again."
+                      : "L-BFGS: the sites take a quasi-Newton step down the energy, whose "
+                        "gradient is 2 Mᵢ (sᵢ − cᵢ) (arrows: sᵢ → cᵢ).";
+      c.numbers = format("Iteration %d: E = %.4e, largest move %.2e, %.1f%% of sites moved "
+                         "more than the threshold",
+                         f.iteration, f.energy, f.maxMove, f.percentMoving);
+      if (cell)
+        c.numbers += format("; cell %d: |c − s| = %.2e", cell->index, cell->toCentroid);
+      break;
+    case Stage::Lift:
+      c.formula = "Each site returns to the surface through the barycentric coordinates of "
+                  "the parameter triangle that holds it.";
+      c.numbers = cell ? format("Cell %d: s = (%.4f, %.4f) → (%.4f, %.4f, %.4f)", cell->index,
+                                cell->site.x(), cell->site.y(), cell->site3D.x(),
+                                cell->site3D.y(), cell->site3D.z())
+                       : format("%d iterations to convergence.", f.iterations);
+      break;
+    case Stage::Result:
+      c.formula = f.method == "relocate"
+                      ? "Relocate: the input's vertices move to their lifted sites; the "
+                        "connectivity stays."
+                      : "Retriangulate: the Delaunay triangulation of the sites, lifted: a new "
+                        "mesh of nearly equilateral triangles.";
+      c.numbers = format("%d vertices; irregular %.0f%% → %.0f%%; smallest angle %.1f° → "
+                         "%.1f°; average smallest angle %.1f° → %.1f°",
+                         f.result.vertices, f.input.irregularPercent, f.result.irregularPercent,
+                         f.input.minAngle, f.result.minAngle, f.input.avgMinAngle,
+                         f.result.avgMinAngle);
+      break;
+  }
+  return c;
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,74 @@
+// The classroom lesson: the pipeline told as stages (load, parameterize, then Voronoi,
+// centroids and move for each iteration, then lift and the result), what each stage shows, and
+// the caption that names it with the formulas in use and their numbers.
+#pragma once
+
+#include "inspection.h"
+#include "metrics.h"
+#include "parameterization.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lloydscope {
+
+enum class Stage { Load, Parameterize, Voronoi, Centroids, Move, Lift, Result };
+
+const char* toString(Stage stage);            // "load", "parameterize", ...
+Stage parseStage(const std::string& name);    // throws Error naming the choices
+
+// What the panes show at a stage: the stages reveal the method one layer at a time.
+struct Layers {
+  bool input3D = false;      // the input mesh, not the result
+  bool sites3D = false;      // the sites lifted to the surface
+  bool triangles2D = false;  // the parameter triangles
+  bool cells2D = false, sites2D = false, centroids2D = false, arrows2D = false;
+};
+Layers layersFor(Stage stage);
+
+// One step of the lesson: a stage, at an iteration, for some seconds (at speed 1).
+struct LessonStep {
+  Stage stage;
+  int iteration;
+  float seconds;
+};
+
+// Load and parameterize, then Voronoi, centroids and move for the first `slowIterations`
+// iterations one at a time, then the other iterations quickly, then lift and the result.
+std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations = 3);
+
+// Plays a plan: advance() by the frame's seconds times a speed factor.
+class LessonPlayer {
+ public:
+  void start(std::vector<LessonStep> plan);
+  void stop() { plan_.clear(); }
+  bool playing() const { return !plan_.empty(); }
+  void advance(float seconds);
+  const LessonStep& current() const { return plan_.at(next_); }
+
+ private:
+  std::vector<LessonStep> plan_;
+  size_t next_ = 0;
+  float clock_ = 0;
+};
+
+// The numbers a caption quotes.
+struct CaptionFacts {
+  std::string mesh;
+  QualityMetrics input, result;
+  std::string param, border, solver, method;  // as the settings name them
+  Distortion distortion;
+  int iteration = 0, iterations = 0;
+  double energy = 0, maxMove = 0, percentMoving = 0;
+  std::optional<CellDetails> cell;  // the first pinned cell, if any
+};
+
+struct Caption {
+  std::string title;     // "3  Voronoi", the stage and its number
+  std::string formula;   // what happens, with the formula in use
+  std::string numbers;   // the formula with this iteration's (or the pinned cell's) numbers
+};
+Caption caption(Stage stage, const CaptionFacts& facts);
+
+}  // namespace lloydscope

@@ -1,0 +1,85 @@
+#include "lesson.h"
+#include "test_support.h"
+
+using namespace lloydscope;
+
+TEST(Lesson, PlanTellsThePipelineInOrder) {
+  const std::vector<LessonStep> plan = lessonPlan(5, 3);
+  ASSERT_EQ(plan.size(), 2u + 3 * 3 + 2 + 2);
+  EXPECT_EQ(plan[0].stage, Stage::Load);
+  EXPECT_EQ(plan[1].stage, Stage::Parameterize);
+  const Stage cycle[] = {Stage::Voronoi, Stage::Centroids, Stage::Move};
+  for (int k = 0; k < 3; ++k)
+    for (int s = 0; s < 3; ++s) {
+      EXPECT_EQ(plan[2 + 3 * k + s].stage, cycle[s]);
+      EXPECT_EQ(plan[2 + 3 * k + s].iteration, k);
+    }
+  EXPECT_EQ(plan[11].iteration, 3);
+  EXPECT_EQ(plan[12].iteration, 4);
+  EXPECT_LT(plan[12].seconds, plan[2].seconds);  // the later iterations go by quickly
+  EXPECT_EQ(plan[13].stage, Stage::Lift);
+  EXPECT_EQ(plan.back().stage, Stage::Result);
+  EXPECT_EQ(plan.back().iteration, 4);
+}
+
+TEST(Lesson, PlayerAdvancesAndStopsOnTheResult) {
+  LessonPlayer player;
+  EXPECT_FALSE(player.playing());
+  player.start(lessonPlan(4, 1));
+  EXPECT_EQ(player.current().stage, Stage::Load);
+  player.advance(3.9f);
+  EXPECT_EQ(player.current().stage, Stage::Load);
+  player.advance(0.2f);
+  EXPECT_EQ(player.current().stage, Stage::Parameterize);
+  player.advance(4.0f + 3.0f);  // past parameterize and the first Voronoi
+  EXPECT_EQ(player.current().stage, Stage::Centroids);
+  player.advance(1000.0f);
+  EXPECT_TRUE(player.playing());
+  EXPECT_EQ(player.current().stage, Stage::Result);
+  EXPECT_EQ(player.current().iteration, 3);
+  player.stop();
+  EXPECT_FALSE(player.playing());
+}
+
+TEST(Lesson, StagesRevealOneLayerAtATime) {
+  const Layers load = layersFor(Stage::Load), voronoi = layersFor(Stage::Voronoi),
+               centroids = layersFor(Stage::Centroids), move = layersFor(Stage::Move),
+               result = layersFor(Stage::Result);
+  EXPECT_TRUE(load.input3D);
+  EXPECT_FALSE(load.cells2D || load.sites2D || load.triangles2D);
+  EXPECT_TRUE(layersFor(Stage::Parameterize).triangles2D);
+  EXPECT_TRUE(voronoi.cells2D && voronoi.sites2D && !voronoi.centroids2D);
+  EXPECT_TRUE(centroids.centroids2D && !centroids.arrows2D);
+  EXPECT_TRUE(move.arrows2D);
+  EXPECT_FALSE(result.input3D);
+}
+
+TEST(Lesson, CaptionsQuoteThePinnedCell) {
+  CaptionFacts facts;
+  facts.iterations = 10;
+  facts.iteration = 2;
+  facts.solver = "lloyd";
+  CellDetails cell;
+  cell.index = 42;
+  cell.shoelaceArea = 1.25e-3;
+  cell.mass = 2.5e-3;
+  cell.centroid = Vec2(0.25, 0.75);
+  facts.cell = cell;
+  const Caption voronoi = caption(Stage::Voronoi, facts);
+  EXPECT_EQ(voronoi.title, "3  Voronoi");
+  EXPECT_NE(voronoi.numbers.find("Cell 42"), std::string::npos);
+  EXPECT_NE(voronoi.numbers.find("1.250e-03"), std::string::npos);
+  const Caption centroids = caption(Stage::Centroids, facts);
+  EXPECT_NE(centroids.numbers.find("2.500e-03"), std::string::npos);
+  EXPECT_NE(centroids.numbers.find("(0.25000, 0.75000)"), std::string::npos);
+  EXPECT_NE(caption(Stage::Move, facts).formula.find("Lloyd"), std::string::npos);
+  facts.cell.reset();
+  EXPECT_NE(caption(Stage::Voronoi, facts).numbers.find("Iteration 2 of 9"), std::string::npos);
+}
+
+TEST(Lesson, StageNamesRoundTrip) {
+  for (Stage s : {Stage::Load, Stage::Parameterize, Stage::Voronoi, Stage::Centroids, Stage::Move,
+                  Stage::Lift, Stage::Result})
+    EXPECT_EQ(parseStage(toString(s)), s);
+  EXPECT_THROW(parseStage("lunch"), Error);
+}
