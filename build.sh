@@ -11,7 +11,7 @@ cd "$(dirname "$0")"
 PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgtest-dev
           libcli11-dev nlohmann-json3-dev
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools libglfw3-dev
-          libimgui-dev libglm-dev libstb-dev xvfb xauth)
+          libimgui-dev libglm-dev libstb-dev fonts-dejavu-core xvfb xauth)
 # CGAL's sample meshes used by tests and benchmarks (disk topology), from libcgal-demo.
 CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil)
 

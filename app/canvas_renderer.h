@@ -36,6 +36,7 @@ struct CanvasDraw {
   // Screen = centre + (uv - 0.5) * scale, v pointing up.
   float centerX, centerY, scale;
   VkClearColorValue background = {{1.0f, 1.0f, 1.0f, 1.0f}};  // the pane is cleared to it
+  float lineWidth = 1.0f;  // pixels, where the device has wide lines
 };
 
 class CanvasRenderer {

@@ -120,6 +120,8 @@ Context::Context(const std::vector<const char*>& instanceExtensions, bool swapch
   VkPhysicalDeviceFeatures supported{}, features{};
   vkGetPhysicalDeviceFeatures(physical, &supported);
   features.largePoints = supported.largePoints;
+  features.wideLines = supported.wideLines;
+  wideLines = supported.wideLines;
   deviceInfo.pEnabledFeatures = &features;
   check(vkCreateDevice(physical, &deviceInfo, nullptr, &device), "creating the device");
   vkGetDeviceQueue(device, queueFamily, 0, &queue);
@@ -326,9 +328,11 @@ void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDesc
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = 1;
   blend.pAttachments = &blendAttachment;
-  const VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  // Line pipelines take their width per draw (thicker lines for a projector).
+  const VkDynamicState dynamicStates[3] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                           VK_DYNAMIC_STATE_LINE_WIDTH};
   VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = 2;
+  dynamic.dynamicStateCount = d.topology == VK_PRIMITIVE_TOPOLOGY_LINE_LIST ? 3 : 2;
   dynamic.pDynamicStates = dynamicStates;
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
   info.stageCount = 2;

@@ -45,6 +45,7 @@ class Context {
   VkCommandPool commandPool = VK_NULL_HANDLE;
   VkDescriptorPool descriptorPool = VK_NULL_HANDLE;  // for ImGui's font texture
   std::string deviceName;
+  bool wideLines = false;  // line widths other than 1 (lavapipe has them)
   int validationMessages = 0;
 
   Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);  // host-visible, mapped

@@ -47,6 +47,7 @@ class OffscreenRenderer {
     io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
     io.DeltaTime = 1.0f / 60.0f;
     ImGui::StyleColorsLight();
+    Inspector::addFonts();
     gpu::initImGuiRenderer(gpu_, renderPass_, 2);
   }
 

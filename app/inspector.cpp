@@ -10,6 +10,7 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
+#include <fstream>
 #include <cmath>
 #include <cstdio>
 
@@ -58,6 +59,12 @@ void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
   ImGui::Begin(name, nullptr, kPaneFlags | extra);
 }
 
+// ImGui 1.86 names only a few letter keys; the platform's key codes for letters are
+// consecutive (GLFW's are), so the others are found from A's.
+bool letterPressed(char letter) {
+  return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + (letter - 'A'), false);
+}
+
 // Panes that are one drawing area: a scroll bar would only eat into it.
 constexpr ImGuiWindowFlags kCanvasPaneFlags =
     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
@@ -81,8 +88,9 @@ void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, cons
                       color(0.5f * (t0 + t1)));
   }
   dl->AddRect(at, ImVec2(at.x + width, at.y + height), rgb(0.2f, 0.2f, 0.2f));
-  dl->AddText(ImVec2(at.x + width + 4, at.y - 6), rgb(0.1f, 0.1f, 0.1f), top);
-  dl->AddText(ImVec2(at.x + width + 4, at.y + height - 8), rgb(0.1f, 0.1f, 0.1f), bottom);
+  const float font = ImGui::GetFontSize();
+  dl->AddText(ImVec2(at.x + width + 4, at.y - 0.45f * font), rgb(0.1f, 0.1f, 0.1f), top);
+  dl->AddText(ImVec2(at.x + width + 4, at.y + height - 0.6f * font), rgb(0.1f, 0.1f, 0.1f), bottom);
 }
 
 void drawMeshCallback(const ImDrawList*, const ImDrawCmd* cmd) {
@@ -127,6 +135,8 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
   iteration_ = replay_->iterationCount() - 1;
   fitCamera();
+  ImFontAtlas* fonts = ImGui::GetIO().Fonts;
+  if (fonts->Fonts.Size > 1) presentationFont_ = fonts->Fonts[1];
 }
 
 Inspector::~Inspector() { stopRun(); }
@@ -214,7 +224,7 @@ std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent) 
 }
 
 void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent) {
-  if (showInput_) return;  // triangles are the result's
+  if (layers().input3D) return;  // triangles are the result's
   const auto [viewProjection, eye] = cameraMatrices(extent);
   const glm::mat4 inverse = glm::inverse(viewProjection);
   const float x = (mouse.x - p0.x) / extent.x * 2 - 1, y = (mouse.y - p0.y) / extent.y * 2 - 1;
@@ -320,6 +330,8 @@ void OpeningView::applyTo(Inspector& inspector) const {
   for (int cell : cells) inspector.pinCell(cell);
   for (int triangle : triangles) inspector.pinTriangle(triangle);
   if (!camera.empty()) inspector.setCamera(camera);
+  inspector.setPresentation(presentation);
+  inspector.showStage(stage);
 }
 
 void Inspector::fitCamera() {
@@ -341,7 +353,8 @@ const QualityMetrics& Inspector::currentQuality() {
 
 void Inspector::uploadMesh() {
   const IterationView& view = replay_->view(iteration_);
-  const Mesh& mesh = showInput_ ? replay_->recording().input : view.output;
+  const Layers shown = layers();
+  const Mesh& mesh = shown.input3D ? replay_->recording().input : view.output;
   std::vector<std::array<float, 3>> colors;
   for (const Triangle& t : mesh.triangles) {
     if (!colorByAngle_) {
@@ -353,12 +366,13 @@ void Inspector::uploadMesh() {
   }
   renderer_.upload(mesh, colors);
   std::vector<Marker> sites;
-  if (!showInput_)
+  if (shown.sites3D)
     for (const Vec3& s : view.liftedSites)
       sites.push_back(marker(s, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
   renderer_.uploadMarkers(sites);
   uploadedIteration_ = iteration_;
-  uploadedInput_ = showInput_;
+  uploadedInput_ = shown.input3D;
+  uploadedSites_ = shown.sites3D;
   uploadedMethod_ = replay_->method();
 }
 
@@ -378,16 +392,30 @@ void Inspector::frame() {
       else setIteration(iteration_ + 1);
     }
   }
+  if (lesson_.playing()) {
+    lesson_.advance(ImGui::GetIO().DeltaTime * playSpeed_ / 10.0f);  // 10 it/s: a lecture's pace
+    setIteration(lesson_.current().iteration);
+    stage_ = lesson_.current().stage;
+  }
   if (exportJob_ && exportJob_->first >= 0) setIteration(exportNext_);
+  const bool bigFont = presentation_ && presentationFont_;
+  if (bigFont) ImGui::PushFont(presentationFont_);
+  ImGui::GetIO().FontGlobalScale = presentation_ && !bigFont ? 1.6f : 1.0f;
+  // Presentation: no controls pane, a taller timeline; a lesson stage adds its caption on top.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float left = std::max(280.0f, display.x * 0.23f);
-  const float timelineHeight = 64.0f, plotsHeight = std::max(170.0f, display.y * 0.27f);
-  const float viewsHeight = display.y - timelineHeight - plotsHeight;
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float left = presentation_ ? 0.0f : std::max(280.0f, display.x * 0.23f);
+  const float captionHeight = stage_ ? 3 * line + 20 : 0;
+  const float timelineHeight = presentation_ ? 2 * line + 30 : 64.0f;
+  const float plotsHeight = presentation_ ? std::max(170.0f, display.y * 0.22f)
+                                          : std::max(170.0f, display.y * 0.27f);
+  const float viewsHeight = display.y - captionHeight - timelineHeight - plotsHeight;
   const float viewWidth = (display.x - left) / 2;
+  const float viewsTop = captionHeight, plotsTop = captionHeight + viewsHeight;
   const float rects[4][4] = {{0, 0, display.x, display.y},
-                             {left, 0, viewWidth, viewsHeight},
-                             {left + viewWidth, 0, display.x - left - viewWidth, viewsHeight},
-                             {left, viewsHeight, display.x - left, plotsHeight}};
+                             {left, viewsTop, viewWidth, viewsHeight},
+                             {left + viewWidth, viewsTop, display.x - left - viewWidth, viewsHeight},
+                             {left, plotsTop, display.x - left, plotsHeight}};
   std::copy(&rects[0][0], &rects[0][0] + 16, &paneRects_[0][0]);
   if (exportJob_) {
     std::string path = exportJob_->path;
@@ -401,11 +429,81 @@ void Inspector::frame() {
               request.crop);
     exportRequest_ = request;
   }
-  controlsPane(ImVec2(0, 0), ImVec2(left, display.y));
-  viewPane3D(ImVec2(left, 0), ImVec2(viewWidth, viewsHeight));
-  domainPane2D(ImVec2(left + viewWidth, 0), ImVec2(display.x - left - viewWidth, viewsHeight));
-  plotsPane(ImVec2(left, viewsHeight), ImVec2(display.x - left, plotsHeight));
-  timelinePane(ImVec2(left, viewsHeight + plotsHeight), ImVec2(display.x - left, timelineHeight));
+  if (!presentation_) controlsPane(ImVec2(0, 0), ImVec2(left, display.y));
+  if (stage_) captionPane(ImVec2(left, 0), ImVec2(display.x - left, captionHeight));
+  viewPane3D(ImVec2(left, viewsTop), ImVec2(viewWidth, viewsHeight));
+  domainPane2D(ImVec2(left + viewWidth, viewsTop), ImVec2(display.x - left - viewWidth, viewsHeight));
+  plotsPane(ImVec2(left, plotsTop), ImVec2(display.x - left, plotsHeight));
+  timelinePane(ImVec2(left, plotsTop + plotsHeight), ImVec2(display.x - left, timelineHeight));
+  if (bigFont) ImGui::PopFont();
+}
+
+Layers Inspector::layers() const {
+  if (stage_) return layersFor(*stage_);
+  Layers l;
+  l.input3D = showInput_;
+  l.sites3D = !showInput_;
+  l.triangles2D = showTriangles_;
+  l.cells2D = l.sites2D = l.centroids2D = true;
+  l.arrows2D = showArrows_;
+  return l;
+}
+
+void Inspector::toggleLesson() {
+  if (lesson_.playing()) {
+    lesson_.stop();
+    stage_.reset();
+    return;
+  }
+  playing_ = false;
+  lesson_.start(lessonPlan(replay_->iterationCount()));
+}
+
+CaptionFacts Inspector::captionFacts() {
+  CaptionFacts f;
+  f.mesh = meshName_;
+  f.input = result_.before;
+  f.result = currentQuality();
+  f.param = toString(result_.paramUsed);
+  f.border = toString(options_.param.border);
+  f.solver = toString(options_.lloyd.solver);
+  f.method = toString(replay_->method());
+  f.distortion = result_.distortion;
+  f.iteration = iteration_;
+  f.iterations = replay_->iterationCount();
+  const IterationRecord& it = replay_->recording().iterations[iteration_];
+  f.energy = it.energy;
+  f.maxMove = it.maxDisplacement;
+  f.percentMoving = 100.0 * it.fractionMoving;
+  if (!selection_.cells().empty())
+    f.cell = describeCell(replay_->recording(), replay_->domain(), replay_->view(iteration_),
+                          selection_.cells().front());
+  return f;
+}
+
+void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
+  beginPane("Lesson", pos, size, ImGuiWindowFlags_NoTitleBar | kCanvasPaneFlags);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), rgb(1.0f, 0.98f, 0.9f));
+  const Caption c = caption(*stage_, captionFacts());
+  ImGui::TextColored(ImVec4(0.6f, 0.15f, 0.0f, 1.0f), "%s", c.title.c_str());
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s", c.formula.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.15f, 0.5f, 1.0f));
+  ImGui::TextWrapped("%s", c.numbers.c_str());
+  ImGui::PopStyleColor();
+  ImGui::End();
+}
+
+void Inspector::addFonts() {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->AddFontDefault();
+  // Latin-1, Greek, sub- and superscripts, arrows, maths: what the captions' formulas use.
+  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D62, 0x1D62,
+                                   0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF,
+                                   0x2C7C, 0x2C7C, 0};
+  const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // fonts-dejavu-core
+  if (std::ifstream(font).good()) io.Fonts->AddFontFromFileTTF(font, 21.0f, nullptr, ranges);
 }
 
 void Inspector::handleKeys() {
@@ -416,6 +514,8 @@ void Inspector::handleKeys() {
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) setIteration(iteration_ + step);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) setIteration(0);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) selection_.clear();
+  if (letterPressed('P')) presentation_ = !presentation_;
+  if (letterPressed('L')) toggleLesson();
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) setIteration(replay_->iterationCount() - 1);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
     if (!playing_ && iteration_ + 1 >= replay_->iterationCount()) setIteration(0);
@@ -672,10 +772,12 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   }
   if (ImGui::IsItemHovered() && io.MouseWheel != 0)
     camera_.distance *= std::pow(0.9f, io.MouseWheel);
-  if (ImGui::IsItemHovered() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + ('F' - 'A')))
+  if (ImGui::IsItemHovered() && letterPressed('F'))
     fitCamera();
 
-  if (uploadedIteration_ != iteration_ || uploadedInput_ != showInput_ ||
+  const Layers shown = layers();
+  if (uploadedIteration_ != iteration_ || uploadedInput_ != shown.input3D ||
+      uploadedSites_ != shown.sites3D ||
       uploadedMethod_ != replay_->method())
     uploadMesh();
 
@@ -688,6 +790,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   MeshDraw& draw = meshCallback_.second;
   meshCallback_.first = &renderer_;
   draw.wireframe = wireframe_;
+  draw.wireWidth = presentation_ ? 2.2f : 1.2f;
   std::copy(glm::value_ptr(viewProjection), glm::value_ptr(viewProjection) + 16,
             draw.viewProjection.begin());
   draw.viewport[0] = p0.x;
@@ -706,16 +809,16 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
                         p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
         return true;
       },
-      !showInput_);
+      !shown.input3D);
   dl->PopClipRect();
 
   if (colorByAngle_)
-    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, "60 deg", "0 deg", [](float t) {
+    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, "60 deg", "0 deg", [](float t) {
       const auto c = angleColor(60.0 * t);
       return rgb(c[0], c[1], c[2]);
     });
   dl->AddText(ImVec2(p0.x + 8, p0.y + 4), rgb(0.1f, 0.1f, 0.1f),
-              showInput_ ? "input mesh" : (std::string("result at iteration ") + std::to_string(iteration_) +
+              shown.input3D ? "input mesh" : (std::string("result at iteration ") + std::to_string(iteration_) +
                                            " (" + toString(replay_->method()) + ")").c_str());
   ImGui::End();
 }
@@ -754,12 +857,14 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
-  const CanvasKey key{iteration_, fill_, showTriangles_, showArrows_, scale};
+  const CanvasKey key{iteration_, fill_, layers(), presentation_, scale};
   if (!(key == canvasKey_)) {
     canvas_.upload(buildCanvas(scale));
     canvasKey_ = key;
   }
-  canvasCallback_ = {&canvas_, CanvasDraw{{p0.x, p0.y, extent.x, extent.y}, center.x, center.y, scale}};
+  CanvasDraw draw{{p0.x, p0.y, extent.x, extent.y}, center.x, center.y, scale};
+  draw.lineWidth = presentation_ ? 2.0f : 1.0f;
+  canvasCallback_ = {&canvas_, draw};
   dl->AddCallback(
       [](const ImDrawList*, const ImDrawCmd* cmd) {
         const auto* d = static_cast<const std::pair<const CanvasRenderer*, CanvasDraw>*>(cmd->UserCallbackData);
@@ -778,9 +883,9 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
       }
   selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale);
   if (fill_ != CellFill::None)
-    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 24), 90, format("%.2e", fillRange_[1]).c_str(),
+    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, format("%.2e", fillRange_[1]).c_str(),
                  format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
-  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - 18), rgb(0.1f, 0.1f, 0.1f),
+  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - ImGui::GetFontSize() - 5), rgb(0.1f, 0.1f, 0.1f),
               "dots: sites  rings: centroids  squares: fixed border sites");
   dl->PopClipRect();
   ImGui::End();
@@ -791,7 +896,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   const Domain& domain = replay_->domain();
   const IterationView& view = replay_->view(iteration_);
   const size_t fixedCount = replay_->recording().fixedSites.size();
-  if (fill_ != CellFill::None) {
+  if (fill_ != CellFill::None && layers().cells2D) {
     const auto& iterations = replay_->recording().iterations;
     auto quantity = [&](size_t i) {
       const BoundedCell& c = view.cells[i];
@@ -823,18 +928,26 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
           g.fill(piece.polygon[0], piece.polygon[k], piece.polygon[k + 1], color);
     }
   }
-  if (showTriangles_)
+  // A projector washes colours out: darker lines, stronger colours, bigger marks.
+  const bool strong = presentation_;
+  const ImU32 triangleColor = strong ? rgb(0.62f, 0.64f, 0.7f) : rgb(0.82f, 0.84f, 0.88f);
+  const ImU32 edgeColor = strong ? rgb(0.0f, 0.1f, 0.45f) : rgb(0.2f, 0.35f, 0.7f);
+  const ImU32 orange = strong ? rgb(0.95f, 0.25f, 0.0f) : rgb(0.85f, 0.3f, 0.1f);
+  const ImU32 siteColor = strong ? rgb(0.0f, 0.0f, 0.0f) : rgb(0.1f, 0.15f, 0.45f);
+  const Layers shown = layers();
+  if (shown.triangles2D)
     for (size_t t = 0; t < domain.triangles().size(); ++t) {
       const Triangle& tri = domain.triangles()[t];
       for (int k = 0; k < 3; ++k)
         if (tri[k] < tri[(k + 1) % 3] || domain.neighbours()[t][(k + 2) % 3] < 0)
-          g.line(domain.uv()[tri[k]], domain.uv()[tri[(k + 1) % 3]], rgb(0.82f, 0.84f, 0.88f));
+          g.line(domain.uv()[tri[k]], domain.uv()[tri[(k + 1) % 3]], triangleColor);
     }
-  for (const auto& [p, q] : cellEdges()) g.line(p, q, rgb(0.2f, 0.35f, 0.7f));
+  if (shown.cells2D)
+    for (const auto& [p, q] : cellEdges()) g.line(p, q, edgeColor);
   // Dots a sixth of the site spacing: the cells stay visible between them.
-  const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f);
-  const ImU32 orange = rgb(0.85f, 0.3f, 0.1f);
-  for (size_t i = 0; i < view.sites.size(); ++i) {
+  const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f) *
+                  (strong ? 1.3f : 1.0f);
+  for (size_t i = 0; i < view.sites.size() && shown.sites2D; ++i) {
     const Vec2& s = view.sites[i];
     if (i < fixedCount) {
       g.point(s, r, MarkerShape::Square, rgb(0.35f, 0.35f, 0.35f));
@@ -843,7 +956,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
     const Vec2& c = view.cells[i].centroid;
     const Vec2 d = (c - s) * scale;  // in pixels, v up
     const float length = static_cast<float>(d.norm());
-    if (showArrows_ && length > 1.0f) {
+    if (shown.arrows2D && length > 1.0f) {
       g.line(s, c, orange);
       const float ux = static_cast<float>(d.x()) / length, uy = -static_cast<float>(d.y()) / length;
       const float h = std::min(5.0f, 0.5f * length);  // screen y points down: flip v
@@ -851,8 +964,8 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
                          -h * ux - 0.5f * h * uy, -h * uy + 0.5f * h * ux},
                      orange);
     }
-    g.point(c, r + 1.0f, MarkerShape::Ring, orange);
-    g.point(s, r, MarkerShape::Dot, rgb(0.1f, 0.15f, 0.45f));
+    if (shown.centroids2D) g.point(c, r + 1.0f, MarkerShape::Ring, orange);
+    g.point(s, r, MarkerShape::Dot, siteColor);
   }
   return g;
 }
@@ -866,7 +979,8 @@ int plot(const char* title, const std::vector<double>& values, bool logScale, do
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(title, size);
   const bool active = ImGui::IsItemActive();
-  const float left = 58, right = 8, top = 18, bottom = 22;
+  const float font = ImGui::GetFontSize();  // 13 px, or larger when presenting
+  const float left = 4.5f * font, right = 8, top = font + 5, bottom = font + 9;
   const ImVec2 a(p0.x + left, p0.y + top), b(p0.x + size.x - right, p0.y + size.y - bottom);
   dl->AddRectFilled(p0, ImVec2(p0.x + size.x, p0.y + size.y), rgb(1, 1, 1));
   dl->AddRect(a, b, rgb(0.5f, 0.5f, 0.5f));
@@ -986,6 +1100,10 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (!running) ImGui::BeginDisabled();
   if (ImGui::Button("Stop")) stopRun();
   if (!running) ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button(lesson_.playing() ? "End lesson" : "Lesson")) toggleLesson();
+  ImGui::SameLine();
+  if (ImGui::Button(presentation_ ? "Controls" : "Present")) presentation_ = !presentation_;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(std::max(100.0f, ImGui::GetContentRegionAvail().x - 180));
   int k = iteration_;

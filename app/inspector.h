@@ -6,6 +6,7 @@
 #include "canvas_renderer.h"
 #include "mesh_renderer.h"
 #include "pipeline.h"
+#include "lesson.h"
 #include "replay.h"
 #include "selection.h"
 
@@ -58,6 +59,8 @@ struct OpeningView {
   int iteration = -1;                 // -1: the last
   std::vector<int> cells, triangles;  // pinned
   std::string camera;                 // "yaw pitch distance x y z"; empty: fit to the mesh
+  bool presentation = false;          // classroom mode
+  std::optional<Stage> stage;         // show this stage of the lesson, with its caption
   void applyTo(Inspector& inspector) const;
 };
 
@@ -69,6 +72,13 @@ class Inspector {
             RemeshOptions options, RemeshResult result, std::optional<Mesh> input = {});
   ~Inspector();
 
+  // The fonts: ImGui's own, and a large one with Greek and maths for presentations. Call once
+  // after ImGui::CreateContext(), before the font texture is uploaded.
+  static void addFonts();
+  // Classroom mode: large fonts, thick lines and marks, high contrast, no controls pane.
+  void setPresentation(bool on) { presentation_ = on; }
+  // Shows one stage of the lesson (its layers and caption); none: everything, no caption.
+  void showStage(std::optional<Stage> stage) { stage_ = stage; }
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
   // The CPU work of the current iteration's panes (its cells, lifted mesh, metrics and cell
@@ -104,6 +114,10 @@ class Inspector {
   void domainPane2D(const ImVec2& pos, const ImVec2& size);
   void plotsPane(const ImVec2& pos, const ImVec2& size);
   void timelinePane(const ImVec2& pos, const ImVec2& size);
+  void captionPane(const ImVec2& pos, const ImVec2& size);
+  CaptionFacts captionFacts();
+  Layers layers() const;  // the lesson stage's, or the display switches'
+  void toggleLesson();
   void handleKeys();
   void pick2D(const Vec2& uv);
   void pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent);
@@ -145,11 +159,15 @@ class Inspector {
   struct CanvasKey {
     int iteration = -1;
     CellFill fill = CellFill::None;
-    bool triangles = false, arrows = false;
+    Layers layers;
+    bool presentation = false;
     float scale = 0;
     bool operator==(const CanvasKey& o) const {
-      return iteration == o.iteration && fill == o.fill && triangles == o.triangles &&
-             arrows == o.arrows && scale == o.scale;
+      const Layers &a = layers, &b = o.layers;
+      return iteration == o.iteration && fill == o.fill && scale == o.scale &&
+             presentation == o.presentation && a.triangles2D == b.triangles2D &&
+             a.cells2D == b.cells2D && a.sites2D == b.sites2D &&
+             a.centroids2D == b.centroids2D && a.arrows2D == b.arrows2D;
     }
   };
   CanvasKey canvasKey_;
@@ -161,7 +179,7 @@ class Inspector {
   QualityMetrics quality_;
   std::vector<std::pair<Vec2, Vec2>> cellEdges_;
   int edgesIteration_ = -1;
-  bool showInput_ = false, uploadedInput_ = false;
+  bool showInput_ = false, uploadedInput_ = false, uploadedSites_ = false;
   bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;
   bool playing_ = false, showTimings_ = true;
   float playSpeed_ = 10.0f, playClock_ = 0.0f;
@@ -176,6 +194,10 @@ class Inspector {
   int exportPane_ = 0, exportFirst_ = 0, exportLast_ = 0;
   void exportControls();
   bool pickTriangles2D_ = false;  // a click in the 2D view pins a result triangle, not a cell
+  bool presentation_ = false;
+  ImFont* presentationFont_ = nullptr;  // null: the default font, scaled
+  std::optional<Stage> stage_;
+  LessonPlayer lesson_;
   float zoom2D_ = 1.0f;
   ImVec2 pan2D_{0, 0};
   // What the draw callbacks of the current frame read (they must outlive ImGui::Render()).

@@ -157,6 +157,12 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)");
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
                          "Pin this triangle of the result (repeatable)");
+  inspectCmd->add_flag("--presentation", shot.view.presentation,
+                       "Classroom mode: large fonts, thick lines, no controls pane");
+  std::string stage;
+  inspectCmd->add_option("--stage", stage,
+                         "Show one stage of the lesson with its caption: load, parameterize, "
+                         "voronoi, centroids, move, lift or result");
   inspectCmd->add_option("--camera", shot.view.camera,
                          "3D view as \"yaw pitch distance x y z\" (the inspector's Copy view)");
   inspectCmd->add_option("--size", size, "Picture size WxH (default 1280x800)");
@@ -214,6 +220,7 @@ int main(int argc, char** argv) {
       parseSize(size, shot.width, shot.height);
       shot.timings = !noTimings;
       shot.picture.pane = parsePane(pane);
+      if (!stage.empty()) shot.view.stage = parseStage(stage);
       if (!iterations.empty()) {
         char rest;
         if (std::sscanf(iterations.c_str(), "%d:%d%c", &shot.picture.first, &shot.picture.last,

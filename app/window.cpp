@@ -187,6 +187,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     ImGui::GetIO().IniFilename = nullptr;
     ImGui::StyleColorsLight();
     ImGui_ImplGlfw_InitForVulkan(window, true);
+    Inspector::addFonts();
     gpu::initImGuiRenderer(gpu, pass, static_cast<uint32_t>(chain.images.size()));
 
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};

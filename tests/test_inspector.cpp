@@ -160,3 +160,10 @@ TEST(Inspector, ExportErrorsAreOneLine) {
   }
   EXPECT_TRUE(readPng(test::tempPath("x.png")).rgba.empty());
 }
+
+TEST(Inspector, PresentationModeShowsTheLessonStage) {
+  // Classroom mode at the centroid stage: large fonts, no controls pane, the caption with the
+  // pinned cell's numbers, rings but no arrows.
+  checkScene("inspector_presentation.png",
+             "--iteration 1 --presentation --stage centroids --select-cell 100");
+}
