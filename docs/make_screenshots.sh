@@ -6,3 +6,7 @@ bin=build/app/lloydscope
 $bin inspect assets/bumpy_disk.off --no-timings --iteration 0 --screenshot docs/inspector_iteration0.png
 $bin inspect assets/bumpy_disk.off --no-timings --iteration 10 --screenshot docs/inspector_iteration10.png
 $bin inspect assets/bumpy_disk.off --no-timings --screenshot docs/inspector_converged.png
+$bin inspect assets/bumpy_disk.off --no-timings --iteration 3 --select-cell 400 \
+  --select-triangle 700 --screenshot docs/inspector_selection.png
+$bin inspect assets/bumpy_disk.off --no-timings --iteration 1 --presentation --stage centroids \
+  --select-cell 400 --screenshot docs/inspector_lesson.png
