@@ -47,21 +47,19 @@ CanvasRenderer::CanvasRenderer(gpu::Context& gpu, VkRenderPass renderPass)
       {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, position)},
       {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, pixelOffset)},
       {2, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(CanvasVertex, color)}};
-  for (auto [topology, layout, pipeline] :
-       {std::tuple{VK_PRIMITIVE_TOPOLOGY_LINE_LIST, &lineLayout_, &linePipeline_},
-        std::tuple{VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, &triangleLayout_, &trianglePipeline_}})
-    gpu::createPipeline(gpu.device, renderPass,
-                        {canvas_vert, sizeof(canvas_vert), canvas_frag, sizeof(canvas_frag),
-                         attributes, sizeof(CanvasVertex), topology, false, sizeof(Push)},
-                        *layout, *pipeline);
+  for (auto [topology, pipeline] :
+       {std::pair{VK_PRIMITIVE_TOPOLOGY_LINE_LIST, &linePipeline_},
+        std::pair{VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, &trianglePipeline_}})
+    *pipeline = gpu::createPipeline(gpu.device, renderPass,
+                                    {canvas_vert, sizeof(canvas_vert), canvas_frag,
+                                     sizeof(canvas_frag), attributes, sizeof(CanvasVertex),
+                                     topology, false, sizeof(Push)});
 }
 
 CanvasRenderer::~CanvasRenderer() {
   vkDeviceWaitIdle(gpu_.device);
   for (gpu::Buffer* b : {&fills_, &lines_, &marks_}) gpu_.destroy(*b);
-  for (VkPipeline p : {linePipeline_, trianglePipeline_}) vkDestroyPipeline(gpu_.device, p, nullptr);
-  for (VkPipelineLayout l : {lineLayout_, triangleLayout_})
-    vkDestroyPipelineLayout(gpu_.device, l, nullptr);
+  for (gpu::Pipeline* p : {&linePipeline_, &trianglePipeline_}) gpu_.destroy(*p);
 }
 
 void CanvasRenderer::upload(const CanvasGeometry& g) {
@@ -90,16 +88,16 @@ void CanvasRenderer::draw(VkCommandBuffer cmd, const CanvasDraw& d) const {
   gpu::clearRect(cmd, clear, d.viewport);
   gpu::setViewport(cmd, d.viewport);
   const VkDeviceSize offset = 0;
-  for (auto [pipeline, layout, buffer, count] :
-       {std::tuple{trianglePipeline_, triangleLayout_, fills_.buffer, fillCount_},
-        std::tuple{linePipeline_, lineLayout_, lines_.buffer, lineCount_},
-        std::tuple{trianglePipeline_, triangleLayout_, marks_.buffer, markCount_}}) {
+  for (auto [pipeline, buffer, count] :
+       {std::tuple{&trianglePipeline_, fills_.buffer, fillCount_},
+        std::tuple{&linePipeline_, lines_.buffer, lineCount_},
+        std::tuple{&trianglePipeline_, marks_.buffer, markCount_}}) {
     if (count == 0) continue;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(Push), &push);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->pipeline);
+    vkCmdPushConstants(cmd, pipeline->layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                       0, sizeof(Push), &push);
     vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
-    if (pipeline == linePipeline_) vkCmdSetLineWidth(cmd, gpu_.wideLines ? d.lineWidth : 1.0f);
+    if (pipeline == &linePipeline_) vkCmdSetLineWidth(cmd, gpu_.wideLines ? d.lineWidth : 1.0f);
     vkCmdDraw(cmd, count, 1, 0, 0);
   }
   // The same map as a matrix: clip = transform.xy * uv + transform.zw.

@@ -48,8 +48,7 @@ class CanvasRenderer {
 
  private:
   gpu::Context& gpu_;
-  VkPipelineLayout lineLayout_ = VK_NULL_HANDLE, triangleLayout_ = VK_NULL_HANDLE;
-  VkPipeline linePipeline_ = VK_NULL_HANDLE, trianglePipeline_ = VK_NULL_HANDLE;
+  gpu::Pipeline linePipeline_, trianglePipeline_;
   gpu::Buffer fills_, lines_, marks_;
   MarkerRenderer points_;
   uint32_t fillCount_ = 0, lineCount_ = 0, markCount_ = 0;  // vertices

@@ -193,6 +193,12 @@ Buffer Context::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
   return b;
 }
 
+void Context::destroy(Pipeline& p) {
+  if (p.pipeline) vkDestroyPipeline(device, p.pipeline, nullptr);
+  if (p.layout) vkDestroyPipelineLayout(device, p.layout, nullptr);
+  p = Pipeline{};
+}
+
 void Context::destroy(Buffer& b) {
   if (b.memory) vkFreeMemory(device, b.memory, nullptr);  // unmaps too
   if (b.buffer) vkDestroyBuffer(device, b.buffer, nullptr);
@@ -270,8 +276,9 @@ void Context::submit(const std::function<void(VkCommandBuffer)>& record) {
   submittedCommands_ = cmd;
 }
 
-void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d,
-                    VkPipelineLayout& layout, VkPipeline& pipeline) {
+Pipeline createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d) {
+  Pipeline made;
+  VkPipelineLayout& layout = made.layout;
   VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                             d.pushConstantBytes};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -347,10 +354,11 @@ void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDesc
   info.pDynamicState = &dynamic;
   info.layout = layout;
   info.renderPass = renderPass;
-  check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+  check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &made.pipeline),
         "creating a pipeline");
   vkDestroyShaderModule(device, vert, nullptr);
   vkDestroyShaderModule(device, frag, nullptr);
+  return made;
 }
 
 void initImGuiRenderer(Context& gpu, VkRenderPass renderPass, uint32_t imageCount) {

@@ -22,6 +22,12 @@ struct Buffer {
   void* mapped = nullptr;  // host-visible buffers stay mapped
 };
 
+// A pipeline and its layout (push constants only), made and destroyed together.
+struct Pipeline {
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
 struct Image {
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
@@ -50,6 +56,7 @@ class Context {
 
   Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);  // host-visible, mapped
   void destroy(Buffer& buffer);
+  void destroy(Pipeline& pipeline);
   Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                     VkImageAspectFlags aspect);
   void destroy(Image& image);
@@ -82,8 +89,7 @@ struct PipelineDescription {
   uint32_t pushConstantBytes;  // visible to both stages
 };
 // Creates the layout (push constants only) and the pipeline.
-void createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d,
-                    VkPipelineLayout& layout, VkPipeline& pipeline);
+Pipeline createPipeline(VkDevice device, VkRenderPass renderPass, const PipelineDescription& d);
 
 // Dear ImGui's Vulkan backend on this device and render pass, fonts uploaded (the ImGui
 // context must exist).

@@ -15,22 +15,20 @@ Marker marker(const Vec3& at, float diameter, MarkerShape shape, uint32_t color)
 }
 
 MarkerRenderer::MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass) : gpu_(gpu) {
-  gpu::createPipeline(gpu.device, renderPass,
+  pipeline_ = gpu::createPipeline(gpu.device, renderPass,
                       {marker_vert, sizeof(marker_vert), marker_frag, sizeof(marker_frag),
                        {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Marker, position)},
                         {1, 0, VK_FORMAT_R32_SFLOAT, offsetof(Marker, diameter)},
                         {2, 0, VK_FORMAT_R32_SFLOAT, offsetof(Marker, shape)},
                         {3, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(Marker, color)}},
                        sizeof(Marker), VK_PRIMITIVE_TOPOLOGY_POINT_LIST, false,
-                       sizeof(float) * 16},
-                      layout_, pipeline_);
+                       sizeof(float) * 16});
 }
 
 MarkerRenderer::~MarkerRenderer() {
   vkDeviceWaitIdle(gpu_.device);
   gpu_.destroy(markers_);
-  vkDestroyPipeline(gpu_.device, pipeline_, nullptr);
-  vkDestroyPipelineLayout(gpu_.device, layout_, nullptr);
+  gpu_.destroy(pipeline_);
 }
 
 void MarkerRenderer::upload(const std::vector<Marker>& markers) {
@@ -41,9 +39,9 @@ void MarkerRenderer::upload(const std::vector<Marker>& markers) {
 void MarkerRenderer::draw(VkCommandBuffer cmd, const float (&viewport)[4],
                           const std::array<float, 16>& transform) const {
   if (count_ == 0) return;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline);
   gpu::setViewport(cmd, viewport);
-  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+  vkCmdPushConstants(cmd, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(float) * 16, transform.data());
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &markers_.buffer, &offset);

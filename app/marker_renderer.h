@@ -37,8 +37,7 @@ class MarkerRenderer {
 
  private:
   gpu::Context& gpu_;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  gpu::Pipeline pipeline_;
   gpu::Buffer markers_;
   uint32_t count_ = 0;
 };

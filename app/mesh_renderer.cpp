@@ -24,22 +24,20 @@ struct Push {
 
 MeshRenderer::MeshRenderer(gpu::Context& gpu, VkRenderPass renderPass)
     : gpu_(gpu), markers_(gpu, renderPass) {
-  gpu::createPipeline(
+  pipeline_ = gpu::createPipeline(
       gpu.device, renderPass,
       {mesh_vert, sizeof(mesh_vert), mesh_frag, sizeof(mesh_frag),
        {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
         {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
         {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, barycentric)},
         {3, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, color)}},
-       sizeof(Vertex), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, true, sizeof(Push)},
-      layout_, pipeline_);
+       sizeof(Vertex), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, true, sizeof(Push)});
 }
 
 MeshRenderer::~MeshRenderer() {
   vkDeviceWaitIdle(gpu_.device);
   gpu_.destroy(vertices_);
-  vkDestroyPipeline(gpu_.device, pipeline_, nullptr);
-  vkDestroyPipelineLayout(gpu_.device, layout_, nullptr);
+  gpu_.destroy(pipeline_);
 }
 
 void MeshRenderer::upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors) {
@@ -73,13 +71,13 @@ void MeshRenderer::draw(VkCommandBuffer cmd, const MeshDraw& d) const {
   clear[1].clearValue.depthStencil = {1.0f, 0};
   gpu::clearRect(cmd, clear, d.viewport);
   if (vertexCount_ == 0) return;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline);
   gpu::setViewport(cmd, d.viewport);
   Push push{};
   std::memcpy(push.viewProjection, d.viewProjection.data(), sizeof(push.viewProjection));
   push.options[0] = d.wireframe ? 1.0f : 0.0f;
   push.options[1] = d.wireWidth;
-  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+  vkCmdPushConstants(cmd, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(Push), &push);
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertices_.buffer, &offset);

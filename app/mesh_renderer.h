@@ -33,8 +33,7 @@ class MeshRenderer {
 
  private:
   gpu::Context& gpu_;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  gpu::Pipeline pipeline_;
   gpu::Buffer vertices_;
   uint32_t vertexCount_ = 0;
   MarkerRenderer markers_;
