@@ -5,6 +5,7 @@
 #include "window.h"
 #include "pipeline.h"
 #include "report.h"
+#include "simplify.h"
 
 #include <CLI/CLI.hpp>
 
@@ -19,7 +20,7 @@ namespace {
 struct RemeshArgs {
   std::string input, output, record, preset, method = "retriangulate", param, border, density,
       solver;
-  int sites = 0;
+  int sites = 0, simplify = 0;
   int maxIterations = 0;
   double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1;
   bool json = false, noFidelity = false;
@@ -50,6 +51,8 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   if (cmd.count("--distance-threshold")) o.lloyd.distanceThreshold = a.distanceThreshold;
   if (cmd.count("--percent-threshold")) o.lloyd.percentThreshold = a.percentThreshold;
   o.measureFidelity = !a.noFidelity;
+  if (a.simplify < 0) throw Error("--simplify " + std::to_string(a.simplify) + ": expected a positive number of vertices");
+  o.simplifyTo = a.simplify;
   return o;
 }
 
@@ -75,6 +78,8 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
 }  // namespace
 
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
+  cmd.add_option("--simplify", r.simplify,
+                 "Quadric edge collapse to N vertices first (the boundary stays in place)");
   cmd.add_option("--preset", r.preset,
                  "best (default) or reference: the report's settings (authalic, square border, "
                  "uniform density, input vertices as sites, plain Lloyd)");
@@ -184,6 +189,18 @@ int main(int argc, char** argv) {
 
   std::string metricsMesh, metricsReference;
   bool metricsJson = false;
+  std::string simplifyIn, simplifyOut;
+  SimplifyOptions simplifyTarget;
+  CLI::App* simplifyCmd = app.add_subcommand(
+      "simplify", "Quadric edge collapse (Garland-Heckbert) to a target size, boundary in place");
+  simplifyCmd->add_option("input", simplifyIn, "Mesh (OFF, OBJ, PLY)")->required();
+  simplifyCmd->add_option("-o,--output", simplifyOut, "Where to write the result")->required();
+  auto* target = simplifyCmd->add_option_group("target", "one of");
+  target->add_option("--vertices", simplifyTarget.vertices, "Target number of vertices");
+  target->add_option("--faces", simplifyTarget.faces, "Target number of faces");
+  target->add_option("--ratio", simplifyTarget.ratio, "Target fraction of the vertices, in (0, 1]");
+  target->require_option(1);
+
   CLI::App* metricsCmd = app.add_subcommand("metrics", "Measure a mesh's quality");
   metricsCmd->add_option("mesh", metricsMesh, "Mesh to measure")->required();
   metricsCmd->add_option("--reference", metricsReference,
@@ -214,6 +231,16 @@ int main(int argc, char** argv) {
 
   try {
     if (remeshCmd->parsed()) return runRemesh(r, *remeshCmd);
+    if (simplifyCmd->parsed()) {
+      const Mesh input = load(simplifyIn);
+      const SimplifyResult s = simplify(input, simplifyTarget, simplifyIn);
+      writeMesh(s.mesh, simplifyOut);
+      std::cout << simplifyIn << ": " << input.vertexCount() << " vertices, " << input.faceCount()
+                << " faces -> " << s.mesh.vertexCount() << " vertices, " << s.mesh.faceCount()
+                << " faces (" << s.collapses << " collapses, " << std::lround(s.milliseconds)
+                << " ms)\n";
+      return 0;
+    }
     if (inspectCmd->parsed()) {
       RemeshOptions options;
       std::optional<Mesh> input;

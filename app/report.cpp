@@ -83,7 +83,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"mean_log_area_ratio", r.distortion.meanLogAreaRatio},
             {"mean_angle_error_deg", r.distortion.meanAngleErrorDeg}}},
           {"milliseconds",
-           {{"parameterize", r.ms.parameterize},
+           {{"simplify", r.ms.simplify},
+            {"parameterize", r.ms.parameterize},
             {"density", r.ms.density},
             {"sites", r.ms.sites},
             {"lloyd", r.ms.lloyd},
@@ -118,7 +119,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
-  out << "Time (ms): parameterize " << format("%.1f", r.ms.parameterize) << ", density "
+  out << "Time (ms): " << (r.ms.simplify > 0 ? "simplify " + format("%.1f", r.ms.simplify) + ", " : "")
+      << "parameterize " << format("%.1f", r.ms.parameterize) << ", density "
       << format("%.1f", r.ms.density) << ", sites " << format("%.1f", r.ms.sites) << ", lloyd "
       << format("%.1f", r.ms.lloyd) << ", remesh " << format("%.1f", r.ms.remesh) << ", metrics "
       << format("%.1f", r.ms.metrics) << ", total " << format("%.1f", r.ms.total) << "\n";

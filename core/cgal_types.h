@@ -15,5 +15,7 @@ using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 
 // Vertex i of `mesh` is vertex i of the result, face j is face j.
 SurfaceMesh toSurfaceMesh(const Mesh& mesh);
+// Back, dropping removed elements (after CGAL collapses or refinements).
+Mesh fromSurfaceMesh(const SurfaceMesh& sm);
 
 }  // namespace lloydscope

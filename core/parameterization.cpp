@@ -23,16 +23,6 @@ namespace lloydscope {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
-SurfaceMesh toSurfaceMesh(const Mesh& mesh) {
-  SurfaceMesh sm;
-  sm.reserve(mesh.points.size(), 3 * mesh.triangles.size() / 2, mesh.triangles.size());
-  for (const Vec3& p : mesh.points) sm.add_vertex(Point3(p.x(), p.y(), p.z()));
-  for (const Triangle& t : mesh.triangles)
-    sm.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
-                SurfaceMesh::Vertex_index(t[2]));
-  return sm;
-}
-
 namespace {
 
 struct FoldedMap : Error {

@@ -10,11 +10,13 @@
 #include "sites.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace lloydscope {
 
 struct RemeshOptions {
+  int simplifyTo = 0;  // > 0: quadric edge collapse to this many vertices first
   RemeshMethod method = RemeshMethod::Retriangulate;
   ParamOptions param;
   DensityOptions density;
@@ -28,7 +30,8 @@ struct RemeshOptions {
 RemeshOptions referencePreset(RemeshMethod method);
 
 struct StageTimes {  // milliseconds
-  double parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0, metrics = 0, total = 0;
+  double simplify = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
+         metrics = 0, total = 0;
 };
 
 struct RemeshResult {
@@ -67,9 +70,10 @@ class RemeshSession {
   RemeshResult finish();
 
  private:
-  Mesh input_;
   RemeshOptions options_;
   StageTimes ms_;  // before the members whose initializers time themselves into it
+  std::optional<Mesh> original_;  // the user's mesh, when input_ is its simplification
+  Mesh input_;                    // the disk that is parameterized
   Parameterization param_;
   std::vector<double> density_;
   Domain domain_;

@@ -4,6 +4,7 @@
 #include "topology.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 
 using namespace lloydscope;
@@ -151,4 +152,26 @@ TEST(Session, SteppingByHandGivesTheSameRunAsRemesh) {
   EXPECT_EQ(stepped.output.triangles, whole.output.triangles);
   EXPECT_EQ(stepped.after.avgMinAngle, whole.after.avgMinAngle);
   EXPECT_TRUE(stepped.converged);
+}
+
+TEST(Pipeline, SimplifiesFirstWhenAsked) {
+  const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;  // 1000 vertices
+  RemeshOptions o;
+  o.simplifyTo = 400;
+  o.sites.count = 400;
+  o.lloyd.maxIterations = 20;
+  const RemeshResult r = remesh(input, o, "bumpy");
+  EXPECT_EQ(r.recording.input.vertexCount(), 400);  // the disk that was parameterized
+  EXPECT_EQ(r.before.vertices, input.vertexCount());  // Table II's "before": the user's mesh
+  EXPECT_GT(r.ms.simplify, 0.0);
+  EXPECT_GT(r.fidelity.hausdorffPercent, 0.0);  // measured against the user's mesh
+  EXPECT_NE(describe(o).find("simplify=400"), std::string::npos);
+}
+
+TEST(Cli, SimplifyWritesTheTargetSize) {
+  const std::string out = test::tempPath("simplified.off");
+  EXPECT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " simplify " + test::assetPath("bumpy_disk.off") +
+                         " -o " + out + " --vertices 300 > /dev/null").c_str()),
+            0);
+  EXPECT_EQ(readMesh(out).mesh.vertexCount(), 300);
 }

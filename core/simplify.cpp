@@ -1,0 +1,97 @@
+#include "simplify.h"
+
+#include "cgal_types.h"
+
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_policies.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace lloydscope {
+
+namespace {
+
+namespace SMS = CGAL::Surface_mesh_simplification;
+using Profile = SMS::Edge_profile<SurfaceMesh>;
+
+// Garland-Heckbert placement, except where the boundary would move (see simplify()).
+template <typename Inner>
+struct BoundaryKeepingPlacement {
+  Inner inner;
+  boost::optional<Point3> operator()(const Profile& profile) const {
+    const SurfaceMesh& sm = profile.surface_mesh();
+    const bool border0 = bool(CGAL::is_border(profile.v0(), sm));
+    const bool border1 = bool(CGAL::is_border(profile.v1(), sm));
+    if (!border0 && !border1) return inner(profile);
+    if (border0 && border1) {
+      if (!profile.is_v0_v1_a_border() && !profile.is_v1_v0_a_border()) return boost::none;
+      // On the border edge itself: the quadric's choice, moved onto the segment.
+      const boost::optional<Point3> best = inner(profile);
+      const Vec3 a(profile.p0().x(), profile.p0().y(), profile.p0().z());
+      const Vec3 b(profile.p1().x(), profile.p1().y(), profile.p1().z());
+      double t = 0.5;
+      if (best) {
+        const Vec3 p(best->x(), best->y(), best->z());
+        t = std::clamp((p - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
+      }
+      const Vec3 q = a + t * (b - a);
+      return Point3(q.x(), q.y(), q.z());
+    }
+    return border0 ? profile.p0() : profile.p1();
+  }
+};
+
+// Stops at the target number of vertices, or of faces.
+struct SizeStop {
+  std::size_t vertices, faces;
+  bool operator()(double, const Profile& profile, std::size_t, std::size_t) const {
+    const SurfaceMesh& sm = profile.surface_mesh();
+    return sm.number_of_vertices() <= vertices || sm.number_of_faces() <= faces;
+  }
+};
+
+}  // namespace
+
+SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name) {
+  const auto start = std::chrono::steady_clock::now();
+  SizeStop stop{0, 0};
+  if (options.vertices > 0) {
+    stop.vertices = options.vertices;
+  } else if (options.faces > 0) {
+    stop.faces = options.faces;
+  } else if (options.ratio > 0) {
+    if (!(options.ratio <= 1.0)) throw Error(name + ": simplification ratio must be in (0, 1]");
+    stop.vertices = std::max(3L, std::lround(options.ratio * input.vertexCount()));
+  } else {
+    throw Error(name + ": give a positive number of vertices or faces, or a ratio, to simplify to");
+  }
+  SimplifyResult result;
+  if (stop.vertices >= size_t(input.vertexCount()) || stop.faces >= size_t(input.faceCount())) {
+    result.mesh = input;  // nothing to take away
+    return result;
+  }
+  SurfaceMesh sm = toSurfaceMesh(input);
+  using Policies = SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel>;
+  Policies policies(sm);
+  BoundaryKeepingPlacement<Policies::Get_placement> placement{policies.get_placement()};
+  result.collapses = SMS::edge_collapse(
+      sm, stop,
+      CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
+  sm.collect_garbage();
+  result.mesh = fromSurfaceMesh(sm);
+  result.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+Mesh subdivideTo(const Mesh& input, int vertices) {
+  if (input.vertexCount() >= vertices) return input;
+  SurfaceMesh sm = toSurfaceMesh(input);
+  while (static_cast<int>(sm.number_of_vertices()) < vertices)
+    CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(1));
+  return fromSurfaceMesh(sm);
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,34 @@
+// Making an input the right size: quadric edge collapse (Garland-Heckbert) down to a target,
+// and Loop subdivision up to one, both from CGAL.
+#pragma once
+
+#include "mesh.h"
+
+#include <string>
+
+namespace lloydscope {
+
+struct SimplifyOptions {
+  // The target: the first of these that is set (> 0).
+  int vertices = 0;
+  int faces = 0;
+  double ratio = 0;  // of the input's vertices, in (0, 1]
+};
+
+struct SimplifyResult {
+  Mesh mesh;
+  int collapses = 0;
+  double milliseconds = 0;
+};
+
+// Collapses the cheapest edges by the quadric error of Garland and Heckbert until the target
+// is met or no edge can go. The boundary curve stays in place: a vertex on it never leaves
+// it (border edges collapse to a point of the edge, an edge with one border end to that end),
+// and no edge joining two border vertices through the inside collapses (it would pinch the
+// surface). Throws Error naming `name` for a target that is not positive or not smaller.
+SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name);
+
+// Loop subdivision rounds until the mesh has at least `vertices` vertices.
+Mesh subdivideTo(const Mesh& input, int vertices);
+
+}  // namespace lloydscope

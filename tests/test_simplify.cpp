@@ -1,0 +1,73 @@
+#include "mesh_io.h"
+#include "simplify.h"
+#include "test_support.h"
+#include "topology.h"
+
+#include <random>
+
+using namespace lloydscope;
+
+namespace {
+
+// The unit square, 20 x 20 cells, its inside vertices jittered within the plane z = 0.
+Mesh jitteredSquare() {
+  Mesh m = test::grid(20);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.015, 0.015);
+  for (Vec3& p : m.points)
+    if (p.x() > 0 && p.x() < 1 && p.y() > 0 && p.y() < 1) p += Vec3(jitter(random), jitter(random), 0);
+  return m;
+}
+
+bool onSquareBorder(const Vec3& p) {
+  const double e = 1e-12;
+  return std::abs(p.x()) < e || std::abs(p.x() - 1) < e || std::abs(p.y()) < e ||
+         std::abs(p.y() - 1) < e;
+}
+
+}  // namespace
+
+TEST(Simplify, ReachesTheTargetAndStaysADiskWithItsBorderInPlace) {
+  const Mesh input = jitteredSquare();
+  const SimplifyResult r = simplify(input, {150}, "square");
+  EXPECT_EQ(r.mesh.vertexCount(), 150);
+  EXPECT_GT(r.collapses, 0);
+  EXPECT_NO_THROW(validateMesh(r.mesh, "simplified"));
+  const Topology t = analyzeTopology(r.mesh);
+  EXPECT_TRUE(t.isDisk()) << t.describe();
+  for (int v : t.boundaryLoops.at(0)) EXPECT_TRUE(onSquareBorder(r.mesh.points[v])) << v;
+  // The corners are the border's only bends: the collapses keep them.
+  for (const Vec3& corner : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)})
+    EXPECT_TRUE(std::any_of(r.mesh.points.begin(), r.mesh.points.end(),
+                            [&](const Vec3& p) { return (p - corner).norm() < 1e-12; }));
+  for (const Vec3& p : r.mesh.points) EXPECT_NEAR(p.z(), 0.0, 1e-9);  // a plane stays flat
+}
+
+TEST(Simplify, TargetsByFacesAndRatio) {
+  const Mesh input = jitteredSquare();  // 441 vertices, 800 faces
+  EXPECT_EQ(simplify(input, {0, 0, 0.5}, "square").mesh.vertexCount(), 221);
+  const Mesh byFaces = simplify(input, {0, 400}, "square").mesh;
+  EXPECT_NEAR(byFaces.faceCount(), 400, 20);
+  EXPECT_EQ(simplify(input, {1000}, "square").mesh.triangles, input.triangles);  // already small
+}
+
+TEST(Simplify, BadTargetsAreOneLineErrors) {
+  const Mesh input = jitteredSquare();
+  for (const SimplifyOptions& bad : {SimplifyOptions{}, SimplifyOptions{0, 0, 1.5}, SimplifyOptions{-3}}) {
+    try {
+      simplify(input, bad, "square.off");
+      FAIL() << "expected an error";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("square.off"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(Simplify, SubdivisionGrowsAMeshAndKeepsItsTopology) {
+  const Mesh input = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  const Mesh finer = subdivideTo(input, 3 * input.vertexCount());
+  EXPECT_GE(finer.vertexCount(), 3 * input.vertexCount());
+  EXPECT_NO_THROW(validateMesh(finer, "finer"));
+  EXPECT_TRUE(analyzeTopology(finer).isDisk());
+  EXPECT_EQ(subdivideTo(input, 10).triangles, input.triangles);
+}
