@@ -1,0 +1,62 @@
+#include "isotropic.h"
+
+#include "cgal_types.h"
+
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace lloydscope {
+
+namespace {
+
+double surfaceArea(const Mesh& mesh) {
+  double area = 0;
+  for (const Triangle& t : mesh.triangles)
+    area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  return area;
+}
+
+struct Run {
+  Mesh mesh;
+  double milliseconds;
+};
+
+Run remeshAt(const Mesh& input, double edgeLength, int iterations) {
+  SurfaceMesh sm = toSurfaceMesh(input);
+  const auto start = std::chrono::steady_clock::now();
+  CGAL::Polygon_mesh_processing::isotropic_remeshing(
+      faces(sm), edgeLength, sm, CGAL::parameters::number_of_iterations(iterations));
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  sm.collect_garbage();
+  return {fromSurfaceMesh(sm), ms};
+}
+
+}  // namespace
+
+IsotropicResult isotropicRemesh(const Mesh& input, const IsotropicOptions& options) {
+  // Equilateral triangles of side L, about two per vertex: A = 2 V (sqrt(3)/4) L^2.
+  double length = std::sqrt(2.0 * surfaceArea(input) / (std::sqrt(3.0) * options.vertices));
+  IsotropicResult best;
+  double bestError = INFINITY;
+  for (int run = 0; run < options.maxSearch; ++run) {
+    Run r = remeshAt(input, length, options.iterations);
+    const int count = r.mesh.vertexCount();
+    const double error = std::abs(count - options.vertices) / double(options.vertices);
+    best.searchRuns = run + 1;
+    if (error < bestError) {
+      bestError = error;
+      best.mesh = std::move(r.mesh);
+      best.edgeLength = length;
+      best.milliseconds = r.milliseconds;
+    }
+    if (error <= options.tolerance || count == 0) break;
+    // V ~ 1/L^2; damped, since the border and the features do not scale exactly.
+    length *= std::pow(double(count) / options.vertices, 0.5 * 0.9);
+  }
+  return best;
+}
+
+}  // namespace lloydscope
