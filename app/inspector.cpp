@@ -6,6 +6,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "mesh_io.h"
+#include "report.h"
 
 #include <backends/imgui_impl_vulkan.h>
 
@@ -96,12 +97,6 @@ void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, cons
 void drawMeshCallback(const ImDrawList*, const ImDrawCmd* cmd) {
   const auto* draw = static_cast<const std::pair<const MeshRenderer*, MeshDraw>*>(cmd->UserCallbackData);
   draw->first->draw(gCommandBuffer, draw->second);
-}
-
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 // lloydscope: the command line. Every command runs headless; errors are one line on stderr.
+#include "bench.h"
 #include "gpu.h"
 #include "headless.h"
 #include "mesh_io.h"
@@ -189,6 +190,16 @@ int main(int argc, char** argv) {
 
   std::string metricsMesh, metricsReference;
   bool metricsJson = false;
+  BenchOptions benchOptions;
+  bool noReference = false;
+  CLI::App* peerBenchCmd = app.add_subcommand(
+      "bench", "Lloydscope against CGAL's isotropic_remeshing on prepared inputs (markdown, CSV)");
+  peerBenchCmd->add_option("models", benchOptions.models,
+                           "Meshes (default: CGAL's disk samples in data/cgal)");
+  peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)");
+  peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)");
+  peerBenchCmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
+
   std::string simplifyIn, simplifyOut;
   SimplifyOptions simplifyTarget;
   CLI::App* simplifyCmd = app.add_subcommand(
@@ -231,6 +242,11 @@ int main(int argc, char** argv) {
 
   try {
     if (remeshCmd->parsed()) return runRemesh(r, *remeshCmd);
+    if (peerBenchCmd->parsed()) {
+      benchOptions.reference = !noReference;
+      runBench(benchOptions);
+      return 0;
+    }
     if (simplifyCmd->parsed()) {
       const Mesh input = load(simplifyIn);
       const SimplifyResult s = simplify(input, simplifyTarget, simplifyIn);

@@ -5,13 +5,13 @@
 
 namespace lloydscope {
 
-namespace {
-
 std::string format(const char* pattern, double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, pattern, value);
   return buffer;
 }
+
+namespace {
 
 struct Row {
   const char* label;

@@ -9,6 +9,9 @@
 
 namespace lloydscope {
 
+// One number in a printf pattern ("%.1f").
+std::string format(const char* pattern, double value);
+
 nlohmann::json toJson(const QualityMetrics& m);
 nlohmann::json toJson(const Fidelity& f);
 nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& options);

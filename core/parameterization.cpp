@@ -195,10 +195,17 @@ Distortion measureDistortion(const Mesh& mesh, const std::vector<Vec2>& uv) {
 Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
                               const std::string& name) {
   if (options.method == ParamMethod::Auto) {
-    try {
-      return parameterize(mesh, {ParamMethod::Lscm, options.border}, name);
-    } catch (const FoldedMap&) {
-      return parameterize(mesh, {ParamMethod::MeanValue, Border::Circle}, name);
+    // LSCM distorts least but may fold; mean value and then Tutte on a circle are one-to-one
+    // in exact arithmetic, and Tutte's positive weights hold on where rounding folds the other.
+    const ParamOptions tries[] = {{ParamMethod::Lscm, options.border},
+                                  {ParamMethod::MeanValue, Border::Circle},
+                                  {ParamMethod::Tutte, Border::Circle}};
+    for (size_t i = 0;; ++i) {
+      try {
+        return parameterize(mesh, tries[i], name);
+      } catch (const FoldedMap&) {
+        if (i + 1 == std::size(tries)) throw;
+      }
     }
   }
   // CGAL does not check the topology itself (shared/notes/cgal.md): a non-disk "succeeds".

@@ -9,7 +9,7 @@
 namespace lloydscope {
 
 enum class ParamMethod {
-  Auto,  // LSCM, or mean value with a circle border where LSCM folds
+  Auto,  // LSCM; where it folds, mean value on a circle; where that folds too, Tutte
   Authalic, Conformal, MeanValue, Tutte, Lscm
 };
 enum class Border { Square, Circle };  // ignored by LSCM, whose border is free

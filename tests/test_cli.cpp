@@ -137,3 +137,25 @@ TEST(Cli, UnknownOptionValues) {
   EXPECT_NE(runCli("remesh " + test::assetPath("jittered_grid.off") +
                        " --method relocate --sites 100").code, 0);
 }
+
+TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
+  const std::string csv = test::tempPath("bench.csv"), out = test::tempPath("bench.md");
+  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench " + test::assetPath("sphere_cap.off") +
+                         " --sizes 300 --no-reference --csv " + csv + " > " + out + " 2> /dev/null")
+                            .c_str()),
+            0);
+  const std::string table = test::readText(out), rows = test::readText(csv);
+  EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| sphere_cap | 300 | cgal isotropic |"), std::string::npos) << table;
+  EXPECT_NE(table.find("time ratio"), std::string::npos);
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 3) << rows;  // header and two rows
+  EXPECT_EQ(rows.rfind("model,size,method,vertices", 0), 0u);
+}
+
+TEST(Cli, BenchNamesAMissingModel) {
+  const std::string err = test::tempPath("bench.err");
+  EXPECT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench /nonexistent/model.off --csv " +
+                         test::tempPath("never.csv") + " > /dev/null 2> " + err).c_str()) != 0,
+            true);
+  EXPECT_NE(test::readText(err).find("/nonexistent/model.off"), std::string::npos);
+}

@@ -1,0 +1,169 @@
+#include "bench.h"
+
+#include "isotropic.h"
+#include "mesh_io.h"
+#include "pipeline.h"
+#include "report.h"
+#include "simplify.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace lloydscope {
+
+namespace {
+
+struct Row {
+  std::string model, method;
+  std::string failed;  // why the method gave no mesh, if it did not
+  int size = 0, iterations = 0;
+  double milliseconds = 0;  // the method's own work, measuring excluded
+  QualityMetrics before, after;
+  Fidelity fidelity;
+  StageTimes stages;        // Lloydscope's rows only
+};
+
+// The bench's input: the model subdivided (if small) and quadric-simplified to `size`.
+Mesh prepare(const Mesh& model, int size, const std::string& name) {
+  return simplify(subdivideTo(model, 2 * size), {size}, name).mesh;
+}
+
+Row lloydscopeRow(const std::string& model, int size, const std::string& method,
+                  const Mesh& input, const RemeshOptions& options) {
+  RemeshResult r;
+  try {
+    r = remesh(input, options, model);
+  } catch (const Error& e) {  // one method failing on one input is a result, not the end
+    Row row{model, method};
+    row.size = size;
+    row.failed = e.what();
+    return row;
+  }
+  Row row{model, method, "", size, r.iterations};
+  row.milliseconds = r.ms.total - r.ms.metrics;
+  row.before = r.before;
+  row.after = r.after;
+  row.fidelity = r.fidelity;
+  row.stages = r.ms;
+  return row;
+}
+
+Row isotropicRow(const std::string& model, int size, const Mesh& input) {
+  IsotropicOptions o;
+  o.vertices = size;
+  const IsotropicResult r = isotropicRemesh(input, o);
+  Row row{model, "cgal isotropic", "", size, 10};
+  row.milliseconds = r.milliseconds;
+  row.before = measureQuality(input);
+  row.after = measureQuality(r.mesh);
+  row.fidelity = measureFidelity(r.mesh, input);
+  return row;
+}
+
+// A free-text CSV field: quoted, inner quotes doubled.
+std::string csvField(const std::string& text) {
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string name(const std::string& path) {
+  std::string n = path.substr(path.find_last_of('/') + 1);
+  return n.substr(0, n.find_last_of('.'));
+}
+
+// Issue 5's bar for a Lloydscope row, next to CGAL's row on the same input.
+std::string verdict(const Row& row, const Row& peer) {
+  if (!row.failed.empty()) return "failed: " + row.failed;
+  std::string missed;
+  if (row.after.irregularBoundaryAware > 15) missed += " irregular>15%";
+  if (row.after.minAngle < 30) missed += " min<30";
+  if (row.after.avgMinAngle < 53) missed += " avg<53";
+  if (row.fidelity.hausdorffPercent > peer.fidelity.hausdorffPercent) missed += " hausdorff>cgal";
+  return missed.empty() ? "all met" : "missed:" + missed;
+}
+
+}  // namespace
+
+void runBench(const BenchOptions& options) {
+  std::vector<std::string> models = options.models;
+  if (models.empty())
+    for (const char* sample : {"nefertiti", "mushroom", "three_peaks", "lion-head", "mannequin-devil"}) {
+      const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/" + sample + ".off";
+      if (std::ifstream(path).good()) models.push_back(path);
+    }
+  if (models.empty())
+    throw Error("bench: no models (give mesh files, or run ./build.sh to extract CGAL's samples)");
+
+  std::vector<Row> rows;
+  std::ostringstream verdicts;
+  for (const std::string& path : models) {
+    const Mesh model = readMesh(path).mesh;
+    for (int size : options.sizes) {
+      const Mesh input = prepare(model, size, path);
+      const Row peer = isotropicRow(name(path), size, input);
+      const Row best = lloydscopeRow(name(path), size, "lloydscope", input, RemeshOptions{});
+      rows.push_back(best);
+      if (options.reference)
+        rows.push_back(lloydscopeRow(name(path), size, "lloydscope --preset reference", input,
+                                     referencePreset(RemeshMethod::Retriangulate)));
+      rows.push_back(peer);
+      verdicts << "| " << name(path) << " | " << size << " | "
+               << (best.failed.empty() ? format("%.2f", best.milliseconds / peer.milliseconds) : "-")
+               << " | "
+               << verdict(best, peer) << " |\n";
+      std::cerr << name(path) << " " << size << " done\n";
+    }
+  }
+
+  std::cout << "| model | size | method | vertices | faces | iterations | ms | irregular % (b-aware) "
+               "| min angle | avg min angle | < 30 deg % | Hausdorff % | RMS % |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
+    if (!r.failed.empty())
+      std::cout << "| " << r.model << " | " << r.size << " | " << r.method << " | failed: "
+                << r.failed << " |||||||||\n";
+    else
+      std::cout << "| " << r.model << " | " << r.size << " | " << r.method << " | "
+              << r.after.vertices << " | " << r.after.faces << " | " << r.iterations << " | "
+              << format("%.0f", r.milliseconds) << " | "
+              << format("%.1f", r.before.irregularBoundaryAware) << " -> "
+              << format("%.1f", r.after.irregularBoundaryAware) << " | "
+              << format("%.1f", r.before.minAngle) << " -> " << format("%.1f", r.after.minAngle)
+              << " | " << format("%.1f", r.before.avgMinAngle) << " -> "
+              << format("%.1f", r.after.avgMinAngle) << " | "
+              << format("%.1f", r.after.percentUnder30) << " | "
+              << format("%.3f", r.fidelity.hausdorffPercent) << " | "
+              << format("%.3f", r.fidelity.rmsPercent) << " |\n";
+  std::cout << "\nLloydscope (defaults) against CGAL on the same input: time ratio (<= 1 is the "
+               "target) and the quality bar (irregular <= 15%, min >= 30, avg >= 53, Hausdorff "
+               "<= CGAL's)\n\n| model | size | time ratio | quality |\n|---|---|---|---|\n"
+            << verdicts.str();
+
+  std::ostringstream csv;
+  csv << "model,size,method,vertices,faces,iterations,ms,irregular_before,irregular_after,"
+         "irregular_all_after,min_angle_before,min_angle_after,avg_min_angle_before,"
+         "avg_min_angle_after,under30_percent,hausdorff_percent,rms_percent,ms_simplify,"
+         "ms_parameterize,ms_density,ms_sites,ms_lloyd,ms_remesh,failed\n";
+  for (const Row& r : rows)
+    csv << r.model << "," << r.size << "," << r.method << "," << r.after.vertices << ","
+        << r.after.faces << "," << r.iterations << "," << r.milliseconds << ","
+        << r.before.irregularBoundaryAware << "," << r.after.irregularBoundaryAware << ","
+        << r.after.irregularPercent << "," << r.before.minAngle << "," << r.after.minAngle << ","
+        << r.before.avgMinAngle << "," << r.after.avgMinAngle << "," << r.after.percentUnder30
+        << "," << r.fidelity.hausdorffPercent << "," << r.fidelity.rmsPercent << ","
+        << r.stages.simplify << "," << r.stages.parameterize << "," << r.stages.density << ","
+        << r.stages.sites << "," << r.stages.lloyd << "," << r.stages.remesh << ","
+        << csvField(r.failed) << "\n";
+  const std::string temporary = options.csv + ".tmp";
+  std::ofstream(temporary) << csv.str();
+  if (std::rename(temporary.c_str(), options.csv.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw Error(options.csv + ": cannot write the CSV");
+  }
+  std::cout << "\nCSV: " << options.csv << "\n";
+}
+
+}  // namespace lloydscope
