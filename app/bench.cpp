@@ -106,6 +106,9 @@ void runBench(const BenchOptions& options) {
       const Row peer = isotropicRow(name(path), size, input);
       const Row best = lloydscopeRow(name(path), size, "lloydscope", input, RemeshOptions{});
       rows.push_back(best);
+      RemeshOptions unpolished;  // shows what the default's last clean-up buys
+      unpolished.polish = -1;
+      rows.push_back(lloydscopeRow(name(path), size, "lloydscope --polish -1", input, unpolished));
       if (options.reference)
         rows.push_back(lloydscopeRow(name(path), size, "lloydscope --preset reference", input,
                                      referencePreset(RemeshMethod::Retriangulate)));

@@ -695,6 +695,9 @@ void Inspector::settingsControls() {
   ImGui::SetNextItemWidth(130);
   ImGui::InputDouble("percent thr.", &options_.lloyd.percentThreshold, 1, 5, "%.1f");
   ImGui::SetNextItemWidth(130);
+  ImGui::InputInt("polish (-1: none)", &options_.polish, 1, 1);
+  options_.polish = std::max(-1, options_.polish);
+  ImGui::SetNextItemWidth(130);
   ImGui::InputInt("max iterations", &options_.lloyd.maxIterations, 10, 100);
   options_.lloyd.maxIterations = std::max(1, options_.lloyd.maxIterations);
   ImGui::TextDisabled("then Restart, Step or Run below the plots");

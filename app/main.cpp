@@ -21,7 +21,7 @@ namespace {
 struct RemeshArgs {
   std::string input, output, record, preset, method = "retriangulate", param, border, density,
       solver;
-  int sites = 0, simplify = 0;
+  int sites = 0, simplify = 0, polish = 3;
   int maxIterations = 0;
   double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1;
   bool json = false, noFidelity = false;
@@ -54,6 +54,7 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   o.measureFidelity = !a.noFidelity;
   if (a.simplify < 0) throw Error("--simplify " + std::to_string(a.simplify) + ": expected a positive number of vertices");
   o.simplifyTo = a.simplify;
+  if (cmd.count("--polish")) o.polish = a.polish;
   return o;
 }
 
@@ -79,6 +80,9 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
 }  // namespace
 
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
+  cmd.add_option("--polish", r.polish,
+                 "retriangulate's clean-up in 3D: -1 none, 0 Delaunay flips, K flips and K "
+                 "smoothing passes (default 3)");
   cmd.add_option("--simplify", r.simplify,
                  "Quadric edge collapse to N vertices first (the boundary stays in place)");
   cmd.add_option("--preset", r.preset,

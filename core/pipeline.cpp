@@ -1,5 +1,6 @@
 #include "pipeline.h"
 
+#include "polish.h"
 #include "simplify.h"
 
 #include <chrono>
@@ -32,6 +33,7 @@ RemeshOptions referencePreset(RemeshMethod method) {
   o.sites.fromInputVertices = true;
   o.lloyd = LloydOptions{};  // 1e-6 and 5%
   o.lloyd.solver = CvtSolver::Lloyd;
+  o.polish = -1;  // the report had no clean-up
   return o;
 }
 
@@ -125,6 +127,8 @@ RemeshResult RemeshSession::finish() {
   Stopwatch stage;
   result.output = buildOutput(input_, domain_, options_.method, solver_->fixedSites(),
                               solver_->movableSites(), sites_.movableVertex);
+  if (options_.polish >= 0 && options_.method == RemeshMethod::Retriangulate)
+    result.output = polish(result.output, {options_.polish});
   result.ms.remesh = stage.lap();
   // Against what the user gave, not its simplification.
   const Mesh& original = original_ ? *original_ : input_;
@@ -163,6 +167,7 @@ std::string describe(const RemeshOptions& o) {
     << " distance-threshold=" << o.lloyd.distanceThreshold
     << " percent-threshold=" << o.lloyd.percentThreshold
     << " max-iterations=" << o.lloyd.maxIterations;
+  if (o.method == RemeshMethod::Retriangulate) s << " polish=" << o.polish;
   return s.str();
 }
 

@@ -23,6 +23,10 @@ struct RemeshOptions {
   SiteOptions sites;
   LloydOptions lloyd;
   bool measureFidelity = true;
+  // Retriangulate's last clean-up in 3D (core/polish): -1 none, 0 Delaunay flips only, k > 0
+  // flips and k angle-smoothing passes. 3 by measurement (lloydscope bench): on curved disks
+  // it lifts the smallest angle by 7-16 degrees at a cost of 0-3 points of irregularity.
+  int polish = 3;
 };
 
 // The reference report's settings: discrete authalic map with a square border, uniform density,
