@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace lloydscope {
 
@@ -23,54 +22,57 @@ Vec3 normal(const Mesh& m, const Triangle& t) {
 }
 
 using EdgeKey = long long;
-EdgeKey key(int a, int b, int n) { return static_cast<EdgeKey>(std::min(a, b)) * n + std::max(a, b); }
 
 }  // namespace
 
 int flipToDelaunay(Mesh& mesh) {
-  const int n = mesh.vertexCount();
+  const long long n = mesh.vertexCount();
+  auto directed = [n](int a, int b) { return a * n + b; };
+  std::unordered_map<EdgeKey, int> faceOf;  // each directed edge a -> b to the face that has it
+  faceOf.reserve(3 * mesh.triangles.size());
+  std::vector<std::pair<int, int>> work;  // edges to check, each direction once
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+      faceOf[directed(a, b)] = f;
+      if (a < b) work.emplace_back(a, b);
+    }
+  auto third = [&](int f, int a, int b) {
+    for (int v : mesh.triangles[f])
+      if (v != a && v != b) return v;
+    return -1;
+  };
   int flips = 0;
-  for (int pass = 0; pass < 50; ++pass) {
-    // Each directed edge a -> b to its face; an edge is interior when both directions exist.
-    std::unordered_map<EdgeKey, int> faceOf;  // key (a, b) directed as a * n + b
-    std::unordered_set<EdgeKey> edges;
-    for (int f = 0; f < mesh.faceCount(); ++f)
-      for (int k = 0; k < 3; ++k) {
-        const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-        faceOf[static_cast<EdgeKey>(a) * n + b] = f;
-        edges.insert(key(a, b, n));
-      }
-    std::vector<bool> touched(mesh.faceCount(), false);
-    int passFlips = 0;
-    for (int f1 = 0; f1 < mesh.faceCount(); ++f1)
-      for (int k = 0; k < 3 && !touched[f1]; ++k) {
-        const Triangle t1 = mesh.triangles[f1];
-        const int a = t1[k], b = t1[(k + 1) % 3], c = t1[(k + 2) % 3];
-        const auto other = faceOf.find(static_cast<EdgeKey>(b) * n + a);
-        if (other == faceOf.end() || touched[other->second] || a > b) continue;
-        const int f2 = other->second;
-        const Triangle& t2 = mesh.triangles[f2];
-        int d = -1;
-        for (int v : t2)
-          if (v != a && v != b) d = v;
-        if (d < 0 || d == c || edges.count(key(c, d, n))) continue;
-        const Vec3 &pa = mesh.points[a], &pb = mesh.points[b], &pc = mesh.points[c],
-                   &pd = mesh.points[d];
-        if (angleAt(pc, pa, pb) + angleAt(pd, pb, pa) <= M_PI + 1e-9) continue;
-        // (a, b, c) and (b, a, d) become (c, a, d) and (d, b, c): keep both facing the same way.
-        const Triangle n1{c, a, d}, n2{d, b, c};
-        const Vec3 before = normal(mesh, t1).normalized() + normal(mesh, t2).normalized();
-        const Vec3 m1 = normal(mesh, n1), m2 = normal(mesh, n2);
-        if (m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() < 1e-14 || m2.norm() < 1e-14)
-          continue;
-        mesh.triangles[f1] = n1;
-        mesh.triangles[f2] = n2;
-        touched[f1] = touched[f2] = true;
-        edges.insert(key(c, d, n));
-        ++passFlips;
-      }
-    flips += passFlips;
-    if (passFlips == 0) break;
+  // Flipping on a surface need not terminate as in the plane: bound the work.
+  for (size_t budget = 20 * mesh.triangles.size() + 100; !work.empty() && budget > 0; --budget) {
+    const auto [a, b] = work.back();
+    work.pop_back();
+    const auto e1 = faceOf.find(directed(a, b)), e2 = faceOf.find(directed(b, a));
+    if (e1 == faceOf.end() || e2 == faceOf.end()) continue;  // a border edge, or gone
+    const int f1 = e1->second, f2 = e2->second;  // (a, b, c) and (b, a, d)
+    const int c = third(f1, a, b), d = third(f2, a, b);
+    if (c < 0 || d < 0 || c == d || faceOf.count(directed(c, d)) || faceOf.count(directed(d, c)))
+      continue;
+    const Vec3 &pa = mesh.points[a], &pb = mesh.points[b], &pc = mesh.points[c],
+               &pd = mesh.points[d];
+    if (angleAt(pc, pa, pb) + angleAt(pd, pb, pa) <= M_PI + 1e-9) continue;
+    const Triangle n1{c, a, d}, n2{d, b, c};  // keep both facing the same way
+    const Vec3 before = normal(mesh, mesh.triangles[f1]).normalized() +
+                        normal(mesh, mesh.triangles[f2]).normalized();
+    const Vec3 m1 = normal(mesh, n1), m2 = normal(mesh, n2);
+    if (m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() < 1e-14 || m2.norm() < 1e-14)
+      continue;
+    for (int f : {f1, f2})
+      for (int k = 0; k < 3; ++k)
+        faceOf.erase(directed(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]));
+    mesh.triangles[f1] = n1;
+    mesh.triangles[f2] = n2;
+    for (int f : {f1, f2})
+      for (int k = 0; k < 3; ++k)
+        faceOf[directed(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])] = f;
+    for (auto [u, v] : {std::pair{a, c}, std::pair{a, d}, std::pair{b, c}, std::pair{b, d}})
+      work.emplace_back(std::min(u, v), std::max(u, v));
+    ++flips;
   }
   return flips;
 }
