@@ -6,6 +6,7 @@
 #include "report.h"
 #include "simplify.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -167,6 +168,37 @@ void runBench(const BenchOptions& options) {
     throw Error(options.csv + ": cannot write the CSV");
   }
   std::cout << "\nCSV: " << options.csv << "\n";
+}
+
+void runStepBench(const BenchOptions& options) {
+  const std::string path = options.models.empty()
+                               ? std::string(LLOYDSCOPE_SOURCE_DIR) + "/assets/bumpy_disk.off"
+                               : options.models.front();
+  const Mesh input = readMesh(path).mesh;
+  std::cout << "| sites | density | threads | median ms per iteration | µs per site |\n"
+               "|---|---|---|---|---|\n";
+  for (DensityKind density : {DensityKind::Uniform, DensityKind::Area})
+    for (int threads : {1, 0}) {
+      RemeshOptions o;
+      o.sites.count = options.stepSites;
+      o.density.kind = density;
+      o.lloyd.solver = CvtSolver::Lloyd;
+      o.lloyd.threads = threads;
+      o.lloyd.maxIterations = 6;
+      o.polish = -1;
+      RemeshSession session(input, o, path);
+      std::vector<double> ms;
+      for (int k = 0; k < 6; ++k) {
+        const double t = session.step().milliseconds;
+        if (k > 0) ms.push_back(t);
+      }
+      std::sort(ms.begin(), ms.end());
+      const double median = ms[ms.size() / 2];
+      std::cout << "| " << options.stepSites << " | " << toString(density) << " | "
+                << (threads == 0 ? std::string("all") : std::to_string(threads)) << " | "
+                << format("%.1f", median) << " | "
+                << format("%.2f", 1000.0 * median / options.stepSites) << " |\n";
+    }
 }
 
 }  // namespace lloydscope

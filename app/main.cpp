@@ -203,6 +203,8 @@ int main(int argc, char** argv) {
   peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)");
   peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)");
   peerBenchCmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
+  peerBenchCmd->add_option("--lloyd-step", benchOptions.stepSites,
+                           "Instead: time one Lloyd iteration at N sites (one core and all)");
 
   std::string simplifyIn, simplifyOut;
   SimplifyOptions simplifyTarget;
@@ -248,7 +250,8 @@ int main(int argc, char** argv) {
     if (remeshCmd->parsed()) return runRemesh(r, *remeshCmd);
     if (peerBenchCmd->parsed()) {
       benchOptions.reference = !noReference;
-      runBench(benchOptions);
+      if (benchOptions.stepSites > 0) runStepBench(benchOptions);
+      else runBench(benchOptions);
       return 0;
     }
     if (simplifyCmd->parsed()) {

@@ -29,7 +29,8 @@ LloydSolver::LloydSolver(const Domain& domain, std::vector<Vec2> fixedSites,
 
 LloydSolver::Evaluation LloydSolver::evaluate(const std::vector<Vec2>& movable) {
   const std::vector<BoundedCell> cells =
-      computeCells(domain_, allSites(fixed_, movable), /*keepGeometry=*/false, &hints_);
+      computeCells(domain_, allSites(fixed_, movable), /*keepGeometry=*/false, &hints_,
+                   options_.threads);
   Evaluation e;
   for (const BoundedCell& cell : cells) e.energy += cell.energy;
   for (size_t i = fixed_.size(); i < cells.size(); ++i) {

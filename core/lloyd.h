@@ -21,6 +21,7 @@ struct LloydOptions {
   double distanceThreshold = 1e-6;
   double percentThreshold = 5.0;
   int maxIterations = 1000;
+  int threads = 0;  // for the cells; 0: every core (results do not depend on it)
 };
 
 // One iteration as it happened: the sites it started from and the centroids of their cells.

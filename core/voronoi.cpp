@@ -277,7 +277,8 @@ PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
 }
 
 std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
-                                      bool keepGeometry, std::vector<int>* hints) {
+                                      bool keepGeometry, std::vector<int>* hints,
+                                      int threadCount) {
   std::vector<BoundedCell> cells(sites.size());
   for (size_t i = 0; i < sites.size(); ++i) cells[i].centroid = sites[i];
   if (sites.empty() || domain.triangles().empty()) return cells;
@@ -313,7 +314,9 @@ std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Ve
     }
   };
   const size_t threads =
-      vertices.size() < 500 ? 1 : std::max(1u, std::thread::hardware_concurrency());
+      threadCount > 0         ? static_cast<size_t>(threadCount)
+      : vertices.size() < 500 ? 1
+                              : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t)
     pool.emplace_back(work, vertices.size() * t / threads, vertices.size() * (t + 1) / threads);

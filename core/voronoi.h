@@ -48,7 +48,9 @@ std::vector<std::pair<Vec2, Vec2>> cellOutline(const Domain& domain, const Bound
 // Cells of all `sites`, in their order. Deterministic: the same sites give bit-identical cells,
 // whatever the hints. `hints`, if given, holds for each site a triangle near it (or -1) and
 // receives the triangle that holds it: pass it back next iteration to skip the spatial search.
+// `threads`: 0 for every core (from 500 sites up), or how many.
 std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
-                                      bool keepGeometry, std::vector<int>* hints = nullptr);
+                                      bool keepGeometry, std::vector<int>* hints = nullptr,
+                                      int threads = 0);
 
 }  // namespace lloydscope

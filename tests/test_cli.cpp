@@ -153,6 +153,15 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
   EXPECT_EQ(rows.rfind("model,size,method,vertices", 0), 0u);
 }
 
+TEST(Cli, BenchTimesLloydIterations) {
+  const std::string out = test::tempPath("step.md");
+  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench --lloyd-step 1500 > " + out).c_str()), 0);
+  const std::string table = test::readText(out);
+  for (const char* row : {"| 1500 | uniform | 1 |", "| 1500 | uniform | all |", "| 1500 | area | 1 |",
+                          "| 1500 | area | all |"})
+    EXPECT_NE(table.find(row), std::string::npos) << table;
+}
+
 TEST(Cli, BenchNamesAMissingModel) {
   const std::string err = test::tempPath("bench.err");
   EXPECT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench /nonexistent/model.off --csv " +

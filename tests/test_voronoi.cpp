@@ -110,11 +110,15 @@ TEST(BoundedCells, HintsDoNotChangeABit) {
   std::vector<int> hints(sites.size(), 1);
   const auto a = computeCells(domain, sites, false);
   const auto b = computeCells(domain, sites, false, &hints);
-  for (size_t i = 0; i < sites.size(); ++i) {
-    EXPECT_EQ(a[i].mass, b[i].mass);
-    EXPECT_EQ(a[i].energy, b[i].energy);
-    EXPECT_EQ(a[i].centroid, b[i].centroid);
-  }
+  // Nor does the number of threads the cells are split over.
+  const auto c = computeCells(domain, sites, false, nullptr, 1);
+  const auto d = computeCells(domain, sites, false, nullptr, 3);
+  for (size_t i = 0; i < sites.size(); ++i)
+    for (const auto* other : {&b, &c, &d}) {
+      EXPECT_EQ(a[i].mass, (*other)[i].mass);
+      EXPECT_EQ(a[i].energy, (*other)[i].energy);
+      EXPECT_EQ(a[i].centroid, (*other)[i].centroid);
+    }
 }
 
 TEST(BoundedCells, CellsTileAFineDomainExactly) {
