@@ -7,6 +7,8 @@
 #include "simplify.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -73,6 +75,10 @@ std::string csvField(const std::string& text) {
 std::string name(const std::string& path) {
   std::string n = path.substr(path.find_last_of('/') + 1);
   return n.substr(0, n.find_last_of('.'));
+}
+
+double milliseconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
 
 // Issue 5's bar for a Lloydscope row, next to CGAL's row on the same input.
@@ -175,6 +181,7 @@ void runStepBench(const BenchOptions& options) {
                                ? std::string(LLOYDSCOPE_SOURCE_DIR) + "/assets/bumpy_disk.off"
                                : options.models.front();
   const Mesh input = readMesh(path).mesh;
+  Recording recording;
   std::cout << "| sites | density | threads | median ms per iteration | µs per site |\n"
                "|---|---|---|---|---|\n";
   for (DensityKind density : {DensityKind::Uniform, DensityKind::Area})
@@ -186,6 +193,7 @@ void runStepBench(const BenchOptions& options) {
       o.lloyd.threads = threads;
       o.lloyd.maxIterations = 6;
       o.polish = -1;
+      o.measureFidelity = false;
       RemeshSession session(input, o, path);
       std::vector<double> ms;
       for (int k = 0; k < 6; ++k) {
@@ -198,7 +206,32 @@ void runStepBench(const BenchOptions& options) {
                 << (threads == 0 ? std::string("all") : std::to_string(threads)) << " | "
                 << format("%.1f", median) << " | "
                 << format("%.2f", 1000.0 * median / options.stepSites) << " |\n";
+      if (density == DensityKind::Area && threads == 0) recording = session.finish().recording;
     }
+  // What recording every iteration costs, in memory and in a file, and reading it back.
+  const std::string file = options.csv + ".lsrec";
+  saveRecording(recording, file);
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  const double fileBytes = static_cast<double>(in.tellg());
+  const auto start = std::chrono::steady_clock::now();
+  const Recording loaded = loadRecording(file);
+  const double loadMs = milliseconds(start);
+  std::remove(file.c_str());
+  double memoryBytes = 0, readMs = 0;
+  for (const IterationRecord& it : loaded.iterations) {
+    memoryBytes += sizeof(std::uint32_t) * it.sites.raw().size() + sizeof(IterationRecord);
+    const auto t = std::chrono::steady_clock::now();
+    const std::vector<Vec2> sites = allSites(loaded.fixedSites, it.sites);
+    readMs = std::max(readMs, milliseconds(t));
+  }
+  const double perSiteIteration =
+      double(recording.iterations.size()) * (recording.fixedSites.size() + recording.iterations[0].sites.size());
+  std::cout << "\n| recording | bytes per site per iteration, memory | file (with the mesh) | "
+               "ms to read an iteration, worst | ms to load the file |\n|---|---|---|---|---|\n"
+            << "| " << recording.iterations.size() << " iterations of " << options.stepSites
+            << " sites | " << format("%.2f", memoryBytes / perSiteIteration) << " | "
+            << format("%.2f", fileBytes / perSiteIteration) << " | " << format("%.2f", readMs)
+            << " | " << format("%.0f", loadMs) << " |\n";
 }
 
 }  // namespace lloydscope

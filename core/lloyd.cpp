@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <numeric>
 
 namespace lloydscope {
@@ -16,16 +18,60 @@ double dot(const std::vector<double>& a, const std::vector<double>& b) {
 }
 }  // namespace
 
+namespace {
+constexpr double kGrid = 4294967295.0;  // 2^32 - 1 steps over [0, 1]
+std::uint32_t gridIndex(double x) {
+  return static_cast<std::uint32_t>(std::llround(std::clamp(x, 0.0, 1.0) * kGrid));
+}
+}  // namespace
+
+Vec2 snapToGrid(const Vec2& p) {
+  return Vec2(gridIndex(p.x()) / kGrid, gridIndex(p.y()) / kGrid);
+}
+
+PackedSites::PackedSites(const std::vector<Vec2>& sites) {
+  coords_.reserve(2 * sites.size());
+  for (const Vec2& s : sites) {
+    coords_.push_back(gridIndex(s.x()));
+    coords_.push_back(gridIndex(s.y()));
+  }
+}
+
+Vec2 PackedSites::operator[](size_t i) const {
+  return Vec2(coords_[2 * i] / kGrid, coords_[2 * i + 1] / kGrid);
+}
+
+std::vector<Vec2> PackedSites::unpack() const {
+  std::vector<Vec2> sites(size());
+  for (size_t i = 0; i < sites.size(); ++i) sites[i] = (*this)[i];
+  return sites;
+}
+
+PackedSites PackedSites::fromRaw(std::vector<std::uint32_t> coords) {
+  PackedSites p;
+  p.coords_ = std::move(coords);
+  return p;
+}
+
 std::vector<Vec2> allSites(const std::vector<Vec2>& fixed, const std::vector<Vec2>& movable) {
   std::vector<Vec2> sites = fixed;
   sites.insert(sites.end(), movable.begin(), movable.end());
   return sites;
 }
 
+std::vector<Vec2> allSites(const std::vector<Vec2>& fixed, const PackedSites& movable) {
+  std::vector<Vec2> sites = fixed;
+  sites.reserve(fixed.size() + movable.size());
+  for (size_t i = 0; i < movable.size(); ++i) sites.push_back(movable[i]);
+  return sites;
+}
+
 LloydSolver::LloydSolver(const Domain& domain, std::vector<Vec2> fixedSites,
                          std::vector<Vec2> movableSites, const LloydOptions& options)
     : domain_(domain), fixed_(std::move(fixedSites)), movable_(std::move(movableSites)),
-      options_(options) {}
+      options_(options) {
+  for (Vec2& s : movable_) s = snapToGrid(s);
+}
 
 LloydSolver::Evaluation LloydSolver::evaluate(const std::vector<Vec2>& movable) {
   const std::vector<BoundedCell> cells =
@@ -82,7 +128,8 @@ std::vector<Vec2> LloydSolver::lbfgsStep(const Evaluation& current, Evaluation& 
   bool accepted = false;
   if (slope < 0) {
     for (int tries = 0; tries < kMaxHalvings && !accepted; ++tries, step *= 0.5) {
-      for (size_t i = 0; i < x.size(); ++i) trial[i] = x[i] - step * Vec2(q[2 * i], q[2 * i + 1]);
+      for (size_t i = 0; i < x.size(); ++i)
+        trial[i] = snapToGrid(x[i] - step * Vec2(q[2 * i], q[2 * i + 1]));
       next = evaluate(trial);
       accepted = next.energy <= current.energy + kArmijo * step * slope;
     }
@@ -91,6 +138,7 @@ std::vector<Vec2> LloydSolver::lbfgsStep(const Evaluation& current, Evaluation& 
     historyS_.clear();
     historyY_.clear();
     trial = current.centroids;
+    for (Vec2& s : trial) s = snapToGrid(s);
     next = evaluate(trial);
   }
   const std::vector<double> gNext = gradient(trial, next);
@@ -118,8 +166,7 @@ const IterationRecord& LloydSolver::step() {
 
   IterationRecord record;
   record.index = static_cast<int>(iterations_.size());
-  record.sites = movable_;
-  record.centroids = e.centroids;
+  record.sites = PackedSites(movable_);
   record.energy = e.energy;
   int moving = 0;
   for (size_t i = 0; i < movable_.size(); ++i) {
@@ -135,6 +182,7 @@ const IterationRecord& LloydSolver::step() {
 
   if (options_.solver == CvtSolver::Lloyd) {
     movable_ = e.centroids;
+    for (Vec2& s : movable_) s = snapToGrid(s);
     current_.clear();
   } else {
     Evaluation next;

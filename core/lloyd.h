@@ -5,6 +5,7 @@
 #include "voronoi.h"
 
 #include <string>
+#include <cstdint>
 #include <vector>
 
 namespace lloydscope {
@@ -28,10 +29,34 @@ struct LloydOptions {
 // Displacements are site-to-centroid distances: the move Lloyd makes (the L-BFGS step differs,
 // and the next iteration's sites show where it went). Fixed sites are the same in every
 // iteration and are kept once, in the Recording.
+// The movable sites live on a grid of step 1/(2^32 - 1) over the unit domain: the solver
+// snaps every position it tries, so a recording keeps each site exactly in two 32-bit
+// integers (8 bytes, where two doubles took 16). The grid is 1e4 times finer than the
+// default distance threshold.
+Vec2 snapToGrid(const Vec2& p);
+
+// Sites on that grid, packed.
+class PackedSites {
+ public:
+  PackedSites() = default;
+  explicit PackedSites(const std::vector<Vec2>& sites);  // each already snapToGrid()ed
+  size_t size() const { return coords_.size() / 2; }
+  bool empty() const { return coords_.empty(); }
+  Vec2 operator[](size_t i) const;
+  std::vector<Vec2> unpack() const;
+  bool operator==(const PackedSites& o) const { return coords_ == o.coords_; }
+  // u0 v0 u1 v1 ... as grid indices, for files.
+  const std::vector<std::uint32_t>& raw() const { return coords_; }
+  static PackedSites fromRaw(std::vector<std::uint32_t> coords);
+
+ private:
+  std::vector<std::uint32_t> coords_;
+};
+
 struct IterationRecord {
   int index = 0;
-  std::vector<Vec2> sites;      // movable sites at the start of the iteration
-  std::vector<Vec2> centroids;  // of their cells
+  PackedSites sites;  // movable sites at the start of the iteration (their cells, hence their
+                      // centroids, are recomputed exactly from them: Recording::cells)
   double energy = 0;            // CVT energy Σ ∫ rho |x - site|^2 of all cells, fixed ones too
   double maxDisplacement = 0, meanDisplacement = 0;
   double fractionMoving = 0;    // of movable sites farther than the distance threshold
@@ -40,6 +65,7 @@ struct IterationRecord {
 
 // Fixed sites (the border samples) first, then movable ones: the order of every site list.
 std::vector<Vec2> allSites(const std::vector<Vec2>& fixed, const std::vector<Vec2>& movable);
+std::vector<Vec2> allSites(const std::vector<Vec2>& fixed, const PackedSites& movable);
 
 class LloydSolver {
  public:

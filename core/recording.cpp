@@ -110,8 +110,8 @@ std::string encodePayload(const Recording& r) {
     w.put(it.meanDisplacement);
     w.put(it.fractionMoving);
     w.put(it.milliseconds);
-    w.putPoints(it.sites);
-    w.putPoints(it.centroids);
+    w.put<std::uint32_t>(static_cast<std::uint32_t>(it.sites.size()));
+    for (std::uint32_t q : it.sites.raw()) w.put(q);
   }
   return std::move(w.bytes());
 }
@@ -150,10 +150,11 @@ Recording decodePayload(Reader& in, const std::string& path) {
     it.meanDisplacement = in.get<double>();
     it.fractionMoving = in.get<double>();
     it.milliseconds = in.get<double>();
-    it.sites = in.getPoints();
-    it.centroids = in.getPoints();
-    if (it.centroids.size() != it.sites.size())
-      throw Error(path + ": damaged recording (sites and centroids differ in number)");
+    std::vector<std::uint32_t> coords(2 * size_t(in.getCount(8)));
+    for (std::uint32_t& q : coords) q = in.get<std::uint32_t>();
+    it.sites = PackedSites::fromRaw(std::move(coords));
+    if (it.sites.size() != r.iterations.front().sites.size())
+      throw Error(path + ": damaged recording (iterations differ in their number of sites)");
   }
   if (!in.done()) throw Error(path + ": damaged recording (unexpected data after the end)");
   return r;

@@ -11,7 +11,8 @@
 namespace lloydscope {
 
 struct Recording {
-  static constexpr std::uint32_t kVersion = 1;
+  // 2: sites as grid indices (8 bytes a site), centroids recomputed rather than stored.
+  static constexpr std::uint32_t kVersion = 2;
 
   std::string settings;  // the settings that produced it, one line ("param=conformal ...")
   RemeshMethod method = RemeshMethod::Retriangulate;

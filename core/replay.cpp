@@ -35,7 +35,7 @@ const IterationView& Replay::view(int k) {
   view_.outputUV.clear();
   view_.outputSite.clear();
   if (method_ == RemeshMethod::Retriangulate) {
-    view_.output = assemble(triangulateSites(recording_.fixedSites, it.sites), view_.liftedSites,
+    view_.output = assemble(triangulateSites(recording_.fixedSites, it.sites.unpack()), view_.liftedSites,
                             &view_.outputSite);
     for (int s : view_.outputSite) view_.outputUV.push_back(view_.sites[s]);
   } else {

@@ -155,11 +155,13 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
 
 TEST(Cli, BenchTimesLloydIterations) {
   const std::string out = test::tempPath("step.md");
-  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench --lloyd-step 1500 > " + out).c_str()), 0);
+  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench --lloyd-step 1500 --csv " +
+                         test::tempPath("step.csv") + " > " + out).c_str()),
+            0);
   const std::string table = test::readText(out);
   for (const char* row : {"| 1500 | uniform | 1 |", "| 1500 | uniform | all |", "| 1500 | area | 1 |",
-                          "| 1500 | area | all |"})
-    EXPECT_NE(table.find(row), std::string::npos) << table;
+                          "| 1500 | area | all |", "| 6 iterations of 1500 sites | 7."})
+    EXPECT_NE(table.find(row), std::string::npos) << table;  // under 8 bytes a site
 }
 
 TEST(Cli, BenchNamesAMissingModel) {

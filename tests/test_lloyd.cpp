@@ -43,10 +43,27 @@ TEST(Lloyd, EnergyNeverIncreasesAndSitesMoveToCentroids) {
   ASSERT_EQ(its.size(), 30u);
   for (size_t k = 1; k < its.size(); ++k) {
     EXPECT_LE(its[k].energy, its[k - 1].energy * (1 + 1e-12));
-    EXPECT_EQ(its[k].sites, its[k - 1].centroids);  // Lloyd: site <- centroid, exactly
+    // Lloyd: site <- centroid, exactly, on the grid the sites live on.
+    const auto before = computeCells(domain, allSites(solver.fixedSites(), its[k - 1].sites), false);
+    for (size_t i = 0; i < its[k].sites.size(); ++i)
+      EXPECT_EQ(its[k].sites[i], snapToGrid(before[solver.fixedSites().size() + i].centroid));
     EXPECT_EQ(its[k].index, static_cast<int>(k));
   }
   EXPECT_EQ(solver.fixedSites().size(), 4u);
+}
+
+TEST(Lloyd, SitesLiveOnAGridThatPacksThemIntoEightBytes) {
+  const Vec2 p(0.123456789012345, 0.987654321098765);
+  const Vec2 q = snapToGrid(p);
+  EXPECT_LE((q - p).cwiseAbs().maxCoeff(), 0.5 / 4294967295.0 + 1e-17);
+  EXPECT_EQ(snapToGrid(q), q);  // on the grid already
+  EXPECT_EQ(snapToGrid(Vec2(-0.5, 1.5)), Vec2(0, 1));
+  const PackedSites packed({q, snapToGrid(Vec2(1, 0)), Vec2(0, 0)});
+  ASSERT_EQ(packed.size(), 3u);
+  EXPECT_EQ(packed[0], q);  // exactly
+  EXPECT_EQ(packed.raw().size() * sizeof(std::uint32_t), 3u * 8);
+  EXPECT_EQ(PackedSites::fromRaw(packed.raw()), packed);
+  EXPECT_EQ(packed.unpack()[1], Vec2(1, 0));
 }
 
 TEST(Lloyd, LbfgsReachesALowerEnergyInFewerIterations) {

@@ -47,7 +47,7 @@ TEST(Recording, RoundTripIsExact) {
   ASSERT_EQ(back.iterations.size(), r.iterations.size());
   for (size_t k = 0; k < r.iterations.size(); ++k) {
     EXPECT_EQ(back.iterations[k].sites, r.iterations[k].sites);
-    EXPECT_EQ(back.iterations[k].centroids, r.iterations[k].centroids);
+    EXPECT_EQ(back.iterations[k].maxDisplacement, r.iterations[k].maxDisplacement);
     EXPECT_EQ(back.iterations[k].energy, r.iterations[k].energy);
   }
 }
@@ -60,8 +60,11 @@ TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {
     double energy = 0;
     for (const BoundedCell& c : cells) energy += c.energy;
     EXPECT_EQ(energy, r.iterations[k].energy) << "iteration " << k;
-    for (size_t i = 0; i < r.iterations[k].centroids.size(); ++i)
-      ASSERT_EQ(cells[r.fixedSites.size() + i].centroid, r.iterations[k].centroids[i]);
+    // The solver's own site-to-centroid distances, bit for bit.
+    double largest = 0;
+    for (size_t i = 0; i < r.iterations[k].sites.size(); ++i)
+      largest = std::max(largest, (cells[r.fixedSites.size() + i].centroid - r.iterations[k].sites[i]).norm());
+    EXPECT_EQ(largest, r.iterations[k].maxDisplacement) << "iteration " << k;
   }
 }
 

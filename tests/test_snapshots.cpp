@@ -29,9 +29,11 @@ std::string snapshotText(const RemeshResult& run, const std::string& mesh) {
     const IterationRecord& it = r.iterations[k];
     out << "iteration " << k << " energy " << it.energy << " max " << it.maxDisplacement
         << " moving " << it.fractionMoving << " sites " << it.sites.size() << "\n";
-    for (size_t i = 0; i < it.sites.size(); ++i)
-      out << it.sites[i].x() << " " << it.sites[i].y() << " " << it.centroids[i].x() << " "
-          << it.centroids[i].y() << "\n";
+    const auto cells = r.cells(r.domain(), k, /*keepGeometry=*/false);
+    for (size_t i = 0; i < it.sites.size(); ++i) {
+      const Vec2& c = cells[r.fixedSites.size() + i].centroid;
+      out << it.sites[i].x() << " " << it.sites[i].y() << " " << c.x() << " " << c.y() << "\n";
+    }
   }
   return out.str();
 }
