@@ -662,6 +662,9 @@ void Inspector::settingsControls() {
     ImGui::SetNextItemWidth(130);
     return ImGui::Combo(label, &value, items);
   };
+  ImGui::SetNextItemWidth(130);
+  ImGui::InputInt("simplify to (0: no)", &options_.simplifyTo, 100, 1000);
+  options_.simplifyTo = std::max(0, options_.simplifyTo);
   int param = static_cast<int>(options_.param.method);
   if (combo("parameterization", param, "auto\0authalic\0conformal\0mean-value\0tutte\0lscm\0"))
     options_.param.method = static_cast<ParamMethod>(param);

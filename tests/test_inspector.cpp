@@ -167,3 +167,11 @@ TEST(Inspector, PresentationModeShowsTheLessonStage) {
   checkScene("inspector_presentation.png",
              "--iteration 1 --presentation --stage centroids --select-cell 100");
 }
+
+TEST(Inspector, OpensASimplifiedMesh) {
+  const std::string out = test::tempPath("simplified.png");
+  ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + " --simplify 400 --sites 400 " +
+                "--max-iterations 5 --size 640x400 --screenshot " + out),
+            0);
+  EXPECT_EQ(readPng(out).width, 640);
+}
