@@ -163,11 +163,8 @@ class Inspector {
     bool presentation = false;
     float scale = 0;
     bool operator==(const CanvasKey& o) const {
-      const Layers &a = layers, &b = o.layers;
       return iteration == o.iteration && fill == o.fill && scale == o.scale &&
-             presentation == o.presentation && a.triangles2D == b.triangles2D &&
-             a.cells2D == b.cells2D && a.sites2D == b.sites2D &&
-             a.centroids2D == b.centroids2D && a.arrows2D == b.arrows2D;
+             presentation == o.presentation && layers == o.layers;
     }
   };
   CanvasKey canvasKey_;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 namespace lloydscope {
 
@@ -16,17 +15,6 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 std::array<double, 3> cornerAnglesDeg(const Vec2& a, const Vec2& b, const Vec2& c) {
   auto flat = [](const Vec2& p) { return Vec3(p.x(), p.y(), 0.0); };
   return lloydscope::cornerAnglesDeg(flat(a), flat(b), flat(c));
-}
-
-int valence(const Mesh& mesh, int vertex) {
-  std::set<int> around;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      if (t[k] == vertex) {
-        around.insert(t[(k + 1) % 3]);
-        around.insert(t[(k + 2) % 3]);
-      }
-  return static_cast<int>(around.size());
 }
 
 }  // namespace
@@ -72,7 +60,7 @@ CellDetails describeCell(const Recording& recording, const Domain& domain,
   }
   const auto vertex = std::find(view.outputSite.begin(), view.outputSite.end(), cell);
   if (vertex != view.outputSite.end())
-    d.valence = valence(view.output, static_cast<int>(vertex - view.outputSite.begin()));
+    d.valence = vertexEdges(view.output).valence[vertex - view.outputSite.begin()];
   return d;
 }
 
@@ -106,11 +94,10 @@ TriangleDetails describeTriangle(const IterationView& view, int triangle) {
   d.anglesUV = cornerAnglesDeg(view.outputUV[t[0]], view.outputUV[t[1]], view.outputUV[t[2]]);
   d.area3D = triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
   d.areaUV = std::abs(triangleArea(view.outputUV[t[0]], view.outputUV[t[1]], view.outputUV[t[2]]));
-  double total3D = 0, totalUV = 0;
-  for (const Triangle& u : mesh.triangles) {
-    total3D += triangleArea(mesh.points[u[0]], mesh.points[u[1]], mesh.points[u[2]]);
+  const double total3D = surfaceArea(mesh);
+  double totalUV = 0;
+  for (const Triangle& u : mesh.triangles)
     totalUV += std::abs(triangleArea(view.outputUV[u[0]], view.outputUV[u[1]], view.outputUV[u[2]]));
-  }
   d.areaDistortion = d.areaUV > 0 ? (d.area3D / total3D) / (d.areaUV / totalUV) : INFINITY;
   d.minAngle = *std::min_element(d.angles3D.begin(), d.angles3D.end());
   for (int k = 0; k < 3; ++k) d.sites[k] = view.outputSite[t[k]];

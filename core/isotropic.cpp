@@ -11,13 +11,6 @@ namespace lloydscope {
 
 namespace {
 
-double surfaceArea(const Mesh& mesh) {
-  double area = 0;
-  for (const Triangle& t : mesh.triangles)
-    area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-  return area;
-}
-
 struct Run {
   Mesh mesh;
   double milliseconds;

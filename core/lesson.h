@@ -24,6 +24,11 @@ struct Layers {
   bool sites3D = false;      // the sites lifted to the surface
   bool triangles2D = false;  // the parameter triangles
   bool cells2D = false, sites2D = false, centroids2D = false, arrows2D = false;
+  bool operator==(const Layers& o) const {
+    return input3D == o.input3D && sites3D == o.sites3D && triangles2D == o.triangles2D &&
+           cells2D == o.cells2D && sites2D == o.sites2D && centroids2D == o.centroids2D &&
+           arrows2D == o.arrows2D;
+  }
 };
 Layers layersFor(Stage stage);
 

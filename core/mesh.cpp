@@ -41,6 +41,13 @@ double boundingBoxDiagonal(const Mesh& mesh) {
   return (hi - lo).norm();
 }
 
+double surfaceArea(const Mesh& mesh) {
+  double area = 0;
+  for (const Triangle& t : mesh.triangles)
+    area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  return area;
+}
+
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 0.5 * (b - a).cross(c - a).norm();
 }

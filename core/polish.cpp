@@ -1,6 +1,7 @@
 #include "polish.h"
 
 #include "cgal_types.h"
+#include "metrics.h"
 
 #include <CGAL/Polygon_mesh_processing/angle_and_area_smoothing.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -11,11 +12,6 @@
 namespace lloydscope {
 
 namespace {
-
-double angleAt(const Vec3& apex, const Vec3& p, const Vec3& q) {
-  const Vec3 u = p - apex, v = q - apex;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
 
 Vec3 normal(const Mesh& m, const Triangle& t) {
   return (m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]);
@@ -55,7 +51,8 @@ int flipToDelaunay(Mesh& mesh) {
       continue;
     const Vec3 &pa = mesh.points[a], &pb = mesh.points[b], &pc = mesh.points[c],
                &pd = mesh.points[d];
-    if (angleAt(pc, pa, pb) + angleAt(pd, pb, pa) <= M_PI + 1e-9) continue;
+    const double opposite = cornerAnglesDeg(pc, pa, pb)[0] + cornerAnglesDeg(pd, pb, pa)[0];
+    if (opposite <= 180.0 + 1e-9 * 180.0 / M_PI) continue;
     const Triangle n1{c, a, d}, n2{d, b, c};  // keep both facing the same way
     const Vec3 before = normal(mesh, mesh.triangles[f1]).normalized() +
                         normal(mesh, mesh.triangles[f2]).normalized();

@@ -11,13 +11,6 @@ namespace {
 
 double uniform01(std::mt19937_64& rng) { return (rng() >> 11) * 0x1.0p-53; }
 
-double surfaceArea(const Mesh& mesh) {
-  double area = 0;
-  for (const Triangle& t : mesh.triangles)
-    area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-  return area;
-}
-
 // A border vertex where the UV border turns by more than ~20 degrees (the corners of the
 // square) must stay a sample, or resampling would cut the corner off the domain.
 bool isCorner(const Vec2& prev, const Vec2& at, const Vec2& next) {

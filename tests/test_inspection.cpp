@@ -22,13 +22,6 @@ const RemeshResult& uniformRun(RemeshMethod method) {
   return runs[method] = remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, o, "cap");
 }
 
-double surfaceArea(const Mesh& mesh) {
-  double area = 0;
-  for (const Triangle& t : mesh.triangles)
-    area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-  return area;
-}
-
 }  // namespace
 
 TEST(Inspection, CellNumbersMatchTheShoelaceFormulas) {
