@@ -110,6 +110,8 @@ void runBench(const BenchOptions& options) {
     const Mesh model = readMesh(path).mesh;
     for (int size : options.sizes) {
       const Mesh input = prepare(model, size, path);
+      if (!options.saveInputs.empty())
+        writeMesh(input, options.saveInputs + "/" + name(path) + "_" + std::to_string(size) + ".off");
       const Row peer = isotropicRow(name(path), size, input);
       const Row best = lloydscopeRow(name(path), size, "lloydscope", input, RemeshOptions{});
       rows.push_back(best);
@@ -155,7 +157,7 @@ void runBench(const BenchOptions& options) {
   std::ostringstream csv;
   csv << "model,size,method,vertices,faces,iterations,ms,irregular_before,irregular_after,"
          "irregular_all_after,min_angle_before,min_angle_after,avg_min_angle_before,"
-         "avg_min_angle_after,under30_percent,hausdorff_percent,rms_percent,ms_simplify,"
+         "avg_min_angle_after,under30_percent,hausdorff_percent,rms_percent,ms_simplify,ms_resample,"
          "ms_parameterize,ms_density,ms_sites,ms_lloyd,ms_remesh,failed\n";
   for (const Row& r : rows)
     csv << r.model << "," << r.size << "," << r.method << "," << r.after.vertices << ","
@@ -164,7 +166,7 @@ void runBench(const BenchOptions& options) {
         << r.after.irregularPercent << "," << r.before.minAngle << "," << r.after.minAngle << ","
         << r.before.avgMinAngle << "," << r.after.avgMinAngle << "," << r.after.percentUnder30
         << "," << r.fidelity.hausdorffPercent << "," << r.fidelity.rmsPercent << ","
-        << r.stages.simplify << "," << r.stages.parameterize << "," << r.stages.density << ","
+        << r.stages.simplify << "," << r.stages.resample << "," << r.stages.parameterize << "," << r.stages.density << ","
         << r.stages.sites << "," << r.stages.lloyd << "," << r.stages.remesh << ","
         << csvField(r.failed) << "\n";
   const std::string temporary = options.csv + ".tmp";

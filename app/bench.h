@@ -11,6 +11,7 @@ struct BenchOptions {
   std::vector<std::string> models;  // mesh files; empty: CGAL's disk samples in data/cgal
   std::vector<int> sizes = {500, 1000, 2000};
   std::string csv = "bench.csv";
+  std::string saveInputs;  // a folder: write the prepared inputs there, to try other settings on
   bool reference = true;  // also the report's preset (plain Lloyd: slow)
   int stepSites = 0;      // > 0: time Lloyd iterations at this many sites instead
 };

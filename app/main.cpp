@@ -20,11 +20,11 @@ namespace {
 
 struct RemeshArgs {
   std::string input, output, record, preset, method = "retriangulate", param, border, density,
-      solver;
+      solver, polishTarget;
   int sites = 0, simplify = 0, polish = 3;
   int maxIterations = 0;
   double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1;
-  bool json = false, noFidelity = false;
+  bool json = false, noFidelity = false, noResample = false;
 };
 
 // The preset first, then whatever the user named explicitly on top of it.
@@ -55,6 +55,8 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   if (a.simplify < 0) throw Error("--simplify " + std::to_string(a.simplify) + ": expected a positive number of vertices");
   o.simplifyTo = a.simplify;
   if (cmd.count("--polish")) o.polish = a.polish;
+  if (a.noResample) o.resample = false;
+  if (cmd.count("--polish-target")) o.polishTarget = parsePolishTarget(a.polishTarget);
   return o;
 }
 
@@ -82,7 +84,10 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--polish", r.polish,
                  "retriangulate's clean-up in 3D: -1 none, 0 Delaunay flips, K flips and K "
-                 "smoothing passes (default 3)");
+                 "relaxation passes on the surface (default 3)");
+  cmd.add_option("--polish-target", r.polishTarget,
+                 "where the polish moves each vertex: centroid (default, of its ring) or "
+                 "circumcenter (optimal Delaunay)");
   cmd.add_option("--simplify", r.simplify,
                  "Quadric edge collapse to N vertices first (the boundary stays in place)");
   cmd.add_option("--preset", r.preset,
@@ -108,6 +113,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--percent-threshold", r.percentThreshold,
                  "converged when fewer than this % of the sites are not still")
       ->check(CLI::Range(0.0, 100.0));
+  cmd.add_flag("--no-resample", r.noResample,
+               "Parameterize the input itself, not a rough first remeshing of it");
   cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
 }
 
@@ -202,6 +209,8 @@ int main(int argc, char** argv) {
                            "Meshes (default: CGAL's disk samples in data/cgal)");
   peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)");
   peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)");
+  peerBenchCmd->add_option("--save-inputs", benchOptions.saveInputs,
+                           "Also write each prepared input to DIR/<model>_<size>.off");
   peerBenchCmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
   peerBenchCmd->add_option("--lloyd-step", benchOptions.stepSites,
                            "Instead: time one Lloyd iteration at N sites (one core and all)");

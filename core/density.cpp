@@ -8,9 +8,18 @@ namespace lloydscope {
 
 namespace {
 
-void scaleToMeanOne(std::vector<double>& values) {
-  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / values.size();
-  for (double& v : values) v /= mean;
+// Divides by the mean over the parameter domain, each triangle weighted by its UV area.
+void scaleToMeanOne(const Mesh& mesh, const std::vector<Vec2>& uv, Density& density) {
+  double mass = 0, area = 0;
+  for (size_t t = 0; t < density.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    const double a = std::abs(triangleArea(uv[tri[0]], uv[tri[1]], uv[tri[2]]));
+    mass += a * (density[t][0] + density[t][1] + density[t][2]) / 3.0;
+    area += a;
+  }
+  const double mean = mass > 0 ? mass / area : 1.0;
+  for (auto& corners : density)
+    for (double& d : corners) d /= mean;
 }
 
 double cotangent(const Vec3& a, const Vec3& b, const Vec3& c) {  // of the angle at a
@@ -20,26 +29,52 @@ double cotangent(const Vec3& a, const Vec3& b, const Vec3& c) {  // of the angle
 
 }  // namespace
 
-std::vector<double> areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv) {
-  std::vector<double> area3(mesh.points.size(), 0.0), area2(mesh.points.size(), 0.0);
+Density areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv) {
   double total3 = 0, total2 = 0;
+  std::vector<double> area3, area2;
   for (const Triangle& t : mesh.triangles) {
-    const double a3 = triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-    const double a2 = std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]));
-    for (int i : t) {
-      area3[i] += a3;
-      area2[i] += a2;
+    area3.push_back(triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]));
+    area2.push_back(std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]])));
+    total3 += area3.back();
+    total2 += area2.back();
+  }
+  // Each vertex takes the mean of its triangles' ratios weighted by their 3D area. (Their
+  // ratio of sums, sum A3 / sum A2, would favour the triangles the map shrank least, and
+  // starve the shrunken parts of sites.)
+  std::vector<double> weighted(mesh.points.size(), 0.0), weight(mesh.points.size(), 0.0);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!(area2[t] > 0)) continue;  // a flat UV triangle (an ear of a square border)
+    const double ratio = (area3[t] / total3) / (area2[t] / total2);
+    for (int v : mesh.triangles[t]) {
+      weighted[v] += area3[t] * ratio;
+      weight[v] += area3[t];
     }
-    total3 += a3;
-    total2 += a2;
   }
-  std::vector<double> density(mesh.points.size());
-  for (size_t v = 0; v < density.size(); ++v) {
-    const double ratio = (area3[v] / total3) / std::max(area2[v] / total2, 1e-300);
-    density[v] = ratio * ratio;
-  }
-  scaleToMeanOne(density);
+  std::vector<double> squared(mesh.points.size(), 1.0);
+  for (size_t v = 0; v < squared.size(); ++v)
+    if (weight[v] > 0) squared[v] = std::pow(weighted[v] / weight[v], 2);
+  Density density = vertexDensity(mesh.triangles, squared);
+  scaleToMeanOne(mesh, uv, density);
   return density;
+}
+
+Density surfaceDensity(const Mesh& mesh, const std::vector<Vec2>& uv, const Density& density) {
+  Density result = areaDensity(mesh, uv);
+  for (size_t t = 0; t < result.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      result[t][k] = result[t][k] > 0 ? density[t][k] / result[t][k] : 1.0;
+  return result;
+}
+
+Density vertexDensity(const std::vector<Triangle>& triangles, const std::vector<double>& values) {
+  Density density;
+  density.reserve(triangles.size());
+  for (const Triangle& t : triangles) density.push_back({values[t[0]], values[t[1]], values[t[2]]});
+  return density;
+}
+
+double densityAt(const Density& density, int t, const Eigen::Vector3d& weights) {
+  return weights[0] * density[t][0] + weights[1] * density[t][1] + weights[2] * density[t][2];
 }
 
 Curvature computeCurvature(const Mesh& mesh) {
@@ -95,26 +130,27 @@ Curvature computeCurvature(const Mesh& mesh) {
   return c;
 }
 
-std::vector<double> computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
-                                   const DensityOptions& options) {
+Density computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
+                       const DensityOptions& options) {
   switch (options.kind) {
     case DensityKind::Uniform:
-      return std::vector<double>(mesh.points.size(), 1.0);
+      return Density(mesh.triangles.size(), {1.0, 1.0, 1.0});
     case DensityKind::Area:
       return areaDensity(mesh, uv);
     case DensityKind::Curvature: {
       const Curvature c = computeCurvature(mesh);
-      std::vector<double> density(mesh.points.size());
-      for (size_t v = 0; v < density.size(); ++v)
-        density[v] = options.alpha * std::abs(c.gaussian[v]) +
-                     options.beta * c.mean[v] * c.mean[v];  // 1 / psi(v)
-      const double mean = std::accumulate(density.begin(), density.end(), 0.0) / density.size();
-      for (double& d : density) d += options.floor * mean + 1e-300;
-      if (options.curvatureTimesArea) {
-        const std::vector<double> area = areaDensity(mesh, uv);
-        for (size_t v = 0; v < density.size(); ++v) density[v] *= area[v];
-      }
-      scaleToMeanOne(density);
+      std::vector<double> inverseSize(mesh.points.size());  // 1 / psi(v)
+      for (size_t v = 0; v < inverseSize.size(); ++v)
+        inverseSize[v] = options.alpha * std::abs(c.gaussian[v]) +
+                         options.beta * c.mean[v] * c.mean[v];
+      const double mean =
+          std::accumulate(inverseSize.begin(), inverseSize.end(), 0.0) / inverseSize.size();
+      for (double& d : inverseSize) d += options.floor * mean + 1e-300;
+      Density density =
+          options.curvatureTimesArea ? areaDensity(mesh, uv) : Density(mesh.triangles.size(), {1.0, 1.0, 1.0});
+      for (size_t t = 0; t < density.size(); ++t)
+        for (int k = 0; k < 3; ++k) density[t][k] *= inverseSize[mesh.triangles[t][k]];
+      scaleToMeanOne(mesh, uv, density);
       return density;
     }
   }

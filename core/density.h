@@ -1,5 +1,7 @@
-// The density that weights Lloyd relaxation in the parameter domain: one value per vertex,
-// interpolated linearly inside each parameter triangle.
+// The density that weights Lloyd relaxation in the parameter domain: per triangle, a value at
+// each of its corners, interpolated linearly inside it. Corners of neighbouring triangles
+// need not agree: the area density is constant on each triangle (its own exact ratio), which
+// a per-vertex value cannot be where the map's scale changes fast.
 #pragma once
 
 #include "mesh.h"
@@ -23,14 +25,27 @@ struct DensityOptions {
   bool curvatureTimesArea = true;  // multiply the curvature density by the area term
 };
 
-// Per-vertex density, scaled to a mean of 1.
-std::vector<double> computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
-                                   const DensityOptions& options);
+// Per triangle, the density at corners 0, 1, 2.
+using Density = std::vector<std::array<double, 3>>;
 
-// The area term alone: (3D area / UV area)^2 around each vertex. Why squared: a 2D CVT with
-// density rho gives cells of area proportional to rho^(-1/2) (Gersho), so rho = ratio^2 makes
-// every cell cover the same area of the surface.
-std::vector<double> areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv);
+// A density that is continuous across triangles: `values` per vertex at every corner.
+Density vertexDensity(const std::vector<Triangle>& triangles, const std::vector<double>& values);
+
+// Scaled to an area-weighted mean of 1 over the parameter domain.
+Density computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
+                       const DensityOptions& options);
+
+// The area term alone: (3D area / UV area)^2 of each triangle, at its three corners. Why
+// squared: a 2D CVT with density rho gives cells of area proportional to rho^(-1/2) (Gersho),
+// so rho = ratio^2 makes every cell cover the same area of the surface.
+Density areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv);
+
+// What `density` asks of the surface itself: density / areaDensity (1 everywhere for the
+// area density). The 3D polish weights its centres with it.
+Density surfaceDensity(const Mesh& mesh, const std::vector<Vec2>& uv, const Density& density);
+
+// The density inside triangle t at barycentric `weights`.
+double densityAt(const Density& density, int t, const Eigen::Vector3d& weights);
 
 // Discrete curvatures per vertex: Gaussian K by the angle defect over a third of the incident
 // area, mean H from the cotangent Laplacian. Boundary vertices take the mean of their interior

@@ -26,10 +26,10 @@ struct Domain::Index {
   Tree tree;
 };
 
-Domain::Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, std::vector<double> density)
+Domain::Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, Density density)
     : uv_(std::move(uv)), triangles_(std::move(triangles)), density_(std::move(density)),
       index_(std::make_unique<Index>()) {
-  if (density_.empty()) density_.assign(uv_.size(), 1.0);
+  if (density_.empty()) density_.assign(triangles_.size(), {1.0, 1.0, 1.0});
   std::map<std::pair<int, int>, std::pair<int, int>> edgeOwner;  // (a,b) -> (triangle, corner)
   neighbours_.assign(triangles_.size(), {-1, -1, -1});
   // Flat triangles (ears of a square border) cover nothing: leave them out of the adjacency
@@ -63,7 +63,7 @@ Domain::Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, std::vecto
     for (int k = 0; k < 3; ++k) {
       const int v = triangles_[t][k];
       m.row(k) << 1.0, uv_[v].x(), uv_[v].y();
-      rho[k] = density_[v];
+      rho[k] = density_[t][k];
     }
     densityPlanes_.push_back(flat[t] ? Eigen::Vector3d(rho.mean(), 0, 0)
                                      : Eigen::Vector3d(m.fullPivLu().solve(rho)));

@@ -3,7 +3,7 @@
 // lifting back to 3D all work on it.
 #pragma once
 
-#include "mesh.h"
+#include "density.h"
 
 #include <memory>
 #include <vector>
@@ -18,14 +18,15 @@ struct Location {
 
 class Domain {
  public:
-  Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, std::vector<double> density);
+  // An empty density is uniform.
+  Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, Density density);
   ~Domain();
   Domain(Domain&&) noexcept;
   Domain& operator=(Domain&&) noexcept;
 
   const std::vector<Vec2>& uv() const { return uv_; }
   const std::vector<Triangle>& triangles() const { return triangles_; }
-  const std::vector<double>& density() const { return density_; }
+  const Density& density() const { return density_; }
   // neighbours()[t][k]: the triangle across the edge opposite corner k of t, or -1 on the border.
   const std::vector<std::array<int, 3>>& neighbours() const { return neighbours_; }
 
@@ -47,7 +48,7 @@ class Domain {
   struct Index;
   std::vector<Vec2> uv_;
   std::vector<Triangle> triangles_;
-  std::vector<double> density_;
+  Density density_;
   std::vector<std::array<int, 3>> neighbours_;
   std::vector<Eigen::Vector3d> densityPlanes_;  // rho = a + b u + c v, per triangle
   std::unique_ptr<Index> index_;

@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <Eigen/SparseLU>
@@ -134,8 +135,16 @@ void normalize(std::vector<Vec2>& uv) {
 // Mirrors the map if it came out clockwise, then refuses any triangle that is still flipped,
 // or collapsed unless it is an ear of the border (three border vertices on one straight side
 // of the square: flat, but harmless, as it covers no part of the domain).
+// A free border (LSCM) can overlap itself far from any folded triangle: every triangle faces
+// up, yet two parts of the surface land on the same place.
+bool borderIsSimple(const std::vector<Vec2>& uv, const std::vector<int>& boundaryLoop) {
+  CGAL::Polygon_2<Kernel> polygon;
+  for (int v : boundaryLoop) polygon.push_back(Point2(uv[v].x(), uv[v].y()));
+  return polygon.is_simple();
+}
+
 void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool>& onBoundary,
-                     const std::string& name) {
+                     const std::vector<int>& boundaryLoop, const std::string& name) {
   double total = 0;
   for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
   if (total < 0)
@@ -148,6 +157,10 @@ void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<
     if (a < -minArea) ++flipped;
     else if (a <= minArea && !ear) ++collapsed;
   }
+  if (!flipped && !collapsed && !borderIsSimple(uv, boundaryLoop))
+    throw FoldedMap(name + ": the parameterization is not one-to-one (its border crosses "
+                           "itself); try --param tutte or mean-value, whose maps are always "
+                           "one-to-one");
   if (flipped || collapsed)
     throw FoldedMap(name + ": the parameterization is not one-to-one (" + std::to_string(flipped) +
                 " flipped and " + std::to_string(collapsed) + " collapsed of " +
@@ -157,6 +170,75 @@ void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<
 
 double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a
   return std::atan2((b - a).cross(c - a).norm(), (b - a).dot(c - a));
+}
+
+// Triangles that are flipped or collapsed in uv (ears of the border aside).
+std::vector<int> foldedTriangles(const Mesh& mesh, const std::vector<Vec2>& uv,
+                                 const std::vector<bool>& onBoundary) {
+  double total = 0;
+  for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
+  const double minArea = 1e-14 * std::abs(total), sign = total < 0 ? -1.0 : 1.0;
+  std::vector<int> folded;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const bool ear = onBoundary[t[0]] && onBoundary[t[1]] && onBoundary[t[2]];
+    if (sign * triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]) <= minArea && !ear) folded.push_back(f);
+  }
+  return folded;
+}
+
+// LSCM folds where the input has slivers, which cost it almost nothing to flip. Unfolds them
+// locally: the vertices of folded triangles and a few rings around them are placed again by
+// Floater's mean-value coordinates (positive weights: a convex combination of their
+// neighbours), the rest of the map held fixed. Rings grow until nothing is folded or the
+// attempts run out; what stays folded is for requireOneToOne to report.
+void repairFolds(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool>& onBoundary) {
+  const int n = mesh.vertexCount();
+  std::vector<std::vector<int>> neighbours(n);
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) neighbours[t[k]].push_back(t[(k + 1) % 3]);
+  for (int rings = 2; rings <= 8; rings *= 2) {
+    const std::vector<int> folded = foldedTriangles(mesh, uv, onBoundary);
+    if (folded.empty()) return;
+    std::vector<int> freeIndex(n, -1), freeVertices;
+    auto makeFree = [&](int v) {
+      if (freeIndex[v] >= 0) return;
+      freeIndex[v] = static_cast<int>(freeVertices.size());
+      freeVertices.push_back(v);
+    };
+    for (int f : folded)
+      for (int v : mesh.triangles[f]) makeFree(v);
+    for (int r = 0; r < rings; ++r)
+      for (size_t i = 0, end = freeVertices.size(); i < end; ++i)
+        for (int w : neighbours[freeVertices[i]])
+          if (!onBoundary[w]) makeFree(w);
+    // Mean-value weights w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j|, summed corner by corner.
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd bu = Eigen::VectorXd::Zero(freeVertices.size()), bv = bu;
+    for (const Triangle& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int i = t[k];
+        if (freeIndex[i] < 0) continue;
+        const Vec3 &pi = mesh.points[i];
+        const double half = std::tan(0.5 * cornerAngle(pi, mesh.points[t[(k + 1) % 3]],
+                                                       mesh.points[t[(k + 2) % 3]]));
+        for (int j : {t[(k + 1) % 3], t[(k + 2) % 3]}) {
+          const double w = half / std::max((mesh.points[j] - pi).norm(), 1e-300);
+          entries.emplace_back(freeIndex[i], freeIndex[i], w);
+          if (freeIndex[j] >= 0) entries.emplace_back(freeIndex[i], freeIndex[j], -w);
+          else {
+            bu[freeIndex[i]] += w * uv[j].x();
+            bv[freeIndex[i]] += w * uv[j].y();
+          }
+        }
+      }
+    Eigen::SparseMatrix<double> a(freeVertices.size(), freeVertices.size());
+    a.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(a);
+    if (lu.info() != Eigen::Success) return;
+    const Eigen::VectorXd u = lu.solve(bu), v = lu.solve(bv);
+    for (size_t i = 0; i < freeVertices.size(); ++i) uv[freeVertices[i]] = Vec2(u[i], v[i]);
+  }
 }
 double cornerAngle(const Vec2& a, const Vec2& b, const Vec2& c) {
   const Vec2 u = b - a, v = c - a;
@@ -232,7 +314,8 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
     result.boundaryLoop.push_back(v);
     result.onBoundary[v] = true;
   }
-  requireOneToOne(mesh, result.uv, result.onBoundary, name);
+  if (options.method == ParamMethod::Lscm) repairFolds(mesh, result.uv, result.onBoundary);
+  requireOneToOne(mesh, result.uv, result.onBoundary, result.boundaryLoop, name);
   // The border cycle runs around the hole; make it counter-clockwise around the domain.
   double signedArea = 0;
   const auto& loop = result.boundaryLoop;

@@ -34,25 +34,20 @@ RemeshOptions referencePreset(RemeshMethod method) {
   o.lloyd = LloydOptions{};  // 1e-6 and 5%
   o.lloyd.solver = CvtSolver::Lloyd;
   o.polish = -1;  // the report had no clean-up
+  o.resample = false;
   return o;
-}
-
-Mesh buildOutput(const Mesh& input, const Domain& domain, RemeshMethod method,
-                 const std::vector<Vec2>& fixedSites, const std::vector<Vec2>& movableSites,
-                 const std::vector<int>& movableVertex) {
-  if (method == RemeshMethod::Relocate) {
-    std::vector<Vec3> lifted;
-    for (const Vec2& s : movableSites) lifted.push_back(lift(input, domain, s));
-    return relocate(input, movableVertex, lifted);
-  }
-  return retriangulate(input, domain, fixedSites, movableSites);
 }
 
 namespace {
 
-// Relocation moves the input's own vertices: it needs one site per inside vertex.
+// Relocation moves the input's own vertices: it needs one site per inside vertex, and the
+// input itself as the parameterized surface. A resampled surface's own vertices are the sites.
 RemeshOptions effective(RemeshOptions options) {
-  if (options.method == RemeshMethod::Relocate) options.sites.fromInputVertices = true;
+  if (options.method == RemeshMethod::Relocate) {
+    options.sites.fromInputVertices = true;
+    options.resample = false;
+  }
+  if (options.sites.fromInputVertices) options.resample = false;
   return options;
 }
 
@@ -69,26 +64,36 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         ms_.simplify = stage.lap();
         return simplified;
       }()),
+      resampled_([&]() -> std::optional<Resampling> {
+        if (!options_.resample) return std::nullopt;
+        Stopwatch stage;
+        Resampling r = resample(input_, options_.sites.count, options_.density, {}, name);
+        ms_.resample = stage.lap();
+        return r;
+      }()),
       param_([&] {
         Stopwatch stage;
-        Parameterization p = parameterize(input_, options_.param, name);
+        Parameterization p = parameterize(surface(), options_.param, name);
         ms_.parameterize = stage.lap();
         return p;
       }()),
       density_([&] {
         Stopwatch stage;
-        std::vector<double> d = computeDensity(input_, param_.uv, options_.density);
+        Density d = computeDensity(surface(), param_.uv, options_.density);
         ms_.density = stage.lap();
         return d;
       }()),
       domain_([&] {
         Stopwatch stage;  // the domain's adjacency and spatial index count with the density
-        Domain d(param_.uv, input_.triangles, density_);
+        Domain d(param_.uv, surface().triangles, density_);
         ms_.density += stage.lap();
         return d;
       }()) {
   Stopwatch stage;
-  sites_ = initialSites(input_, param_, domain_, options_.sites);
+  SiteOptions siteOptions = options_.sites;
+  // The resampled surface's vertices are already well spread: they are where Lloyd starts.
+  if (resampled_) siteOptions.fromInputVertices = true;
+  sites_ = initialSites(surface(), param_, domain_, siteOptions);
   ms_.sites = stage.lap();
   solver_ = std::make_unique<LloydSolver>(domain_, sites_.fixed, sites_.movable, options_.lloyd);
 }
@@ -109,12 +114,37 @@ Recording RemeshSession::header() const {
   r.method = options_.method;
   r.distanceThreshold = options_.lloyd.distanceThreshold;
   r.percentThreshold = options_.lloyd.percentThreshold;
-  r.input = input_;
+  r.input = surface();
   r.uv = param_.uv;
   r.density = density_;
   r.fixedSites = solver_->fixedSites();
   r.movableVertex = sites_.movableVertex;
   return r;
+}
+
+Mesh RemeshSession::buildOutput() const {
+  const std::vector<Vec2>& movable = solver_->movableSites();
+  if (options_.method == RemeshMethod::Relocate) {
+    std::vector<Vec3> lifted;
+    for (const Vec2& s : movable) lifted.push_back(lift(input_, domain_, s));
+    return relocate(input_, sites_.movableVertex, lifted);
+  }
+  LiftedMesh output = retriangulate(surface(), domain_, solver_->fixedSites(), movable);
+  SurfaceMap map{surface(), domain_};
+  if (resampled_) {  // from the resampled surface's chords onto the input surface itself
+    map.lift = [this](const Location& l) {
+      return resampled_->toInput(input_, l.triangle, l.weights);
+    };
+    for (int v = 0; v < output.mesh.vertexCount(); ++v)
+      output.mesh.points[v] = map.at(domain_.locate(output.uv[v]));
+  }
+  if (options_.polish >= 0) {
+    PolishOptions o;
+    o.iterations = options_.polish;
+    o.target = options_.polishTarget;
+    polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
+  }
+  return std::move(output.mesh);
 }
 
 RemeshResult RemeshSession::finish() {
@@ -125,10 +155,7 @@ RemeshResult RemeshSession::finish() {
   result.iterations = iterationCount();
   result.converged = converged();
   Stopwatch stage;
-  result.output = buildOutput(input_, domain_, options_.method, solver_->fixedSites(),
-                              solver_->movableSites(), sites_.movableVertex);
-  if (options_.polish >= 0 && options_.method == RemeshMethod::Retriangulate)
-    result.output = polish(result.output, {options_.polish});
+  result.output = buildOutput();
   result.ms.remesh = stage.lap();
   // Against what the user gave, not its simplification.
   const Mesh& original = original_ ? *original_ : input_;
@@ -136,7 +163,7 @@ RemeshResult RemeshSession::finish() {
   result.after = measureQuality(result.output);
   if (options_.measureFidelity) result.fidelity = measureFidelity(result.output, original);
   result.ms.metrics = stage.lap();
-  result.ms.total = result.ms.simplify + result.ms.parameterize + result.ms.density + result.ms.sites +
+  result.ms.total = result.ms.simplify + result.ms.resample + result.ms.parameterize + result.ms.density + result.ms.sites +
                     result.ms.lloyd + result.ms.remesh + result.ms.metrics;
   result.recording = header();
   result.recording.iterations = solver_->takeIterations();
@@ -155,7 +182,7 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
 std::string describe(const RemeshOptions& o) {
   std::ostringstream s;
   if (o.simplifyTo > 0) s << "simplify=" << o.simplifyTo << " ";
-  s << "method=" << toString(o.method) << " param=" << toString(o.param.method)
+  s << "method=" << toString(o.method) << " resample=" << (o.resample ? "yes" : "no") << " param=" << toString(o.param.method)
     << " border=" << toString(o.param.border) << " density=" << toString(o.density.kind);
   if (o.density.kind == DensityKind::Curvature)
     s << " alpha=" << o.density.alpha << " beta=" << o.density.beta;
@@ -167,7 +194,10 @@ std::string describe(const RemeshOptions& o) {
     << " distance-threshold=" << o.lloyd.distanceThreshold
     << " percent-threshold=" << o.lloyd.percentThreshold
     << " max-iterations=" << o.lloyd.maxIterations;
-  if (o.method == RemeshMethod::Retriangulate) s << " polish=" << o.polish;
+  if (o.method == RemeshMethod::Retriangulate) {
+    s << " polish=" << o.polish;
+    if (o.polish > 0) s << " polish-target=" << toString(o.polishTarget);
+  }
   return s.str();
 }
 

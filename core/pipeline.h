@@ -5,8 +5,10 @@
 #include "lloyd.h"
 #include "metrics.h"
 #include "parameterization.h"
+#include "polish.h"
 #include "recording.h"
 #include "remesh.h"
+#include "resample.h"
 #include "sites.h"
 
 #include <memory>
@@ -17,6 +19,10 @@ namespace lloydscope {
 
 struct RemeshOptions {
   int simplifyTo = 0;  // > 0: quadric edge collapse to this many vertices first
+  // Parameterize a rough first remeshing of the input instead of the input (core/resample):
+  // its conformal map holds where the input's slivers fold it. Not with relocate, nor with
+  // the input's vertices as sites.
+  bool resample = true;
   RemeshMethod method = RemeshMethod::Retriangulate;
   ParamOptions param;
   DensityOptions density;
@@ -24,10 +30,9 @@ struct RemeshOptions {
   LloydOptions lloyd;
   bool measureFidelity = true;
   // Retriangulate's last clean-up in 3D (core/polish): -1 none, 0 Delaunay flips only, k > 0
-  // flips and k angle-smoothing passes. 3 by measurement (lloydscope bench, docs/bench.md): on
-  // curved disks it lifts the smallest angle by 2-17 degrees (mostly 10-17) at a cost of up to
-  // 10 points of irregularity; on the face mask it changes little.
+  // flips and k relaxation passes on the surface.
   int polish = 3;
+  PolishTarget polishTarget = PolishTarget::Centroid;
 };
 
 // The reference report's settings: discrete authalic map with a square border, uniform density,
@@ -35,7 +40,7 @@ struct RemeshOptions {
 RemeshOptions referencePreset(RemeshMethod method);
 
 struct StageTimes {  // milliseconds
-  double simplify = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
+  double simplify = 0, resample = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
          metrics = 0, total = 0;
 };
 
@@ -75,21 +80,21 @@ class RemeshSession {
   RemeshResult finish();
 
  private:
+  Mesh buildOutput() const;
+  // The mesh that is parameterized: the resampled surface, or the input itself.
+  const Mesh& surface() const { return resampled_ ? resampled_->mesh.mesh : input_; }
+
   RemeshOptions options_;
   StageTimes ms_;  // before the members whose initializers time themselves into it
   std::optional<Mesh> original_;  // the user's mesh, when input_ is its simplification
-  Mesh input_;                    // the disk that is parameterized
+  Mesh input_;                    // the disk to remesh
+  std::optional<Resampling> resampled_;
   Parameterization param_;
-  std::vector<double> density_;
+  Density density_;
   Domain domain_;
   InitialSites sites_;
   std::unique_ptr<LloydSolver> solver_;
 };
-
-// Builds the output mesh from a (possibly partial) run's current sites.
-Mesh buildOutput(const Mesh& input, const Domain& domain, RemeshMethod method,
-                 const std::vector<Vec2>& fixedSites, const std::vector<Vec2>& movableSites,
-                 const std::vector<int>& movableVertex);
 
 // One line naming every setting, stored in recordings and printed by the command line.
 std::string describe(const RemeshOptions& options);

@@ -1,10 +1,6 @@
 #include "polish.h"
 
-#include "cgal_types.h"
 #include "metrics.h"
-
-#include <CGAL/Polygon_mesh_processing/angle_and_area_smoothing.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
 
 #include <cmath>
 #include <unordered_map>
@@ -21,7 +17,41 @@ using EdgeKey = long long;
 
 }  // namespace
 
-int flipToDelaunay(Mesh& mesh) {
+namespace {
+
+double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const auto angles = cornerAnglesDeg(a, b, c);
+  return std::min({angles[0], angles[1], angles[2]});
+}
+
+// What a flip rule sees of edge (a, b) between triangles (a, b, c) and (b, a, d), which the
+// flip would turn into (c, a, d) and (d, b, c).
+struct Quad {
+  const Vec3 &a, &b, &c, &d;
+  // How far the four vertices' valences are from regular (6 inside, 4 on the border), summed
+  // as squares, before and after the flip.
+  int irregularityBefore, irregularityAfter;
+  double smallestBefore() const { return std::min(smallestAngle(a, b, c), smallestAngle(b, a, d)); }
+  double smallestAfter() const { return std::min(smallestAngle(c, a, d), smallestAngle(d, b, c)); }
+};
+using FlipRule = bool (*)(const Quad& q);
+
+bool notDelaunay(const Quad& q) {
+  return cornerAnglesDeg(q.c, q.a, q.b)[0] + cornerAnglesDeg(q.d, q.b, q.a)[0] > 180.0 + 1e-9;
+}
+
+bool raisesSmallestAngle(const Quad& q) { return q.smallestAfter() > q.smallestBefore() + 1e-6; }
+
+// Valence flips (as in Botsch and Kobbelt's remesher) where no angle of the pair falls under
+// kValenceFlipAngle degrees.
+constexpr double kValenceFlipAngle = 30.0;
+bool raisesRegularity(const Quad& q) {
+  return q.irregularityAfter < q.irregularityBefore && q.smallestAfter() >= kValenceFlipAngle;
+}
+
+// Flips interior edges where `rule` asks and the flip neither duplicates an edge nor folds the
+// surface. Returns the number of flips.
+int flipEdges(Mesh& mesh, FlipRule rule) {
   const long long n = mesh.vertexCount();
   auto directed = [n](int a, int b) { return a * n + b; };
   std::unordered_map<EdgeKey, int> faceOf;  // each directed edge a -> b to the face that has it
@@ -38,6 +68,9 @@ int flipToDelaunay(Mesh& mesh) {
       if (v != a && v != b) return v;
     return -1;
   };
+  VertexEdges edges = vertexEdges(mesh);
+  std::vector<int>& valence = edges.valence;
+  const std::vector<bool>& border = edges.onBoundary;
   int flips = 0;
   // Flipping on a surface need not terminate as in the plane: bound the work.
   for (size_t budget = 20 * mesh.triangles.size() + 100; !work.empty() && budget > 0; --budget) {
@@ -49,10 +82,14 @@ int flipToDelaunay(Mesh& mesh) {
     const int c = third(f1, a, b), d = third(f2, a, b);
     if (c < 0 || d < 0 || c == d || faceOf.count(directed(c, d)) || faceOf.count(directed(d, c)))
       continue;
-    const Vec3 &pa = mesh.points[a], &pb = mesh.points[b], &pc = mesh.points[c],
-               &pd = mesh.points[d];
-    const double opposite = cornerAnglesDeg(pc, pa, pb)[0] + cornerAnglesDeg(pd, pb, pa)[0];
-    if (opposite <= 180.0 + 1e-9 * 180.0 / M_PI) continue;
+    auto deviation = [&](int v, int change) {
+      const int off = valence[v] + change - (border[v] ? 4 : 6);
+      return off * off;
+    };
+    const Quad quad{mesh.points[a], mesh.points[b], mesh.points[c], mesh.points[d],
+                    deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0),
+                    deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1)};
+    if (!rule(quad)) continue;
     const Triangle n1{c, a, d}, n2{d, b, c};  // keep both facing the same way
     const Vec3 before = normal(mesh, mesh.triangles[f1]).normalized() +
                         normal(mesh, mesh.triangles[f2]).normalized();
@@ -69,28 +106,250 @@ int flipToDelaunay(Mesh& mesh) {
         faceOf[directed(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])] = f;
     for (auto [u, v] : {std::pair{a, c}, std::pair{a, d}, std::pair{b, c}, std::pair{b, d}})
       work.emplace_back(std::min(u, v), std::max(u, v));
+    --valence[a], --valence[b], ++valence[c], ++valence[d];
     ++flips;
   }
   return flips;
 }
 
-Mesh polish(const Mesh& mesh, const PolishOptions& options) {
-  Mesh result = mesh;
-  flipToDelaunay(result);
-  if (options.smoothingIterations <= 0) return result;
-  SurfaceMesh sm = toSurfaceMesh(result);
-  auto fixed = sm.add_property_map<SurfaceMesh::Vertex_index, bool>("v:fixed", false).first;
-  for (SurfaceMesh::Vertex_index v : sm.vertices())
-    if (CGAL::is_border(v, sm)) fixed[v] = true;
-  CGAL::Polygon_mesh_processing::angle_and_area_smoothing(
-      faces(sm), sm,
-      CGAL::parameters::number_of_iterations(options.smoothingIterations)
-          .use_area_smoothing(false)
-          .use_safety_constraints(true)
-          .vertex_is_constrained_map(fixed));
-  result = fromSurfaceMesh(sm);
-  flipToDelaunay(result);
-  return result;
+}  // namespace
+
+int flipToDelaunay(Mesh& mesh) { return flipEdges(mesh, notDelaunay); }
+
+namespace {
+
+// Each vertex's triangles, as offsets into one array.
+struct Rings {
+  std::vector<int> offset, faces;
+  Rings(const Mesh& m) : offset(m.vertexCount() + 1, 0) {
+    for (const Triangle& t : m.triangles)
+      for (int v : t) ++offset[v + 1];
+    for (size_t v = 1; v < offset.size(); ++v) offset[v] += offset[v - 1];
+    faces.resize(offset.back());
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for (int f = 0; f < m.faceCount(); ++f)
+      for (int v : m.triangles[f]) faces[fill[v]++] = f;
+  }
+};
+
+Vec3 circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, n = ab.cross(ac);
+  const double n2 = n.squaredNorm();
+  if (!(n2 > 0)) return (a + b + c) / 3.0;
+  return a + (ac.squaredNorm() * n.cross(ab) + ab.squaredNorm() * ac.cross(n)) / (2.0 * n2);
+}
+
+// The part of triangle (a, b, c) closer to a than to b and to c (a's Voronoi cell inside the
+// triangle): its area and centroid. The triangle clipped by the two bisector planes.
+std::pair<double, Vec3> voronoiPart(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Vec3 polygon[8] = {a, b, c}, clipped[8];
+  int n = 3;
+  for (const Vec3* other : {&b, &c}) {
+    const Vec3 normal = *other - a, middle = 0.5 * (*other + a);
+    int m = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++) {
+      const double si = (polygon[i] - middle).dot(normal), sj = (polygon[j] - middle).dot(normal);
+      if ((sj <= 0) != (si <= 0)) clipped[m++] = polygon[j] + (sj / (sj - si)) * (polygon[i] - polygon[j]);
+      if (si <= 0) clipped[m++] = polygon[i];
+    }
+    n = m;
+    std::copy(clipped, clipped + n, polygon);
+  }
+  double area = 0;
+  Vec3 moment = Vec3::Zero();
+  for (int i = 1; i + 1 < n; ++i) {
+    const double part = 0.5 * (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]).norm();
+    area += part;
+    moment += part * (polygon[0] + polygon[i] + polygon[i + 1]) / 3.0;
+  }
+  return {area, area > 0 ? Vec3(moment / area) : a};
+}
+
+// Where the ring of `v` wants it, projected onto its tangent plane: a 3D displacement.
+// `normal` receives the ring's unit normal.
+Vec3 relaxationMove(const Mesh& m, const Rings& rings, const std::vector<double>& weight, int v,
+                    PolishTarget target, Vec3& normal) {
+  Vec3 centre = Vec3::Zero();
+  normal = Vec3::Zero();
+  double total = 0;
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+    const Triangle& t = m.triangles[rings.faces[k]];
+    const Vec3 &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    const Vec3 n = (b - a).cross(c - a);
+    const double rho = (weight[t[0]] + weight[t[1]] + weight[t[2]]) / 3.0;
+    normal += n;
+    if (target == PolishTarget::Voronoi) {
+      const int i = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+      const auto [area, centroid] =
+          voronoiPart(m.points[v], m.points[t[(i + 1) % 3]], m.points[t[(i + 2) % 3]]);
+      centre += rho * area * centroid;
+      total += rho * area;
+      continue;
+    }
+    const double w = 0.5 * n.norm() * rho;
+    centre += w * (target == PolishTarget::Centroid ? Vec3((a + b + c) / 3.0) : circumcenter(a, b, c));
+    total += w;
+  }
+  if (!(total > 0) || !(normal.squaredNorm() > 0)) return Vec3::Zero();
+  normal.normalize();
+  const Vec3 d = centre / total - m.points[v];
+  return d - normal * normal.dot(d);
+}
+
+// The parameter displacement whose image on input triangle `t` best matches the 3D `d`:
+// with E = [P1 - P0, P2 - P0] and U = [p1 - p0, p2 - p0], the map is E U^-1, and its
+// pseudo-inverse is U (E^T E)^-1 E^T.
+Vec2 toParameter(const Mesh& input, const Domain& domain, int t, const Vec3& d) {
+  const Triangle& tri = input.triangles[t];
+  Eigen::Matrix<double, 3, 2> e;
+  e << input.points[tri[1]] - input.points[tri[0]], input.points[tri[2]] - input.points[tri[0]];
+  Eigen::Matrix2d u;
+  u << domain.uv()[tri[1]] - domain.uv()[tri[0]], domain.uv()[tri[2]] - domain.uv()[tri[0]];
+  const Eigen::Matrix2d ete = e.transpose() * e;
+  if (!(std::abs(ete.determinant()) > 0)) return Vec2::Zero();
+  return u * ete.inverse() * (e.transpose() * d);
+}
+
+// Whether moving `v` to `to` leaves every triangle of its ring facing along `up` (the ring's
+// normal): not folded. Measured against the ring, not each triangle's old normal, so that a
+// triangle that was folded (a vertex near the border, lifted beyond the border's chord) may
+// unfold.
+bool keepsRingUnfolded(const Mesh& m, const Rings& rings, int v, const Vec3& to, const Vec3& up) {
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+    const Triangle& t = m.triangles[rings.faces[k]];
+    auto at = [&](int i) -> const Vec3& { return t[i] == v ? to : m.points[t[i]]; };
+    const Vec3 n = (at(1) - at(0)).cross(at(2) - at(0));
+    if (!(n.dot(up) > 0.1 * n.norm())) return false;  // within ~84 degrees of the ring's normal
+  }
+  return true;
+}
+
+// One Gauss-Seidel pass: each inside vertex, in order, takes its relaxation move (halved until
+// its ring stays valid), through its parameter point.
+void relaxPass(LiftedMesh& lm, const SurfaceMap& surface,
+               const Density& surfaceDensity, PolishTarget target,
+               std::vector<int>& triangleOf, std::vector<double>& weight) {
+  Mesh& m = lm.mesh;
+  const Rings rings(m);
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (border[v]) continue;
+    Vec3 up;
+    const Vec3 move = relaxationMove(m, rings, weight, v, target, up);
+    const Vec2 duv = toParameter(surface.mesh, surface.domain, triangleOf[v], move);
+    for (double step = 1.0; step >= 0.25; step *= 0.5) {
+      const Location l = surface.domain.locate(lm.uv[v] + step * duv, triangleOf[v]);
+      const Vec3 to = surface.at(l);
+      if (!keepsRingUnfolded(m, rings, v, to, up)) continue;
+      m.points[v] = to;
+      lm.uv[v] = surface.domain.pointAt(l);
+      triangleOf[v] = l.triangle;
+      if (!surfaceDensity.empty()) weight[v] = densityAt(surfaceDensity, l.triangle, l.weights);
+      break;
+    }
+  }
+}
+
+// The smallest angle of v's ring with v moved to `to`, or -1 if that folds the ring.
+double ringSmallestAngle(const Mesh& m, const Rings& rings, int v, const Vec3& to,
+                         const Vec3& up) {
+  if (!keepsRingUnfolded(m, rings, v, to, up)) return -1;
+  double smallest = 180;
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+    const Triangle& t = m.triangles[rings.faces[k]];
+    auto at = [&](int i) -> const Vec3& { return t[i] == v ? to : m.points[t[i]]; };
+    smallest = std::min(smallest, smallestAngle(at(0), at(1), at(2)));
+  }
+  return smallest;
+}
+
+// Where relaxation left small angles: each inside vertex of a triangle under kRepairBelow
+// degrees moves to whichever candidate (its Voronoi centroid, its ring's centroid, its
+// circumcentre target, or halfway to one) gives its ring the largest smallest angle, then
+// edges flip wherever that raises the smallest angle of the two triangles.
+constexpr double kRepairBelow = 35.0;
+
+void repairAngles(LiftedMesh& lm, const SurfaceMap& surface,
+                  std::vector<int>& triangleOf, const std::vector<double>& weight) {
+  Mesh& m = lm.mesh;
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  const Rings rings(m);
+  std::vector<bool> bad(m.vertexCount(), false);
+  for (const Triangle& t : m.triangles)
+    if (smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]) < kRepairBelow)
+      for (int v : t) bad[v] = !border[v];
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (!bad[v]) continue;
+    Vec3 up;
+    double best = ringSmallestAngle(m, rings, v, m.points[v], Vec3::Zero());
+    relaxationMove(m, rings, weight, v, PolishTarget::Centroid, up);
+    best = ringSmallestAngle(m, rings, v, m.points[v], up);
+    Location bestLocation;
+    for (PolishTarget target : {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter}) {
+      const Vec3 move = relaxationMove(m, rings, weight, v, target, up);
+      const Vec2 duv = toParameter(surface.mesh, surface.domain, triangleOf[v], move);
+      for (double step : {1.0, 0.5}) {
+        const Location l = surface.domain.locate(lm.uv[v] + step * duv, triangleOf[v]);
+        const double score = ringSmallestAngle(m, rings, v, surface.at(l), up);
+        if (score > best + 1e-9) {
+          best = score;
+          bestLocation = l;
+        }
+      }
+    }
+    if (bestLocation.triangle < 0) continue;
+    m.points[v] = surface.at(bestLocation);
+    lm.uv[v] = surface.domain.pointAt(bestLocation);
+    triangleOf[v] = bestLocation.triangle;
+  }
+  flipEdges(m, raisesSmallestAngle);
+}
+
+}  // namespace
+
+Vec3 SurfaceMap::at(const Location& l) const {
+  if (lift) return lift(l);
+  const Triangle& t = mesh.triangles[l.triangle];
+  return l.weights[0] * mesh.points[t[0]] + l.weights[1] * mesh.points[t[1]] +
+         l.weights[2] * mesh.points[t[2]];
+}
+
+void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
+            const PolishOptions& options) {
+  flipToDelaunay(mesh.mesh);
+  if (options.iterations <= 0) return;
+  std::vector<int> triangleOf(mesh.uv.size());
+  std::vector<double> weight(mesh.uv.size(), 1.0);
+  for (size_t v = 0; v < mesh.uv.size(); ++v) {
+    const Location l = surface.domain.locate(mesh.uv[v]);
+    triangleOf[v] = l.triangle;
+    if (!surfaceDensity.empty()) weight[v] = densityAt(surfaceDensity, l.triangle, l.weights);
+  }
+  for (int pass = 0; pass < options.iterations; ++pass) {
+    relaxPass(mesh, surface, surfaceDensity, options.target, triangleOf, weight);
+    flipToDelaunay(mesh.mesh);
+  }
+  for (int pass = 0; pass < options.valencePasses; ++pass) {
+    flipEdges(mesh.mesh, raisesRegularity);
+    relaxPass(mesh, surface, surfaceDensity, options.target, triangleOf, weight);
+  }
+  for (int pass = 0; pass < options.repairPasses; ++pass)
+    repairAngles(mesh, surface, triangleOf, weight);
+}
+
+const char* toString(PolishTarget target) {
+  switch (target) {
+    case PolishTarget::Voronoi: return "voronoi";
+    case PolishTarget::Centroid: return "centroid";
+    case PolishTarget::Circumcenter: return "circumcenter";
+  }
+  return "?";
+}
+
+PolishTarget parsePolishTarget(const std::string& text) {
+  for (PolishTarget t : {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter})
+    if (text == toString(t)) return t;
+  throw Error("unknown polish target '" + text + "' (voronoi, centroid, circumcenter)");
 }
 
 }  // namespace lloydscope

@@ -1,21 +1,55 @@
-// A last clean-up of a retriangulated surface, in 3D: Delaunay edge flips, then CGAL's angle
-// smoothing with the vertices projected back onto the surface, then flips again.
+// A last clean-up of a retriangulated surface, in 3D. The 2D relaxation makes cells round in
+// the parameter domain; where the map stretches, they are not round on the surface. The polish
+// relaxes on the surface itself: Delaunay edge flips, then Lloyd-like passes that move each
+// inside vertex towards the centre of its ring within its tangent plane, mapped back onto the
+// input surface through its parameter point (so it never leaves the surface), then flips again.
 #pragma once
 
-#include "mesh.h"
+#include "remesh.h"
+
+#include <functional>
+#include <string>
 
 namespace lloydscope {
 
-struct PolishOptions {
-  int smoothingIterations = 3;  // 0: flips only
+enum class PolishTarget {
+  Voronoi,       // the centroid of its Voronoi cell within its ring (a Lloyd step on the mesh)
+  Centroid,      // the area-weighted centroid of the ring's triangles (a Lloyd step)
+  Circumcenter,  // the area-weighted circumcentre (optimal Delaunay triangulation, Chen & Xu)
 };
 
-// The border stays as it is (its vertices do not move, its edges do not flip).
-Mesh polish(const Mesh& mesh, const PolishOptions& options);
+struct PolishOptions {
+  int iterations = 3;  // flip-and-relax passes; 0: flips only
+  PolishTarget target = PolishTarget::Centroid;
+  // Then passes of valence-improving flips (where no angle falls under 30 degrees), each
+  // followed by a relaxation pass.
+  int valencePasses = 2;
+  // Then passes over the triangles with small angles only: vertex moves and edge flips that
+  // raise the smallest angle around them.
+  int repairPasses = 3;
+};
+
+// The surface the polish keeps its vertices on, seen through a parameter domain.
+struct SurfaceMap {
+  const Mesh& mesh;      // the parameterized mesh: its triangles give the local Jacobians
+  const Domain& domain;  // its parameter domain
+  // The surface point at a location of the domain; empty: barycentric on `mesh`'s triangles.
+  std::function<Vec3(const Location&)> lift = {};
+  Vec3 at(const Location& l) const;
+};
+
+// The border stays as it is (its vertices do not move, its edges do not flip). `surfaceDensity`
+// (of the domain's triangles; empty: uniform) weights the centres so that a density that asked
+// for smaller cells keeps them. Vertices keep their order; mesh.uv follows.
+void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
+            const PolishOptions& options);
 
 // Flips interior edges whose two opposite angles sum to more than 180 degrees (the 3D
 // Delaunay criterion) where the flip neither duplicates an edge nor folds the surface.
 // Returns the number of flips.
 int flipToDelaunay(Mesh& mesh);
+
+const char* toString(PolishTarget target);
+PolishTarget parsePolishTarget(const std::string& text);  // throws Error on unknown names
 
 }  // namespace lloydscope

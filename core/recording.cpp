@@ -98,7 +98,8 @@ std::string encodePayload(const Recording& r) {
   w.put<std::uint32_t>(static_cast<std::uint32_t>(r.input.triangles.size()));
   for (const Triangle& t : r.input.triangles) w.put(t[0]), w.put(t[1]), w.put(t[2]);
   w.putPoints(r.uv);
-  for (double d : r.density) w.put(d);
+  for (const auto& corners : r.density)
+    for (double d : corners) w.put(d);
   w.putPoints(r.fixedSites);
   w.put<std::uint32_t>(static_cast<std::uint32_t>(r.movableVertex.size()));
   for (int v : r.movableVertex) w.put(v);
@@ -137,8 +138,9 @@ Recording decodePayload(Reader& in, const std::string& path) {
   r.uv = in.getPoints();
   if (r.uv.size() != r.input.points.size())
     throw Error(path + ": damaged recording (UV count differs from vertex count)");
-  r.density.resize(r.uv.size());
-  for (double& d : r.density) d = in.get<double>();
+  r.density.resize(r.input.triangles.size());
+  for (auto& corners : r.density)
+    for (double& d : corners) d = in.get<double>();
   r.fixedSites = in.getPoints();
   r.movableVertex.resize(in.getCount(4));
   for (int& v : r.movableVertex) v = in.get<int>();

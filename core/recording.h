@@ -12,14 +12,15 @@ namespace lloydscope {
 
 struct Recording {
   // 2: sites as grid indices (8 bytes a site), centroids recomputed rather than stored.
-  static constexpr std::uint32_t kVersion = 2;
+  // 3: the density per triangle corner.
+  static constexpr std::uint32_t kVersion = 3;
 
   std::string settings;  // the settings that produced it, one line ("param=conformal ...")
   RemeshMethod method = RemeshMethod::Retriangulate;
   double distanceThreshold = 1e-6, percentThreshold = 5.0;
   Mesh input;                      // the disk mesh that was parameterized
   std::vector<Vec2> uv;            // per input vertex
-  std::vector<double> density;     // per input vertex
+  Density density;                 // per input triangle, at its corners
   std::vector<Vec2> fixedSites;    // border samples, counter-clockwise
   std::vector<int> movableVertex;  // input vertex each movable site started at, or -1
   std::vector<IterationRecord> iterations;

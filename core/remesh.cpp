@@ -1,11 +1,13 @@
 #include "remesh.h"
 
 #include "cgal_types.h"
+#include "lloyd.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <deque>
 
 namespace lloydscope {
@@ -73,6 +75,9 @@ std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
   }
   for (size_t i = 0; i < border.size(); ++i)
     cdt.insert_constraint(borderVertex[i], borderVertex[(i + 1) % border.size()]);
+  // Where two border segments cross, CGAL adds a vertex of its own: mark those.
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->info() = -1;
+  for (size_t i = 0; i < border.size(); ++i) borderVertex[i]->info() = static_cast<int>(i);
   std::vector<std::pair<Point2, int>> inside;
   for (size_t i = 0; i < movableSites.size(); ++i)
     inside.emplace_back(Point2(movableSites[i].x(), movableSites[i].y()),
@@ -81,9 +86,13 @@ std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
   markDomain(cdt);
 
   std::vector<Triangle> triangles;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (f->info().inDomain())
-      triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->info().inDomain()) continue;
+    const Triangle t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    if (*std::min_element(t.begin(), t.end()) < 0)
+      throw Error("the border of the parameter domain crosses itself");
+    triangles.push_back(t);
+  }
   return triangles;
 }
 
@@ -104,12 +113,16 @@ Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& p
   return output;
 }
 
-Mesh retriangulate(const Mesh& input, const Domain& domain, const std::vector<Vec2>& border,
-                   const std::vector<Vec2>& movableSites) {
+LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
+                         const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites) {
+  const std::vector<Vec2> sites = allSites(border, movableSites);
   std::vector<Vec3> points;
-  for (const Vec2& p : border) points.push_back(lift(input, domain, p));
-  for (const Vec2& p : movableSites) points.push_back(lift(input, domain, p));
-  return assemble(triangulateSites(border, movableSites), points);
+  for (const Vec2& p : sites) points.push_back(lift(input, domain, p));
+  LiftedMesh result;
+  std::vector<int> kept;
+  result.mesh = assemble(triangulateSites(border, movableSites), points, &kept);
+  for (int i : kept) result.uv.push_back(sites[i]);
+  return result;
 }
 
 }  // namespace lloydscope

@@ -20,11 +20,17 @@ Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p, int hint = -1)
 Mesh relocate(const Mesh& input, const std::vector<int>& movableVertex,
               const std::vector<Vec3>& movablePoints);
 
+// A mesh on the input surface whose vertices each sit at a known point of the domain.
+struct LiftedMesh {
+  Mesh mesh;
+  std::vector<Vec2> uv;  // per vertex, its parameter point
+};
+
 // The reference's alternative: a new mesh, the constrained Delaunay triangulation of the
 // border samples (in order, counter-clockwise, joined by constraint edges) and the movable
 // sites, restricted to the domain and lifted to 3D. Vertices: border samples, then sites.
-Mesh retriangulate(const Mesh& input, const Domain& domain, const std::vector<Vec2>& border,
-                   const std::vector<Vec2>& movableSites);
+LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
+                         const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites);
 
 // The 2D triangles of retriangulate(), before lifting (same vertex order).
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,

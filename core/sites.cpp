@@ -18,15 +18,51 @@ bool isCorner(const Vec2& prev, const Vec2& at, const Vec2& next) {
   return a.dot(b) < std::cos(20.0 * M_PI / 180.0);
 }
 
-// Samples along the border at 3D arc-length spacing close to `spacing`, corners kept.
+// The sum of the corner angles at each vertex, degrees: 180 where a border runs straight on.
+std::vector<double> angleSums(const Mesh& mesh) {
+  std::vector<double> sum(mesh.vertexCount(), 0.0);
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = mesh.points[t[(k + 1) % 3]] - mesh.points[t[k]];
+      const Vec3 v = mesh.points[t[(k + 2) % 3]] - mesh.points[t[k]];
+      sum[t[k]] += std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / M_PI;
+    }
+  return sum;
+}
+
+// Samples along the border at 3D arc-length spacing close to `spacing`, corners kept: those of
+// the surface (a border vertex where the surface's angles sum to far from 180 degrees) and
+// those of the parameter domain.
 std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param,
                                  double spacing) {
   const std::vector<int>& loop = param.boundaryLoop;
   const int n = static_cast<int>(loop.size());
-  std::vector<int> corners;
+  const std::vector<double> angles = angleSums(mesh);
+  std::vector<double> position(n + 1, 0.0);  // 3D arc length from loop[0]
   for (int i = 0; i < n; ++i)
+    position[i + 1] = position[i] + (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i]]).norm();
+  // Candidates, the domain's own corners before the surface's, sharper before blunter.
+  std::vector<std::pair<double, int>> candidates;
+  for (int i = 0; i < n; ++i) {
+    const double turn = std::abs(angles[loop[i]] - 180.0);
     if (isCorner(param.uv[loop[(i + n - 1) % n]], param.uv[loop[i]], param.uv[loop[(i + 1) % n]]))
-      corners.push_back(i);
+      candidates.emplace_back(1000.0 + turn, i);
+    else if (turn > 40.0)
+      candidates.emplace_back(turn, i);
+  }
+  std::sort(candidates.rbegin(), candidates.rend());
+  // A corner closer than half a spacing to a kept one would make a tiny border edge (a chamfer
+  // of a square corner is two corners of 135 degrees): only the first of them is kept.
+  std::vector<int> corners;
+  for (const auto& [score, i] : candidates) {
+    bool near = false;
+    for (int c : corners) {
+      const double apart = std::abs(position[i] - position[c]);
+      near = near || std::min(apart, position[n] - apart) < 0.5 * spacing;
+    }
+    if (!near) corners.push_back(i);
+  }
+  std::sort(corners.begin(), corners.end());
   if (corners.empty()) corners.push_back(0);
 
   std::vector<Vec2> samples;
@@ -60,9 +96,10 @@ std::vector<Vec2> sampleDensity(const Domain& domain, int count, std::uint64_t s
   const auto& rho = domain.density();
   std::vector<double> cumulative;
   double total = 0;
-  for (const Triangle& t : domain.triangles()) {
+  for (size_t i = 0; i < domain.triangles().size(); ++i) {
+    const Triangle& t = domain.triangles()[i];
     total += std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]])) *
-             (rho[t[0]] + rho[t[1]] + rho[t[2]]) / 3.0;
+             (rho[i][0] + rho[i][1] + rho[i][2]) / 3.0;
     cumulative.push_back(total);
   }
   std::mt19937_64 rng(seed);

@@ -79,55 +79,47 @@ std::string cgalSample(const char* name) {
   return std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/" + name;
 }
 
-class CgalFaceLike : public ::testing::TestWithParam<const char*> {};
+struct SampleBar {
+  const char* file;
+  bool meetsIssueBar;  // irregular <= 15%, smallest angle >= 30, average >= 53 (issue 5)
+};
 
-// The issue's bar for a 1000-vertex disk.
-TEST_P(CgalFaceLike, MeetsTheQualityBar) {
-  const std::string path = cgalSample(GetParam());
+class CgalSamples : public ::testing::TestWithParam<SampleBar> {};
+
+// 1000 sites on CGAL's disk samples. The face mask, the mushroom and the three peaks meet the
+// issue's bar; the lion head and the mannequin are closed shapes with a small hole, whose
+// conformal maps shrink the far side by 10^3-10^4: valid and far better than the input, with
+// irregularity and angles short of the bar.
+TEST_P(CgalSamples, RemeshTo1000Vertices) {
+  const std::string path = cgalSample(GetParam().file);
   if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
   const Mesh input = readMesh(path).mesh;
   RemeshOptions o;
   o.sites.count = 1000;
+  o.measureFidelity = GetParam().meetsIssueBar;
   const RemeshResult r = remesh(input, o, path);
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   EXPECT_TRUE(analyzeTopology(r.output).isDisk());
   EXPECT_TRUE(r.converged);
-  EXPECT_GE(r.after.avgMinAngle, 50.0);
-  EXPECT_GE(r.after.minAngle, 20.0);
-  EXPECT_LE(r.after.irregularBoundaryAware, 30.0);
-  EXPECT_LE(r.fidelity.hausdorffPercent, 1.5);
+  EXPECT_NEAR(r.output.vertexCount(), 1000, 10);
+  EXPECT_GE(r.after.avgMinAngle, 52.0);
+  EXPECT_LE(r.after.irregularBoundaryAware, 20.0);
+  if (GetParam().meetsIssueBar) {
+    EXPECT_LE(r.after.irregularBoundaryAware, 15.0);
+    EXPECT_GE(r.after.minAngle, 30.0);
+    EXPECT_GE(r.after.avgMinAngle, 53.0);
+    EXPECT_LE(r.fidelity.hausdorffPercent, 2.5);
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, CgalFaceLike, ::testing::Values("nefertiti.off", "mushroom.off"),
+INSTANTIATE_TEST_SUITE_P(Meshes, CgalSamples,
+                         ::testing::Values(SampleBar{"nefertiti.off", true},
+                                           SampleBar{"mushroom.off", true},
+                                           SampleBar{"three_peaks.off", true},
+                                           SampleBar{"lion-head.off", false},
+                                           SampleBar{"mannequin-devil.off", false}),
                          [](const auto& info) {
-                           const std::string name = info.param;
-                           return name.substr(0, name.find('.'));
-                         });
-
-class CgalHard : public ::testing::TestWithParam<const char*> {};
-
-// LSCM folds on these (strongly curved, with area ratios up to 10^4): "auto" falls back to the
-// mean-value map. The result is valid and better than the input, though not yet at the bar.
-TEST_P(CgalHard, FallsBackAndStaysValid) {
-  const std::string path = cgalSample(GetParam());
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
-  const Mesh input = readMesh(path).mesh;
-  RemeshOptions o;
-  o.sites.count = 1000;
-  o.lloyd.maxIterations = 60;
-  o.measureFidelity = false;
-  const RemeshResult r = remesh(input, o, path);
-  EXPECT_EQ(r.paramUsed, ParamMethod::MeanValue);
-  EXPECT_NO_THROW(validateMesh(r.output, "output"));
-  EXPECT_TRUE(analyzeTopology(r.output).isDisk());
-  EXPECT_GT(r.after.avgMinAngle, r.before.avgMinAngle);
-}
-
-INSTANTIATE_TEST_SUITE_P(Meshes, CgalHard,
-                         ::testing::Values("three_peaks.off", "lion-head.off",
-                                           "mannequin-devil.off"),
-                         [](const auto& info) {
-                           std::string name = info.param;
+                           std::string name = info.param.file;
                            name = name.substr(0, name.find('.'));
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;

@@ -1,5 +1,7 @@
 #include "metrics.h"
 #include "pipeline.h"
+#include "parameterization.h"
+#include "sites.h"
 #include "mesh_io.h"
 #include "polish.h"
 #include "test_support.h"
@@ -67,18 +69,91 @@ TEST(Polish, AfterFlipsEveryInteriorEdgeIsDelaunay) {
   EXPECT_LE(worstOppositeAngles(m), M_PI + 1e-6);
 }
 
-TEST(Polish, KeepsTheBorderAndRaisesTheSmallestAngle) {
-  RemeshOptions o;
-  o.polish = -1;
-  o.measureFidelity = false;
-  const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
-  const Mesh rough = remesh(input, o, "bumpy").output;
-  const Mesh polished = polish(rough, {3});
-  ASSERT_EQ(polished.vertexCount(), rough.vertexCount());
-  EXPECT_NO_THROW(validateMesh(polished, "polished"));
-  const Topology before = analyzeTopology(rough), after = analyzeTopology(polished);
-  ASSERT_TRUE(after.isDisk());
-  for (int v : before.boundaryLoops[0]) EXPECT_EQ(polished.points[v], rough.points[v]);
-  EXPECT_GE(measureQuality(polished).minAngle, measureQuality(rough).minAngle);
-  EXPECT_GE(measureQuality(polished).avgMinAngle, measureQuality(rough).avgMinAngle);
+// Sites drawn at random from the density (no Lloyd at all), retriangulated: a rough mesh on
+// the bumpy disk for the polish to work on.
+struct RoughMesh {
+  Mesh input;
+  Parameterization param;
+  Domain domain;
+  LiftedMesh lifted;
+};
+
+RoughMesh roughMesh() {
+  Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  Parameterization param = parameterize(input, {}, "bumpy");
+  Domain domain(param.uv, input.triangles, areaDensity(input, param.uv));
+  const InitialSites sites = initialSites(input, param, domain, {});
+  LiftedMesh lifted = retriangulate(input, domain, sites.fixed, sites.movable);
+  return {std::move(input), std::move(param), std::move(domain), std::move(lifted)};
+}
+
+TEST(Polish, KeepsTheBorderAndTheSurfaceAndRaisesTheAngles) {
+  RoughMesh r = roughMesh();
+  LiftedMesh polished = r.lifted;
+  polish(polished, {r.input, r.domain}, {}, {});
+  const Mesh& before = r.lifted.mesh;
+  const Mesh& after = polished.mesh;
+  ASSERT_EQ(after.vertexCount(), before.vertexCount());
+  EXPECT_NO_THROW(validateMesh(after, "polished"));
+  const Topology topology = analyzeTopology(after);
+  ASSERT_TRUE(topology.isDisk());
+  for (int v : topology.boundaryLoops[0]) EXPECT_EQ(after.points[v], before.points[v]);
+  // Every vertex is still the lift of its parameter point: on the input surface.
+  for (int v = 0; v < after.vertexCount(); ++v)
+    EXPECT_LT((after.points[v] - lift(r.input, r.domain, polished.uv[v])).norm(), 1e-9);
+  const QualityMetrics q0 = measureQuality(before), q1 = measureQuality(after);
+  EXPECT_GT(q1.minAngle, q0.minAngle + 10);
+  EXPECT_GT(q1.avgMinAngle, q0.avgMinAngle + 5);
+  EXPECT_LT(q1.irregularBoundaryAware, q0.irregularBoundaryAware);
+}
+
+TEST(Polish, EveryTargetRelaxes) {
+  RoughMesh r = roughMesh();
+  const double rough = measureQuality(r.lifted.mesh).avgMinAngle;
+  for (PolishTarget target : {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter}) {
+    LiftedMesh m = r.lifted;
+    polish(m, {r.input, r.domain}, {}, {5, target});
+    EXPECT_GT(measureQuality(m.mesh).avgMinAngle, rough + 5) << toString(target);
+  }
+  EXPECT_EQ(parsePolishTarget("circumcenter"), PolishTarget::Circumcenter);
+  EXPECT_THROW(parsePolishTarget("middle"), Error);
+}
+TEST(Polish, KeepsVerticesOnTheSurfaceItIsGiven) {
+  // A map that lifts every point 1 above the input: the polish must place vertices there.
+  RoughMesh r = roughMesh();
+  SurfaceMap raised{r.input, r.domain, [&](const Location& l) {
+    const Triangle& t = r.input.triangles[l.triangle];
+    return Vec3(l.weights[0] * r.input.points[t[0]] + l.weights[1] * r.input.points[t[1]] +
+                l.weights[2] * r.input.points[t[2]] + Vec3(0, 0, 1));
+  }};
+  LiftedMesh m = r.lifted;
+  for (int v = 0; v < m.mesh.vertexCount(); ++v) m.mesh.points[v] = raised.at(r.domain.locate(m.uv[v]));
+  polish(m, raised, {}, {});
+  for (int v = 0; v < m.mesh.vertexCount(); ++v)
+    EXPECT_LT((m.mesh.points[v] - raised.at(r.domain.locate(m.uv[v]))).norm(), 1e-9);
+}
+
+TEST(Polish, AngleRepairLiftsTheSmallestAngle) {
+  RoughMesh r = roughMesh();
+  PolishOptions without;
+  without.repairPasses = 0;
+  LiftedMesh a = r.lifted, b = r.lifted;
+  polish(a, {r.input, r.domain}, {}, without);
+  polish(b, {r.input, r.domain}, {}, {});
+  EXPECT_GT(measureQuality(b.mesh).minAngle, measureQuality(a.mesh).minAngle + 1);
+}
+
+TEST(Polish, ValenceFlipsMakeMoreVerticesRegular) {
+  RoughMesh r = roughMesh();
+  PolishOptions without;
+  without.valencePasses = 0;
+  without.repairPasses = 0;
+  PolishOptions with = without;
+  with.valencePasses = 2;
+  LiftedMesh a = r.lifted, b = r.lifted;
+  polish(a, {r.input, r.domain}, {}, without);
+  polish(b, {r.input, r.domain}, {}, with);
+  EXPECT_LT(measureQuality(b.mesh).irregularBoundaryAware,
+            measureQuality(a.mesh).irregularBoundaryAware - 3);
+  EXPECT_GE(measureQuality(b.mesh).minAngle, std::min(30.0, measureQuality(a.mesh).minAngle) - 1e-9);
 }

@@ -74,7 +74,7 @@ TEST(Retriangulate, GivesAValidDiskWithAllSitesUsed) {
   for (int v : p.boundaryLoop) border.push_back(p.uv[v]);
   for (int i = 0; i < 40; ++i)
     sites.push_back(Vec2(0.5, 0.5) + 0.3 * (i / 40.0) * Vec2(std::cos(i * 2.4), std::sin(i * 2.4)));
-  const Mesh out = retriangulate(mesh, domain, border, sites);
+  const Mesh out = retriangulate(mesh, domain, border, sites).mesh;
   EXPECT_EQ(out.vertexCount(), static_cast<int>(border.size() + sites.size()));
   EXPECT_NO_THROW(validateMesh(out, "out"));
   EXPECT_TRUE(analyzeTopology(out).isDisk());
@@ -90,4 +90,9 @@ TEST(Retriangulate, RespectsANonConvexBorder) {
   auto point = [&](int i) { return i < 6 ? border[i] : Vec2(0.25, 0.25); };
   for (const Triangle& t : triangles) area += triangleArea(point(t[0]), point(t[1]), point(t[2]));
   EXPECT_NEAR(area, 0.75, 1e-12);
+}
+
+TEST(Retriangulate, ABorderThatCrossesItselfIsAnErrorNotACrash) {
+  const std::vector<Vec2> bowtie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  EXPECT_THROW(triangulateSites(bowtie, {{0.5, 0.2}}), Error);
 }

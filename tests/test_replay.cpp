@@ -46,7 +46,8 @@ TEST(Replay, RelocateOnlyWhereSitesAreInputVertices) {
   relocated.setMethod(RemeshMethod::Retriangulate);
   EXPECT_EQ(relocated.method(), RemeshMethod::Retriangulate);
 
-  RemeshOptions sampled;
+  RemeshOptions sampled;  // sites drawn from the density, on the input itself
+  sampled.resample = false;
   sampled.measureFidelity = false;
   sampled.lloyd.maxIterations = 3;
   Replay replay(remesh(input, sampled, "grid").recording);

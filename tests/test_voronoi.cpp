@@ -9,7 +9,8 @@ namespace {
 
 // The unit square as a parameter domain of two triangles, with a density given per corner.
 Domain unitSquare(std::vector<double> density = {1, 1, 1, 1}) {
-  return Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, std::move(density));
+  const std::vector<Triangle> triangles = {{0, 1, 2}, {0, 2, 3}};
+  return Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, triangles, vertexDensity(triangles, density));
 }
 
 // Formulas (2)-(4) of the reference, written out independently of the code under test.
@@ -130,7 +131,7 @@ TEST(BoundedCells, CellsTileAFineDomainExactly) {
     uv.emplace_back(p.x(), p.y());
     density.push_back(1.0 + 3.0 * p.x() * p.y());
   }
-  const Domain domain(uv, grid.triangles, density);
+  const Domain domain(uv, grid.triangles, vertexDensity(grid.triangles, density));
   double domainMass = 0;
   for (const Triangle& t : grid.triangles)
     domainMass += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]) *

@@ -1,0 +1,37 @@
+// A first, rough pass of the remeshing pipeline whose result becomes the surface that is
+// parameterized. Why: a conformal map (LSCM) of a quadric-simplified input folds on its
+// slivers, and the one-to-one maps (mean value, Tutte) stretch the cells; the resampled mesh
+// has no slivers, so its conformal map holds, and cells that are round in the plane are round
+// on the surface. Every vertex of the resampled mesh lies on the input surface at a known point
+// of the input's own (one-to-one) parameterization, so points of the resampled mesh map back
+// onto the input surface exactly, not onto its chords.
+#pragma once
+
+#include "density.h"
+#include "parameterization.h"
+#include "remesh.h"
+
+#include <string>
+
+namespace lloydscope {
+
+struct ResampleOptions {
+  int iterations = 20;  // L-BFGS iterations of the rough pass (it need not converge)
+  int polish = 3;       // relaxation passes on the surface after it
+};
+
+struct Resampling {
+  Parameterization param;  // of the input (auto: LSCM, or a one-to-one fallback)
+  Domain domain;           // the input's parameter domain
+  LiftedMesh mesh;         // the resampled surface; mesh.uv in the input's parameter domain
+
+  // The point of the input surface under the point of resampled triangle `triangle` with
+  // barycentric `weights` (`input`: the mesh given to resample()).
+  Vec3 toInput(const Mesh& input, int triangle, const Eigen::Vector3d& weights) const;
+};
+
+// `count` sites in all (0: as many as the input has vertices), placed by `density`.
+Resampling resample(const Mesh& input, int count, const DensityOptions& density,
+                    const ResampleOptions& options, const std::string& name);
+
+}  // namespace lloydscope

@@ -1,0 +1,67 @@
+#include "mesh_io.h"
+#include "metrics.h"
+#include "pipeline.h"
+#include "resample.h"
+#include "sites.h"
+#include "test_support.h"
+#include "topology.h"
+
+#include <algorithm>
+
+using namespace lloydscope;
+
+TEST(Resample, GivesAWellShapedDiskWhoseVerticesLieOnTheInput) {
+  const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  const Resampling r = resample(input, 400, {}, {}, "bumpy");
+  const Mesh& m = r.mesh.mesh;
+  EXPECT_NO_THROW(validateMesh(m, "resampled"));
+  EXPECT_TRUE(analyzeTopology(m).isDisk());
+  EXPECT_NEAR(m.vertexCount(), 400, 4);
+  EXPECT_GT(measureQuality(m).minAngle, measureQuality(input).minAngle + 10);
+  for (int v = 0; v < m.vertexCount(); ++v)
+    EXPECT_LT((m.points[v] - lift(input, r.domain, r.mesh.uv[v])).norm(), 1e-12);
+  // A point inside a resampled triangle maps onto the input surface, not onto the chord.
+  const Eigen::Vector3d middle(1.0 / 3, 1.0 / 3, 1.0 / 3);
+  const Triangle& t = m.triangles[0];
+  const Vec2 uv = (r.mesh.uv[t[0]] + r.mesh.uv[t[1]] + r.mesh.uv[t[2]]) / 3.0;
+  EXPECT_LT((r.toInput(input, 0, middle) - lift(input, r.domain, uv)).norm(), 1e-12);
+}
+
+TEST(Resample, TheRemeshedOutputLiesOnTheInputSurface) {
+  // The sphere cap's vertices lie on the unit sphere; points of its triangles are within the
+  // sagitta of its (finer) triangles, a chord of the resampled surface would be much deeper.
+  const Mesh input = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  RemeshOptions o;
+  o.sites.count = 150;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(input, o, "cap");
+  double deepest = 0, inputSagitta = 0;
+  for (const Vec3& p : r.output.points) deepest = std::max(deepest, 1.0 - p.norm());
+  for (const Triangle& t : input.triangles)
+    inputSagitta = std::max(
+        inputSagitta, 1.0 - ((input.points[t[0]] + input.points[t[1]] + input.points[t[2]]) / 3).norm());
+  EXPECT_LE(deepest, inputSagitta);
+}
+
+TEST(Sites, AChamferedCornerGivesOneBorderSampleNotTwo) {
+  // A square with its top-right corner cut off: two border corners of 135 degrees, 0.07
+  // apart, closer than half the spacing of 50 sites (0.15): only one of them is a sample.
+  Mesh m = test::grid(20);
+  auto at = [](int i, int j) { return j * 21 + i; };
+  m.triangles.resize(m.triangles.size() - 2);  // the top-right cell's two triangles
+  m.triangles.push_back({at(19, 19), at(20, 19), at(19, 20)});
+  const Mesh cleaned = assemble(m.triangles, m.points);
+  const Parameterization p = parameterize(cleaned, {ParamMethod::Lscm, Border::Circle}, "chamfered");
+  const Domain domain(p.uv, cleaned.triangles, {});
+  SiteOptions o;
+  o.count = 50;
+  const InitialSites sites = initialSites(cleaned, p, domain, o);
+  const double spacing = std::sqrt(2.0 * surfaceArea(cleaned) / (std::sqrt(3.0) * 50));
+  const size_t n = sites.fixed.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 a = lift(cleaned, domain, sites.fixed[i]);
+    const Vec3 b = lift(cleaned, domain, sites.fixed[(i + 1) % n]);
+    EXPECT_GT((b - a).norm(), 0.5 * spacing) << "samples " << i << " and " << i + 1 << " at "
+                                             << a.transpose() << " / " << b.transpose();
+  }
+}
