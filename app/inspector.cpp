@@ -136,7 +136,17 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
 
 Inspector::~Inspector() { stopRun(); }
 
+void Inspector::compareSolvers() {
+  LloydOptions o = options_.lloyd;
+  o.solver = options_.lloyd.solver == CvtSolver::Lloyd ? CvtSolver::Lbfgs : CvtSolver::Lloyd;
+  o.distanceThreshold = replay_->recording().distanceThreshold;
+  o.percentThreshold = replay_->recording().percentThreshold;
+  comparison_ = relaxAgain(replay_->recording(), o);
+  comparisonSolver_ = o.solver;
+}
+
 void Inspector::openReplay(Recording recording) {
+  comparison_.clear();  // of another run
   replay_ = std::make_unique<Replay>(std::move(recording));
   uploadedIteration_ = measuredIteration_ = edgesIteration_ = -1;
   canvasKey_ = CanvasKey{};
@@ -327,6 +337,7 @@ void OpeningView::applyTo(Inspector& inspector) const {
   if (!camera.empty()) inspector.setCamera(camera);
   inspector.setPresentation(presentation);
   inspector.showStage(stage);
+  if (compareSolvers) inspector.compareSolvers();
 }
 
 void Inspector::fitCamera() {
@@ -577,6 +588,10 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::Text("Hausdorff %.3f%%, RMS %.3f%% of diagonal", result_.fidelity.hausdorffPercent,
               result_.fidelity.rmsPercent);
   if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
+  const CvtSolver other =
+      options_.lloyd.solver == CvtSolver::Lloyd ? CvtSolver::Lbfgs : CvtSolver::Lloyd;
+  if (workerDone_ && ImGui::Button(("Compare with " + std::string(toString(other))).c_str()))
+    compareSolvers();  // its curves join the convergence plots, in grey
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pick = pickTriangles2D_ ? 1 : 0;
     ImGui::TextUnformatted("2D click pins a");
@@ -974,8 +989,9 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
 namespace {
 
 // A plot with axes and ticks over the whole recording; returns the iteration clicked, or -1.
-int plot(const char* title, const std::vector<double>& values, bool logScale, double threshold,
-         int current, const ImVec2& size) {
+// `other`: a second run's values, drawn in grey behind the first (empty: none).
+int plot(const char* title, const std::vector<double>& values, const std::vector<double>& other,
+         bool logScale, double threshold, int current, const ImVec2& size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(title, size);
@@ -989,11 +1005,12 @@ int plot(const char* title, const std::vector<double>& values, bool logScale, do
   if (values.empty()) return -1;
   auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };
   double lo = INFINITY, hi = -INFINITY;
-  for (double v : values)
-    if (!logScale || v > 0) {
-      lo = std::min(lo, transform(v));
-      hi = std::max(hi, transform(v));
-    }
+  for (const std::vector<double>* series : {&values, &other})
+    for (double v : *series)
+      if (!logScale || v > 0) {
+        lo = std::min(lo, transform(v));
+        hi = std::max(hi, transform(v));
+      }
   if (threshold > 0) {
     lo = std::min(lo, transform(threshold));
     hi = std::max(hi, transform(threshold));
@@ -1003,7 +1020,7 @@ int plot(const char* title, const std::vector<double>& values, bool logScale, do
     lo = std::floor(lo);
     hi = std::ceil(hi);
   }
-  const int n = static_cast<int>(values.size());
+  const int n = static_cast<int>(std::max(values.size(), other.size()));
   auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
   auto y = [&](double v) { return b.y - static_cast<float>((transform(v) - lo) / (hi - lo)) * (b.y - a.y); };
   // Y ticks: every power of ten on a log axis, five steps on a linear one.
@@ -1025,12 +1042,16 @@ int plot(const char* title, const std::vector<double>& values, bool logScale, do
   }
   dl->PushClipRect(a, b, true);
   if (threshold > 0) dl->AddLine(ImVec2(a.x, y(threshold)), ImVec2(b.x, y(threshold)), rgb(0.2f, 0.6f, 0.2f), 1.5f);
-  std::vector<ImVec2> line;
-  for (int k = 0; k < n; ++k)
-    if (!logScale || values[k] > 0) line.emplace_back(x(k), y(values[k]));
-  dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgb(0.15f, 0.3f, 0.7f), 0, 1.5f);
+  auto polyline = [&](const std::vector<double>& series, ImU32 colour) {
+    std::vector<ImVec2> line;
+    for (size_t k = 0; k < series.size(); ++k)
+      if (!logScale || series[k] > 0) line.emplace_back(x(static_cast<double>(k)), y(series[k]));
+    dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, 1.5f);
+  };
+  polyline(other, rgb(0.6f, 0.6f, 0.6f));
+  polyline(values, rgb(0.15f, 0.3f, 0.7f));
   dl->AddLine(ImVec2(x(current), a.y), ImVec2(x(current), b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
-  if (current < n && (!logScale || values[current] > 0))
+  if (current < static_cast<int>(values.size()) && (!logScale || values[current] > 0))
     dl->AddCircleFilled(ImVec2(x(current), y(values[current])), 4.0f, rgb(0.85f, 0.3f, 0.1f));
   dl->PopClipRect();
   if (active) {
@@ -1044,23 +1065,37 @@ int plot(const char* title, const std::vector<double>& values, bool logScale, do
 
 void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   beginPane("Convergence", pos, size, kCanvasPaneFlags);
-  const auto& its = replay_->recording().iterations;
-  std::vector<double> energy, displacement, moving;
-  for (const IterationRecord& it : its) {
-    energy.push_back(it.energy);
-    displacement.push_back(it.maxDisplacement);
-    moving.push_back(100.0 * it.fractionMoving);
+  struct Curves {
+    std::vector<double> energy, displacement, moving;
+    explicit Curves(const std::vector<IterationRecord>& its) {
+      for (const IterationRecord& it : its) {
+        energy.push_back(it.energy);
+        displacement.push_back(it.maxDisplacement);
+        moving.push_back(100.0 * it.fractionMoving);
+      }
+    }
+  };
+  const Curves run(replay_->recording().iterations), other(comparison_);
+  if (!comparison_.empty()) {  // which curve is which
+    const char* solver = toString(options_.lloyd.solver);
+    ImGui::TextColored(ImVec4(0.15f, 0.3f, 0.7f, 1), "%s: this run, %d iterations", solver,
+                       replay_->iterationCount());
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.45f, 0.45f, 0.45f, 1), "   %s from the same start: %d iterations%s",
+                       toString(comparisonSolver_), static_cast<int>(comparison_.size()),
+                       100.0 * comparison_.back().fractionMoving < replay_->recording().percentThreshold
+                           ? " (converged)" : " (not converged)");
   }
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 each((avail.x - 2 * ImGui::GetStyle().ItemSpacing.x) / 3, avail.y);
-  int jump = plot("CVT energy", energy, false, 0, iteration_, each);
+  int jump = plot("CVT energy", run.energy, other.energy, false, 0, iteration_, each);
   ImGui::SameLine();
-  int k = plot("max distance site-centroid (log)", displacement, true,
+  int k = plot("max distance site-centroid (log)", run.displacement, other.displacement, true,
                replay_->recording().distanceThreshold, iteration_, each);
   if (k >= 0) jump = k;
   ImGui::SameLine();
-  k = plot("% sites farther than threshold (log)", moving, true, replay_->recording().percentThreshold,
-           iteration_, each);
+  k = plot("% sites farther than threshold (log)", run.moving, other.moving, true,
+           replay_->recording().percentThreshold, iteration_, each);
   if (k >= 0) jump = k;
   if (jump >= 0) setIteration(jump);
   ImGui::End();

@@ -61,6 +61,7 @@ struct OpeningView {
   std::string camera;                 // "yaw pitch distance x y z"; empty: fit to the mesh
   bool presentation = false;          // classroom mode
   std::optional<Stage> stage;         // show this stage of the lesson, with its caption
+  bool compareSolvers = false;        // also the other solver's curves (Inspector::compareSolvers)
   void applyTo(Inspector& inspector) const;
 };
 
@@ -86,6 +87,9 @@ class Inspector {
   // cores, scrubbing then overlaps the geometry with lavapipe's rasterization.
   void prepare();
   void setIteration(int k);
+  // Relaxes the run's start again with the other solver (Lloyd for L-BFGS, L-BFGS for Lloyd)
+  // and draws its curves beside the run's in the convergence pane. Blocks while it runs.
+  void compareSolvers();
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }
   int iteration() const { return iteration_; }
@@ -153,6 +157,8 @@ class Inspector {
   std::mutex pendingMutex_;
   std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
   std::string message_;                   // the last error or note, shown in the controls
+  std::vector<IterationRecord> comparison_;  // the other solver's run, if compared
+  CvtSolver comparisonSolver_ = CvtSolver::Lloyd;
   char meshPath_[512] = {}, recordingPath_[512] = {};
   CanvasRenderer canvas_;
   // What the 2D pane's geometry was built for: rebuilt when any of it changes.

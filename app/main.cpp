@@ -174,6 +174,8 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)");
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
                          "Pin this triangle of the result (repeatable)");
+  inspectCmd->add_flag("--compare-solvers", shot.view.compareSolvers,
+                       "Also relax the run's start with the other solver and plot both curves");
   inspectCmd->add_flag("--presentation", shot.view.presentation,
                        "Classroom mode: large fonts, thick lines, no controls pane");
   std::string stage;

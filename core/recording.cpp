@@ -170,6 +170,15 @@ std::vector<BoundedCell> Recording::cells(const Domain& domain, int iteration,
                       hints);
 }
 
+std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options) {
+  if (recording.iterations.empty()) return {};
+  const Domain domain = recording.domain();
+  LloydSolver solver(domain, recording.fixedSites, recording.iterations.front().sites.unpack(),
+                     options);
+  solver.run();
+  return solver.takeIterations();
+}
+
 void saveRecording(const Recording& recording, const std::string& path) {
   const std::string payload = encodePayload(recording);
   Writer file;

@@ -36,6 +36,10 @@ struct Recording {
                                  std::vector<int>* hints = nullptr) const;
 };
 
+// The recorded run's start (its first iteration's sites), relaxed again with `options` (another
+// solver, say): the iterations of that run, to compare convergence curves.
+std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options);
+
 // Written to "<path>.tmp" and renamed, so an existing file is replaced whole or not at all.
 void saveRecording(const Recording& recording, const std::string& path);
 // Throws Error("<path>: ...") for a missing, truncated, corrupt or other-version file.

@@ -66,6 +66,10 @@ void checkScene(const std::string& name, const std::string& args) {
 TEST(Inspector, FirstIteration) { checkScene("inspector_iteration0.png", "--iteration 0"); }
 TEST(Inspector, SecondIteration) { checkScene("inspector_iteration1.png", "--iteration 1"); }
 TEST(Inspector, LastIteration) { checkScene("inspector_last.png", ""); }
+// The run's L-BFGS curves and plain Lloyd's from the same start, in grey.
+TEST(Inspector, ComparesTheSolversCurves) {
+  checkScene("inspector_compared.png", "--compare-solvers --pane plots");
+}
 
 TEST(Inspector, PicturesDifferBetweenIterations) {
   // Guards the snapshots themselves: the scenes must show different iterations.

@@ -116,3 +116,20 @@ TEST(Recording, SavingToAnUnwritablePlaceKeepsNothingHalfWritten) {
   const std::string path = test::tempPath("no-such-dir/x.lsrec");
   EXPECT_THROW(saveRecording(sphereCapRun().recording, path), Error);
 }
+
+TEST(Recording, RelaxAgainWithAnotherSolverStartsWhereTheRunStarted) {
+  RemeshOptions o;
+  o.measureFidelity = false;
+  const Mesh input = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  const Recording r = remesh(input, o, "cap").recording;
+  LloydOptions lloyd;
+  lloyd.solver = CvtSolver::Lloyd;
+  lloyd.maxIterations = 30;
+  const std::vector<IterationRecord> again = relaxAgain(r, lloyd);
+  ASSERT_EQ(again.size(), 30u);  // plain Lloyd is far from converged after 30
+  EXPECT_EQ(again.front().sites, r.iterations.front().sites);
+  EXPECT_DOUBLE_EQ(again.front().energy, r.iterations.front().energy);
+  for (size_t k = 1; k < again.size(); ++k) EXPECT_LE(again[k].energy, again[k - 1].energy + 1e-15);
+  // L-BFGS got lower in fewer iterations.
+  EXPECT_LT(r.iterations.back().energy, again.back().energy);
+}
