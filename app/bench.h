@@ -21,7 +21,7 @@ void runBench(const BenchOptions& options);
 
 // The cost of one Lloyd iteration at options.stepSites sites on the first model (default:
 // the bundled bumpy disk), uniform and area density, one core and all: a table of the median
-// of iterations 1-5 (iteration 0 has no search hints), in ms and in µs per site.
+// and the best of iterations 1-10 (iteration 0 has no hints), in ms and in µs per site.
 void runStepBench(const BenchOptions& options);
 
 }  // namespace lloydscope

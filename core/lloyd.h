@@ -98,7 +98,7 @@ class LloydSolver {
   std::vector<Vec2> fixed_, movable_;
   LloydOptions options_;
   std::vector<IterationRecord> iterations_;
-  std::vector<int> hints_;            // triangle of each site, to start the next search from
+  CellHints hints_;                   // from the last cells, to start the next ones from
   std::vector<Evaluation> current_;   // 0 or 1 element: the evaluation of movable_, if known
   std::vector<std::vector<double>> historyS_, historyY_;  // L-BFGS memory
 };

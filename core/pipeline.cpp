@@ -67,7 +67,9 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
       resampled_([&]() -> std::optional<Resampling> {
         if (!options_.resample) return std::nullopt;
         Stopwatch stage;
-        Resampling r = resample(input_, options_.sites.count, options_.density, {}, name);
+        // No finer than the input: more sites than that are sampled on the resampled surface.
+        Resampling r = resample(input_, std::min(siteCount(), input_.vertexCount()),
+                                options_.density, {}, name);
         ms_.resample = stage.lap();
         return r;
       }()),
@@ -91,8 +93,10 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
       }()) {
   Stopwatch stage;
   SiteOptions siteOptions = options_.sites;
-  // The resampled surface's vertices are already well spread: they are where Lloyd starts.
-  if (resampled_) siteOptions.fromInputVertices = true;
+  siteOptions.count = siteCount();
+  // The resampled surface's vertices are already well spread: where there are as many of them
+  // as sites, they are where Lloyd starts.
+  if (resampled_ && siteCount() <= input_.vertexCount()) siteOptions.fromInputVertices = true;
   sites_ = initialSites(surface(), param_, domain_, siteOptions);
   ms_.sites = stage.lap();
   solver_ = std::make_unique<LloydSolver>(domain_, sites_.fixed, sites_.movable, options_.lloyd);

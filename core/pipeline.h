@@ -81,6 +81,10 @@ class RemeshSession {
 
  private:
   Mesh buildOutput() const;
+  // How many sites the options ask for (0 in them: as many as the input has vertices).
+  int siteCount() const {
+    return options_.sites.count > 0 ? options_.sites.count : input_.vertexCount();
+  }
   // The mesh that is parameterized: the resampled surface, or the input itself.
   const Mesh& surface() const { return resampled_ ? resampled_->mesh.mesh : input_; }
 

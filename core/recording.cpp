@@ -165,7 +165,7 @@ Recording decodePayload(Reader& in, const std::string& path) {
 }  // namespace
 
 std::vector<BoundedCell> Recording::cells(const Domain& domain, int iteration,
-                                          bool keepGeometry, std::vector<int>* hints) const {
+                                          bool keepGeometry, CellHints* hints) const {
   return computeCells(domain, allSites(fixedSites, iterations.at(iteration).sites), keepGeometry,
                       hints);
 }

@@ -33,7 +33,7 @@ struct Recording {
   // The cells of iteration k, recomputed from its sites: bit-identical to those of the run.
   // `hints` as computeCells takes them.
   std::vector<BoundedCell> cells(const Domain& domain, int iteration, bool keepGeometry,
-                                 std::vector<int>* hints = nullptr) const;
+                                 CellHints* hints = nullptr) const;
 };
 
 // The recorded run's start (its first iteration's sites), relaxed again with `options` (another

@@ -29,7 +29,7 @@ const IterationView& Replay::view(int k) {
   view_.cells = recording_.cells(domain_, k, /*keepGeometry=*/true, &hints_);
   view_.liftedSites.clear();
   for (size_t i = 0; i < view_.sites.size(); ++i)
-    view_.liftedSites.push_back(lift(recording_.input, domain_, view_.sites[i], hints_[i]));
+    view_.liftedSites.push_back(lift(recording_.input, domain_, view_.sites[i], hints_.triangle[i]));
   // Both outputs are made of exactly these lifted points: no second lift.
   const size_t fixedCount = recording_.fixedSites.size();
   view_.outputUV.clear();

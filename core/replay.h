@@ -40,7 +40,7 @@ class Replay {
   Domain domain_;
   RemeshMethod method_;
   IterationView view_;
-  std::vector<int> hints_;  // each site's parameter triangle in the last view: nearby iterations
+  CellHints hints_;  // each site's parameter triangle in the last view: nearby iterations
                             // start their searches there
 };
 

@@ -3,9 +3,15 @@
 #include "cgal_types.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <thread>
 
@@ -14,7 +20,9 @@ namespace lloydscope {
 namespace {
 
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
-using Tds = CGAL::Triangulation_data_structure_2<VertexBase>;
+// Each face keeps its circumcentre, computed once for the three cells that share it.
+using FaceBase = CGAL::Triangulation_face_base_with_info_2<Vec2, Kernel>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 constexpr int kDummy = -1;
 
@@ -87,7 +95,8 @@ void integrateTriangle(const Vec2 (&p)[3], const double (&rho)[3], const Vec2& s
   sum.energy += area * energy;
 }
 
-Delaunay triangulateSites(const std::vector<Vec2>& sites) {
+// `order`: the sites in a spatial order (from a previous call), or empty; receives the order used.
+Delaunay triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& order) {
   Vec2 lo(0, 0), hi(1, 1);
   for (const Vec2& s : sites) {
     lo = lo.cwiseMin(s);
@@ -96,34 +105,83 @@ Delaunay triangulateSites(const std::vector<Vec2>& sites) {
   // Four far dummy sites make every real cell bounded; their own cells are never used.
   const Vec2 center = 0.5 * (lo + hi);
   const double far = 10.0 * std::max((hi - lo).maxCoeff(), 1.0);
-  std::vector<std::pair<Point2, int>> points;
-  points.reserve(sites.size() + 4);
-  for (int i = 0; i < static_cast<int>(sites.size()); ++i)
-    points.emplace_back(Point2(sites[i].x(), sites[i].y()), i);
+  Delaunay dt;
   for (int dx : {-1, 1})
     for (int dy : {-1, 1})
-      points.emplace_back(Point2(center.x() + dx * far, center.y() + dy * far), kDummy);
-  Delaunay dt;
-  dt.insert(points.begin(), points.end());  // spatially sorted inside
+      dt.insert(Point2(center.x() + dx * far, center.y() + dy * far))->info() = kDummy;
+  // Inserting in a spatial order, each point from the last one, is what makes this fast. Sites
+  // that moved a little keep a good order: the Hilbert sort is done once, not every iteration.
+  std::vector<Point2> points;
+  points.reserve(sites.size());
+  for (const Vec2& s : sites) points.emplace_back(s.x(), s.y());
+  if (order.size() != sites.size()) {
+    std::vector<std::size_t> sorted(sites.size());
+    std::iota(sorted.begin(), sorted.end(), 0);
+    using Traits =
+        CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::Pointer_property_map<Point2>::type>;
+    CGAL::spatial_sort(sorted.begin(), sorted.end(), Traits(CGAL::make_property_map(points)));
+    order.assign(sorted.begin(), sorted.end());
+  }
+  Delaunay::Face_handle near;
+  for (int i : order) {
+    const size_t before = dt.number_of_vertices();
+    const Delaunay::Vertex_handle v = dt.insert(points[i], near);
+    // Sites on top of each other share one vertex: the smallest index keeps it, whatever the
+    // order of insertion.
+    v->info() = dt.number_of_vertices() > before ? i : std::min(v->info(), i);
+    near = v->face();
+  }
   return dt;
 }
 
-std::vector<Vec2> voronoiPolygon(const Delaunay& dt, Delaunay::Vertex_handle v) {
-  std::vector<Vec2> polygon;
+// fn(begin, end) over [0, count) split into `threads` contiguous parts, one per thread.
+template <class Fn>
+void parallelFor(size_t count, size_t threads, const Fn& fn) {
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t)
+    pool.emplace_back(fn, count * t / threads, count * (t + 1) / threads);
+  fn(0, count / threads);
+  for (std::thread& thread : pool) thread.join();
+}
+
+void storeCircumcenters(size_t begin, size_t end,
+                        const std::vector<Delaunay::Face_handle>& faces) {
+  auto before = [](const Point2& a, const Point2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  };
+  for (size_t f = begin; f < end; ++f) {
+    // The same three points in the same order, however the triangulation stores the face
+    // (insertion order changes that): the same rounding, bit for bit.
+    std::array<Point2, 3> p = {faces[f]->vertex(0)->point(), faces[f]->vertex(1)->point(),
+                               faces[f]->vertex(2)->point()};
+    std::sort(p.begin(), p.end(), before);
+    const Point2 c = CGAL::circumcenter(p[0], p[1], p[2]);
+    faces[f]->info() = Vec2(c.x(), c.y());
+  }
+}
+
+// The cell of v: the circumcentres of its faces, counter-clockwise, starting at the smallest
+// (so that the cell's integrals do not depend on how the triangulation stores its faces).
+void voronoiPolygon(const Delaunay& dt, Delaunay::Vertex_handle v, std::vector<Vec2>& polygon) {
+  polygon.clear();
   auto face = dt.incident_faces(v), end = face;
   do {
-    const Point2 c = dt.circumcenter(face);
-    const Vec2 p(c.x(), c.y());
+    const Vec2& p = face->info();
     if (polygon.empty() || p != polygon.back()) polygon.push_back(p);
   } while (++face != end);
   while (polygon.size() > 1 && polygon.front() == polygon.back()) polygon.pop_back();
-  return polygon;
+  std::rotate(polygon.begin(),
+              std::min_element(polygon.begin(), polygon.end(),
+                               [](const Vec2& a, const Vec2& b) {
+                                 return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+                               }),
+              polygon.end());
 }
 
 // Buffers reused from cell to cell.
 struct Workspace {
   std::vector<int> visitedBy, queue;
-  std::vector<Vec2> piece, scratch;
+  std::vector<Vec2> polygon, piece, scratch;
   std::vector<double> rho, side;
   std::vector<std::pair<int, PolygonIntegrals>> parts;  // (triangle, integrals of the piece)
 };
@@ -277,13 +335,15 @@ PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
 }
 
 std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
-                                      bool keepGeometry, std::vector<int>* hints,
+                                      bool keepGeometry, CellHints* hints,
                                       int threadCount) {
   std::vector<BoundedCell> cells(sites.size());
   for (size_t i = 0; i < sites.size(); ++i) cells[i].centroid = sites[i];
   if (sites.empty() || domain.triangles().empty()) return cells;
-  if (hints) hints->resize(sites.size(), -1);
-  const Delaunay dt = triangulateSites(sites);
+  CellHints local;
+  if (!hints) hints = &local;
+  hints->triangle.resize(sites.size(), -1);
+  Delaunay dt = triangulateSites(sites, hints->order);
   // A site that coincides with an earlier one has no vertex of its own: its cell stays empty.
   std::vector<Delaunay::Vertex_handle> vertices;
   for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
@@ -297,12 +357,13 @@ std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Ve
     for (size_t k = begin; k < end; ++k) {
       const Delaunay::Vertex_handle v = vertices[k];
       const int id = v->info();
-      const int hint = hints ? (*hints)[id] : -1;
+      const int hint = hints->triangle[id];
       const int start =
           (hint >= 0 ? domain.locate(sites[id], hint) : domain.locate(sites[id])).triangle;
-      if (hints) (*hints)[id] = start;
+      hints->triangle[id] = start;
       BoundedCell& cell = cells[id];
-      const std::vector<Vec2> polygon = voronoiPolygon(dt, v);
+      voronoiPolygon(dt, v, w.polygon);
+      const std::vector<Vec2>& polygon = w.polygon;
       clipAndIntegrate(domain, polygon, sites[id], start, id, keepGeometry, w, cell);
       if (keepGeometry) {
         cell.voronoi = polygon;
@@ -317,11 +378,12 @@ std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Ve
       threadCount > 0         ? static_cast<size_t>(threadCount)
       : vertices.size() < 500 ? 1
                               : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t)
-    pool.emplace_back(work, vertices.size() * t / threads, vertices.size() * (t + 1) / threads);
-  work(0, vertices.size() / threads);
-  for (std::thread& thread : pool) thread.join();
+  std::vector<Delaunay::Face_handle> faces;
+  faces.reserve(dt.number_of_faces());
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) faces.push_back(f);
+  parallelFor(faces.size(), threads,
+              [&](size_t begin, size_t end) { storeCircumcenters(begin, end, faces); });
+  parallelFor(vertices.size(), threads, work);
   return cells;
 }
 

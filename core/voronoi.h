@@ -45,12 +45,19 @@ std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
 // One cell's edges with its neighbours (the same segments as voronoiEdges, both directions).
 std::vector<std::pair<Vec2, Vec2>> cellOutline(const Domain& domain, const BoundedCell& cell);
 
+// What one computeCells call leaves for the next one on nearby sites (Lloyd's next
+// iteration): where to start searching, and in which order to insert them.
+struct CellHints {
+  std::vector<int> triangle;  // per site, the parameter triangle that held it (or -1)
+  std::vector<int> order;     // the sites in the spatial (Hilbert) order of the last call
+};
+
 // Cells of all `sites`, in their order. Deterministic: the same sites give bit-identical cells,
-// whatever the hints. `hints`, if given, holds for each site a triangle near it (or -1) and
-// receives the triangle that holds it: pass it back next iteration to skip the spatial search.
+// whatever the hints. `hints`, if given, is read and updated: pass it back next iteration to
+// skip the spatial search and the spatial sort.
 // `threads`: 0 for every core (from 500 sites up), or how many.
 std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
-                                      bool keepGeometry, std::vector<int>* hints = nullptr,
+                                      bool keepGeometry, CellHints* hints = nullptr,
                                       int threads = 0);
 
 }  // namespace lloydscope

@@ -1,6 +1,7 @@
 #include "test_support.h"
 #include "voronoi.h"
 
+#include <numeric>
 #include <random>
 
 using namespace lloydscope;
@@ -108,7 +109,10 @@ TEST(BoundedCells, HintsDoNotChangeABit) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec2> sites;
   for (int i = 0; i < 600; ++i) sites.emplace_back(u(rng), u(rng));
-  std::vector<int> hints(sites.size(), 1);
+  CellHints hints;
+  hints.triangle.assign(sites.size(), 1);
+  hints.order.resize(sites.size());  // the reverse order: a bad one, and not CGAL's
+  std::iota(hints.order.rbegin(), hints.order.rend(), 0);
   const auto a = computeCells(domain, sites, false);
   const auto b = computeCells(domain, sites, false, &hints);
   // Nor does the number of threads the cells are split over.
