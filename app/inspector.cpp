@@ -360,7 +360,8 @@ const QualityMetrics& Inspector::currentQuality() {
 void Inspector::uploadMesh() {
   const IterationView& view = replay_->view(iteration_);
   const Layers shown = layers();
-  const Mesh& mesh = shown.input3D ? replay_->recording().input : view.output;
+  // The mesh the user opened; from a recording alone, the mesh that was parameterized.
+  const Mesh& mesh = !shown.input3D ? view.output : input_ ? *input_ : replay_->recording().input;
   std::vector<std::array<float, 3>> colors;
   for (const Triangle& t : mesh.triangles) {
     if (!colorByAngle_) {
@@ -834,7 +835,8 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
       return rgb(c[0], c[1], c[2]);
     });
   dl->AddText(ImVec2(p0.x + 8, p0.y + 4), rgb(0.1f, 0.1f, 0.1f),
-              shown.input3D ? "input mesh" : (std::string("result at iteration ") + std::to_string(iteration_) +
+              shown.input3D ? (input_ ? "input mesh" : "the mesh that was parameterized")
+                            : (std::string("result at iteration ") + std::to_string(iteration_) +
                                            " (" + toString(replay_->method()) + ")").c_str());
   ImGui::End();
 }

@@ -10,3 +10,12 @@ $bin inspect assets/bumpy_disk.off --no-timings --iteration 3 --select-cell 400 
   --select-triangle 700 --screenshot docs/inspector_selection.png
 $bin inspect assets/bumpy_disk.off --no-timings --iteration 1 --presentation --stage centroids \
   --select-cell 400 --screenshot docs/inspector_lesson.png
+$bin inspect assets/bumpy_disk.off --no-timings --compare-solvers --pane plots \
+  --screenshot docs/inspector_compared.png
+# Results on two of the bench's inputs (CGAL's samples, extracted by ./build.sh into data/cgal).
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for model in three_peaks lion-head; do
+  $bin simplify data/cgal/$model.off -o "$tmp/$model.off" --vertices 1000 > /dev/null
+  $bin inspect "$tmp/$model.off" --no-timings --screenshot docs/result_$model.png --size 1280x800
+done
