@@ -2,7 +2,9 @@
 
 #include "metrics.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <unordered_map>
 
 namespace lloydscope {
@@ -305,6 +307,88 @@ void repairAngles(LiftedMesh& lm, const SurfaceMap& surface,
   flipEdges(m, raisesSmallestAngle);
 }
 
+// A flat triangle that neither moves nor flips can fix (a vertex on the segment between two
+// others, on a sharp ridge where every flip would fold the surface) loses its shortest edge:
+// its inside end is merged into the other end. The merged vertex is left unused; polish()
+// drops such vertices at the end. Returns how many were merged.
+constexpr double kCollapseBelow = 10.0;
+
+// Merges `from` into `to` if that keeps the mesh manifold (the two share exactly the two
+// neighbours across their edge) and folds none of the triangles that keep `from`.
+bool mergeVertex(Mesh& m, int from, int to) {
+  std::vector<int> fromRing, toRing;
+  std::vector<size_t> changed, removed;
+  for (size_t g = 0; g < m.triangles.size(); ++g) {
+    const Triangle& tri = m.triangles[g];
+    for (int a = 0; a < 3; ++a) {
+      if (tri[a] == from) fromRing.insert(fromRing.end(), {tri[(a + 1) % 3], tri[(a + 2) % 3]});
+      if (tri[a] == to) toRing.insert(toRing.end(), {tri[(a + 1) % 3], tri[(a + 2) % 3]});
+    }
+  }
+  for (auto* ring : {&fromRing, &toRing}) {
+    std::sort(ring->begin(), ring->end());
+    ring->erase(std::unique(ring->begin(), ring->end()), ring->end());
+  }
+  std::vector<int> shared;
+  std::set_intersection(fromRing.begin(), fromRing.end(), toRing.begin(), toRing.end(),
+                        std::back_inserter(shared));
+  if (shared.size() != 2) return false;
+  for (size_t g = 0; g < m.triangles.size(); ++g) {
+    const Triangle& tri = m.triangles[g];
+    if (std::find(tri.begin(), tri.end(), from) == tri.end()) continue;
+    if (std::find(tri.begin(), tri.end(), to) != tri.end()) {
+      removed.push_back(g);
+      continue;
+    }
+    Triangle after = tri;
+    std::replace(after.begin(), after.end(), from, to);
+    const Vec3 n0 = normal(m, tri), n1 = normal(m, after);
+    if (!(n1.dot(n0) > 0.1 * n0.norm() * n1.norm())) return false;
+    changed.push_back(g);
+  }
+  if (removed.size() != 2) return false;
+  for (size_t g : changed) std::replace(m.triangles[g].begin(), m.triangles[g].end(), from, to);
+  // Removed triangles become markers, erased by the caller (indices stay valid meanwhile).
+  for (size_t g : removed) m.triangles[g] = {to, to, to};
+  return true;
+}
+
+}  // namespace
+
+int collapseFlatTriangles(Mesh& m) {
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  int merged = 0;
+  for (size_t f = 0; f < m.triangles.size(); ++f) {
+    const Triangle t = m.triangles[f];
+    if (t[0] == t[1] || smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]) >= kCollapseBelow)
+      continue;
+    // Its edges, shortest first; each end that is not on the border may go.
+    std::array<int, 3> edges = {0, 1, 2};
+    auto length = [&](int k) { return (m.points[t[(k + 1) % 3]] - m.points[t[k]]).squaredNorm(); };
+    std::sort(edges.begin(), edges.end(), [&](int a, int b) { return length(a) < length(b); });
+    bool done = false;
+    for (int k : edges)
+      for (auto [from, to] : {std::pair{t[k], t[(k + 1) % 3]}, std::pair{t[(k + 1) % 3], t[k]}})
+        if (!done && !border[from]) done = mergeVertex(m, from, to);
+    merged += done;
+  }
+  m.triangles.erase(std::remove_if(m.triangles.begin(), m.triangles.end(),
+                                   [](const Triangle& t) { return t[0] == t[1]; }),
+                    m.triangles.end());
+  return merged;
+}
+
+namespace {
+
+// Drops the vertices no triangle uses (merged ones), keeping the order of the rest.
+void dropUnusedVertices(LiftedMesh& lm) {
+  std::vector<int> kept;
+  lm.mesh = assemble(lm.mesh.triangles, lm.mesh.points, &kept);
+  std::vector<Vec2> uv;
+  for (int v : kept) uv.push_back(lm.uv[v]);
+  lm.uv = std::move(uv);
+}
+
 }  // namespace
 
 Vec3 SurfaceMap::at(const Location& l) const {
@@ -333,8 +417,13 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
     flipEdges(mesh.mesh, raisesRegularity);
     relaxPass(mesh, surface, surfaceDensity, options.target, triangleOf, weight);
   }
-  for (int pass = 0; pass < options.repairPasses; ++pass)
+  for (int pass = 0; pass < options.repairPasses; ++pass) {
     repairAngles(mesh, surface, triangleOf, weight);
+    if (pass + 1 == options.repairPasses && collapseFlatTriangles(mesh.mesh) > 0) {
+      repairAngles(mesh, surface, triangleOf, weight);  // around the merged vertices
+      dropUnusedVertices(mesh);
+    }
+  }
 }
 
 const char* toString(PolishTarget target) {

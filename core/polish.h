@@ -38,9 +38,10 @@ struct SurfaceMap {
   Vec3 at(const Location& l) const;
 };
 
-// The border stays as it is (its vertices do not move, its edges do not flip). `surfaceDensity`
+// The border stays as it is (its vertices do not move, its edges do not flip). A flat
+// triangle (under 10 degrees) that nothing else fixes loses an edge: a vertex fewer. `surfaceDensity`
 // (of the domain's triangles; empty: uniform) weights the centres so that a density that asked
-// for smaller cells keeps them. Vertices keep their order; mesh.uv follows.
+// for smaller cells keeps them. Vertices keep their order (but for merged ones); mesh.uv follows.
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options);
 
@@ -48,6 +49,11 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
 // Delaunay criterion) where the flip neither duplicates an edge nor folds the surface.
 // Returns the number of flips.
 int flipToDelaunay(Mesh& mesh);
+
+// Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
+// triangle's shortest edge it can go (keeping the mesh manifold and unfolded); the merged
+// vertices are left unused. Returns how many were merged.
+int collapseFlatTriangles(Mesh& mesh);
 
 const char* toString(PolishTarget target);
 PolishTarget parsePolishTarget(const std::string& text);  // throws Error on unknown names

@@ -157,3 +157,22 @@ TEST(Polish, ValenceFlipsMakeMoreVerticesRegular) {
             measureQuality(a.mesh).irregularBoundaryAware - 3);
   EXPECT_GE(measureQuality(b.mesh).minAngle, std::min(30.0, measureQuality(a.mesh).minAngle) - 1e-9);
 }
+
+TEST(Polish, AFlatTriangleLosesAVertex) {
+  // A square whose inside vertex X lies almost on the segment A C: triangle (A, C, X) is flat.
+  Mesh m;
+  m.points = {{0, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 1, 0}, {0, 1, 0},
+              {0.3, 0.5, 0}, {0.7, 0.5, 0}, {0.5, 0.5005, 0}};
+  enum { B0, M0, B1, B2, M2, B3, A, C, X };
+  m.triangles = {{B0, M0, A}, {M0, C, A}, {M0, B1, C}, {C, B1, B2}, {M2, C, B2},
+                 {X, C, M2},  {A, X, M2}, {A, C, X},  {B3, A, M2}, {B0, A, B3}};
+  ASSERT_NO_THROW(validateMesh(m, "square"));
+  ASSERT_LT(measureQuality(m).minAngle, 1.0);
+  EXPECT_EQ(collapseFlatTriangles(m), 1);
+  const Mesh merged = assemble(m.triangles, m.points);
+  EXPECT_EQ(merged.vertexCount(), 8);
+  EXPECT_NO_THROW(validateMesh(merged, "merged"));
+  EXPECT_TRUE(analyzeTopology(merged).isDisk());
+  EXPECT_GT(measureQuality(merged).minAngle, 10.0);
+  EXPECT_EQ(collapseFlatTriangles(m), 0);  // nothing flat left
+}
