@@ -45,8 +45,8 @@ bool notDelaunay(const Quad& q) {
 bool raisesSmallestAngle(const Quad& q) { return q.smallestAfter() > q.smallestBefore() + 1e-6; }
 
 // Valence flips (as in Botsch and Kobbelt's remesher) where no angle of the pair falls under
-// kValenceFlipAngle degrees.
-constexpr double kValenceFlipAngle = 30.0;
+// kValenceFlipAngle degrees (the relaxation and the repair after them lift it again).
+constexpr double kValenceFlipAngle = 25.0;
 bool raisesRegularity(const Quad& q) {
   return q.irregularityAfter < q.irregularityBefore && q.smallestAfter() >= kValenceFlipAngle;
 }

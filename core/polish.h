@@ -21,9 +21,10 @@ enum class PolishTarget {
 struct PolishOptions {
   int iterations = 3;  // flip-and-relax passes; 0: flips only
   PolishTarget target = PolishTarget::Centroid;
-  // Then passes of valence-improving flips (where no angle falls under 30 degrees), each
-  // followed by a relaxation pass.
-  int valencePasses = 2;
+  // Then passes of valence-improving flips (where no angle falls under 25 degrees), each
+  // followed by a relaxation pass, which rounds the flipped triangles again. 5 passes at 25
+  // degrees met issue 5's bars on 8 of the bench's 15 inputs, 2 at 30 degrees on 6.
+  int valencePasses = 5;
   // Then passes over the triangles with small angles only: vertex moves and edge flips that
   // raise the smallest angle around them.
   int repairPasses = 3;

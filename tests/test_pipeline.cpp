@@ -103,7 +103,7 @@ TEST_P(CgalSamples, RemeshTo1000Vertices) {
   EXPECT_TRUE(r.converged);
   EXPECT_NEAR(r.output.vertexCount(), 1000, 10);
   EXPECT_GE(r.after.avgMinAngle, 52.0);
-  EXPECT_LE(r.after.irregularBoundaryAware, 20.0);
+  EXPECT_LE(r.after.irregularBoundaryAware, 22.0);
   if (GetParam().meetsIssueBar) {
     EXPECT_LE(r.after.irregularBoundaryAware, 15.0);
     EXPECT_GE(r.after.minAngle, 30.0);
