@@ -1,0 +1,143 @@
+#include "cut.h"
+#include "mesh_io.h"
+#include "test_support.h"
+#include "topology.h"
+
+#include <cmath>
+
+using namespace lloydscope;
+
+namespace {
+
+// An n x m grid on the surface (u, v) -> point(u, v), u and v in [0, 1], closed up in u and/or
+// v by reusing the first row or column.
+template <class Point>
+Mesh wrappedGrid(int n, int m, bool wrapU, bool wrapV, Point point) {
+  const int columns = wrapU ? n : n + 1, rows = wrapV ? m : m + 1;
+  Mesh mesh;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) mesh.points.push_back(point(double(i) / n, double(j) / m));
+  auto at = [&](int i, int j) { return (j % rows) * columns + (i % columns); };
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+Mesh torus() {
+  return wrappedGrid(24, 12, true, true, [](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return Vec3((2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a),
+                0.7 * std::sin(b));
+  });
+}
+
+Mesh tube() {  // genus 0 with two boundary loops
+  return wrappedGrid(24, 8, true, false, [](double u, double v) {
+    return Vec3(std::cos(2 * M_PI * u), std::sin(2 * M_PI * u), 2 * v);
+  });
+}
+
+Mesh sphere() {  // a cube's six grids pushed onto the unit sphere
+  Mesh mesh;
+  const int n = 6;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {-1, 1}) {
+      Mesh face = test::grid(n, 2.0);
+      for (Vec3& p : face.points) {
+        Vec3 q;
+        q[axis] = sign;
+        q[(axis + 1) % 3] = p.x() - 1;
+        q[(axis + 2) % 3] = (p.y() - 1) * sign;
+        p = q.normalized();
+      }
+      const int offset = mesh.vertexCount();
+      for (const Vec3& p : face.points) mesh.points.push_back(p);
+      for (Triangle t : face.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+  // Weld the cube's edges: the same point, one vertex.
+  std::vector<int> weld(mesh.vertexCount());
+  std::vector<Vec3> unique;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    int found = -1;
+    for (size_t u = 0; u < unique.size() && found < 0; ++u)
+      if ((unique[u] - mesh.points[v]).norm() < 1e-9) found = static_cast<int>(u);
+    if (found < 0) {
+      found = static_cast<int>(unique.size());
+      unique.push_back(mesh.points[v]);
+    }
+    weld[v] = found;
+  }
+  mesh.points = unique;
+  for (Triangle& t : mesh.triangles)
+    for (int& v : t) v = weld[v];
+  return mesh;
+}
+
+// (Not validateMesh: the copies of a cut vertex are at the same position, by design.)
+void expectDiskCopyOf(const CutResult& cut, const Mesh& input) {
+  EXPECT_TRUE(analyzeTopology(cut.disk).isDisk()) << analyzeTopology(cut.disk).describe();
+  ASSERT_EQ(cut.original.size(), cut.disk.points.size());
+  ASSERT_EQ(cut.disk.faceCount(), input.faceCount());
+  for (int v = 0; v < cut.disk.vertexCount(); ++v)
+    EXPECT_EQ(cut.disk.points[v], input.points[cut.original[v]]);
+  // Face f of the disk is face f of the input, its corners copies of the same vertices.
+  for (int f = 0; f < input.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(cut.original[cut.disk.triangles[f][k]], input.triangles[f][k]);
+}
+
+}  // namespace
+
+TEST(Cut, ATorusOpensIntoADisk) {
+  const Mesh input = torus();
+  ASSERT_NO_THROW(validateMesh(input, "torus"));
+  ASSERT_EQ(analyzeTopology(input).genus, 1);
+  const CutResult cut = cutToDisk(input, "torus");
+  expectDiskCopyOf(cut, input);
+  EXPECT_FALSE(cut.seam.empty());
+}
+
+TEST(Cut, ATubeWithTwoBorderLoopsOpensIntoADisk) {
+  const Mesh input = tube();
+  ASSERT_EQ(analyzeTopology(input).boundaryLoops.size(), 2u);
+  const CutResult cut = cutToDisk(input, "tube");
+  expectDiskCopyOf(cut, input);
+}
+
+TEST(Cut, AClosedSphereIsSlitThroughItsExtremities) {
+  const Mesh input = sphere();
+  ASSERT_NO_THROW(validateMesh(input, "sphere"));
+  ASSERT_TRUE(analyzeTopology(input).boundaryLoops.empty());
+  const CutResult cut = cutToDisk(input, "sphere");
+  expectDiskCopyOf(cut, input);
+  // The slit is long: it joins points far apart on the sphere, not a short cut.
+  double length = 0;
+  for (const auto& [a, b] : cut.seam) length += (input.points[a] - input.points[b]).norm();
+  EXPECT_GT(length, 3.0);  // more than a half great circle (pi)
+}
+
+TEST(Cut, ADiskComesBackUnchanged) {
+  const Mesh input = test::grid(5);
+  const CutResult cut = cutToDisk(input, "grid");
+  EXPECT_EQ(cut.disk.points, input.points);
+  EXPECT_EQ(cut.disk.triangles, input.triangles);
+  EXPECT_TRUE(cut.seam.empty());
+}
+
+TEST(Cut, SeveralComponentsAreRefusedWithTheReason) {
+  Mesh two = test::grid(2);
+  const Mesh other = test::grid(2);
+  const int offset = two.vertexCount();
+  for (const Vec3& p : other.points) two.points.push_back(p + Vec3(5, 0, 0));
+  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  try {
+    cutToDisk(two, "two.off");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("two.off: cannot cut to a disk: it has 2 connected components"),
+              std::string::npos)
+        << e.what();
+  }
+}
