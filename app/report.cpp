@@ -84,6 +84,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"mean_angle_error_deg", r.distortion.meanAngleErrorDeg}}},
           {"milliseconds",
            {{"simplify", r.ms.simplify},
+            {"cut", r.ms.cut},
             {"resample", r.ms.resample},
             {"parameterize", r.ms.parameterize},
             {"density", r.ms.density},
@@ -121,6 +122,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
   out << "Time (ms): " << (r.ms.simplify > 0 ? "simplify " + format("%.1f", r.ms.simplify) + ", " : "")
+      << (r.ms.cut > 0 ? "cut " + format("%.1f", r.ms.cut) + ", " : "")
       << (r.ms.resample > 0 ? "resample " + format("%.1f", r.ms.resample) + ", " : "")
       << "parameterize " << format("%.1f", r.ms.parameterize) << ", density "
       << format("%.1f", r.ms.density) << ", sites " << format("%.1f", r.ms.sites) << ", lloyd "

@@ -1,5 +1,6 @@
 #include "cut.h"
 
+#include "remesh.h"
 #include "topology.h"
 
 #include <algorithm>
@@ -159,6 +160,49 @@ CutResult cutAlong(const Mesh& mesh, const std::map<Edge, std::vector<int>>& fac
 
 }  // namespace
 
+namespace {
+
+void markSeams(CutResult& cut, const Mesh& input) {
+  std::vector<bool>& node = cut.seamNode;
+  std::vector<bool>& onSeam = cut.onSeam;
+  std::vector<int> degree(input.vertexCount(), 0), seamDegree(input.vertexCount(), 0);
+  for (const auto& [a, b] : cut.seam) ++seamDegree[a], ++seamDegree[b];
+  for (const auto& [e, fs] : edgeFaces(input))
+    if (fs.size() == 1) ++degree[e.first], ++degree[e.second];
+  node.assign(cut.disk.vertexCount(), false);
+  onSeam.assign(cut.disk.vertexCount(), false);
+  for (int v = 0; v < cut.disk.vertexCount(); ++v) {
+    const int o = cut.original[v];
+    onSeam[v] = seamDegree[o] > 0;
+    node[v] = onSeam[v] && degree[o] + seamDegree[o] != 2;
+  }
+}
+
+}  // namespace
+
+Mesh stitchSeams(const Mesh& disk, double tolerance) {
+  const std::vector<bool> border = vertexEdges(disk).onBoundary;
+  std::vector<int> order;
+  for (int v = 0; v < disk.vertexCount(); ++v)
+    if (border[v]) order.push_back(v);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return disk.points[a].x() < disk.points[b].x(); });
+  std::vector<int> target(disk.vertexCount());
+  std::iota(target.begin(), target.end(), 0);
+  std::function<int(int)> root = [&](int v) { return target[v] == v ? v : target[v] = root(target[v]); };
+  for (size_t i = 0; i < order.size(); ++i)
+    for (size_t j = i + 1;
+         j < order.size() && disk.points[order[j]].x() - disk.points[order[i]].x() <= tolerance; ++j)
+      if ((disk.points[order[j]] - disk.points[order[i]]).norm() <= tolerance) {
+        const int a = root(order[i]), b = root(order[j]);
+        target[std::max(a, b)] = std::min(a, b);  // the first copy stays
+      }
+  std::vector<Triangle> triangles = disk.triangles;
+  for (Triangle& t : triangles)
+    for (int& v : t) v = root(v);
+  return assemble(triangles, disk.points);
+}
+
 CutResult cutToDisk(const Mesh& mesh, const std::string& name) {
   const Topology topology = analyzeTopology(mesh);
   if (topology.components != 1)
@@ -173,6 +217,7 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name) {
   const auto faces = edgeFaces(mesh);
   const bool closedSphere = topology.boundaryLoops.empty() && topology.genus == 0;
   CutResult result = cutAlong(mesh, faces, closedSphere ? slit(mesh) : cutGraph(mesh, faces));
+  markSeams(result, mesh);
   if (!analyzeTopology(result.disk).isDisk())
     throw Error(name + ": cutting it open did not give a disk (it is " +
                 analyzeTopology(result.disk).describe() + ")");

@@ -15,6 +15,10 @@ struct CutResult {
   Mesh disk;                 // a topological disk
   std::vector<int> original;  // per disk vertex, the input vertex it is a copy of
   std::vector<std::pair<int, int>> seam;  // the cut edges, as input vertex pairs (a < b)
+  // Per disk vertex: on a seam, and a node of the cut graph (where seams and the input's
+  // border meet, branch or end: degree other than 2). What SiteOptions needs to sample both
+  // copies of every seam alike.
+  std::vector<bool> onSeam, seamNode;
 };
 
 // The cut graph: the edges that no dual spanning tree (a breadth-first walk over the faces
@@ -26,5 +30,9 @@ struct CutResult {
 // A disk comes back unchanged. The mesh must be a valid manifold with one connected
 // component; throws Error("<name>: ...") otherwise.
 CutResult cutToDisk(const Mesh& mesh, const std::string& name);
+
+// Merges the border vertices of a remeshed disk that lie within `tolerance` of each other (the
+// copies of each seam sample): the cut surface's topology back. Vertices keep their order.
+Mesh stitchSeams(const Mesh& disk, double tolerance);
 
 }  // namespace lloydscope

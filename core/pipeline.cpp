@@ -1,7 +1,9 @@
 #include "pipeline.h"
 
+#include "mesh_io.h"
 #include "polish.h"
 #include "simplify.h"
+#include "topology.h"
 
 #include <chrono>
 #include <sstream>
@@ -56,20 +58,31 @@ RemeshOptions effective(RemeshOptions options) {
 RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
                              const std::string& name)
     : options_(effective(options)),
-      original_(options_.simplifyTo > 0 ? std::optional<Mesh>(input) : std::nullopt),
+      name_(name),
+      original_(options_.simplifyTo > 0 || !analyzeTopology(input).isDisk()
+                    ? std::optional<Mesh>(input)
+                    : std::nullopt),
       input_([&] {
-        if (!original_) return input;
         Stopwatch stage;
-        Mesh simplified = simplify(input, {options_.simplifyTo}, name).mesh;
+        Mesh mesh = options_.simplifyTo > 0 ? simplify(input, {options_.simplifyTo}, name).mesh : input;
         ms_.simplify = stage.lap();
-        return simplified;
+        const Topology topology = analyzeTopology(mesh);
+        if (topology.isDisk()) return mesh;
+        if (options_.method == RemeshMethod::Relocate)
+          throw Error(name + ": relocate keeps the input's triangles and needs a disk; this is " +
+                      topology.describe() + " (use --method retriangulate)");
+        cut_ = cutToDisk(mesh, name);  // the seams are stitched again in buildOutput()
+        ms_.cut = stage.lap();
+        return cut_->disk;
       }()),
       resampled_([&]() -> std::optional<Resampling> {
         if (!options_.resample) return std::nullopt;
         Stopwatch stage;
         // No finer than the input: more sites than that are sampled on the resampled surface.
-        Resampling r = resample(input_, std::min(siteCount(), input_.vertexCount()),
-                                options_.density, {}, name);
+        // On a cut surface the resampled vertices are the sites, whose seam samples match.
+        SiteOptions sites = seamSites();
+        sites.count = cut_ ? siteCount() : std::min(siteCount(), input_.vertexCount());
+        Resampling r = resample(input_, sites, options_.density, {}, name);
         ms_.resample = stage.lap();
         return r;
       }()),
@@ -92,11 +105,12 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         return d;
       }()) {
   Stopwatch stage;
-  SiteOptions siteOptions = options_.sites;
+  SiteOptions siteOptions = resampled_ ? options_.sites : seamSites();
   siteOptions.count = siteCount();
   // The resampled surface's vertices are already well spread: where there are as many of them
   // as sites, they are where Lloyd starts.
-  if (resampled_ && siteCount() <= input_.vertexCount()) siteOptions.fromInputVertices = true;
+  if (resampled_ && (cut_ || siteCount() <= input_.vertexCount()))
+    siteOptions.fromInputVertices = true;
   sites_ = initialSites(surface(), param_, domain_, siteOptions);
   ms_.sites = stage.lap();
   solver_ = std::make_unique<LloydSolver>(domain_, sites_.fixed, sites_.movable, options_.lloyd);
@@ -148,7 +162,30 @@ Mesh RemeshSession::buildOutput() const {
     o.target = options_.polishTarget;
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
-  return std::move(output.mesh);
+  if (!cut_) return std::move(output.mesh);
+  // Both copies of every seam sample are at the same place: one vertex again.
+  Mesh stitched = stitchSeams(output.mesh, 1e-9 * boundingBoxDiagonal(output.mesh));
+  const Topology want = analyzeTopology(*original_);
+  try {
+    validateMesh(stitched, name_);
+    const Topology got = analyzeTopology(stitched);
+    if (got.genus == want.genus && got.boundaryLoops.size() == want.boundaryLoops.size() &&
+        got.components == 1)
+      return stitched;
+    throw Error(got.describe());
+  } catch (const Error& e) {
+    throw Error(name_ + ": the remeshed seams did not stitch back into " + want.describe() +
+                " (" + e.what() + "); cutting this surface open is not reliable yet");
+  }
+}
+
+SiteOptions RemeshSession::seamSites() const {
+  SiteOptions sites = options_.sites;
+  if (cut_) {
+    sites.seamNode = cut_->seamNode;
+    sites.onSeam = cut_->onSeam;
+  }
+  return sites;
 }
 
 RemeshResult RemeshSession::finish() {
@@ -167,7 +204,7 @@ RemeshResult RemeshSession::finish() {
   result.after = measureQuality(result.output);
   if (options_.measureFidelity) result.fidelity = measureFidelity(result.output, original);
   result.ms.metrics = stage.lap();
-  result.ms.total = result.ms.simplify + result.ms.resample + result.ms.parameterize + result.ms.density + result.ms.sites +
+  result.ms.total = result.ms.simplify + result.ms.cut + result.ms.resample + result.ms.parameterize + result.ms.density + result.ms.sites +
                     result.ms.lloyd + result.ms.remesh + result.ms.metrics;
   result.recording = header();
   result.recording.iterations = solver_->takeIterations();

@@ -1,6 +1,7 @@
 // The whole remeshing pipeline: parameterize, density, initial sites, Lloyd, lift, measure.
 #pragma once
 
+#include "cut.h"
 #include "density.h"
 #include "lloyd.h"
 #include "metrics.h"
@@ -40,7 +41,7 @@ struct RemeshOptions {
 RemeshOptions referencePreset(RemeshMethod method);
 
 struct StageTimes {  // milliseconds
-  double simplify = 0, resample = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
+  double simplify = 0, cut = 0, resample = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
          metrics = 0, total = 0;
 };
 
@@ -81,6 +82,8 @@ class RemeshSession {
 
  private:
   Mesh buildOutput() const;
+  // The site options with the seams of a cut surface marked.
+  SiteOptions seamSites() const;
   // How many sites the options ask for (0 in them: as many as the input has vertices).
   int siteCount() const {
     return options_.sites.count > 0 ? options_.sites.count : input_.vertexCount();
@@ -89,8 +92,10 @@ class RemeshSession {
   const Mesh& surface() const { return resampled_ ? resampled_->mesh.mesh : input_; }
 
   RemeshOptions options_;
+  std::string name_;  // of the input, for error messages
   StageTimes ms_;  // before the members whose initializers time themselves into it
-  std::optional<Mesh> original_;  // the user's mesh, when input_ is its simplification
+  std::optional<Mesh> original_;  // the user's mesh, when input_ is its simplification or cut
+  std::optional<CutResult> cut_;  // how input_ was cut open, if it was
   Mesh input_;                    // the disk to remesh
   std::optional<Resampling> resampled_;
   Parameterization param_;

@@ -12,13 +12,12 @@ Vec3 Resampling::toInput(const Mesh& input, int triangle, const Eigen::Vector3d&
   return lift(input, domain, uv);
 }
 
-Resampling resample(const Mesh& input, int count, const DensityOptions& density,
-                    const ResampleOptions& options, const std::string& name) {
+Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
+                    const DensityOptions& density, const ResampleOptions& options,
+                    const std::string& name) {
   Parameterization param = parameterize(input, {}, name);
   Density rho = computeDensity(input, param.uv, density);
   Domain domain(param.uv, input.triangles, rho);
-  SiteOptions siteOptions;
-  siteOptions.count = count;
   const InitialSites sites = initialSites(input, param, domain, siteOptions);
   LloydOptions lloyd;
   lloyd.maxIterations = options.iterations;

@@ -10,6 +10,7 @@
 #include "density.h"
 #include "parameterization.h"
 #include "remesh.h"
+#include "sites.h"
 
 #include <string>
 
@@ -30,8 +31,9 @@ struct Resampling {
   Vec3 toInput(const Mesh& input, int triangle, const Eigen::Vector3d& weights) const;
 };
 
-// `count` sites in all (0: as many as the input has vertices), placed by `density`.
-Resampling resample(const Mesh& input, int count, const DensityOptions& density,
+// The rough pass's sites as `sites` asks (their count, the seams of a cut surface), placed by
+// `density`.
+Resampling resample(const Mesh& input, const SiteOptions& sites, const DensityOptions& density,
                     const ResampleOptions& options, const std::string& name);
 
 }  // namespace lloydscope

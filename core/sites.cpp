@@ -34,7 +34,7 @@ std::vector<double> angleSums(const Mesh& mesh) {
 // the surface (a border vertex where the surface's angles sum to far from 180 degrees) and
 // those of the parameter domain.
 std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param,
-                                 double spacing) {
+                                 double spacing, const SiteOptions& options) {
   const std::vector<int>& loop = param.boundaryLoop;
   const int n = static_cast<int>(loop.size());
   const std::vector<double> angles = angleSums(mesh);
@@ -43,9 +43,15 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     position[i + 1] = position[i] + (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i]]).norm();
   // Candidates, the domain's own corners before the surface's, sharper before blunter.
   std::vector<std::pair<double, int>> candidates;
+  auto flag = [](const std::vector<bool>& f, int v) { return !f.empty() && f[v]; };
+  constexpr double kSeamNode = 3000.0;
   for (int i = 0; i < n; ++i) {
     const double turn = std::abs(angles[loop[i]] - 180.0);
-    if (isCorner(param.uv[loop[(i + n - 1) % n]], param.uv[loop[i]], param.uv[loop[(i + 1) % n]]))
+    if (flag(options.seamNode, loop[i]))
+      candidates.emplace_back(kSeamNode, i);
+    else if (flag(options.onSeam, loop[i]))
+      continue;
+    else if (isCorner(param.uv[loop[(i + n - 1) % n]], param.uv[loop[i]], param.uv[loop[(i + 1) % n]]))
       candidates.emplace_back(1000.0 + turn, i);
     else if (turn > 40.0)
       candidates.emplace_back(turn, i);
@@ -60,6 +66,7 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
       const double apart = std::abs(position[i] - position[c]);
       near = near || std::min(apart, position[n] - apart) < 0.5 * spacing;
     }
+    if (score == kSeamNode) near = false;  // both copies of a seam need it
     if (!near) corners.push_back(i);
   }
   std::sort(corners.begin(), corners.end());
@@ -137,7 +144,7 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   const int count = options.count > 0 ? options.count : mesh.vertexCount();
   // An equilateral mesh of N vertices has about 2N triangles of area (sqrt 3 / 4) h^2.
   const double spacing = std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
-  sites.fixed = resampleBorder(mesh, param, spacing);
+  sites.fixed = resampleBorder(mesh, param, spacing, options);
   const int inside = std::max(0, count - static_cast<int>(sites.fixed.size()));
   sites.movable = sampleDensity(domain, inside, options.seed);
   sites.movableVertex.assign(sites.movable.size(), -1);

@@ -17,6 +17,10 @@ struct SiteOptions {
   bool fromInputVertices = false;
   int count = 0;
   std::uint64_t seed = 1;
+  // A surface cut open (core/cut), per vertex: a node of the cut graph, and on a seam. The two
+  // copies of a seam must get the same samples: nodes are always samples, and no other corner
+  // is taken on a seam. Empty: no seams.
+  std::vector<bool> seamNode, onSeam;
 };
 
 struct InitialSites {

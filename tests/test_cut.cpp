@@ -1,5 +1,6 @@
 #include "cut.h"
 #include "mesh_io.h"
+#include "pipeline.h"
 #include "test_support.h"
 #include "topology.h"
 
@@ -140,4 +141,64 @@ TEST(Cut, SeveralComponentsAreRefusedWithTheReason) {
               std::string::npos)
         << e.what();
   }
+}
+
+TEST(Cut, StitchingTheCutDiskGivesTheTorusBack) {
+  const Mesh input = torus();
+  const CutResult cut = cutToDisk(input, "torus");
+  EXPECT_GT(std::count(cut.onSeam.begin(), cut.onSeam.end(), true), 0);
+  EXPECT_GT(std::count(cut.seamNode.begin(), cut.seamNode.end(), true), 0);  // the loops meet
+  const Mesh stitched = stitchSeams(cut.disk, 1e-9);
+  EXPECT_EQ(stitched.vertexCount(), input.vertexCount());
+  EXPECT_NO_THROW(validateMesh(stitched, "stitched"));
+  const Topology t = analyzeTopology(stitched);
+  EXPECT_EQ(t.genus, 1);
+  EXPECT_TRUE(t.boundaryLoops.empty());
+}
+
+// Issue 6: a closed surface in, the same topology out, with no crack along the seams.
+TEST(Cut, RemeshingATorusGivesATorus) {
+  const Mesh input = torus();
+  RemeshOptions o;
+  const RemeshResult r = remesh(input, o, "torus");
+  EXPECT_NO_THROW(validateMesh(r.output, "output"));
+  const Topology t = analyzeTopology(r.output);
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.genus, 1);
+  EXPECT_TRUE(t.boundaryLoops.empty());
+  EXPECT_GE(r.after.avgMinAngle, 48.0);
+  EXPECT_LT(r.fidelity.hausdorffPercent, 2.0);
+  EXPECT_GT(r.ms.cut, 0.0);
+}
+
+TEST(Cut, RemeshingAClosedSphereGivesAClosedSphere) {
+  const Mesh input = sphere();
+  const RemeshResult r = remesh(input, RemeshOptions{}, "sphere");
+  EXPECT_NO_THROW(validateMesh(r.output, "output"));
+  const Topology t = analyzeTopology(r.output);
+  EXPECT_EQ(t.genus, 0);
+  EXPECT_TRUE(t.boundaryLoops.empty());
+  EXPECT_GE(r.after.avgMinAngle, 48.0);
+  EXPECT_LT(r.fidelity.hausdorffPercent, 2.0);
+}
+
+TEST(Cut, RelocateRefusesASurfaceThatIsNotADisk) {
+  RemeshOptions o;
+  o.method = RemeshMethod::Relocate;
+  try {
+    remesh(torus(), o, "torus.off");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("torus.off: relocate keeps the input's triangles and needs a disk"),
+              std::string::npos) << e.what();
+  }
+}
+
+TEST(Cut, RemeshingATubeKeepsItsTwoBorderLoops) {
+  const RemeshResult r = remesh(tube(), RemeshOptions{}, "tube");
+  EXPECT_NO_THROW(validateMesh(r.output, "output"));
+  const Topology t = analyzeTopology(r.output);
+  EXPECT_EQ(t.genus, 0);
+  EXPECT_EQ(t.boundaryLoops.size(), 2u);
+  EXPECT_GE(r.after.avgMinAngle, 48.0);
 }

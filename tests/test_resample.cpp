@@ -12,7 +12,9 @@ using namespace lloydscope;
 
 TEST(Resample, GivesAWellShapedDiskWhoseVerticesLieOnTheInput) {
   const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
-  const Resampling r = resample(input, 400, {}, {}, "bumpy");
+  SiteOptions sites;
+  sites.count = 400;
+  const Resampling r = resample(input, sites, {}, {}, "bumpy");
   const Mesh& m = r.mesh.mesh;
   EXPECT_NO_THROW(validateMesh(m, "resampled"));
   EXPECT_TRUE(analyzeTopology(m).isDisk());
