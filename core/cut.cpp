@@ -197,9 +197,13 @@ Mesh stitchSeams(const Mesh& disk, double tolerance) {
         const int a = root(order[i]), b = root(order[j]);
         target[std::max(a, b)] = std::min(a, b);  // the first copy stays
       }
-  std::vector<Triangle> triangles = disk.triangles;
-  for (Triangle& t : triangles)
+  // A triangle with two corners on the two copies of one sample (the ear at the tip of a slit)
+  // collapses: it goes.
+  std::vector<Triangle> triangles;
+  for (Triangle t : disk.triangles) {
     for (int& v : t) v = root(v);
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
+  }
   return assemble(triangles, disk.points);
 }
 

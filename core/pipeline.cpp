@@ -5,7 +5,9 @@
 #include "simplify.h"
 #include "topology.h"
 
+#include <algorithm>
 #include <chrono>
+#include <set>
 #include <sstream>
 
 namespace lloydscope {
@@ -160,6 +162,7 @@ Mesh RemeshSession::buildOutput() const {
     PolishOptions o;
     o.iterations = options_.polish;
     o.target = options_.polishTarget;
+    o.seams = cut_.has_value();
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
   if (!cut_) return std::move(output.mesh);
@@ -169,6 +172,14 @@ Mesh RemeshSession::buildOutput() const {
   try {
     validateMesh(stitched, name_);
     const Topology got = analyzeTopology(stitched);
+    std::set<Triangle> faces;  // the same three vertices twice: two sides of one triangle
+    for (Triangle t : stitched.triangles) {
+      std::sort(t.begin(), t.end());
+      if (!faces.insert(t).second) throw Error("two triangles have the same corners");
+    }
+    if (2 * stitched.vertexCount() < siteCount())
+      throw Error("only " + std::to_string(stitched.vertexCount()) + " of " +
+                  std::to_string(siteCount()) + " vertices are left");
     if (got.genus == want.genus && got.boundaryLoops.size() == want.boundaryLoops.size() &&
         got.components == 1)
       return stitched;

@@ -52,8 +52,10 @@ bool raisesRegularity(const Quad& q) {
 }
 
 // Flips interior edges where `rule` asks and the flip neither duplicates an edge nor folds the
-// surface. Returns the number of flips.
-int flipEdges(Mesh& mesh, FlipRule rule) {
+// surface; with `borderApart`, nor joins two border vertices (on a cut surface they may be
+// copies that stitching merges: the new edge would double a seam edge). Returns the number of
+// flips.
+int flipEdges(Mesh& mesh, FlipRule rule, bool borderApart = false) {
   const long long n = mesh.vertexCount();
   auto directed = [n](int a, int b) { return a * n + b; };
   std::unordered_map<EdgeKey, int> faceOf;  // each directed edge a -> b to the face that has it
@@ -84,6 +86,7 @@ int flipEdges(Mesh& mesh, FlipRule rule) {
     const int c = third(f1, a, b), d = third(f2, a, b);
     if (c < 0 || d < 0 || c == d || faceOf.count(directed(c, d)) || faceOf.count(directed(d, c)))
       continue;
+    if (borderApart && border[c] && border[d]) continue;
     auto deviation = [&](int v, int change) {
       const int off = valence[v] + change - (border[v] ? 4 : 6);
       return off * off;
@@ -271,7 +274,7 @@ double ringSmallestAngle(const Mesh& m, const Rings& rings, int v, const Vec3& t
 // edges flip wherever that raises the smallest angle of the two triangles.
 constexpr double kRepairBelow = 35.0;
 
-void repairAngles(LiftedMesh& lm, const SurfaceMap& surface,
+void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, bool borderApart,
                   std::vector<int>& triangleOf, const std::vector<double>& weight) {
   Mesh& m = lm.mesh;
   const std::vector<bool> border = vertexEdges(m).onBoundary;
@@ -304,7 +307,7 @@ void repairAngles(LiftedMesh& lm, const SurfaceMap& surface,
     lm.uv[v] = surface.domain.pointAt(bestLocation);
     triangleOf[v] = bestLocation.triangle;
   }
-  flipEdges(m, raisesSmallestAngle);
+  flipEdges(m, raisesSmallestAngle, borderApart);
 }
 
 // A flat triangle that neither moves nor flips can fix (a vertex on the segment between two
@@ -315,7 +318,8 @@ constexpr double kCollapseBelow = 10.0;
 
 // Merges `from` into `to` if that keeps the mesh manifold (the two share exactly the two
 // neighbours across their edge) and folds none of the triangles that keep `from`.
-bool mergeVertex(Mesh& m, int from, int to) {
+bool mergeVertex(Mesh& m, int from, int to, bool borderApart, const std::vector<bool>& border) {
+  if (borderApart && border[to]) return false;
   std::vector<int> fromRing, toRing;
   std::vector<size_t> changed, removed;
   for (size_t g = 0; g < m.triangles.size(); ++g) {
@@ -355,7 +359,7 @@ bool mergeVertex(Mesh& m, int from, int to) {
 
 }  // namespace
 
-int collapseFlatTriangles(Mesh& m) {
+int collapseFlatTriangles(Mesh& m, bool borderApart) {
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   int merged = 0;
   for (size_t f = 0; f < m.triangles.size(); ++f) {
@@ -369,7 +373,7 @@ int collapseFlatTriangles(Mesh& m) {
     bool done = false;
     for (int k : edges)
       for (auto [from, to] : {std::pair{t[k], t[(k + 1) % 3]}, std::pair{t[(k + 1) % 3], t[k]}})
-        if (!done && !border[from]) done = mergeVertex(m, from, to);
+        if (!done && !border[from]) done = mergeVertex(m, from, to, borderApart, border);
     merged += done;
   }
   m.triangles.erase(std::remove_if(m.triangles.begin(), m.triangles.end(),
@@ -400,7 +404,8 @@ Vec3 SurfaceMap::at(const Location& l) const {
 
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options) {
-  flipToDelaunay(mesh.mesh);
+  const bool apart = options.seams;
+  flipEdges(mesh.mesh, notDelaunay, apart);
   if (options.iterations <= 0) return;
   std::vector<int> triangleOf(mesh.uv.size());
   std::vector<double> weight(mesh.uv.size(), 1.0);
@@ -411,16 +416,16 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
   }
   for (int pass = 0; pass < options.iterations; ++pass) {
     relaxPass(mesh, surface, surfaceDensity, options.target, triangleOf, weight);
-    flipToDelaunay(mesh.mesh);
+    flipEdges(mesh.mesh, notDelaunay, apart);
   }
   for (int pass = 0; pass < options.valencePasses; ++pass) {
-    flipEdges(mesh.mesh, raisesRegularity);
+    flipEdges(mesh.mesh, raisesRegularity, apart);
     relaxPass(mesh, surface, surfaceDensity, options.target, triangleOf, weight);
   }
   for (int pass = 0; pass < options.repairPasses; ++pass) {
-    repairAngles(mesh, surface, triangleOf, weight);
-    if (pass + 1 == options.repairPasses && collapseFlatTriangles(mesh.mesh) > 0) {
-      repairAngles(mesh, surface, triangleOf, weight);  // around the merged vertices
+    repairAngles(mesh, surface, apart, triangleOf, weight);
+    if (pass + 1 == options.repairPasses && collapseFlatTriangles(mesh.mesh, apart) > 0) {
+      repairAngles(mesh, surface, apart, triangleOf, weight);  // around the merged vertices
       dropUnusedVertices(mesh);
     }
   }

@@ -28,6 +28,9 @@ struct PolishOptions {
   // Then passes over the triangles with small angles only: vertex moves and edge flips that
   // raise the smallest angle around them.
   int repairPasses = 3;
+  // The border holds seams that will be stitched (core/cut): no flip or merge may join two
+  // border vertices.
+  bool seams = false;
 };
 
 // The surface the polish keeps its vertices on, seen through a parameter domain.
@@ -54,7 +57,8 @@ int flipToDelaunay(Mesh& mesh);
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
 // triangle's shortest edge it can go (keeping the mesh manifold and unfolded); the merged
 // vertices are left unused. Returns how many were merged.
-int collapseFlatTriangles(Mesh& mesh);
+// `borderApart`: never into a border vertex (see PolishOptions::seams).
+int collapseFlatTriangles(Mesh& mesh, bool borderApart = false);
 
 const char* toString(PolishTarget target);
 PolishTarget parsePolishTarget(const std::string& text);  // throws Error on unknown names

@@ -27,6 +27,7 @@ Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
   PolishOptions polishOptions;
   polishOptions.iterations = options.polish;
   polishOptions.target = PolishTarget::Centroid;
+  polishOptions.seams = !siteOptions.onSeam.empty();
   polish(mesh, {input, domain}, surfaceDensity(input, param.uv, rho), polishOptions);
   return {std::move(param), std::move(domain), std::move(mesh)};
 }

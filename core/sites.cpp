@@ -80,7 +80,11 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     for (int i = begin; i < end; ++i)
       length.push_back(length.back() +
                        (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i % n]]).norm());
-    const int pieces = std::max(1, static_cast<int>(std::lround(length.back() / spacing)));
+    // A seam stretch gets at least 3 pieces: two seams between the same nodes, or a seam that
+    // loops back to its node, would otherwise stitch into one edge shared by 4 triangles.
+    bool seam = !options.onSeam.empty();
+    for (int i = begin; i <= end && seam; ++i) seam = flag(options.onSeam, loop[i % n]);
+    const int pieces = std::max(seam ? 3 : 1, static_cast<int>(std::lround(length.back() / spacing)));
     int segment = 0;
     for (int s = 0; s < pieces; ++s) {
       const double target = length.back() * s / pieces;
