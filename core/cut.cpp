@@ -180,7 +180,7 @@ void markSeams(CutResult& cut, const Mesh& input) {
 
 }  // namespace
 
-Mesh stitchSeams(const Mesh& disk, double tolerance) {
+std::vector<int> seamPartners(const Mesh& disk, double tolerance) {
   const std::vector<bool> border = vertexEdges(disk).onBoundary;
   std::vector<int> order;
   for (int v = 0; v < disk.vertexCount(); ++v)
@@ -197,6 +197,13 @@ Mesh stitchSeams(const Mesh& disk, double tolerance) {
         const int a = root(order[i]), b = root(order[j]);
         target[std::max(a, b)] = std::min(a, b);  // the first copy stays
       }
+  for (int v = 0; v < disk.vertexCount(); ++v) target[v] = root(v);
+  return target;
+}
+
+Mesh stitchSeams(const Mesh& disk, double tolerance) {
+  const std::vector<int> target = seamPartners(disk, tolerance);
+  auto root = [&](int v) { return target[v]; };
   // A triangle with two corners on the two copies of one sample (the ear at the tip of a slit)
   // collapses: it goes.
   std::vector<Triangle> triangles;
@@ -213,7 +220,8 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name) {
     throw Error(name + ": cannot cut to a disk: it has " + topology.describe() +
                 " (remesh each on its own)");
   if (topology.isDisk()) {
-    CutResult unchanged{mesh};
+    CutResult unchanged;
+    unchanged.disk = mesh;
     unchanged.original.resize(mesh.vertexCount());
     std::iota(unchanged.original.begin(), unchanged.original.end(), 0);
     return unchanged;

@@ -31,6 +31,10 @@ struct CutResult {
 // component; throws Error("<name>: ...") otherwise.
 CutResult cutToDisk(const Mesh& mesh, const std::string& name);
 
+// Per vertex of a remeshed disk, the vertex it becomes when stitched: the first of the border
+// vertices within `tolerance` of it (the copies of one seam sample), or itself.
+std::vector<int> seamPartners(const Mesh& disk, double tolerance);
+
 // Merges the border vertices of a remeshed disk that lie within `tolerance` of each other (the
 // copies of each seam sample): the cut surface's topology back. Vertices keep their order.
 Mesh stitchSeams(const Mesh& disk, double tolerance);

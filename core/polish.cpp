@@ -1,10 +1,12 @@
 #include "polish.h"
 
+#include "cut.h"
 #include "metrics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <map>
 #include <unordered_map>
 
 namespace lloydscope {
@@ -56,6 +58,19 @@ bool raisesRegularity(const Quad& q) {
 // copies that stitching merges: the new edge would double a seam edge). Returns the number of
 // flips.
 int flipEdges(Mesh& mesh, FlipRule rule, bool borderApart = false) {
+  // With seams, the edges as they will be once stitched: a flip must not make one twice (an
+  // inside vertex joined to both copies of a seam sample).
+  std::vector<int> stitched;
+  std::map<std::pair<int, int>, int> stitchedEdges;
+  auto stitchedEdge = [&](int a, int b) {
+    return std::make_pair(std::min(stitched[a], stitched[b]), std::max(stitched[a], stitched[b]));
+  };
+  if (borderApart) {
+    stitched = seamPartners(mesh, 1e-9 * boundingBoxDiagonal(mesh));
+    for (const Triangle& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k)
+        ++stitchedEdges[stitchedEdge(t[k], t[(k + 1) % 3])];
+  }
   const long long n = mesh.vertexCount();
   auto directed = [n](int a, int b) { return a * n + b; };
   std::unordered_map<EdgeKey, int> faceOf;  // each directed edge a -> b to the face that has it
@@ -86,7 +101,7 @@ int flipEdges(Mesh& mesh, FlipRule rule, bool borderApart = false) {
     const int c = third(f1, a, b), d = third(f2, a, b);
     if (c < 0 || d < 0 || c == d || faceOf.count(directed(c, d)) || faceOf.count(directed(d, c)))
       continue;
-    if (borderApart && border[c] && border[d]) continue;
+    if (borderApart && (border[c] && border[d] || stitchedEdges.count(stitchedEdge(c, d)))) continue;
     auto deviation = [&](int v, int change) {
       const int off = valence[v] + change - (border[v] ? 4 : 6);
       return off * off;
@@ -112,6 +127,11 @@ int flipEdges(Mesh& mesh, FlipRule rule, bool borderApart = false) {
     for (auto [u, v] : {std::pair{a, c}, std::pair{a, d}, std::pair{b, c}, std::pair{b, d}})
       work.emplace_back(std::min(u, v), std::max(u, v));
     --valence[a], --valence[b], ++valence[c], ++valence[d];
+    if (borderApart) {  // each triangle side counted once per triangle: an inside edge twice
+      auto& old = stitchedEdges[stitchedEdge(a, b)];
+      if ((old -= 2) <= 0) stitchedEdges.erase(stitchedEdge(a, b));
+      stitchedEdges[stitchedEdge(c, d)] += 2;
+    }
     ++flips;
   }
   return flips;
@@ -360,6 +380,7 @@ bool mergeVertex(Mesh& m, int from, int to, bool borderApart, const std::vector<
 }  // namespace
 
 int collapseFlatTriangles(Mesh& m, bool borderApart) {
+  if (borderApart) return 0;  // merges next to seams could double a stitched edge
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   int merged = 0;
   for (size_t f = 0; f < m.triangles.size(); ++f) {
