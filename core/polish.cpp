@@ -19,10 +19,6 @@ Vec3 normal(const Mesh& m, const Triangle& t) {
 
 using EdgeKey = long long;
 
-}  // namespace
-
-namespace {
-
 double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
   const auto angles = cornerAnglesDeg(a, b, c);
   return std::min({angles[0], angles[1], angles[2]});
@@ -54,19 +50,17 @@ bool raisesRegularity(const Quad& q) {
 }
 
 // Flips interior edges where `rule` asks and the flip neither duplicates an edge nor folds the
-// surface; with `borderApart`, nor joins two border vertices (on a cut surface they may be
-// copies that stitching merges: the new edge would double a seam edge). Returns the number of
-// flips.
-int flipEdges(Mesh& mesh, FlipRule rule, bool borderApart = false) {
-  // With seams, the edges as they will be once stitched: a flip must not make one twice (an
-  // inside vertex joined to both copies of a seam sample).
-  std::vector<int> stitched;
-  std::map<std::pair<int, int>, int> stitchedEdges;
+// surface. On a cut surface (`stitched`: seamPartners() of the mesh), nor joins two border
+// vertices, nor makes an edge that stitching would double (an inside vertex joined to both
+// copies of a seam sample). Returns the number of flips.
+int flipEdges(Mesh& mesh, FlipRule rule, const std::vector<int>* stitched = nullptr) {
+  const bool borderApart = stitched != nullptr;
+  std::map<std::pair<int, int>, int> stitchedEdges;  // each triangle side counted once
   auto stitchedEdge = [&](int a, int b) {
-    return std::make_pair(std::min(stitched[a], stitched[b]), std::max(stitched[a], stitched[b]));
+    const int sa = (*stitched)[a], sb = (*stitched)[b];
+    return std::make_pair(std::min(sa, sb), std::max(sa, sb));
   };
   if (borderApart) {
-    stitched = seamPartners(mesh, 1e-9 * boundingBoxDiagonal(mesh));
     for (const Triangle& t : mesh.triangles)
       for (int k = 0; k < 3; ++k)
         ++stitchedEdges[stitchedEdge(t[k], t[(k + 1) % 3])];
@@ -101,7 +95,8 @@ int flipEdges(Mesh& mesh, FlipRule rule, bool borderApart = false) {
     const int c = third(f1, a, b), d = third(f2, a, b);
     if (c < 0 || d < 0 || c == d || faceOf.count(directed(c, d)) || faceOf.count(directed(d, c)))
       continue;
-    if (borderApart && (border[c] && border[d] || stitchedEdges.count(stitchedEdge(c, d)))) continue;
+    if (borderApart && ((border[c] && border[d]) || stitchedEdges.count(stitchedEdge(c, d))))
+      continue;
     auto deviation = [&](int v, int change) {
       const int off = valence[v] + change - (border[v] ? 4 : 6);
       return off * off;
@@ -127,7 +122,7 @@ int flipEdges(Mesh& mesh, FlipRule rule, bool borderApart = false) {
     for (auto [u, v] : {std::pair{a, c}, std::pair{a, d}, std::pair{b, c}, std::pair{b, d}})
       work.emplace_back(std::min(u, v), std::max(u, v));
     --valence[a], --valence[b], ++valence[c], ++valence[d];
-    if (borderApart) {  // each triangle side counted once per triangle: an inside edge twice
+    if (borderApart) {  // an inside edge is the side of two triangles
       auto& old = stitchedEdges[stitchedEdge(a, b)];
       if ((old -= 2) <= 0) stitchedEdges.erase(stitchedEdge(a, b));
       stitchedEdges[stitchedEdge(c, d)] += 2;
@@ -249,6 +244,17 @@ bool keepsRingUnfolded(const Mesh& m, const Rings& rings, int v, const Vec3& to,
   return true;
 }
 
+// Moves `v` to location `l` of the domain: its point, its parameter point, its triangle and,
+// if given, its density weight.
+void moveTo(LiftedMesh& lm, const SurfaceMap& surface, const Density& surfaceDensity, int v,
+            const Location& l, std::vector<int>& triangleOf, std::vector<double>* weight) {
+  lm.mesh.points[v] = surface.at(l);
+  lm.uv[v] = surface.domain.pointAt(l);
+  triangleOf[v] = l.triangle;
+  if (weight && !surfaceDensity.empty())
+    (*weight)[v] = densityAt(surfaceDensity, l.triangle, l.weights);
+}
+
 // One Gauss-Seidel pass: each inside vertex, in order, takes its relaxation move (halved until
 // its ring stays valid), through its parameter point.
 void relaxPass(LiftedMesh& lm, const SurfaceMap& surface,
@@ -264,12 +270,8 @@ void relaxPass(LiftedMesh& lm, const SurfaceMap& surface,
     const Vec2 duv = toParameter(surface.mesh, surface.domain, triangleOf[v], move);
     for (double step = 1.0; step >= 0.25; step *= 0.5) {
       const Location l = surface.domain.locate(lm.uv[v] + step * duv, triangleOf[v]);
-      const Vec3 to = surface.at(l);
-      if (!keepsRingUnfolded(m, rings, v, to, up)) continue;
-      m.points[v] = to;
-      lm.uv[v] = surface.domain.pointAt(l);
-      triangleOf[v] = l.triangle;
-      if (!surfaceDensity.empty()) weight[v] = densityAt(surfaceDensity, l.triangle, l.weights);
+      if (!keepsRingUnfolded(m, rings, v, surface.at(l), up)) continue;
+      moveTo(lm, surface, surfaceDensity, v, l, triangleOf, &weight);
       break;
     }
   }
@@ -294,8 +296,9 @@ double ringSmallestAngle(const Mesh& m, const Rings& rings, int v, const Vec3& t
 // edges flip wherever that raises the smallest angle of the two triangles.
 constexpr double kRepairBelow = 35.0;
 
-void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, bool borderApart,
-                  std::vector<int>& triangleOf, const std::vector<double>& weight) {
+void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, const Density& surfaceDensity,
+                  const std::vector<int>* stitched, std::vector<int>& triangleOf,
+                  std::vector<double>& weight) {
   Mesh& m = lm.mesh;
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   const Rings rings(m);
@@ -306,9 +309,8 @@ void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, bool borderApart,
   for (int v = 0; v < m.vertexCount(); ++v) {
     if (!bad[v]) continue;
     Vec3 up;
-    double best = ringSmallestAngle(m, rings, v, m.points[v], Vec3::Zero());
-    relaxationMove(m, rings, weight, v, PolishTarget::Centroid, up);
-    best = ringSmallestAngle(m, rings, v, m.points[v], up);
+    relaxationMove(m, rings, weight, v, PolishTarget::Centroid, up);  // for the ring's normal
+    double best = ringSmallestAngle(m, rings, v, m.points[v], up);
     Location bestLocation;
     for (PolishTarget target : {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter}) {
       const Vec3 move = relaxationMove(m, rings, weight, v, target, up);
@@ -322,12 +324,10 @@ void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, bool borderApart,
         }
       }
     }
-    if (bestLocation.triangle < 0) continue;
-    m.points[v] = surface.at(bestLocation);
-    lm.uv[v] = surface.domain.pointAt(bestLocation);
-    triangleOf[v] = bestLocation.triangle;
+    if (bestLocation.triangle >= 0)
+      moveTo(lm, surface, surfaceDensity, v, bestLocation, triangleOf, nullptr);
   }
-  flipEdges(m, raisesSmallestAngle, borderApart);
+  flipEdges(m, raisesSmallestAngle, stitched);
 }
 
 // A flat triangle that neither moves nor flips can fix (a vertex on the segment between two
@@ -338,8 +338,7 @@ constexpr double kCollapseBelow = 10.0;
 
 // Merges `from` into `to` if that keeps the mesh manifold (the two share exactly the two
 // neighbours across their edge) and folds none of the triangles that keep `from`.
-bool mergeVertex(Mesh& m, int from, int to, bool borderApart, const std::vector<bool>& border) {
-  if (borderApart && border[to]) return false;
+bool mergeVertex(Mesh& m, int from, int to) {
   std::vector<int> fromRing, toRing;
   std::vector<size_t> changed, removed;
   for (size_t g = 0; g < m.triangles.size(); ++g) {
@@ -379,8 +378,7 @@ bool mergeVertex(Mesh& m, int from, int to, bool borderApart, const std::vector<
 
 }  // namespace
 
-int collapseFlatTriangles(Mesh& m, bool borderApart) {
-  if (borderApart) return 0;  // merges next to seams could double a stitched edge
+int collapseFlatTriangles(Mesh& m) {
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   int merged = 0;
   for (size_t f = 0; f < m.triangles.size(); ++f) {
@@ -394,7 +392,7 @@ int collapseFlatTriangles(Mesh& m, bool borderApart) {
     bool done = false;
     for (int k : edges)
       for (auto [from, to] : {std::pair{t[k], t[(k + 1) % 3]}, std::pair{t[(k + 1) % 3], t[k]}})
-        if (!done && !border[from]) done = mergeVertex(m, from, to, borderApart, border);
+        if (!done && !border[from]) done = mergeVertex(m, from, to);
     merged += done;
   }
   m.triangles.erase(std::remove_if(m.triangles.begin(), m.triangles.end(),
@@ -425,8 +423,12 @@ Vec3 SurfaceMap::at(const Location& l) const {
 
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options) {
-  const bool apart = options.seams;
-  flipEdges(mesh.mesh, notDelaunay, apart);
+  // The border stays as it is, so its stitching partners do too.
+  const std::vector<int> partners =
+      options.seams ? seamPartners(mesh.mesh, 1e-9 * boundingBoxDiagonal(mesh.mesh))
+                    : std::vector<int>();
+  const std::vector<int>* stitched = options.seams ? &partners : nullptr;
+  flipEdges(mesh.mesh, notDelaunay, stitched);
   if (options.iterations <= 0) return;
   std::vector<int> triangleOf(mesh.uv.size());
   std::vector<double> weight(mesh.uv.size(), 1.0);
@@ -437,16 +439,17 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
   }
   for (int pass = 0; pass < options.iterations; ++pass) {
     relaxPass(mesh, surface, surfaceDensity, options.target, triangleOf, weight);
-    flipEdges(mesh.mesh, notDelaunay, apart);
+    flipEdges(mesh.mesh, notDelaunay, stitched);
   }
   for (int pass = 0; pass < options.valencePasses; ++pass) {
-    flipEdges(mesh.mesh, raisesRegularity, apart);
+    flipEdges(mesh.mesh, raisesRegularity, stitched);
     relaxPass(mesh, surface, surfaceDensity, options.target, triangleOf, weight);
   }
   for (int pass = 0; pass < options.repairPasses; ++pass) {
-    repairAngles(mesh, surface, apart, triangleOf, weight);
-    if (pass + 1 == options.repairPasses && collapseFlatTriangles(mesh.mesh, apart) > 0) {
-      repairAngles(mesh, surface, apart, triangleOf, weight);  // around the merged vertices
+    repairAngles(mesh, surface, surfaceDensity, stitched, triangleOf, weight);
+    // Merges next to seams could double a stitched edge: none on a cut surface.
+    if (pass + 1 == options.repairPasses && !options.seams && collapseFlatTriangles(mesh.mesh) > 0) {
+      repairAngles(mesh, surface, surfaceDensity, stitched, triangleOf, weight);  // around them
       dropUnusedVertices(mesh);
     }
   }

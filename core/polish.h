@@ -28,8 +28,8 @@ struct PolishOptions {
   // Then passes over the triangles with small angles only: vertex moves and edge flips that
   // raise the smallest angle around them.
   int repairPasses = 3;
-  // The border holds seams that will be stitched (core/cut): no flip or merge may join two
-  // border vertices.
+  // The border holds seams that will be stitched (core/cut): no flip may join two border
+  // vertices or double an edge of the stitched mesh, and no flat triangle loses a vertex.
   bool seams = false;
 };
 
@@ -57,8 +57,7 @@ int flipToDelaunay(Mesh& mesh);
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
 // triangle's shortest edge it can go (keeping the mesh manifold and unfolded); the merged
 // vertices are left unused. Returns how many were merged.
-// `borderApart`: never into a border vertex (see PolishOptions::seams).
-int collapseFlatTriangles(Mesh& mesh, bool borderApart = false);
+int collapseFlatTriangles(Mesh& mesh);
 
 const char* toString(PolishTarget target);
 PolishTarget parsePolishTarget(const std::string& text);  // throws Error on unknown names

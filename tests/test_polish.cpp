@@ -133,34 +133,36 @@ TEST(Polish, KeepsVerticesOnTheSurfaceItIsGiven) {
     EXPECT_LT((m.mesh.points[v] - raised.at(r.domain.locate(m.uv[v]))).norm(), 1e-9);
 }
 
+// The quality of the rough mesh polished with `options`.
+QualityMetrics polished(const RoughMesh& r, const PolishOptions& options) {
+  LiftedMesh m = r.lifted;
+  polish(m, {r.input, r.domain}, {}, options);
+  return measureQuality(m.mesh);
+}
+
 TEST(Polish, AngleRepairLiftsTheSmallestAngle) {
-  RoughMesh r = roughMesh();
+  const RoughMesh r = roughMesh();
   PolishOptions without;  // one relaxation pass, nothing else: small angles are left
   without.iterations = 1;
   without.valencePasses = 0;
   without.repairPasses = 0;
   PolishOptions with = without;
   with.repairPasses = 3;
-  LiftedMesh a = r.lifted, b = r.lifted;
-  polish(a, {r.input, r.domain}, {}, without);
-  polish(b, {r.input, r.domain}, {}, with);
-  EXPECT_GT(measureQuality(b.mesh).minAngle, measureQuality(a.mesh).minAngle + 3);
-  EXPECT_LT(measureQuality(b.mesh).percentUnder30, measureQuality(a.mesh).percentUnder30);
+  const QualityMetrics a = polished(r, without), b = polished(r, with);
+  EXPECT_GT(b.minAngle, a.minAngle + 3);
+  EXPECT_LT(b.percentUnder30, a.percentUnder30);
 }
 
 TEST(Polish, ValenceFlipsMakeMoreVerticesRegular) {
-  RoughMesh r = roughMesh();
+  const RoughMesh r = roughMesh();
   PolishOptions without;
   without.valencePasses = 0;
   without.repairPasses = 0;
   PolishOptions with = without;
   with.valencePasses = 2;
-  LiftedMesh a = r.lifted, b = r.lifted;
-  polish(a, {r.input, r.domain}, {}, without);
-  polish(b, {r.input, r.domain}, {}, with);
-  EXPECT_LT(measureQuality(b.mesh).irregularBoundaryAware,
-            measureQuality(a.mesh).irregularBoundaryAware - 3);
-  EXPECT_GE(measureQuality(b.mesh).minAngle, std::min(30.0, measureQuality(a.mesh).minAngle) - 1e-9);
+  const QualityMetrics a = polished(r, without), b = polished(r, with);
+  EXPECT_LT(b.irregularBoundaryAware, a.irregularBoundaryAware - 3);
+  EXPECT_GE(b.minAngle, std::min(30.0, a.minAngle) - 1e-9);
 }
 
 TEST(Polish, AFlatTriangleLosesAVertex) {
