@@ -132,9 +132,29 @@ void normalize(std::vector<Vec2>& uv) {
   for (Vec2& p : uv) p = (p - lo) * scale;
 }
 
-// Mirrors the map if it came out clockwise, then refuses any triangle that is still flipped,
-// or collapsed unless it is an ear of the border (three border vertices on one straight side
-// of the square: flat, but harmless, as it covers no part of the domain).
+// Triangles that face against the map's orientation, and triangles of (nearly) zero area but
+// for ears of the border (three border vertices on one straight side of the square: flat, but
+// harmless, as they cover no part of the domain).
+struct Folds {
+  std::vector<int> flipped, collapsed;
+  bool empty() const { return flipped.empty() && collapsed.empty(); }
+};
+
+Folds findFolds(const Mesh& mesh, const std::vector<Vec2>& uv, const std::vector<bool>& onBoundary) {
+  double total = 0;
+  for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
+  const double minArea = 1e-14 * std::abs(total), sign = total < 0 ? -1.0 : 1.0;
+  Folds folds;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const double a = sign * triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
+    const bool ear = onBoundary[t[0]] && onBoundary[t[1]] && onBoundary[t[2]];
+    if (a < -minArea) folds.flipped.push_back(f);
+    else if (a <= minArea && !ear) folds.collapsed.push_back(f);
+  }
+  return folds;
+}
+
 // A free border (LSCM) can overlap itself far from any folded triangle: every triangle faces
 // up, yet two parts of the surface land on the same place.
 bool borderIsSimple(const std::vector<Vec2>& uv, const std::vector<int>& boundaryLoop) {
@@ -143,25 +163,21 @@ bool borderIsSimple(const std::vector<Vec2>& uv, const std::vector<int>& boundar
   return polygon.is_simple();
 }
 
+// Mirrors the map if it came out clockwise, then refuses any folds (findFolds) and a border
+// that crosses itself.
 void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool>& onBoundary,
                      const std::vector<int>& boundaryLoop, const std::string& name) {
   double total = 0;
   for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
   if (total < 0)
     for (Vec2& p : uv) p.x() = 1.0 - p.x();
-  const double minArea = 1e-14 * std::abs(total);
-  int flipped = 0, collapsed = 0;
-  for (const Triangle& t : mesh.triangles) {
-    const double a = triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
-    const bool ear = onBoundary[t[0]] && onBoundary[t[1]] && onBoundary[t[2]];
-    if (a < -minArea) ++flipped;
-    else if (a <= minArea && !ear) ++collapsed;
-  }
-  if (!flipped && !collapsed && !borderIsSimple(uv, boundaryLoop))
+  const Folds folds = findFolds(mesh, uv, onBoundary);
+  const size_t flipped = folds.flipped.size(), collapsed = folds.collapsed.size();
+  if (folds.empty() && !borderIsSimple(uv, boundaryLoop))
     throw FoldedMap(name + ": the parameterization is not one-to-one (its border crosses "
                            "itself); try --param tutte or mean-value, whose maps are always "
                            "one-to-one");
-  if (flipped || collapsed)
+  if (!folds.empty())
     throw FoldedMap(name + ": the parameterization is not one-to-one (" + std::to_string(flipped) +
                 " flipped and " + std::to_string(collapsed) + " collapsed of " +
                 std::to_string(mesh.faceCount()) +
@@ -170,21 +186,6 @@ void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<
 
 double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a
   return std::atan2((b - a).cross(c - a).norm(), (b - a).dot(c - a));
-}
-
-// Triangles that are flipped or collapsed in uv (ears of the border aside).
-std::vector<int> foldedTriangles(const Mesh& mesh, const std::vector<Vec2>& uv,
-                                 const std::vector<bool>& onBoundary) {
-  double total = 0;
-  for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
-  const double minArea = 1e-14 * std::abs(total), sign = total < 0 ? -1.0 : 1.0;
-  std::vector<int> folded;
-  for (int f = 0; f < mesh.faceCount(); ++f) {
-    const Triangle& t = mesh.triangles[f];
-    const bool ear = onBoundary[t[0]] && onBoundary[t[1]] && onBoundary[t[2]];
-    if (sign * triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]) <= minArea && !ear) folded.push_back(f);
-  }
-  return folded;
 }
 
 // LSCM folds where the input has slivers, which cost it almost nothing to flip. Unfolds them
@@ -198,8 +199,10 @@ void repairFolds(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) neighbours[t[k]].push_back(t[(k + 1) % 3]);
   for (int rings = 2; rings <= 8; rings *= 2) {
-    const std::vector<int> folded = foldedTriangles(mesh, uv, onBoundary);
-    if (folded.empty()) return;
+    const Folds folds = findFolds(mesh, uv, onBoundary);
+    if (folds.empty()) return;
+    std::vector<int> folded = folds.flipped;
+    folded.insert(folded.end(), folds.collapsed.begin(), folds.collapsed.end());
     std::vector<int> freeIndex(n, -1), freeVertices;
     auto makeFree = [&](int v) {
       if (freeIndex[v] >= 0) return;

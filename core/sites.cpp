@@ -1,5 +1,7 @@
 #include "sites.h"
 
+#include "metrics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -21,12 +23,10 @@ bool isCorner(const Vec2& prev, const Vec2& at, const Vec2& next) {
 // The sum of the corner angles at each vertex, degrees: 180 where a border runs straight on.
 std::vector<double> angleSums(const Mesh& mesh) {
   std::vector<double> sum(mesh.vertexCount(), 0.0);
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = mesh.points[t[(k + 1) % 3]] - mesh.points[t[k]];
-      const Vec3 v = mesh.points[t[(k + 2) % 3]] - mesh.points[t[k]];
-      sum[t[k]] += std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / M_PI;
-    }
+  for (const Triangle& t : mesh.triangles) {
+    const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    for (int k = 0; k < 3; ++k) sum[t[k]] += angles[k];
+  }
   return sum;
 }
 
