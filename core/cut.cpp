@@ -162,12 +162,12 @@ CutResult cutAlong(const Mesh& mesh, const std::map<Edge, std::vector<int>>& fac
 
 namespace {
 
-void markSeams(CutResult& cut, const Mesh& input) {
+void markSeams(CutResult& cut, const Mesh& input, const std::map<Edge, std::vector<int>>& faces) {
   std::vector<bool>& node = cut.seamNode;
   std::vector<bool>& onSeam = cut.onSeam;
   std::vector<int> degree(input.vertexCount(), 0), seamDegree(input.vertexCount(), 0);
   for (const auto& [a, b] : cut.seam) ++seamDegree[a], ++seamDegree[b];
-  for (const auto& [e, fs] : edgeFaces(input))
+  for (const auto& [e, fs] : faces)
     if (fs.size() == 1) ++degree[e.first], ++degree[e.second];
   node.assign(cut.disk.vertexCount(), false);
   onSeam.assign(cut.disk.vertexCount(), false);
@@ -229,7 +229,7 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name) {
   const auto faces = edgeFaces(mesh);
   const bool closedSphere = topology.boundaryLoops.empty() && topology.genus == 0;
   CutResult result = cutAlong(mesh, faces, closedSphere ? slit(mesh) : cutGraph(mesh, faces));
-  markSeams(result, mesh);
+  markSeams(result, mesh, faces);
   if (!analyzeTopology(result.disk).isDisk())
     throw Error(name + ": cutting it open did not give a disk (it is " +
                 analyzeTopology(result.disk).describe() + ")");
