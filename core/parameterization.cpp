@@ -115,9 +115,59 @@ SMP::Error_code solve(SurfaceMesh& sm, Halfedge border, UVMap uv, const ParamOpt
     case ParamMethod::Lscm:
       return SMP::parameterize(sm, SMP::LSCM_parameterizer_3<SurfaceMesh>(), border, uv);
     case ParamMethod::Auto:
+    case ParamMethod::Given:
       break;  // resolved by parameterize()
   }
   return SMP::ERROR_EMPTY_MESH;
+}
+
+// CGAL 5.5's get_error_message() is off by one from ERROR_NO_TOPOLOGICAL_BALL on (its table
+// lacks that entry): a singular linear system read "no one-to-one mapping".
+const char* errorMessage(SMP::Error_code code) {
+  switch (code) {
+    case SMP::OK: return "success";
+    case SMP::ERROR_EMPTY_MESH: return "the mesh is empty";
+    case SMP::ERROR_NON_TRIANGULAR_MESH: return "the mesh is not triangular";
+    case SMP::ERROR_NO_TOPOLOGICAL_DISC: return "the mesh is not a topological disk";
+    case SMP::ERROR_NO_TOPOLOGICAL_BALL: return "the mesh is not a topological ball";
+    case SMP::ERROR_BORDER_TOO_SHORT: return "the border is too short";
+    case SMP::ERROR_NON_CONVEX_BORDER: return "the method needs a convex border";
+    case SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return "its linear system could not be solved";
+    case SMP::ERROR_NO_1_TO_1_MAPPING: return "the map is not one-to-one";
+    case SMP::ERROR_WRONG_PARAMETER: return "a wrong parameter";
+  }
+  return "unknown error";
+}
+
+// CGAL's map of the disk `mesh`, as the solver leaves it, and the vertices of its longest border.
+struct SolvedMap {
+  std::vector<Vec2> uv;
+  std::vector<int> boundaryLoop;
+};
+
+SolvedMap solveMap(const Mesh& mesh, const ParamOptions& options, const std::string& name) {
+  SurfaceMesh sm = toSurfaceMesh(mesh);
+  const Halfedge border = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  UVMap uvMap = sm.add_property_map<SurfaceMesh::Vertex_index, Point2>("v:uv").first;
+  const SMP::Error_code err = solve(sm, border, uvMap, options);
+  // CGAL's own one-to-one check only reports: the map is there, for repairFolds and
+  // requireOneToOne to judge.
+  if (err != SMP::OK && err != SMP::ERROR_NO_1_TO_1_MAPPING)
+    throw Error(name + ": " + toString(options.method) + " parameterization failed: " +
+                errorMessage(err));
+  SolvedMap solved;
+  solved.uv.resize(mesh.points.size());
+  for (auto v : sm.vertices()) solved.uv[v.idx()] = Vec2(uvMap[v].x(), uvMap[v].y());
+  for (Halfedge h : CGAL::halfedges_around_face(border, sm))
+    solved.boundaryLoop.push_back(static_cast<int>(sm.source(h).idx()));
+  return solved;
+}
+
+SolvedMap givenMap(const Mesh& mesh, const std::vector<Vec2>& uv, const std::string& name) {
+  if (uv.size() != mesh.points.size())
+    throw Error(name + ": the given map has " + std::to_string(uv.size()) + " points for " +
+                std::to_string(mesh.vertexCount()) + " vertices");
+  return {uv, analyzeTopology(mesh).boundaryLoops.at(0)};
 }
 
 // Uniform scale and translation so that the UV bounding box fits [0,1]^2 with its lower-left
@@ -282,42 +332,34 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   if (options.method == ParamMethod::Auto) {
     // LSCM distorts least but may fold; mean value and then Tutte on a circle are one-to-one
     // in exact arithmetic, and Tutte's positive weights hold on where rounding folds the other.
-    const ParamOptions tries[] = {{ParamMethod::Lscm, options.border},
-                                  {ParamMethod::MeanValue, Border::Circle},
-                                  {ParamMethod::Tutte, Border::Circle}};
+    std::vector<ParamOptions> tries = {{ParamMethod::Lscm, options.border, {}},
+                                       {ParamMethod::MeanValue, Border::Circle, {}},
+                                       {ParamMethod::Tutte, Border::Circle, {}}};
+    if (!options.fallback.empty())
+      tries.insert(tries.begin() + 1, {ParamMethod::Given, Border::Circle, options.fallback});
     for (size_t i = 0;; ++i) {
       try {
         return parameterize(mesh, tries[i], name);
-      } catch (const FoldedMap&) {
-        if (i + 1 == std::size(tries)) throw;
+      } catch (const Error&) {  // folded, or its solver failed: the next one
+        if (i + 1 == tries.size()) throw;
       }
     }
   }
   // CGAL does not check the topology itself (shared/notes/cgal.md): a non-disk "succeeds".
   requireDisk(mesh, name);
-  SurfaceMesh sm = toSurfaceMesh(mesh);
-  const Halfedge border = CGAL::Polygon_mesh_processing::longest_border(sm).first;
-  UVMap uvMap = sm.add_property_map<SurfaceMesh::Vertex_index, Point2>("v:uv").first;
-  const SMP::Error_code err = solve(sm, border, uvMap, options);
-  if (err != SMP::OK)
-    throw Error(name + ": " + toString(options.method) + " parameterization failed: " +
-                SMP::get_error_message(err));
-
   Parameterization result;
   result.method = options.method;
-  result.uv.resize(mesh.points.size());
-  for (auto v : sm.vertices()) result.uv[v.idx()] = Vec2(uvMap[v].x(), uvMap[v].y());
+  SolvedMap solved = options.method == ParamMethod::Given ? givenMap(mesh, options.fallback, name)
+                                                         : solveMap(mesh, options, name);
+  result.uv = std::move(solved.uv);
+  result.boundaryLoop = std::move(solved.boundaryLoop);
   for (const Vec2& p : result.uv)
     if (!p.allFinite()) throw Error(name + ": the parameterization produced non-finite UVs");
   normalize(result.uv);
-
   result.onBoundary.assign(mesh.points.size(), false);
-  for (Halfedge h : CGAL::halfedges_around_face(border, sm)) {
-    const int v = static_cast<int>(sm.source(h).idx());
-    result.boundaryLoop.push_back(v);
-    result.onBoundary[v] = true;
-  }
-  if (options.method == ParamMethod::Lscm) repairFolds(mesh, result.uv, result.onBoundary);
+  for (int v : result.boundaryLoop) result.onBoundary[v] = true;
+  if (options.method == ParamMethod::Lscm || options.method == ParamMethod::Given)
+    repairFolds(mesh, result.uv, result.onBoundary);
   requireOneToOne(mesh, result.uv, result.onBoundary, result.boundaryLoop, name);
   // The border cycle runs around the hole; make it counter-clockwise around the domain.
   double signedArea = 0;
@@ -332,6 +374,10 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   return result;
 }
 
+std::vector<Vec2> conformalMap(const Mesh& disk, const std::string& name) {
+  return solveMap(disk, {ParamMethod::Lscm, Border::Circle, {}}, name).uv;
+}
+
 const char* toString(ParamMethod method) {
   switch (method) {
     case ParamMethod::Auto: return "auto";
@@ -340,6 +386,7 @@ const char* toString(ParamMethod method) {
     case ParamMethod::MeanValue: return "mean-value";
     case ParamMethod::Tutte: return "tutte";
     case ParamMethod::Lscm: return "lscm";
+    case ParamMethod::Given: return "input-map";
   }
   return "?";
 }

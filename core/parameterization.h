@@ -9,8 +9,9 @@
 namespace lloydscope {
 
 enum class ParamMethod {
-  Auto,  // LSCM; where it folds, mean value on a circle; where that folds too, Tutte
-  Authalic, Conformal, MeanValue, Tutte, Lscm
+  Auto,  // LSCM; where it folds, ParamOptions::fallback, then mean value on a circle, then Tutte
+  Authalic, Conformal, MeanValue, Tutte, Lscm,
+  Given  // ParamOptions::fallback, taken as it is (what Auto reports when it used it)
 };
 enum class Border { Square, Circle };  // ignored by LSCM, whose border is free
 
@@ -20,6 +21,10 @@ struct ParamOptions {
   // mean-value map, one-to-one on any convex border, takes over.
   ParamMethod method = ParamMethod::Auto;
   Border border = Border::Circle;  // for the fixed-border methods
+  // Per vertex, a map that Auto tries after LSCM and before mean value, if not empty: for a
+  // resampled surface, its points in the input's own map (one-to-one by construction, and as
+  // little distorted as that map), far better than a circle where LSCM folds.
+  std::vector<Vec2> fallback;
 };
 
 struct Distortion {
@@ -43,6 +48,10 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
                               const std::string& name);
 
 Distortion measureDistortion(const Mesh& mesh, const std::vector<Vec2>& uv);
+
+// LSCM's map of a disk as it comes out of the solver, folds and all (neither repaired nor
+// refused): what cutToDisk measures a cut's distortion on. Throws Error when CGAL fails.
+std::vector<Vec2> conformalMap(const Mesh& disk, const std::string& name);
 
 const char* toString(ParamMethod method);
 const char* toString(Border border);

@@ -89,6 +89,27 @@ TEST(Parameterization, OrientationIsPositiveEverywhere) {
   }
 }
 
+// Auto's fallback after LSCM (a resampled surface's points in the input's map): taken as it
+// is, scaled into the unit square; a fold in it is repaired as LSCM's are.
+TEST(Parameterization, AGivenMapIsTakenAsItIsAndChecked) {
+  const Mesh mesh = test::grid(4, 2.0);
+  std::vector<Vec2> given;
+  for (const Vec3& p : mesh.points) given.emplace_back(3 * p.x() + 1, p.y());  // stretched
+  const Parameterization p = parameterize(mesh, {ParamMethod::Given, Border::Circle, given}, "g");
+  EXPECT_EQ(p.method, ParamMethod::Given);
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    EXPECT_NEAR(p.uv[v].x(), mesh.points[v].x() / 2, 1e-12);
+    EXPECT_NEAR(p.uv[v].y(), mesh.points[v].y() / 6, 1e-12);
+  }
+  EXPECT_GT(p.distortion.meanAngleErrorDeg, 10.0);
+  std::vector<Vec2> folded = given;
+  folded[12] = Vec2(1.5, 0.5);  // the middle vertex, beyond its neighbours: folded
+  const Parameterization repaired =
+      parameterize(mesh, {ParamMethod::Given, Border::Circle, folded}, "g");
+  for (const Triangle& t : mesh.triangles)
+    EXPECT_GT(triangleArea(repaired.uv[t[0]], repaired.uv[t[1]], repaired.uv[t[2]]), 0.0);
+}
+
 TEST(Density, UniformIsOneAndAreaIsOneForAnIsometricMap) {
   const Mesh mesh = test::grid(6, 2.0);
   const Parameterization p = parameterize(mesh, {ParamMethod::Tutte, Border::Square}, "g");
