@@ -80,11 +80,29 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     for (int i = begin; i < end; ++i)
       length.push_back(length.back() +
                        (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i % n]]).norm());
-    // A seam stretch gets at least 3 pieces: two seams between the same nodes, or a seam that
-    // loops back to its node, would otherwise stitch into one edge shared by 4 triangles.
-    bool seam = !options.onSeam.empty();
-    for (int i = begin; i <= end && seam; ++i) seam = flag(options.onSeam, loop[i % n]);
-    const int pieces = std::max(seam ? 3 : 1, static_cast<int>(std::lround(length.back() / spacing)));
+    // A stretch that starts at a seam node gets at least 2 pieces, 3 if it comes back to the
+    // same point (as many as it has edges at most): two seams between the same nodes would
+    // otherwise stitch into one edge shared by 4 triangles, and a seam that loops back to its
+    // node, or a small hole of the input (a border loop the cut joined to the others at one
+    // node), would close. Those extra samples are the stretch's own vertices: two on one
+    // straight edge would make a flat ear.
+    const int edges = end - begin;
+    const bool fromNode = flag(options.seamNode, loop[begin]) || flag(options.seamNode, loop[end % n]);
+    const bool closed = mesh.points[loop[begin]] == mesh.points[loop[end % n]];
+    const int fewest = std::min(edges, !fromNode ? 1 : closed ? 3 : 2);
+    const int byLength = static_cast<int>(std::lround(length.back() / spacing));
+    if (fewest > byLength) {  // the vertex nearest by arc length: alike on both copies of a seam
+      for (int s = 0, last = 0; s < fewest; ++s) {
+        const double target = length.back() * s / fewest;
+        int nearest = last + (s > 0);
+        for (int i = nearest; i <= edges - (fewest - s); ++i)
+          if (std::abs(length[i] - target) < std::abs(length[nearest] - target)) nearest = i;
+        samples.push_back(param.uv[loop[(begin + nearest) % n]]);
+        last = nearest;
+      }
+      continue;
+    }
+    const int pieces = std::max(1, byLength);
     int segment = 0;
     for (int s = 0; s < pieces; ++s) {
       const double target = length.back() * s / pieces;
@@ -100,8 +118,11 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
   return samples;
 }
 
-// `count` points drawn from the density: a triangle with probability proportional to its mass,
-// then a uniform point inside it.
+// `count` points drawn where a centroidal tessellation of the density puts them: in 2D its
+// sites end up with a point density proportional to sqrt(rho) (Gersho: rho^(d/(d+2))), so a
+// triangle is drawn with probability proportional to its area times sqrt(rho), then a uniform
+// point inside it. Drawing by rho itself put 1/scale times too many sites where the map
+// shrinks the surface by `scale`: on a cut knot, all of them at one end of the strip.
 std::vector<Vec2> sampleDensity(const Domain& domain, int count, std::uint64_t seed) {
   const auto& uv = domain.uv();
   const auto& rho = domain.density();
@@ -110,7 +131,7 @@ std::vector<Vec2> sampleDensity(const Domain& domain, int count, std::uint64_t s
   for (size_t i = 0; i < domain.triangles().size(); ++i) {
     const Triangle& t = domain.triangles()[i];
     total += std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]])) *
-             (rho[i][0] + rho[i][1] + rho[i][2]) / 3.0;
+             (std::sqrt(rho[i][0]) + std::sqrt(rho[i][1]) + std::sqrt(rho[i][2])) / 3.0;
     cumulative.push_back(total);
   }
   std::mt19937_64 rng(seed);

@@ -1,0 +1,47 @@
+#include "density.h"
+#include "mesh_io.h"
+#include "pipeline.h"
+#include "sites.h"
+#include "test_support.h"
+#include "topology.h"
+
+#include <cmath>
+
+using namespace lloydscope;
+
+// A converged tessellation of density rho has about sqrt(rho) sites per unit area in 2D
+// (Gersho): the first sites are drawn that way. Drawn by rho itself, the half with 4 times the
+// density got 4 times the sites instead of 2 (on a cut knot: every site at one end).
+TEST(Sites, InsideSitesAreDrawnBySqrtOfTheDensity) {
+  const Mesh grid = test::grid(20);
+  const Parameterization param = parameterize(grid, {ParamMethod::Tutte, Border::Square, {}}, "grid");
+  std::vector<double> rho(grid.vertexCount());
+  for (int v = 0; v < grid.vertexCount(); ++v) rho[v] = param.uv[v].x() < 0.5 ? 4.0 : 1.0;
+  const Domain domain(param.uv, grid.triangles, vertexDensity(grid.triangles, rho));
+  SiteOptions o;
+  o.count = 4000;
+  const InitialSites sites = initialSites(grid, param, domain, o);
+  int left = 0, right = 0;
+  for (const Vec2& p : sites.movable) {
+    if (p.x() < 0.45) ++left;
+    if (p.x() > 0.55) ++right;
+  }
+  ASSERT_GT(right, 0);
+  EXPECT_NEAR(double(left) / right, 2.0, 0.25);
+}
+
+// A grid with a hole of one missing triangle, far smaller than the spacing of 35 sites: the
+// cut joins it to the border at one node, and it still comes back as a hole.
+TEST(Sites, AHoleSmallerThanTheSpacingStaysAHole) {
+  Mesh holed = test::grid(12);
+  holed.triangles.erase(holed.triangles.begin() + 2 * (6 * 12 + 6));
+  ASSERT_EQ(analyzeTopology(holed).boundaryLoops.size(), 2u);
+  RemeshOptions o;
+  o.sites.count = 35;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(holed, o, "holed");
+  EXPECT_NO_THROW(validateMesh(r.output, "output"));
+  const Topology t = analyzeTopology(r.output);
+  EXPECT_EQ(t.genus, 0);
+  EXPECT_EQ(t.boundaryLoops.size(), 2u);
+}
