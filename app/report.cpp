@@ -82,6 +82,10 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"max_area_ratio", r.distortion.maxAreaRatio},
             {"mean_log_area_ratio", r.distortion.meanLogAreaRatio},
             {"mean_angle_error_deg", r.distortion.meanAngleErrorDeg}}},
+          {"cut",
+           {{"seam_edges", r.cut.seamEdges},
+            {"extremity_cuts", r.cut.extremityCuts},
+            {"area_spread", r.cut.areaSpread}}},
           {"milliseconds",
            {{"simplify", r.ms.simplify},
             {"cut", r.ms.cut},
@@ -121,6 +125,10 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
+  if (r.cut.seamEdges > 0)
+    out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
+        << " slits through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)
+        << "\n";
   out << "Time (ms): " << (r.ms.simplify > 0 ? "simplify " + format("%.1f", r.ms.simplify) + ", " : "")
       << (r.ms.cut > 0 ? "cut " + format("%.1f", r.ms.cut) + ", " : "")
       << (r.ms.resample > 0 ? "resample " + format("%.1f", r.ms.resample) + ", " : "")

@@ -1,7 +1,11 @@
 #include "cut.h"
 
+#include "cgal_types.h"
+#include "parameterization.h"
 #include "remesh.h"
 #include "topology.h"
+
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 
 #include <algorithm>
 #include <functional>
@@ -27,102 +31,166 @@ std::map<Edge, std::vector<int>> edgeFaces(const Mesh& mesh) {
   return faces;
 }
 
-// The edges a breadth-first walk over the faces from face 0 does not cross, pruned of
-// dangling branches (border edges are never pruned).
-std::set<Edge> cutGraph(const Mesh& mesh, const std::map<Edge, std::vector<int>>& faces) {
-  std::vector<bool> reached(mesh.faceCount(), false);
-  std::set<Edge> crossed;
-  std::queue<int> queue;
-  queue.push(0);
-  reached[0] = true;
-  while (!queue.empty()) {
-    const int f = queue.front();
-    queue.pop();
+using Neighbours = std::vector<std::vector<int>>;
+
+Neighbours neighboursOf(const Mesh& mesh) {
+  Neighbours neighbours(mesh.vertexCount());
+  for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
-      const Edge e = edge(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
-      for (int g : faces.at(e))
-        if (!reached[g]) {
-          reached[g] = true;
-          crossed.insert(e);
-          queue.push(g);
-        }
+      neighbours[t[k]].push_back(t[(k + 1) % 3]);
+      neighbours[t[(k + 1) % 3]].push_back(t[k]);
     }
+  for (auto& n : neighbours) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
   }
-  std::set<Edge> graph;
-  std::map<int, int> degree;
-  for (const auto& [e, fs] : faces)
-    if (!crossed.count(e)) {
-      graph.insert(e);
-      ++degree[e.first];
-      ++degree[e.second];
-    }
-  // Prune: an inside edge with an end of degree 1 leads nowhere.
-  bool pruned = true;
-  while (pruned) {
-    pruned = false;
-    for (auto it = graph.begin(); it != graph.end();) {
-      const bool border = faces.at(*it).size() == 1;
-      if (!border && (degree[it->first] == 1 || degree[it->second] == 1)) {
-        --degree[it->first];
-        --degree[it->second];
-        it = graph.erase(it);
-        pruned = true;
-      } else {
-        ++it;
-      }
-    }
-  }
-  return graph;
+  return neighbours;
 }
 
 // Shortest paths (by edge length) from `sources`: distance and predecessor of every vertex.
-void dijkstra(const Mesh& mesh, const std::vector<std::vector<int>>& neighbours,
-              const std::vector<int>& sources, std::vector<double>& distance,
-              std::vector<int>& previous) {
-  distance.assign(mesh.vertexCount(), std::numeric_limits<double>::infinity());
-  previous.assign(mesh.vertexCount(), -1);
+struct ShortestPaths {
+  std::vector<double> distance;
+  std::vector<int> previous;  // -1 at the sources
+};
+
+ShortestPaths dijkstra(const Mesh& mesh, const Neighbours& neighbours, const std::vector<int>& sources) {
+  ShortestPaths paths{std::vector<double>(mesh.vertexCount(), std::numeric_limits<double>::infinity()),
+                      std::vector<int>(mesh.vertexCount(), -1)};
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   for (int s : sources) {
-    distance[s] = 0;
+    paths.distance[s] = 0;
     queue.push({0.0, s});
   }
   while (!queue.empty()) {
     const auto [d, v] = queue.top();
     queue.pop();
-    if (d > distance[v]) continue;
+    if (d > paths.distance[v]) continue;
     for (int w : neighbours[v]) {
       const double through = d + (mesh.points[w] - mesh.points[v]).norm();
-      if (through < distance[w]) {
-        distance[w] = through;
-        previous[w] = v;
+      if (through < paths.distance[w]) {
+        paths.distance[w] = through;
+        paths.previous[w] = v;
         queue.push({through, w});
       }
     }
   }
+  return paths;
 }
 
-// A tree of shortest paths joining three extremities of a closed genus-0 surface.
-std::set<Edge> slit(const Mesh& mesh) {
-  std::vector<std::vector<int>> neighbours(mesh.vertexCount());
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) neighbours[t[k]].push_back(t[(k + 1) % 3]);
-  std::vector<double> distance;
-  std::vector<int> previous;
-  auto farthest = [&] {
-    return static_cast<int>(std::max_element(distance.begin(), distance.end()) - distance.begin());
+void addPath(const ShortestPaths& paths, int from, std::set<Edge>& cut) {
+  for (int v = from; paths.previous[v] >= 0; v = paths.previous[v]) cut.insert(edge(v, paths.previous[v]));
+}
+
+std::vector<int> verticesOf(const std::set<Edge>& cut) {
+  std::vector<int> vertices;
+  for (const auto& [a, b] : cut) vertices.push_back(a), vertices.push_back(b);
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+// A tree of shortest paths joining three extremities of a closed genus-0 surface, each the
+// vertex farthest from the ones before (a slit of one edge would not open).
+std::set<Edge> slitThroughExtremities(const Mesh& mesh, const Neighbours& neighbours) {
+  auto farthest = [](const ShortestPaths& paths) {
+    return static_cast<int>(std::max_element(paths.distance.begin(), paths.distance.end()) -
+                            paths.distance.begin());
   };
-  dijkstra(mesh, neighbours, {0}, distance, previous);
-  std::vector<int> tree = {farthest()};  // the vertices of the slit so far
+  std::vector<int> slit = {farthest(dijkstra(mesh, neighbours, {0}))};
   std::set<Edge> cut;
   for (int extremity = 1; extremity < 3; ++extremity) {
-    dijkstra(mesh, neighbours, tree, distance, previous);
-    for (int v = farthest(); previous[v] >= 0; v = previous[v]) {
-      cut.insert(edge(v, previous[v]));
-      tree.push_back(v);
-    }
+    const ShortestPaths paths = dijkstra(mesh, neighbours, slit);
+    addPath(paths, farthest(paths), cut);
+    slit = verticesOf(cut);
   }
   return cut;
+}
+
+// The border loops, joined one by one to the nearest loop not yet joined by a shortest path
+// (Prim's order): one border once cut.
+std::set<Edge> joinBorderLoops(const Mesh& mesh, const Neighbours& neighbours,
+                               const std::vector<std::vector<int>>& loops) {
+  std::set<Edge> cut;
+  for (const auto& loop : loops)
+    for (size_t i = 0; i < loop.size(); ++i) cut.insert(edge(loop[i], loop[(i + 1) % loop.size()]));
+  std::vector<int> loopOf(mesh.vertexCount(), -1);
+  for (size_t l = 0; l < loops.size(); ++l)
+    for (int v : loops[l]) loopOf[v] = static_cast<int>(l);
+  std::vector<bool> joined(loops.size(), false);
+  std::vector<int> sources = loops.empty() ? std::vector<int>{} : loops[0];
+  if (!loops.empty()) joined[0] = true;
+  for (size_t count = 1; count < loops.size(); ++count) {
+    const ShortestPaths paths = dijkstra(mesh, neighbours, sources);
+    int nearest = -1;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (loopOf[v] >= 0 && !joined[loopOf[v]] &&
+          (nearest < 0 || paths.distance[v] < paths.distance[nearest]))
+        nearest = v;
+    joined[loopOf[nearest]] = true;
+    for (int v = nearest; v >= 0; v = paths.previous[v]) sources.push_back(v);
+    sources.insert(sources.end(), loops[loopOf[nearest]].begin(), loops[loopOf[nearest]].end());
+    addPath(paths, nearest, cut);
+  }
+  return cut;
+}
+
+// Around each handle, the shortest loop the tree-cotree construction offers (Erickson and
+// Whittlesey's greedy system of loops): a tree T of shortest paths from `base` (the cut so
+// far, or one vertex), a dual spanning tree of the faces across the other edges, heaviest
+// loops first; each edge left over closes one loop through T. Smooth, short loops instead of
+// the jagged ones an arbitrary spanning tree leaves.
+std::set<Edge> handleLoops(const Mesh& mesh, const Neighbours& neighbours,
+                           const std::map<Edge, std::vector<int>>& faces, const std::set<Edge>& cut,
+                           const std::vector<int>& base) {
+  const ShortestPaths tree = dijkstra(mesh, neighbours, base);
+  auto inTree = [&](const Edge& e) {
+    return tree.previous[e.first] == e.second || tree.previous[e.second] == e.first;
+  };
+  struct Candidate {
+    double loopLength;
+    Edge edge;
+  };
+  std::vector<Candidate> candidates;
+  for (const auto& [e, fs] : faces)
+    if (fs.size() == 2 && !cut.count(e) && !inTree(e))
+      candidates.push_back({tree.distance[e.first] + tree.distance[e.second] +
+                                (mesh.points[e.first] - mesh.points[e.second]).norm(),
+                            e});
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.loopLength > b.loopLength; });
+  std::vector<int> parent(mesh.faceCount());  // union-find over faces
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<int(int)> root = [&](int f) { return parent[f] == f ? f : parent[f] = root(parent[f]); };
+  std::set<Edge> loops;
+  for (const Candidate& c : candidates) {
+    const auto& fs = faces.at(c.edge);
+    const int a = root(fs[0]), b = root(fs[1]);
+    if (a != b) {
+      parent[a] = b;  // a dual tree edge: not cut
+      continue;
+    }
+    loops.insert(c.edge);
+    addPath(tree, c.edge.first, loops);
+    addPath(tree, c.edge.second, loops);
+  }
+  // Two loops' paths to the base share their last stretch: a branch that leads nowhere.
+  std::map<int, int> degree;
+  for (const Edge& e : loops) ++degree[e.first], ++degree[e.second];
+  for (const Edge& e : cut) ++degree[e.first], ++degree[e.second];
+  for (bool pruned = true; pruned;) {
+    pruned = false;
+    for (auto it = loops.begin(); it != loops.end();)
+      if (degree[it->first] == 1 || degree[it->second] == 1) {
+        --degree[it->first];
+        --degree[it->second];
+        it = loops.erase(it);
+        pruned = true;
+      } else {
+        ++it;
+      }
+  }
+  return loops;
 }
 
 // Opens the mesh along `cut`: the corners around each vertex are grouped into the wedges that
@@ -201,39 +269,169 @@ std::vector<int> seamPartners(const Mesh& disk, double tolerance) {
   return target;
 }
 
+namespace {
+
+// A flat triangle on the border whose middle vertex has no other triangle (three border samples
+// in a row on a straight border, that a map with a round border bent into an ear) goes, and its
+// middle vertex with it; repeated, as the next sample may then be one.
+void dropFlatEars(std::vector<Triangle>& triangles, const std::vector<Vec3>& points) {
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    std::vector<int> uses(points.size(), 0);
+    for (const Triangle& t : triangles)
+      for (int v : t) ++uses[v];
+    for (size_t f = 0; f < triangles.size(); ++f) {
+      const Triangle& t = triangles[f];
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 &m = points[t[k]], &a = points[t[(k + 1) % 3]], &b = points[t[(k + 2) % 3]];
+        const Vec3 u = a - m, w = b - m;
+        if (uses[t[k]] == 1 && u.cross(w).norm() <= 1e-9 * u.norm() * w.norm()) {
+          triangles.erase(triangles.begin() + f);
+          dropped = true;
+          break;
+        }
+      }
+      if (dropped) break;
+    }
+  }
+}
+
+}  // namespace
+
 Mesh stitchSeams(const Mesh& disk, double tolerance) {
   const std::vector<int> target = seamPartners(disk, tolerance);
-  auto root = [&](int v) { return target[v]; };
   // A triangle with two corners on the two copies of one sample (the ear at the tip of a slit)
-  // collapses: it goes.
+  // collapses: it goes. So do two triangles that become one back to back (a slit tip with a
+  // single inside neighbour): its tip vertex goes with them.
+  std::map<Triangle, int> count;  // by sorted corners
+  auto key = [](Triangle t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
   std::vector<Triangle> triangles;
   for (Triangle t : disk.triangles) {
-    for (int& v : t) v = root(v);
-    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
+    for (int& v : t) v = target[v];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    triangles.push_back(t);
+    ++count[key(t)];
   }
+  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
+                                 [&](const Triangle& t) { return count[key(t)] > 1; }),
+                  triangles.end());
+  dropFlatEars(triangles, disk.points);
   return assemble(triangles, disk.points);
 }
 
-CutResult cutToDisk(const Mesh& mesh, const std::string& name) {
-  const Topology topology = analyzeTopology(mesh);
-  if (topology.components != 1)
-    throw Error(name + ": cannot cut to a disk: it has " + topology.describe() +
-                " (remesh each on its own)");
-  if (topology.isDisk()) {
-    CutResult unchanged;
-    unchanged.disk = mesh;
-    unchanged.original.resize(mesh.vertexCount());
-    std::iota(unchanged.original.begin(), unchanged.original.end(), 0);
-    return unchanged;
+namespace {
+
+int countFlat(const Mesh& mesh) {
+  int flat = 0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 u = mesh.points[t[1]] - mesh.points[t[0]], w = mesh.points[t[2]] - mesh.points[t[0]];
+    flat += u.cross(w).norm() <= 1e-9 * u.norm() * w.norm();
   }
-  const auto faces = edgeFaces(mesh);
-  const bool closedSphere = topology.boundaryLoops.empty() && topology.genus == 0;
-  CutResult result = cutAlong(mesh, faces, closedSphere ? slit(mesh) : cutGraph(mesh, faces));
+  return flat;
+}
+
+}  // namespace
+
+int removeFlatTriangles(Mesh& mesh) {
+  if (countFlat(mesh) == 0) return 0;
+  SurfaceMesh sm = toSurfaceMesh(mesh);
+  CGAL::Polygon_mesh_processing::experimental::remove_almost_degenerate_faces(
+      sm, std::cos(179.5 * M_PI / 180.0), 1e4, 1e-3 * boundingBoxDiagonal(mesh));
+  sm.collect_garbage();
+  mesh = fromSurfaceMesh(sm);
+  return countFlat(mesh);
+}
+
+namespace {
+
+// Per input vertex, the conformal map's area scale around it: the UV area of its faces over
+// their 3D area, each as a share of the total. 1 everywhere for an area-preserving map.
+std::vector<double> areaScale(const Mesh& mesh, const Mesh& disk, const std::vector<Vec2>& uv) {
+  std::vector<double> area3(mesh.vertexCount(), 0), area2(mesh.vertexCount(), 0);
+  double total3 = 0, total2 = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const Triangle& d = disk.triangles[f];
+    const double a3 = triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    const double a2 = std::abs(triangleArea(uv[d[0]], uv[d[1]], uv[d[2]]));
+    total3 += a3;
+    total2 += a2;
+    for (int v : t) area3[v] += a3, area2[v] += a2;
+  }
+  std::vector<double> scale(mesh.vertexCount(), 1);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (area3[v] > 0) scale[v] = (area2[v] / total2) / (area3[v] / total3);
+  return scale;
+}
+
+// The 99th percentile of the area scale over the 1st: one odd vertex (a sliver next to a cut
+// node) does not decide where to cut.
+double spreadOf(std::vector<double> scale) {
+  std::sort(scale.begin(), scale.end());
+  return scale[scale.size() * 99 / 100] / std::max(scale[scale.size() / 100], 1e-300);
+}
+
+CutResult open(const Mesh& mesh, const std::map<Edge, std::vector<int>>& faces, const std::set<Edge>& cut,
+               const std::string& name) {
+  CutResult result = cutAlong(mesh, faces, cut);
   markSeams(result, mesh, faces);
   if (!analyzeTopology(result.disk).isDisk())
     throw Error(name + ": cutting it open did not give a disk (it is " +
                 analyzeTopology(result.disk).describe() + ")");
   return result;
+}
+
+}  // namespace
+
+CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions& options) {
+  const Topology topology = analyzeTopology(mesh);
+  if (topology.components != 1)
+    throw Error(name + ": cannot cut to a disk: it has " + topology.describe() +
+                " (remesh each on its own)");
+  const auto faces = edgeFaces(mesh);
+  const Neighbours neighbours = neighboursOf(mesh);
+  // The topological cut: the border loops joined into one, then a loop around every handle.
+  std::set<Edge> cut = joinBorderLoops(mesh, neighbours, topology.boundaryLoops);
+  if (topology.genus > 0) {
+    const std::vector<int> base = cut.empty() ? std::vector<int>{0} : verticesOf(cut);
+    const std::set<Edge> loops = handleLoops(mesh, neighbours, faces, cut, base);
+    cut.insert(loops.begin(), loops.end());
+  }
+  if (cut.empty()) cut = slitThroughExtremities(mesh, neighbours);  // closed, genus 0
+  // The geometric cut (Gu, Gortler and Hoppe's geometry images): while the conformal map
+  // shrinks some part of the surface far more than the rest (a protrusion, the far side of a
+  // nearly closed shape), slit from the most shrunken vertex to the cut by a shortest path.
+  CutResult best = open(mesh, faces, cut, name);
+  std::vector<double> scale = areaScale(mesh, best.disk, conformalMap(best.disk, name));
+  best.summary.areaSpread = spreadOf(scale);
+  while (best.summary.areaSpread > options.maxAreaSpread && best.summary.extremityCuts < options.maxExtremityCuts) {
+    const std::vector<int> onCut = verticesOf(cut);
+    for (int v : onCut) scale[v] = std::numeric_limits<double>::infinity();  // slit to elsewhere
+    const int shrunken = static_cast<int>(std::min_element(scale.begin(), scale.end()) - scale.begin());
+    std::set<Edge> longer = cut;
+    addPath(dijkstra(mesh, neighbours, onCut), shrunken, longer);
+    CutResult tried = open(mesh, faces, longer, name);
+    std::vector<double> triedScale = areaScale(mesh, tried.disk, conformalMap(tried.disk, name));
+    tried.summary.areaSpread = spreadOf(triedScale);
+    tried.summary.extremityCuts = best.summary.extremityCuts + 1;
+    // A slit that does not lower the spread by a tenth stays out: each costs a seam.
+    if (tried.summary.areaSpread > 0.9 * best.summary.areaSpread) break;
+    cut = std::move(longer);
+    best = std::move(tried);
+    scale = std::move(triedScale);
+  }
+  best.summary.seamEdges = static_cast<int>(best.seam.size());
+  if (best.seam.empty()) {  // a disk that needed no slit: as it came, vertex order and all
+    best.disk = mesh;
+    best.original.resize(mesh.vertexCount());
+    std::iota(best.original.begin(), best.original.end(), 0);
+    best.onSeam.clear();
+    best.seamNode.clear();
+  }
+  return best;
 }
 
 }  // namespace lloydscope

@@ -11,6 +11,14 @@
 
 namespace lloydscope {
 
+struct CutSummary {
+  int seamEdges = 0;      // cut edges inside the surface (each is two border edges of the disk)
+  int extremityCuts = 0;  // slits added to bound the distortion
+  // max/min over the vertices of the conformal (LSCM) map's area scale on the disk: how much
+  // more it shrinks one part of the surface than another.
+  double areaSpread = 1;
+};
+
 struct CutResult {
   Mesh disk;                 // a topological disk
   std::vector<int> original;  // per disk vertex, the input vertex it is a copy of
@@ -19,17 +27,25 @@ struct CutResult {
   // border meet, branch or end: degree other than 2). What SiteOptions needs to sample both
   // copies of every seam alike.
   std::vector<bool> onSeam, seamNode;
+  CutSummary summary;
 };
 
-// The cut graph: the edges that no dual spanning tree (a breadth-first walk over the faces
-// from face 0) crosses, pruned of dangling branches; the input's own boundary edges stay.
-// What remains joins the boundary loops and runs around every handle. A closed surface of
-// genus 0 has none left, and is slit instead along shortest paths joining three of its
-// extremities (each the vertex farthest from the ones before), so that no region is enclosed
-// by a short cut (shared/notes/cgal.md: a small hole makes every map to a disk useless).
-// A disk comes back unchanged. The mesh must be a valid manifold with one connected
-// component; throws Error("<name>: ...") otherwise.
-CutResult cutToDisk(const Mesh& mesh, const std::string& name);
+struct CutOptions {
+  // Slits are added from the most shrunken vertex while the area spread is above this, each
+  // kept only if it lowers the spread.
+  double maxAreaSpread = 20;
+  int maxExtremityCuts = 12;
+};
+
+// The cut, in two parts. Topological: the border loops joined one by one to the nearest by
+// shortest paths, then around each handle the shortest loop a tree-cotree construction offers
+// (a closed genus-0 surface gets a slit between two extremities instead). Geometric: while
+// the conformal map of the disk shrinks one part far more than another, a shortest path
+// from the most shrunken vertex to the cut (geometry images' cut augmentation) -- a short cut
+// through a nearly closed shape makes any map to a disk useless (shared/notes/cgal.md).
+// A disk that needs no slit comes back unchanged. The mesh must be a valid manifold with one
+// connected component; throws Error("<name>: ...") otherwise.
+CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions& options = {});
 
 // Per vertex of a remeshed disk, the vertex it becomes when stitched: the first of the border
 // vertices within `tolerance` of it (the copies of one seam sample), or itself.
@@ -38,5 +54,10 @@ std::vector<int> seamPartners(const Mesh& disk, double tolerance);
 // Merges the border vertices of a remeshed disk that lie within `tolerance` of each other (the
 // copies of each seam sample): the cut surface's topology back. Vertices keep their order.
 Mesh stitchSeams(const Mesh& disk, double tolerance);
+
+// Removes the stitched surface's (nearly) flat triangles -- a vertex lifted onto a seam where
+// the map shrinks the surface most -- by CGAL's edge flips and collapses (caps with an angle over
+// 179.5 degrees, needles 10^4 times longer than wide). Returns how many flat ones are left.
+int removeFlatTriangles(Mesh& mesh);
 
 }  // namespace lloydscope

@@ -32,7 +32,7 @@ class Stopwatch {
 RemeshOptions referencePreset(RemeshMethod method) {
   RemeshOptions o;
   o.method = method;
-  o.param = {ParamMethod::Authalic, Border::Square};
+  o.param = {ParamMethod::Authalic, Border::Square, {}};
   o.density.kind = DensityKind::Uniform;
   o.sites.fromInputVertices = true;
   o.lloyd = LloydOptions{};  // 1e-6 and 5%
@@ -90,7 +90,9 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
       }()),
       param_([&] {
         Stopwatch stage;
-        Parameterization p = parameterize(surface(), options_.param, name);
+        ParamOptions o = options_.param;
+        if (resampled_) o.fallback = resampled_->mesh.uv;
+        Parameterization p = parameterize(surface(), o, name);
         ms_.parameterize = stage.lap();
         return p;
       }()),
@@ -168,6 +170,7 @@ Mesh RemeshSession::buildOutput() const {
   if (!cut_) return std::move(output.mesh);
   // Both copies of every seam sample are at the same place: one vertex again.
   Mesh stitched = stitchSeams(output.mesh, 1e-9 * boundingBoxDiagonal(output.mesh));
+  removeFlatTriangles(stitched);
   const Topology want = analyzeTopology(*original_);
   try {
     validateMesh(stitched, name_);
@@ -203,6 +206,7 @@ RemeshResult RemeshSession::finish() {
   RemeshResult result;
   result.paramUsed = param_.method;
   result.distortion = param_.distortion;
+  if (cut_) result.cut = cut_->summary;
   result.ms = ms_;
   result.iterations = iterationCount();
   result.converged = converged();

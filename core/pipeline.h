@@ -50,6 +50,7 @@ struct RemeshResult {
   Recording recording;
   ParamMethod paramUsed = ParamMethod::Lscm;  // what "auto" chose
   Distortion distortion;
+  CutSummary cut;  // how the input was cut open (no seam edges: it was not)
   QualityMetrics before, after;
   Fidelity fidelity;  // output against input; zero when not measured
   int iterations = 0;

@@ -235,3 +235,68 @@ INSTANTIATE_TEST_SUITE_P(Meshes, ClosedCgalSamples,
                            const std::string name = info.param.file;
                            return name.substr(0, name.find('.'));
                          });
+
+// The tree-cotree loops are the short ones around the handle and the hole (about the inner
+// circle, 2 pi 1.3, and a meridian, 2 pi 0.7), not the jagged cut graph an arbitrary
+// spanning tree leaves (over 40 on this torus).
+TEST(Cut, ATorusIsCutAlongTwoShortLoops) {
+  const Mesh input = torus();
+  const CutResult cut = cutToDisk(input, "torus");
+  double length = 0;
+  for (const auto& [a, b] : cut.seam) length += (input.points[a] - input.points[b]).norm();
+  EXPECT_LT(length, 1.3 * (2 * M_PI * 1.3 + 2 * M_PI * 0.7));
+  EXPECT_EQ(cut.summary.seamEdges, static_cast<int>(cut.seam.size()));
+}
+
+// A closed capsule, slit through three extremities: its conformal map still shrinks some
+// parts more than others. Asked for a tighter spread, slits through the most shrunken
+// vertices bring it down, each by a tenth at least, and the summary says so.
+TEST(Cut, SlitsThroughExtremitiesBringTheAreaSpreadDown) {
+  Mesh capsule = sphere();
+  for (Vec3& p : capsule.points) p.z() *= 3;
+  CutOptions none;
+  none.maxExtremityCuts = 0;
+  const CutResult plain = cutToDisk(capsule, "capsule", none);
+  CutOptions tight;
+  tight.maxAreaSpread = 1.01;
+  const CutResult slit = cutToDisk(capsule, "capsule", tight);
+  expectDiskCopyOf(slit, capsule);
+  EXPECT_EQ(plain.summary.extremityCuts, 0);
+  EXPECT_GT(slit.summary.extremityCuts, 0);
+  EXPECT_LT(slit.summary.areaSpread, 0.9 * plain.summary.areaSpread);
+  EXPECT_GT(slit.seam.size(), plain.seam.size());
+}
+
+// A slit tip with a single inside neighbour m: stitching its two copies a, a' of one sample
+// turns the tip's two triangles into one pair back to back. Both go, and the tip with them.
+TEST(Cut, StitchingDropsTheTrianglesOfASlitTipBackToBack) {
+  Mesh disk;
+  disk.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1, 0), Vec3(2, 1, 0)};
+  // 0: the tip, 1 and 2: the copies a and a', 3: m, 4: further inside
+  disk.triangles = {{1, 0, 3}, {3, 0, 2}, {1, 3, 4}};
+  const Mesh stitched = stitchSeams(disk, 1e-9);
+  ASSERT_EQ(stitched.faceCount(), 1);
+  EXPECT_EQ(stitched.vertexCount(), 3);  // the tip is gone
+}
+
+// Three samples in a row on a straight border, bent into an ear by a round map: flat, it goes.
+TEST(Cut, StitchingDropsFlatEars) {
+  Mesh disk;
+  disk.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)};
+  disk.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const Mesh stitched = stitchSeams(disk, 1e-9);
+  ASSERT_EQ(stitched.faceCount(), 1);
+  EXPECT_NO_THROW(validateMesh(stitched, "stitched"));
+}
+
+// A vertex lifted onto the middle of an inside edge makes two flat triangles; CGAL's repair
+// flips or collapses them away.
+TEST(Cut, FlatTrianglesInsideAreRemoved) {
+  Mesh mesh = test::grid(4);
+  const int a = mesh.triangles[10][0], b = mesh.triangles[10][2];  // the diagonal of a cell
+  const int v = mesh.triangles[10][1];
+  mesh.points[v] = 0.5 * (mesh.points[a] + mesh.points[b]);  // onto that diagonal
+  EXPECT_THROW(validateMesh(mesh, "flat"), Error);
+  EXPECT_EQ(removeFlatTriangles(mesh), 0);
+  EXPECT_NO_THROW(validateMesh(mesh, "repaired"));
+}
