@@ -6,6 +6,7 @@
 #include "canvas.vert.h"
 
 #include <array>
+#include <tuple>
 
 namespace lloydscope {
 
@@ -35,6 +36,14 @@ void CanvasGeometry::fill(const Vec2& a, const Vec2& b, const Vec2& c, uint32_t 
 
 void CanvasGeometry::markTriangle(const Vec2& at, const float (&o)[6], uint32_t color) {
   for (int k = 0; k < 3; ++k) marks.push_back(vertex(at, o[2 * k], o[2 * k + 1], color));
+}
+
+void CanvasGeometry::thickLine(const Vec2& a, const Vec2& b, float width, uint32_t color) {
+  const Vec2 d = (b - a).normalized();  // v points up, screen y down
+  const float ox = -0.5f * width * static_cast<float>(d.y()), oy = -0.5f * width * static_cast<float>(d.x());
+  for (const auto& [p, sx, sy] : {std::tuple{a, ox, oy}, std::tuple{a, -ox, -oy}, std::tuple{b, ox, oy},
+                                  std::tuple{b, ox, oy}, std::tuple{a, -ox, -oy}, std::tuple{b, -ox, -oy}})
+    marks.push_back(vertex(p, sx, sy, color));
 }
 
 void CanvasGeometry::point(const Vec2& at, float radius, MarkerShape shape, uint32_t color) {

@@ -27,6 +27,8 @@ struct CanvasGeometry {
   void fill(const Vec2& a, const Vec2& b, const Vec2& c, uint32_t color);
   // A mark at `at`: a triangle whose corners are offsets in pixels.
   void markTriangle(const Vec2& at, const float (&offsets)[6], uint32_t color);
+  // A line `width` pixels wide, whatever the zoom (drawn with the marks).
+  void thickLine(const Vec2& a, const Vec2& b, float width, uint32_t color);
   // Pixel-sized, whatever the zoom.
   void point(const Vec2& at, float radius, MarkerShape shape, uint32_t color);
 };

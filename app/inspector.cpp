@@ -14,6 +14,7 @@
 #include <fstream>
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace lloydscope {
 
@@ -27,6 +28,11 @@ constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFla
                                         ImGuiWindowFlags_NoCollapse |
                                         ImGuiWindowFlags_NoSavedSettings |
                                         ImGuiWindowFlags_NoBackground;
+
+// Seams (where a surface that is not a disk was cut open) in both views: purple, no other
+// layer uses it. Copies of a seam sample are within this fraction of the diagonal.
+constexpr ImU32 kSeamColor = IM_COL32(150, 40, 190, 255);
+constexpr double kSeamTolerance = 1e-9;
 
 ImU32 rgb(float r, float g, float b, float a = 1.0f) {
   return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a));
@@ -348,6 +354,15 @@ void Inspector::fitCamera() {
   camera_.pitch = 0.75f;
 }
 
+void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm::vec3& eye) const {
+  ImVec2 a, b;
+  for (const SeamEdge& e : seam3D_) {
+    const Vec3 toEye = Vec3(eye.x, eye.y, eye.z) - 0.5 * (e.a + e.b);
+    if (e.normal.dot(toEye) <= 0) continue;  // on the far side (no depth test here)
+    if (screen(e.a, a) && screen(e.b, b)) dl->AddLine(a, b, kSeamColor, presentation_ ? 4.0f : 3.0f);
+  }
+}
+
 const QualityMetrics& Inspector::currentQuality() {
   if (measuredIteration_ != iteration_ || measuredMethod_ != replay_->method()) {
     quality_ = measureQuality(replay_->view(iteration_).output);
@@ -372,6 +387,18 @@ void Inspector::uploadMesh() {
     colors.push_back(angleColor(*std::min_element(a.begin(), a.end())));
   }
   renderer_.upload(mesh, colors);
+  // The seams on the mesh shown; on the user's own mesh (never cut), those of the mesh that was
+  // parameterized, whose border vertices lie on it.
+  const Mesh& cut = !shown.input3D ? view.output : replay_->recording().input;
+  seam3D_.clear();
+  std::set<std::pair<int, int>> seams;
+  for (const auto& e : seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut))) seams.insert(e);
+  for (const Triangle& t : cut.triangles)  // each seam edge with its triangle's normal
+    for (int k = 0; k < 3; ++k)
+      if (seams.count({t[k], t[(k + 1) % 3]})) {
+        const Vec3 &a = cut.points[t[k]], &b = cut.points[t[(k + 1) % 3]], &c = cut.points[t[(k + 2) % 3]];
+        seam3D_.push_back({a, b, (b - a).cross(c - a).normalized()});
+      }
   std::vector<Marker> sites;
   if (shown.sites3D)
     for (const Vec3& s : view.liftedSites)
@@ -817,16 +844,16 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   dl->AddCallback(drawMeshCallback, &meshCallback_);
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
-  selection_.draw3D(
-      dl, replay_->recording(), replay_->domain(), replay_->view(iteration_),
-      [&](const Vec3& p, ImVec2& screen) {
-        const glm::vec4 c = viewProjection * glm::vec4(p.x(), p.y(), p.z(), 1.0f);
-        if (c.w <= 0) return false;
-        screen = ImVec2(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
-                        p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
-        return true;
-      },
-      !shown.input3D);
+  auto toScreen = [&](const Vec3& p, ImVec2& screen) {
+    const glm::vec4 c = viewProjection * glm::vec4(p.x(), p.y(), p.z(), 1.0f);
+    if (c.w <= 0) return false;
+    screen = ImVec2(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
+                    p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
+    return true;
+  };
+  drawSeams3D(dl, toScreen, cameraMatrices(extent).second);
+  selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen,
+                    !shown.input3D);
   dl->PopClipRect();
 
   if (colorByAngle_)
@@ -904,7 +931,8 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, format("%.2e", fillRange_[1]).c_str(),
                  format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
   dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - ImGui::GetFontSize() - 5), rgb(0.1f, 0.1f, 0.1f),
-              "dots: sites  rings: centroids  squares: fixed border sites");
+              !hasSeams_ ? "dots: sites  rings: centroids  squares: fixed border sites"
+                                            : "dots: sites  rings: centroids  squares: fixed  purple: seams");
   dl->PopClipRect();
   ImGui::End();
 }
@@ -962,6 +990,12 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
     }
   if (shown.cells2D)
     for (const auto& [p, q] : cellEdges()) g.line(p, q, edgeColor);
+  // Where a surface that is not a disk was cut open: both copies of every seam.
+  const Recording& recording = replay_->recording();
+  const auto seams = seamEdges(recording.input, kSeamTolerance * boundingBoxDiagonal(recording.input));
+  for (const auto& [a, b] : seams)
+    g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
+  hasSeams_ = !seams.empty();
   // Dots a sixth of the site spacing: the cells stay visible between them.
   const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f) *
                   (strong ? 1.3f : 1.0f);

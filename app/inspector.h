@@ -137,6 +137,7 @@ class Inspector {
   void finishSession();
   void openReplay(Recording recording);
   void uploadMesh();
+  void drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm::vec3& eye) const;
   const QualityMetrics& currentQuality();
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks  // of the current iteration's result, cached
@@ -181,6 +182,11 @@ class Inspector {
   RemeshMethod measuredMethod_ = RemeshMethod::Retriangulate;
   QualityMetrics quality_;
   std::vector<std::pair<Vec2, Vec2>> cellEdges_;
+  struct SeamEdge {
+    Vec3 a, b, normal;  // normal: of the triangle on the edge, to hide the far side's
+  };
+  std::vector<SeamEdge> seam3D_;  // of the mesh uploaded to the 3D pane
+  bool hasSeams_ = false;  // the 2D pane drew some (for its legend)
   int edgesIteration_ = -1;
   bool showInput_ = false, uploadedInput_ = false, uploadedSites_ = false;
   bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;

@@ -269,6 +269,24 @@ std::vector<int> seamPartners(const Mesh& disk, double tolerance) {
   return target;
 }
 
+std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance) {
+  const std::vector<int> partner = seamPartners(disk, tolerance);
+  std::vector<std::pair<int, int>> border;  // each border edge once, as its triangle has it
+  std::map<Edge, int> stitched;             // how many border edges stitch into each
+  for (const auto& [e, fs] : edgeFaces(disk)) {
+    if (fs.size() != 1) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int a = disk.triangles[fs[0]][k], b = disk.triangles[fs[0]][(k + 1) % 3];
+      if (edge(a, b) == e) border.emplace_back(a, b);
+    }
+    ++stitched[edge(partner[e.first], partner[e.second])];
+  }
+  std::vector<std::pair<int, int>> seams;
+  for (const auto& [a, b] : border)
+    if (partner[a] != partner[b] && stitched[edge(partner[a], partner[b])] > 1) seams.emplace_back(a, b);
+  return seams;
+}
+
 namespace {
 
 // A flat triangle on the border whose middle vertex has no other triangle (three border samples

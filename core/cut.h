@@ -51,6 +51,11 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
 // vertices within `tolerance` of it (the copies of one seam sample), or itself.
 std::vector<int> seamPartners(const Mesh& disk, double tolerance);
 
+// The border edges of a cut or remeshed disk that have a twin on the other copy of their seam
+// (both ends partners of the twin's ends): the seams, for the inspector to draw. Each edge is
+// (a, b) in the border's order; the original border's own edges are not among them.
+std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance);
+
 // Merges the border vertices of a remeshed disk that lie within `tolerance` of each other (the
 // copies of each seam sample): the cut surface's topology back. Vertices keep their order.
 Mesh stitchSeams(const Mesh& disk, double tolerance);

@@ -300,3 +300,12 @@ TEST(Cut, FlatTrianglesInsideAreRemoved) {
   EXPECT_EQ(removeFlatTriangles(mesh), 0);
   EXPECT_NO_THROW(validateMesh(mesh, "repaired"));
 }
+
+// What the inspector draws: both copies of every cut edge, and none of a disk's own border.
+TEST(Cut, SeamEdgesAreBothCopiesOfEveryCutEdge) {
+  const CutResult cut = cutToDisk(torus(), "torus");
+  EXPECT_EQ(seamEdges(cut.disk, 1e-9).size(), 2 * cut.seam.size());
+  EXPECT_TRUE(seamEdges(test::grid(4), 1e-9).empty());
+  const CutResult tube = cutToDisk(::tube(), "tube");  // the loops' own edges are not seams
+  EXPECT_EQ(seamEdges(tube.disk, 1e-9).size(), 2 * tube.seam.size());
+}

@@ -6,6 +6,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -178,4 +179,35 @@ TEST(Inspector, OpensASimplifiedMesh) {
                 "--max-iterations 5 --size 640x400 --screenshot " + out),
             0);
   EXPECT_EQ(readPng(out).width, 640);
+}
+
+// Issue 6: where a torus was cut open, the seam is drawn in purple in both views.
+TEST(Inspector, DrawsTheSeamsOfACutSurface) {
+  std::string off = "OFF\n288 576 0\n";
+  const int n = 24, m = 12;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n, b = 2 * M_PI * j / m;
+      off += std::to_string((2 + 0.7 * std::cos(b)) * std::cos(a)) + " " +
+             std::to_string((2 + 0.7 * std::cos(b)) * std::sin(a)) + " " + std::to_string(0.7 * std::sin(b)) + "\n";
+    }
+  auto at = [&](int i, int j) { return std::to_string((j % m) * n + (i % n)); };
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i)
+      off += "3 " + at(i, j) + " " + at(i + 1, j) + " " + at(i + 1, j + 1) + "\n3 " + at(i, j) + " " +
+             at(i + 1, j + 1) + " " + at(i, j + 1) + "\n";
+  const std::string mesh = test::tempPath("seam_torus.off"), png = test::tempPath("seam_torus.png");
+  test::writeText(mesh, off);
+  ASSERT_EQ(run("inspect " + mesh + " --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  const Picture p = readPng(png);
+  ASSERT_EQ(p.width, 960);
+  int purple3D = 0, purple2D = 0;  // the 3D pane is left of x = 620, the 2D pane right of it
+  for (int y = 0; y < 370; ++y)
+    for (int x = 290; x < p.width; ++x) {
+      const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+      if (std::abs(c[0] - 150) < 30 && std::abs(c[1] - 40) < 30 && std::abs(c[2] - 190) < 30)
+        ++(x < 620 ? purple3D : purple2D);
+    }
+  EXPECT_GT(purple3D, 100);
+  EXPECT_GT(purple2D, 100);
 }
