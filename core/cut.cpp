@@ -316,7 +316,7 @@ void dropFlatEars(std::vector<Triangle>& triangles, const std::vector<Vec3>& poi
 
 }  // namespace
 
-Mesh stitchSeams(const Mesh& disk, double tolerance) {
+Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex) {
   const std::vector<int> target = seamPartners(disk, tolerance);
   // A triangle with two corners on the two copies of one sample (the ear at the tip of a slit)
   // collapses: it goes. So do two triangles that become one back to back (a slit tip with a
@@ -337,7 +337,16 @@ Mesh stitchSeams(const Mesh& disk, double tolerance) {
                                  [&](const Triangle& t) { return count[key(t)] > 1; }),
                   triangles.end());
   dropFlatEars(triangles, disk.points);
-  return assemble(triangles, disk.points);
+  std::vector<int> kept;
+  Mesh stitched = assemble(triangles, disk.points, &kept);
+  if (seamVertex) {
+    std::vector<bool> merged(disk.vertexCount(), false);
+    for (int v = 0; v < disk.vertexCount(); ++v)
+      if (target[v] != v) merged[v] = merged[target[v]] = true;
+    seamVertex->clear();
+    for (int v : kept) seamVertex->push_back(merged[v]);
+  }
+  return stitched;
 }
 
 namespace {
@@ -442,6 +451,7 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
     scale = std::move(triedScale);
   }
   best.summary.seamEdges = static_cast<int>(best.seam.size());
+  best.topology = topology;
   if (best.seam.empty()) {  // a disk that needed no slit: as it came, vertex order and all
     best.disk = mesh;
     best.original.resize(mesh.vertexCount());

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mesh.h"
+#include "topology.h"
 
 #include <string>
 #include <utility>
@@ -28,6 +29,7 @@ struct CutResult {
   // copies of every seam alike.
   std::vector<bool> onSeam, seamNode;
   CutSummary summary;
+  Topology topology;  // of the surface that was cut: what stitching must give back
 };
 
 struct CutOptions {
@@ -58,7 +60,8 @@ std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance);
 
 // Merges the border vertices of a remeshed disk that lie within `tolerance` of each other (the
 // copies of each seam sample): the cut surface's topology back. Vertices keep their order.
-Mesh stitchSeams(const Mesh& disk, double tolerance);
+// `seamVertex`, if given, receives per vertex of the result whether it was on a seam.
+Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex = nullptr);
 
 // Removes the stitched surface's (nearly) flat triangles -- a vertex lifted onto a seam where
 // the map shrinks the surface most -- by CGAL's edge flips and collapses (caps with an angle over

@@ -1,10 +1,6 @@
 #include "metrics.h"
 
-#include "cgal_types.h"
-
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
+#include "projection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,17 +55,6 @@ QualityMetrics measureQuality(const Mesh& mesh) {
 
 namespace {
 
-using Triangle3 = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-std::vector<Triangle3> cgalTriangles(const Mesh& mesh) {
-  std::vector<Triangle3> triangles;
-  auto p = [&](int i) { return Point3(mesh.points[i].x(), mesh.points[i].y(), mesh.points[i].z()); };
-  for (const Triangle& t : mesh.triangles) triangles.emplace_back(p(t[0]), p(t[1]), p(t[2]));
-  return triangles;
-}
-
 // Metro's sampling: every vertex, every edge midpoint, and area-weighted random points.
 std::vector<Vec3> samplePoints(const Mesh& mesh, int randomCount) {
   std::vector<Vec3> samples = mesh.points;
@@ -105,16 +90,14 @@ std::vector<Vec3> samplePoints(const Mesh& mesh, int randomCount) {
 // queries are independent: they are split over the cores.
 void oneSided(const Mesh& from, const Mesh& to, double& maxDistance, double& sumSquared,
               int& count) {
-  const std::vector<Triangle3> triangles = cgalTriangles(to);
-  Tree tree(triangles.cbegin(), triangles.cend());
-  tree.accelerate_distance_queries();
+  const SurfaceProjection surface(to);
   const std::vector<Vec3> samples = samplePoints(from, 10000 + 10 * from.faceCount());
   const size_t threads = std::max(1u, std::thread::hardware_concurrency());
   std::vector<double> maxOf(threads, 0.0), sumOf(threads, 0.0);
   auto work = [&](size_t t) {
     for (size_t i = samples.size() * t / threads; i < samples.size() * (t + 1) / threads; ++i) {
       const Vec3& s = samples[i];
-      const double d2 = tree.squared_distance(Point3(s.x(), s.y(), s.z()));
+      const double d2 = surface.squaredDistance(s);
       maxOf[t] = std::max(maxOf[t], d2);
       sumOf[t] += d2;
     }

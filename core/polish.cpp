@@ -2,6 +2,7 @@
 
 #include "cut.h"
 #include "metrics.h"
+#include "projection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -452,6 +453,40 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
       repairAngles(mesh, surface, surfaceDensity, stitched, triangleOf, weight);  // around them
       dropUnusedVertices(mesh);
     }
+  }
+}
+
+void polishSeams(Mesh& m, const std::vector<bool>& seamVertex, const Mesh& surface, int passes) {
+  const SurfaceProjection projection(surface);
+  std::vector<bool> movable(m.vertexCount(), false);
+  for (const Triangle& t : m.triangles)
+    if (seamVertex[t[0]] || seamVertex[t[1]] || seamVertex[t[2]])
+      for (int v : t) movable[v] = true;
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  const std::vector<double> unit(m.vertexCount(), 1.0);
+  auto relax = [&] {
+    const Rings rings(m);
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      if (!movable[v] || border[v]) continue;
+      Vec3 up;
+      const Vec3 move = relaxationMove(m, rings, unit, v, PolishTarget::Centroid, up);
+      const double floor = std::min(30.0, ringSmallestAngle(m, rings, v, m.points[v], up));
+      for (double step = 1.0; step >= 0.25; step *= 0.5) {
+        const Vec3 to = projection.closestPoint(m.points[v] + step * move);
+        if (ringSmallestAngle(m, rings, v, to, up) >= floor) {
+          m.points[v] = to;
+          break;
+        }
+      }
+    }
+  };
+  for (int pass = 0; pass < passes; ++pass) {
+    relax();
+    flipEdges(m, notDelaunay);
+  }
+  if (passes > 0) {
+    flipEdges(m, raisesRegularity);
+    relax();
   }
 }
 

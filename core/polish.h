@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace lloydscope {
 
@@ -48,6 +49,14 @@ struct SurfaceMap {
 // for smaller cells keeps them. Vertices keep their order (but for merged ones); mesh.uv follows.
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options);
+
+// A stitched surface's seams relaxed (core/cut): polish() cannot move a vertex of a seam, as its
+// copies on the disk must stay together; once stitched it is an inside vertex like any other.
+// The seam vertices and their neighbours move towards their ring's centroid within their
+// tangent plane, onto `surface` by closest point, unless that folds their ring or drops its
+// smallest angle under the lesser of what it was and 30 degrees; Delaunay flips follow each
+// pass, valence flips (as in polish) the last.
+void polishSeams(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh& surface, int passes);
 
 // Flips interior edges whose two opposite angles sum to more than 180 degrees (the 3D
 // Delaunay criterion) where the flip neither duplicates an edge nor folds the surface.

@@ -183,3 +183,24 @@ TEST(Polish, AFlatTriangleLosesAVertex) {
   EXPECT_GT(measureQuality(merged).minAngle, 10.0);
   EXPECT_EQ(collapseFlatTriangles(m), 0);  // nothing flat left
 }
+
+// Issue 6: the vertices of a stitched seam (here a jittered column of a flat grid) move on the
+// surface and their triangles get rounder; the rest of the mesh stays where it was but for the
+// seam's neighbours.
+TEST(Polish, SeamVerticesRelaxOnTheSurfaceOnceStitched) {
+  const Mesh surface = test::grid(8);
+  Mesh m = surface;
+  std::vector<bool> seam(m.vertexCount(), false);
+  for (int j = 1; j < 8; ++j) {
+    const int v = j * 9 + 4;
+    seam[v] = true;
+    m.points[v].x() += (j % 2 ? 0.3 : -0.3) / 8;
+  }
+  const double before = measureQuality(m).minAngle;
+  polishSeams(m, seam, surface, 3);
+  EXPECT_NO_THROW(validateMesh(m, "polished"));
+  EXPECT_GT(measureQuality(m).minAngle, before + 5.0);
+  for (const Vec3& p : m.points) EXPECT_NEAR(p.z(), 0.0, 1e-12);
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (std::abs(surface.points[v].x() - 0.5) > 0.3) EXPECT_EQ(m.points[v], surface.points[v]);
+}

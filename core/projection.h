@@ -1,0 +1,25 @@
+// The closest point of a triangle mesh's surface to any point in space (CGAL's AABB tree):
+// what the Hausdorff distance measures, and where the seam polish puts a vertex it moved.
+#pragma once
+
+#include "mesh.h"
+
+#include <memory>
+
+namespace lloydscope {
+
+class SurfaceProjection {
+ public:
+  explicit SurfaceProjection(const Mesh& surface);
+  ~SurfaceProjection();
+  SurfaceProjection(SurfaceProjection&&) noexcept;
+
+  Vec3 closestPoint(const Vec3& p) const;
+  double squaredDistance(const Vec3& p) const;  // thread-safe, as closestPoint
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace lloydscope
