@@ -26,10 +26,6 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
 
-struct FoldedMap : Error {
-  using Error::Error;
-};
-
 using Halfedge = boost::graph_traits<SurfaceMesh>::halfedge_descriptor;
 using UVMap = SurfaceMesh::Property_map<SurfaceMesh::Vertex_index, Point2>;
 // SparseLU was 1.2-1.6x faster than CGAL's default BiCGSTAB here (shared/notes/cgal.md);
@@ -224,11 +220,11 @@ void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<
   const Folds folds = findFolds(mesh, uv, onBoundary);
   const size_t flipped = folds.flipped.size(), collapsed = folds.collapsed.size();
   if (folds.empty() && !borderIsSimple(uv, boundaryLoop))
-    throw FoldedMap(name + ": the parameterization is not one-to-one (its border crosses "
+    throw Error(name + ": the parameterization is not one-to-one (its border crosses "
                            "itself); try --param tutte or mean-value, whose maps are always "
                            "one-to-one");
   if (!folds.empty())
-    throw FoldedMap(name + ": the parameterization is not one-to-one (" + std::to_string(flipped) +
+    throw Error(name + ": the parameterization is not one-to-one (" + std::to_string(flipped) +
                 " flipped and " + std::to_string(collapsed) + " collapsed of " +
                 std::to_string(mesh.faceCount()) +
                 " triangles); try --param tutte or mean-value, whose maps are always one-to-one");
