@@ -14,7 +14,7 @@ PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgt
           libimgui-dev libglm-dev libstb-dev fonts-dejavu-core xvfb xauth)
 # CGAL's sample meshes used by tests and benchmarks, from libcgal-demo: five disks, and two
 # closed surfaces of genus 2 and 3 (eight, elephant) for cutting and stitching.
-CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil eight elephant)
+CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil eight elephant femur)
 
 install_missing() {
   local missing=()

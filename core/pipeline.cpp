@@ -91,7 +91,10 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
       param_([&] {
         Stopwatch stage;
         ParamOptions o = options_.param;
-        if (resampled_) o.fallback = resampled_->mesh.uv;
+        // Where LSCM folds on the resampled surface, its points in the input's map -- if that
+        // map is conformal too; the mean value map of the resampled surface (no slivers)
+        // distorts less than its points in the mean value map of the input.
+        if (resampled_ && resampled_->param.method == ParamMethod::Lscm) o.fallback = resampled_->mesh.uv;
         Parameterization p = parameterize(surface(), o, name);
         ms_.parameterize = stage.lap();
         return p;

@@ -32,6 +32,9 @@ struct Quad {
   // How far the four vertices' valences are from regular (6 inside, 4 on the border), summed
   // as squares, before and after the flip.
   int irregularityBefore, irregularityAfter;
+  // On a cut surface: edge (a, b) and another become one edge of the stitched mesh (an inside
+  // vertex joined to both copies of a seam sample), which would have 4 triangles.
+  bool doubledWhenStitched;
   double smallestBefore() const { return std::min(smallestAngle(a, b, c), smallestAngle(b, a, d)); }
   double smallestAfter() const { return std::min(smallestAngle(c, a, d), smallestAngle(d, b, c)); }
 };
@@ -40,6 +43,8 @@ using FlipRule = bool (*)(const Quad& q);
 bool notDelaunay(const Quad& q) {
   return cornerAnglesDeg(q.c, q.a, q.b)[0] + cornerAnglesDeg(q.d, q.b, q.a)[0] > 180.0 + 1e-9;
 }
+
+bool doubledWhenStitched(const Quad& q) { return q.doubledWhenStitched; }
 
 bool raisesSmallestAngle(const Quad& q) { return q.smallestAfter() > q.smallestBefore() + 1e-6; }
 
@@ -104,7 +109,8 @@ int flipEdges(Mesh& mesh, FlipRule rule, const std::vector<int>* stitched = null
     };
     const Quad quad{mesh.points[a], mesh.points[b], mesh.points[c], mesh.points[d],
                     deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0),
-                    deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1)};
+                    deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1),
+                    borderApart && stitchedEdges[stitchedEdge(a, b)] > 2};
     if (!rule(quad)) continue;
     const Triangle n1{c, a, d}, n2{d, b, c};  // keep both facing the same way
     const Vec3 before = normal(mesh, mesh.triangles[f1]).normalized() +
@@ -429,6 +435,7 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
       options.seams ? seamPartners(mesh.mesh, 1e-9 * boundingBoxDiagonal(mesh.mesh))
                     : std::vector<int>();
   const std::vector<int>* stitched = options.seams ? &partners : nullptr;
+  if (stitched) flipEdges(mesh.mesh, doubledWhenStitched, stitched);  // what the CDT left
   flipEdges(mesh.mesh, notDelaunay, stitched);
   if (options.iterations <= 0) return;
   std::vector<int> triangleOf(mesh.uv.size());
