@@ -30,9 +30,8 @@ constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFla
                                         ImGuiWindowFlags_NoBackground;
 
 // Seams (where a surface that is not a disk was cut open) in both views: purple, no other
-// layer uses it. Copies of a seam sample are within this fraction of the diagonal.
+// layer uses it.
 constexpr ImU32 kSeamColor = IM_COL32(150, 40, 190, 255);
-constexpr double kSeamTolerance = 1e-9;
 
 ImU32 rgb(float r, float g, float b, float a = 1.0f) {
   return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a));
@@ -365,7 +364,8 @@ void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm:
 
 const QualityMetrics& Inspector::currentQuality() {
   if (measuredIteration_ != iteration_ || measuredMethod_ != replay_->method()) {
-    quality_ = measureQuality(replay_->view(iteration_).output);
+    const IterationView& view = replay_->view(iteration_);
+    quality_ = measureQuality(view.stitched.triangles.empty() ? view.output : view.stitched);
     measuredIteration_ = iteration_;
     measuredMethod_ = replay_->method();
   }

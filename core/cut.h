@@ -12,6 +12,9 @@
 
 namespace lloydscope {
 
+// Copies of one seam sample are at the same point: within this fraction of the diagonal.
+constexpr double kSeamTolerance = 1e-9;
+
 struct CutSummary {
   int seamEdges = 0;      // cut edges inside the surface (each is two border edges of the disk)
   int extremityCuts = 0;  // slits added to bound the distortion

@@ -173,7 +173,7 @@ Mesh RemeshSession::buildOutput() const {
   if (!cut_) return std::move(output.mesh);
   // Both copies of every seam sample are at the same place: one vertex again.
   std::vector<bool> seamVertex;
-  Mesh stitched = stitchSeams(output.mesh, 1e-9 * boundingBoxDiagonal(output.mesh), &seamVertex);
+  Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
   if (options_.polish > 0) polishSeams(stitched, seamVertex, input_, options_.polish);
   removeFlatTriangles(stitched);
   const Topology& want = cut_->topology;

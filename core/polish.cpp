@@ -432,7 +432,7 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
             const PolishOptions& options) {
   // The border stays as it is, so its stitching partners do too.
   const std::vector<int> partners =
-      options.seams ? seamPartners(mesh.mesh, 1e-9 * boundingBoxDiagonal(mesh.mesh))
+      options.seams ? seamPartners(mesh.mesh, kSeamTolerance * boundingBoxDiagonal(mesh.mesh))
                     : std::vector<int>();
   const std::vector<int>* stitched = options.seams ? &partners : nullptr;
   if (stitched) flipEdges(mesh.mesh, doubledWhenStitched, stitched);  // what the CDT left

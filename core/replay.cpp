@@ -5,7 +5,8 @@
 namespace lloydscope {
 
 Replay::Replay(Recording recording)
-    : recording_(std::move(recording)), domain_(recording_.domain()), method_(recording_.method) {
+    : recording_(std::move(recording)), domain_(recording_.domain()), method_(recording_.method),
+      cut_(!seamEdges(recording_.input, kSeamTolerance * boundingBoxDiagonal(recording_.input)).empty()) {
   setMethod(method_);
 }
 
@@ -48,6 +49,7 @@ const IterationView& Replay::view(int k) {
       view_.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
     }
   }
+  view_.stitched = cut_ ? stitchSeams(view_.output, kSeamTolerance * boundingBoxDiagonal(view_.output)) : Mesh{};
   return view_;
 }
 

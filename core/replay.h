@@ -15,6 +15,9 @@ struct IterationView {
   std::vector<Vec2> outputUV;      // where each output vertex lies in the parameter domain
   std::vector<int> outputSite;     // the site each output vertex is, or -1 (an input vertex
                                    // that relocate leaves in place)
+  // On a surface that was cut open (its parameterized mesh has seams): `output` with its seams
+  // stitched, what the inspector measures; empty otherwise.
+  Mesh stitched;
 };
 
 class Replay {
@@ -39,6 +42,7 @@ class Replay {
   Recording recording_;
   Domain domain_;
   RemeshMethod method_;
+  bool cut_;  // the parameterized mesh has seams
   IterationView view_;
   CellHints hints_;  // each site's parameter triangle in the last view: nearby iterations
                             // start their searches there

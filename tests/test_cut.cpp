@@ -10,33 +10,10 @@ using namespace lloydscope;
 
 namespace {
 
-// An n x m grid on the surface (u, v) -> point(u, v), u and v in [0, 1], closed up in u and/or
-// v by reusing the first row or column.
-template <class Point>
-Mesh wrappedGrid(int n, int m, bool wrapU, bool wrapV, Point point) {
-  const int columns = wrapU ? n : n + 1, rows = wrapV ? m : m + 1;
-  Mesh mesh;
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) mesh.points.push_back(point(double(i) / n, double(j) / m));
-  auto at = [&](int i, int j) { return (j % rows) * columns + (i % columns); };
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i) {
-      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return mesh;
-}
-
-Mesh torus() {
-  return wrappedGrid(24, 12, true, true, [](double u, double v) {
-    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
-    return Vec3((2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a),
-                0.7 * std::sin(b));
-  });
-}
+Mesh torus() { return test::torus(); }
 
 Mesh tube() {  // genus 0 with two boundary loops
-  return wrappedGrid(24, 8, true, false, [](double u, double v) {
+  return test::wrappedGrid(24, 8, true, false, [](double u, double v) {
     return Vec3(std::cos(2 * M_PI * u), std::sin(2 * M_PI * u), 2 * v);
   });
 }

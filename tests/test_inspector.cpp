@@ -1,6 +1,7 @@
 // Image snapshots of the whole inspector, rendered headless by the lloydscope binary, compared
 // with committed PNGs under a per-pixel tolerance. After an intended change of the pictures:
 //   LLOYDSCOPE_UPDATE_SNAPSHOTS=1 build/tests/lloydscope_tests --gtest_filter='Inspector*'
+#include "mesh_io.h"
 #include "test_support.h"
 
 #include <stb_image.h>
@@ -183,21 +184,8 @@ TEST(Inspector, OpensASimplifiedMesh) {
 
 // Issue 6: where a torus was cut open, the seam is drawn in purple in both views.
 TEST(Inspector, DrawsTheSeamsOfACutSurface) {
-  std::string off = "OFF\n288 576 0\n";
-  const int n = 24, m = 12;
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double a = 2 * M_PI * i / n, b = 2 * M_PI * j / m;
-      off += std::to_string((2 + 0.7 * std::cos(b)) * std::cos(a)) + " " +
-             std::to_string((2 + 0.7 * std::cos(b)) * std::sin(a)) + " " + std::to_string(0.7 * std::sin(b)) + "\n";
-    }
-  auto at = [&](int i, int j) { return std::to_string((j % m) * n + (i % n)); };
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i)
-      off += "3 " + at(i, j) + " " + at(i + 1, j) + " " + at(i + 1, j + 1) + "\n3 " + at(i, j) + " " +
-             at(i + 1, j + 1) + " " + at(i, j + 1) + "\n";
   const std::string mesh = test::tempPath("seam_torus.off"), png = test::tempPath("seam_torus.png");
-  test::writeText(mesh, off);
+  writeMesh(test::torus(), mesh);
   ASSERT_EQ(run("inspect " + mesh + " --screenshot " + png + " --size 960x600 --no-timings"), 0);
   const Picture p = readPng(png);
   ASSERT_EQ(p.width, 960);

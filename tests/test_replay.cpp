@@ -1,5 +1,6 @@
 #include "mesh_io.h"
 #include "replay.h"
+#include "topology.h"
 #include "test_support.h"
 
 using namespace lloydscope;
@@ -68,4 +69,24 @@ TEST(Replay, GrowsWhileARunGoesOn) {
   EXPECT_EQ(replay.iterationCount(), 4);
   EXPECT_EQ(replay.view(3).sites.size(), replay.view(0).sites.size());
   EXPECT_EQ(replay.view(3).index, 3);
+}
+
+// A surface cut open: each iteration's mesh is measured stitched, as the result will be (no
+// border vertices left on a torus), and a disk's is not stitched at all.
+TEST(Replay, ACutSurfacesIterationsAreStitched) {
+  const Mesh torus = test::torus();
+  RemeshOptions o;
+  o.lloyd.maxIterations = 3;
+  o.measureFidelity = false;
+  Replay replay(remesh(torus, o, "torus").recording);
+  const IterationView& view = replay.view(2);
+  ASSERT_FALSE(view.stitched.triangles.empty());
+  EXPECT_EQ(measureQuality(view.stitched).boundaryVertices, 0);
+  EXPECT_GT(measureQuality(view.output).boundaryVertices, 0);
+  const Topology t = analyzeTopology(view.stitched);
+  EXPECT_EQ(t.genus, 1);
+  EXPECT_TRUE(t.boundaryLoops.empty());
+
+  Replay disk(remesh(test::grid(8), o, "grid").recording);
+  EXPECT_TRUE(disk.view(1).stitched.triangles.empty());
 }

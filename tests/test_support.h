@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <string>
 
@@ -24,6 +25,32 @@ inline Mesh grid(int n, double size = 1.0) {
       m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   return m;
+}
+
+// An n x m grid on the surface (u, v) -> point(u, v), u and v in [0, 1], closed up in u and/or
+// v by reusing the first row or column.
+template <class Point>
+inline Mesh wrappedGrid(int n, int m, bool wrapU, bool wrapV, Point point) {
+  const int columns = wrapU ? n : n + 1, rows = wrapV ? m : m + 1;
+  Mesh mesh;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) mesh.points.push_back(point(double(i) / n, double(j) / m));
+  auto at = [&](int i, int j) { return (j % rows) * columns + (i % columns); };
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+// A torus (radii 2 and 0.7) as a 24 x 12 grid of split squares: closed, genus 1.
+inline Mesh torus() {
+  return wrappedGrid(24, 12, true, true, [](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return Vec3((2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a),
+                0.7 * std::sin(b));
+  });
 }
 
 inline std::string assetPath(const std::string& name) {
