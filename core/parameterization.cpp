@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace lloydscope {
 
@@ -244,6 +245,13 @@ void repairFolds(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool
   std::vector<std::vector<int>> neighbours(n);
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) neighbours[t[k]].push_back(t[(k + 1) % 3]);
+  // Each border vertex's two neighbours along the border (an edge no triangle has reversed).
+  std::set<std::pair<int, int>> directed;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) directed.emplace(t[k], t[(k + 1) % 3]);
+  std::vector<std::vector<int>> alongBorder(n);
+  for (const auto& [a, b] : directed)
+    if (!directed.count({b, a})) alongBorder[a].push_back(b), alongBorder[b].push_back(a);
   for (int rings = 2; rings <= 8; rings *= 2) {
     const Folds folds = findFolds(mesh, uv, onBoundary);
     if (folds.empty()) return;
@@ -264,22 +272,31 @@ void repairFolds(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool
     // Mean-value weights w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j|, summed corner by corner.
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd bu = Eigen::VectorXd::Zero(freeVertices.size()), bv = bu;
+    // A border vertex of a folded triangle goes between its two border neighbours, at its 3D
+    // arc length: the border straightened there (mean-value weights, all on one side of it,
+    // would pull it inside and fold its other triangles).
+    auto addWeight = [&](int i, int j, double w) {
+      entries.emplace_back(freeIndex[i], freeIndex[i], w);
+      if (freeIndex[j] >= 0) entries.emplace_back(freeIndex[i], freeIndex[j], -w);
+      else {
+        bu[freeIndex[i]] += w * uv[j].x();
+        bv[freeIndex[i]] += w * uv[j].y();
+      }
+    };
+    for (int i : freeVertices)
+      if (onBoundary[i] && alongBorder[i].size() == 2)
+        for (int k = 0; k < 2; ++k)  // the nearer neighbour weighs more
+          addWeight(i, alongBorder[i][k],
+                    1.0 / std::max((mesh.points[alongBorder[i][k]] - mesh.points[i]).norm(), 1e-300));
     for (const Triangle& t : mesh.triangles)
       for (int k = 0; k < 3; ++k) {
         const int i = t[k];
-        if (freeIndex[i] < 0) continue;
+        if (freeIndex[i] < 0 || (onBoundary[i] && alongBorder[i].size() == 2)) continue;
         const Vec3 &pi = mesh.points[i];
         const double half = std::tan(0.5 * cornerAngle(pi, mesh.points[t[(k + 1) % 3]],
                                                        mesh.points[t[(k + 2) % 3]]));
-        for (int j : {t[(k + 1) % 3], t[(k + 2) % 3]}) {
-          const double w = half / std::max((mesh.points[j] - pi).norm(), 1e-300);
-          entries.emplace_back(freeIndex[i], freeIndex[i], w);
-          if (freeIndex[j] >= 0) entries.emplace_back(freeIndex[i], freeIndex[j], -w);
-          else {
-            bu[freeIndex[i]] += w * uv[j].x();
-            bv[freeIndex[i]] += w * uv[j].y();
-          }
-        }
+        for (int j : {t[(k + 1) % 3], t[(k + 2) % 3]})
+          addWeight(i, j, half / std::max((mesh.points[j] - pi).norm(), 1e-300));
       }
     Eigen::SparseMatrix<double> a(freeVertices.size(), freeVertices.size());
     a.setFromTriplets(entries.begin(), entries.end());

@@ -110,6 +110,20 @@ TEST(Parameterization, AGivenMapIsTakenAsItIsAndChecked) {
     EXPECT_GT(triangleArea(repaired.uv[t[0]], repaired.uv[t[1]], repaired.uv[t[2]]), 0.0);
 }
 
+// A fold on the border: a border vertex pushed in beyond its inside neighbours. The repair
+// puts it back between its two border neighbours (mean-value weights, all on one side of it,
+// would pull it inside).
+TEST(Parameterization, AFoldOnTheBorderIsRepaired) {
+  const Mesh mesh = test::grid(4, 4.0);
+  std::vector<Vec2> given;
+  for (const Vec3& p : mesh.points) given.emplace_back(p.x(), p.y());
+  given[2] = Vec2(2.0, 1.6);  // the middle of the bottom side, beyond the row above it
+  const Parameterization p = parameterize(mesh, {ParamMethod::Given, Border::Circle, given}, "g");
+  for (const Triangle& t : mesh.triangles)
+    EXPECT_GT(triangleArea(p.uv[t[0]], p.uv[t[1]], p.uv[t[2]]), 0.0);
+  EXPECT_NEAR(p.uv[2].y(), 0.0, 1e-9);  // back on the straight bottom side
+}
+
 TEST(Density, UniformIsOneAndAreaIsOneForAnIsometricMap) {
   const Mesh mesh = test::grid(6, 2.0);
   const Parameterization p = parameterize(mesh, {ParamMethod::Tutte, Border::Square}, "g");
