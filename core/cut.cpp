@@ -401,8 +401,9 @@ double spreadOf(std::vector<double> scale) {
   return scale[scale.size() * 99 / 100] / std::max(scale[scale.size() / 100], 1e-300);
 }
 
-CutResult open(const Mesh& mesh, const std::map<Edge, std::vector<int>>& faces, const std::set<Edge>& cut,
-               const std::string& name) {
+// `mesh` opened along `cut`, with its seams marked; throws unless that is a disk.
+CutResult openAlong(const Mesh& mesh, const std::map<Edge, std::vector<int>>& faces, const std::set<Edge>& cut,
+                    const std::string& name) {
   CutResult result = cutAlong(mesh, faces, cut);
   markSeams(result, mesh, faces);
   if (!analyzeTopology(result.disk).isDisk())
@@ -431,7 +432,7 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
   // The geometric cut (Gu, Gortler and Hoppe's geometry images): while the conformal map
   // shrinks some part of the surface far more than the rest (a protrusion, the far side of a
   // nearly closed shape), slit from the most shrunken vertex to the cut by a shortest path.
-  CutResult best = open(mesh, faces, cut, name);
+  CutResult best = openAlong(mesh, faces, cut, name);
   std::vector<double> scale = areaScale(mesh, best.disk, conformalMap(best.disk, name));
   best.summary.areaSpread = spreadOf(scale);
   while (best.summary.areaSpread > options.maxAreaSpread && best.summary.extremityCuts < options.maxExtremityCuts) {
@@ -440,7 +441,7 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
     const int shrunken = static_cast<int>(std::min_element(scale.begin(), scale.end()) - scale.begin());
     std::set<Edge> longer = cut;
     addPath(dijkstra(mesh, neighbours, onCut), shrunken, longer);
-    CutResult tried = open(mesh, faces, longer, name);
+    CutResult tried = openAlong(mesh, faces, longer, name);
     std::vector<double> triedScale = areaScale(mesh, tried.disk, conformalMap(tried.disk, name));
     tried.summary.areaSpread = spreadOf(triedScale);
     tried.summary.extremityCuts = best.summary.extremityCuts + 1;
