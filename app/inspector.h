@@ -186,7 +186,6 @@ class Inspector {
     Vec3 a, b, normal;  // normal: of the triangle on the edge, to hide the far side's
   };
   std::vector<SeamEdge> seam3D_;  // of the mesh uploaded to the 3D pane
-  bool hasSeams_ = false;  // the 2D pane drew some (for its legend)
   int edgesIteration_ = -1;
   bool showInput_ = false, uploadedInput_ = false, uploadedSites_ = false;
   bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;

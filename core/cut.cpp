@@ -289,6 +289,12 @@ std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance) {
 
 namespace {
 
+// Flat, or so nearly that a sine of 1e-9 at `at` says so.
+bool isFlat(const Vec3& at, const Vec3& a, const Vec3& b) {
+  const Vec3 u = a - at, w = b - at;
+  return u.cross(w).norm() <= 1e-9 * u.norm() * w.norm();
+}
+
 // A flat triangle on the border whose middle vertex has no other triangle (three border samples
 // in a row on a straight border, that a map with a round border bent into an ear) goes, and its
 // middle vertex with it; repeated, as the next sample may then be one.
@@ -301,9 +307,7 @@ void dropFlatEars(std::vector<Triangle>& triangles, const std::vector<Vec3>& poi
     for (size_t f = 0; f < triangles.size(); ++f) {
       const Triangle& t = triangles[f];
       for (int k = 0; k < 3; ++k) {
-        const Vec3 &m = points[t[k]], &a = points[t[(k + 1) % 3]], &b = points[t[(k + 2) % 3]];
-        const Vec3 u = a - m, w = b - m;
-        if (uses[t[k]] == 1 && u.cross(w).norm() <= 1e-9 * u.norm() * w.norm()) {
+        if (uses[t[k]] == 1 && isFlat(points[t[k]], points[t[(k + 1) % 3]], points[t[(k + 2) % 3]])) {
           triangles.erase(triangles.begin() + f);
           dropped = true;
           break;
@@ -353,10 +357,7 @@ namespace {
 
 int countFlat(const Mesh& mesh) {
   int flat = 0;
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3 u = mesh.points[t[1]] - mesh.points[t[0]], w = mesh.points[t[2]] - mesh.points[t[0]];
-    flat += u.cross(w).norm() <= 1e-9 * u.norm() * w.norm();
-  }
+  for (const Triangle& t : mesh.triangles) flat += isFlat(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
   return flat;
 }
 

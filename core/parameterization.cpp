@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 namespace lloydscope {
 
@@ -240,18 +239,16 @@ double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a
 // Floater's mean-value coordinates (positive weights: a convex combination of their
 // neighbours), the rest of the map held fixed. Rings grow until nothing is folded or the
 // attempts run out; what stays folded is for requireOneToOne to report.
-void repairFolds(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool>& onBoundary) {
+void repairFolds(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool>& onBoundary,
+                 const std::vector<int>& boundaryLoop) {
   const int n = mesh.vertexCount();
   std::vector<std::vector<int>> neighbours(n);
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) neighbours[t[k]].push_back(t[(k + 1) % 3]);
-  // Each border vertex's two neighbours along the border (an edge no triangle has reversed).
-  std::set<std::pair<int, int>> directed;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) directed.emplace(t[k], t[(k + 1) % 3]);
+  // Each border vertex's two neighbours along the border.
   std::vector<std::vector<int>> alongBorder(n);
-  for (const auto& [a, b] : directed)
-    if (!directed.count({b, a})) alongBorder[a].push_back(b), alongBorder[b].push_back(a);
+  for (size_t i = 0, m = boundaryLoop.size(); i < m; ++i)
+    alongBorder[boundaryLoop[i]] = {boundaryLoop[(i + m - 1) % m], boundaryLoop[(i + 1) % m]};
   for (int rings = 2; rings <= 8; rings *= 2) {
     const Folds folds = findFolds(mesh, uv, onBoundary);
     if (folds.empty()) return;
@@ -372,7 +369,7 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   result.onBoundary.assign(mesh.points.size(), false);
   for (int v : result.boundaryLoop) result.onBoundary[v] = true;
   if (options.method == ParamMethod::Lscm || options.method == ParamMethod::Given)
-    repairFolds(mesh, result.uv, result.onBoundary);
+    repairFolds(mesh, result.uv, result.onBoundary, result.boundaryLoop);
   requireOneToOne(mesh, result.uv, result.onBoundary, result.boundaryLoop, name);
   // The border cycle runs around the hole; make it counter-clockwise around the domain.
   double signedArea = 0;

@@ -6,7 +6,7 @@ namespace lloydscope {
 
 Replay::Replay(Recording recording)
     : recording_(std::move(recording)), domain_(recording_.domain()), method_(recording_.method),
-      cut_(!seamEdges(recording_.input, kSeamTolerance * boundingBoxDiagonal(recording_.input)).empty()) {
+      seams_(seamEdges(recording_.input, kSeamTolerance * boundingBoxDiagonal(recording_.input))) {
   setMethod(method_);
 }
 
@@ -49,7 +49,7 @@ const IterationView& Replay::view(int k) {
       view_.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
     }
   }
-  view_.stitched = cut_ ? stitchSeams(view_.output, kSeamTolerance * boundingBoxDiagonal(view_.output)) : Mesh{};
+  view_.stitched = !seams_.empty() ? stitchSeams(view_.output, kSeamTolerance * boundingBoxDiagonal(view_.output)) : Mesh{};
   return view_;
 }
 

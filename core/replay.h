@@ -28,6 +28,9 @@ class Replay {
   void setMethod(RemeshMethod method);
 
   const Recording& recording() const { return recording_; }
+  // Where the parameterized mesh was cut open (seamEdges() of recording().input): empty for a
+  // disk the pipeline did not cut.
+  const std::vector<std::pair<int, int>>& seams() const { return seams_; }
   const Domain& domain() const { return domain_; }
   RemeshMethod method() const { return method_; }
   int iterationCount() const { return static_cast<int>(recording_.iterations.size()); }
@@ -42,7 +45,7 @@ class Replay {
   Recording recording_;
   Domain domain_;
   RemeshMethod method_;
-  bool cut_;  // the parameterized mesh has seams
+  std::vector<std::pair<int, int>> seams_;
   IterationView view_;
   CellHints hints_;  // each site's parameter triangle in the last view: nearby iterations
                             // start their searches there
