@@ -23,7 +23,7 @@ struct RemeshArgs {
       solver, polishTarget;
   int sites = 0, simplify = 0, polish = 3;
   int maxIterations = 0;
-  double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1;
+  double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1, floor = 0.1;
   bool json = false, noFidelity = false, noResample = false;
 };
 
@@ -40,6 +40,7 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   if (cmd.count("--density")) o.density.kind = parseDensityKind(a.density);
   if (cmd.count("--alpha")) o.density.alpha = a.alpha;
   if (cmd.count("--beta")) o.density.beta = a.beta;
+  if (cmd.count("--floor")) o.density.floor = a.floor;
   if (cmd.count("--sites")) {
     if (method == RemeshMethod::Relocate)
       throw Error("--sites cannot be used with --method relocate, which moves the input's own "
@@ -101,6 +102,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--density", r.density, "uniform, area (default) or curvature");
   cmd.add_option("--alpha", r.alpha, "curvature density: weight of |K|");
   cmd.add_option("--beta", r.beta, "curvature density: weight of H^2");
+  cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)");
   cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(CLI::PositiveNumber);
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations) or lloyd (the "

@@ -53,7 +53,9 @@ nlohmann::json toJson(const QualityMetrics& m) {
 nlohmann::json toJson(const Fidelity& f) {
   return {{"hausdorff_percent_diagonal", f.hausdorffPercent},
           {"rms_percent_diagonal", f.rmsPercent},
-          {"samples", f.samples}};
+          {"samples", f.samples},
+          {"farthest_point", {f.farthestPoint.x(), f.farthestPoint.y(), f.farthestPoint.z()}},
+          {"farthest_on", f.farthestOnReference ? "input" : "output"}};
 }
 
 nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
@@ -67,6 +69,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"density", toString(o.density.kind)},
             {"alpha", o.density.alpha},
             {"beta", o.density.beta},
+            {"floor", o.density.floor},
             {"sites", o.sites.fromInputVertices ? nlohmann::json("input-vertices")
                                                 : nlohmann::json(o.sites.count)},
             {"solver", toString(o.lloyd.solver)},
@@ -99,6 +102,14 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"total", r.ms.total}}}};
 }
 
+std::string farthestPointText(const Fidelity& f) {
+  const Vec3& p = f.farthestPoint;
+  return "(" + format("%.4g", p.x()) + ", " + format("%.4g", p.y()) + ", " +
+         format("%.4g", p.z()) + ")" +
+         (f.farthestOnReference ? " on the input (the result passes farthest from it there)"
+                                : " on the result (it strays farthest from the input there)");
+}
+
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity) {
   std::ostringstream out;
@@ -120,6 +131,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   std::ostringstream out;
   out << "Settings: " << describe(o) << "\n\n";
   out << qualityTable(r.before, r.after, o.measureFidelity ? &r.fidelity : nullptr) << "\n";
+  if (o.measureFidelity)
+    out << "Hausdorff distance reached at " << farthestPointText(r.fidelity) << "\n";
   out << "Lloyd iterations: " << r.iterations << (r.converged ? " (converged)" : " (not converged)")
       << "\n";
   out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "

@@ -86,31 +86,43 @@ std::vector<Vec3> samplePoints(const Mesh& mesh, int randomCount) {
   return samples;
 }
 
-// Largest and summed squared distance from the samples of `from` to the surface `to`. The
+// The farthest sample of `from` from the surface `to`, and the summed squared distances. The
 // queries are independent: they are split over the cores.
-void oneSided(const Mesh& from, const Mesh& to, double& maxDistance, double& sumSquared,
-              int& count) {
+struct OneSided {
+  double maxSquared = 0, sumSquared = 0;
+  Vec3 farthest = Vec3::Zero();
+  int count = 0;
+};
+
+OneSided oneSided(const Mesh& from, const Mesh& to) {
   const SurfaceProjection surface(to);
   const std::vector<Vec3> samples = samplePoints(from, 10000 + 10 * from.faceCount());
   const size_t threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<double> maxOf(threads, 0.0), sumOf(threads, 0.0);
+  std::vector<OneSided> part(threads);
   auto work = [&](size_t t) {
     for (size_t i = samples.size() * t / threads; i < samples.size() * (t + 1) / threads; ++i) {
-      const Vec3& s = samples[i];
-      const double d2 = surface.squaredDistance(s);
-      maxOf[t] = std::max(maxOf[t], d2);
-      sumOf[t] += d2;
+      const double d2 = surface.squaredDistance(samples[i]);
+      if (d2 > part[t].maxSquared) {
+        part[t].maxSquared = d2;
+        part[t].farthest = samples[i];
+      }
+      part[t].sumSquared += d2;
     }
   };
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
   work(0);
   for (std::thread& thread : pool) thread.join();
-  for (size_t t = 0; t < threads; ++t) {  // in a fixed order: the sum does not depend on timing
-    maxDistance = std::max(maxDistance, std::sqrt(maxOf[t]));
-    sumSquared += sumOf[t];
+  OneSided all;
+  for (const OneSided& p : part) {  // in a fixed order: the sum does not depend on timing
+    if (p.maxSquared > all.maxSquared) {
+      all.maxSquared = p.maxSquared;
+      all.farthest = p.farthest;
+    }
+    all.sumSquared += p.sumSquared;
   }
-  count += static_cast<int>(samples.size());
+  all.count = static_cast<int>(samples.size());
+  return all;
 }
 
 }  // namespace
@@ -118,12 +130,15 @@ void oneSided(const Mesh& from, const Mesh& to, double& maxDistance, double& sum
 Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference) {
   Fidelity f;
   if (mesh.triangles.empty() || reference.triangles.empty()) return f;
-  double maxDistance = 0, sumSquared = 0;
-  oneSided(mesh, reference, maxDistance, sumSquared, f.samples);
-  oneSided(reference, mesh, maxDistance, sumSquared, f.samples);
+  const OneSided fromMesh = oneSided(mesh, reference), fromReference = oneSided(reference, mesh);
   const double diagonal = boundingBoxDiagonal(reference);
-  f.hausdorffPercent = 100.0 * maxDistance / diagonal;
-  f.rmsPercent = 100.0 * std::sqrt(sumSquared / f.samples) / diagonal;
+  f.samples = fromMesh.count + fromReference.count;
+  f.farthestOnReference = fromReference.maxSquared > fromMesh.maxSquared;
+  const OneSided& worst = f.farthestOnReference ? fromReference : fromMesh;
+  f.farthestPoint = worst.farthest;
+  f.hausdorffPercent = 100.0 * std::sqrt(worst.maxSquared) / diagonal;
+  f.rmsPercent =
+      100.0 * std::sqrt((fromMesh.sumSquared + fromReference.sumSquared) / f.samples) / diagonal;
   return f;
 }
 

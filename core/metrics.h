@@ -25,6 +25,10 @@ struct Fidelity {
   double hausdorffPercent = 0;
   double rmsPercent = 0;
   int samples = 0;
+  // Where the Hausdorff distance is reached: the sample farthest from the other surface, and
+  // on which surface it lies (to show a user where the result strays most).
+  Vec3 farthestPoint = Vec3::Zero();
+  bool farthestOnReference = false;
 };
 
 // Samples each surface (vertices, edge midpoints and area-weighted random points, fixed seed)

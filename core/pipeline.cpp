@@ -246,7 +246,7 @@ std::string describe(const RemeshOptions& o) {
   s << "method=" << toString(o.method) << " resample=" << (o.resample ? "yes" : "no") << " param=" << toString(o.param.method)
     << " border=" << toString(o.param.border) << " density=" << toString(o.density.kind);
   if (o.density.kind == DensityKind::Curvature)
-    s << " alpha=" << o.density.alpha << " beta=" << o.density.beta;
+    s << " alpha=" << o.density.alpha << " beta=" << o.density.beta << " floor=" << o.density.floor;
   s << " sites="
     << (o.sites.fromInputVertices ? std::string("input-vertices")
         : o.sites.count > 0       ? std::to_string(o.sites.count)

@@ -37,6 +37,13 @@ const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 }  // namespace
 
+TEST(Cli, TheCurvatureDensitysFloorIsAnOption) {
+  const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") +
+                          " --density curvature --floor 4 --max-iterations 2 --no-fidelity --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["settings"]["floor"], 4.0);
+}
+
 TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
   const std::string out = test::tempPath("grid_out.ply");
   const std::string rec = test::tempPath("grid.lsrec");
@@ -48,6 +55,9 @@ TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
   EXPECT_EQ(j["input"]["vertices"], 441);
   EXPECT_GT(j["output"]["avg_min_angle_deg"].get<double>(), 50.0);
   EXPECT_GE(j["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>(), 0.0);
+  EXPECT_EQ(j["output"]["fidelity"]["farthest_point"].size(), 3u);
+  EXPECT_TRUE(j["output"]["fidelity"]["farthest_on"] == "input" ||
+              j["output"]["fidelity"]["farthest_on"] == "output");
   for (const char* stage : {"parameterize", "density", "lloyd", "remesh", "metrics", "total"})
     EXPECT_TRUE(j["milliseconds"].contains(stage)) << stage;
   EXPECT_EQ(j["settings"]["param"], "auto");

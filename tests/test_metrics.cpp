@@ -76,4 +76,21 @@ TEST(Fidelity, IsTwoSided) {
   half.triangles = {{0, 1, 2}, {0, 2, 3}};
   const Fidelity f = measureFidelity(half, test::grid(2));
   EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.5 / std::sqrt(2.0), 1e-9);
+  // Reached on the whole square's side x = 1 (its vertices are samples), not on the half.
+  EXPECT_TRUE(f.farthestOnReference);
+  EXPECT_NEAR(f.farthestPoint.x(), 1.0, 1e-12);
+}
+
+TEST(Fidelity, SaysWhereTheResultStraysFarthest) {
+  // One inside vertex of the result raised by 0.2: the result is farthest from the reference
+  // there, and the reference is nowhere that far from the result.
+  Mesh raised = test::grid(4);
+  int middle = 0;
+  for (int v = 0; v < raised.vertexCount(); ++v)
+    if ((raised.points[v] - Vec3(0.5, 0.5, 0)).norm() < 1e-9) middle = v;
+  raised.points[middle].z() = 0.2;
+  const Fidelity f = measureFidelity(raised, test::grid(4));
+  EXPECT_FALSE(f.farthestOnReference);
+  EXPECT_NEAR((f.farthestPoint - Vec3(0.5, 0.5, 0.2)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.2 / std::sqrt(2.0), 1e-9);
 }

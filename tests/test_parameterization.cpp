@@ -175,6 +175,30 @@ TEST(Density, CurvatureOfAUnitSphereCap) {
     for (double d : corners) EXPECT_NEAR(d, 1.0, 0.2);
 }
 
+// The floor is added everywhere, in units of the mean curvature term: a larger floor is a
+// more uniform density (what --floor sets).
+TEST(Density, ALargerCurvatureFloorIsMoreUniform) {
+  const Mesh mesh = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  const Parameterization p = parameterize(mesh, {}, "bumpy");
+  auto spread = [&](double floor) {
+    DensityOptions options{DensityKind::Curvature};
+    options.curvatureTimesArea = false;
+    options.floor = floor;
+    double lo = INFINITY, hi = 0;
+    for (const auto& corners : computeDensity(mesh, p.uv, options))
+      for (double d : corners) {
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+    return hi / lo;
+  };
+  const double steep = spread(0.1), mild = spread(10.0);
+  // With the floor f, the spread is (max + f m) / (min + f m) for the mean m of the term.
+  EXPECT_GT(steep, 20.0);
+  EXPECT_LT(mild, 4.0);
+  EXPECT_GT(mild, 1.5);
+}
+
 // Quadric simplification leaves slivers that LSCM flips almost for free: the mushroom's LSCM
 // folds 17 triangles. The local mean-value repair unfolds them.
 TEST(Parameterization, LscmFoldsAreRepairedLocally) {
