@@ -15,8 +15,6 @@ class SurfaceProjection {
   SurfaceProjection(SurfaceProjection&&) noexcept;
 
   Vec3 closestPoint(const Vec3& p) const;
-  // The surface's triangle (its index) that holds closestPoint(p).
-  int closestTriangle(const Vec3& p) const;
   double squaredDistance(const Vec3& p) const;  // thread-safe, as closestPoint
 
  private:
