@@ -12,9 +12,10 @@ PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgt
           libcli11-dev nlohmann-json3-dev
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools libglfw3-dev
           libimgui-dev libglm-dev libstb-dev fonts-dejavu-core xvfb xauth)
-# CGAL's sample meshes used by tests and benchmarks, from libcgal-demo: five disks, and two
-# closed surfaces of genus 2 and 3 (eight, elephant) for cutting and stitching.
-CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil eight elephant femur)
+# CGAL's sample meshes used by tests and benchmarks, from libcgal-demo: five disks, and closed
+# surfaces of genus 2 and 3 (eight, femur, elephant) and 0 (the cow, which touches itself at a
+# point) for cutting and stitching.
+CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil eight elephant femur cow)
 
 install_missing() {
   local missing=()

@@ -703,26 +703,36 @@ bool hasZeroArea(const Vec3& a, const Vec3& b, const Vec3& c) {
   return u.cross(v).norm() <= 1e-12 * u.norm() * v.norm();
 }
 
-void checkDuplicatePositions(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
-  std::vector<int> used;
+// Pairs of used vertices at exactly the same position, each pair once, in order of position.
+std::vector<std::pair<int, int>> coincidentVertices(const Mesh& mesh) {
   std::vector<bool> isUsed(mesh.points.size(), false);
-  for (const Triangle& t : mesh.triangles) {
+  for (const Triangle& t : mesh.triangles)
     for (int v : t) isUsed[v] = true;
-  }
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
+  std::vector<int> used;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
     if (isUsed[v]) used.push_back(v);
-  }
   const auto byPosition = [&](int a, int b) {
     const Vec3 &p = mesh.points[a], &q = mesh.points[b];
     return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
   };
   std::sort(used.begin(), used.end(), byPosition);
-  for (size_t i = 1; i < used.size(); ++i) {
-    if (mesh.points[used[i - 1]] == mesh.points[used[i]]) {
-      fail(name, "vertices " + str(numbering.vertex(used[i - 1])) + " and " + str(numbering.vertex(used[i])) +
-                     " are at the same position");
-    }
+  std::vector<std::pair<int, int>> pairs;
+  for (size_t i = 1; i < used.size(); ++i)
+    if (mesh.points[used[i - 1]] == mesh.points[used[i]]) pairs.emplace_back(used[i - 1], used[i]);
+  return pairs;
+}
+
+// The zero-area message, naming two corners at the same position if the face has them.
+std::string zeroAreaProblem(const Mesh& mesh, size_t t, const Numbering& numbering) {
+  const Triangle& f = mesh.triangles[t];
+  std::string problem = "face " + str(numbering.face(t)) + " has zero area";
+  for (int k = 0; k < 3; ++k) {
+    const int a = f[k], b = f[(k + 1) % 3];
+    if (mesh.points[a] == mesh.points[b])
+      return problem + ": its vertices " + str(numbering.vertex(std::min(a, b))) + " and " +
+             str(numbering.vertex(std::max(a, b))) + " are at the same position";
   }
+  return problem;
 }
 
 // One side of an edge as seen from a triangle.
@@ -830,13 +840,13 @@ void checkVertexFans(const Mesh& mesh, const std::string& name, const Numbering&
 
 // Everything that needs positions and connectivity; indices are known to be valid.
 void checkSurface(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
-  // Coinciding vertices before zero area: a face on two of them is degenerate because of them.
-  checkDuplicatePositions(mesh, name, numbering);
+  // Vertices at the same position are allowed: a surface may touch itself at a point (the
+  // cow's tail on its leg). What they would break is caught as what it is: a face on two of
+  // them has zero area, two faces on top of each other are oriented against each other.
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle& f = mesh.triangles[t];
-    if (hasZeroArea(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]])) {
-      fail(name, "face " + str(numbering.face(t)) + " has zero area");
-    }
+    if (hasZeroArea(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]))
+      fail(name, zeroAreaProblem(mesh, t, numbering));
   }
   checkEdges(mesh, name, numbering);
   checkVertexFans(mesh, name, numbering);
@@ -984,6 +994,18 @@ ReadResult readMesh(const std::string& path) {
   if (polygons > 0) {
     result.notes.push_back(path + ": " + plural(polygons, "polygon", "polygons") + " with more than 3 vertices " +
                            (polygons == 1 ? "was" : "were") + " triangulated");
+  }
+  const auto coincident = coincidentVertices(result.mesh);
+  if (!coincident.empty()) {
+    const Numbering numbering{raw.base, &faceOfTriangle};
+    const std::string first = str(numbering.vertex(coincident[0].first)) + " and " +
+                              str(numbering.vertex(coincident[0].second));
+    result.notes.push_back(
+        path + ": " +
+        (coincident.size() == 1 ? "vertices " + first + " are"
+                                : plural(static_cast<int>(coincident.size()), "pair", "pairs") +
+                                      " of vertices (the first: " + first + ") are") +
+        " at the same position, each with its own faces: the surface touches itself there");
   }
   const int removed = removeUnusedVertices(result.mesh);
   if (removed > 0) {

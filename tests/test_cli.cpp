@@ -101,7 +101,7 @@ TEST(Cli, Degenerate) {
   expectCleanFailure("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n", "zero area");
 }
 TEST(Cli, DuplicateVertices) {
-  expectCleanFailure("dup.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 0 3 2\n",
+  expectCleanFailure("dup.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 1 3 2\n",
                      "same position");
 }
 TEST(Cli, NonManifoldEdge) {

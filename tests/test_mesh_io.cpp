@@ -458,9 +458,24 @@ TEST(MeshIoErrors, ZeroAreaFace) {
                   "face 2 has zero area");
 }
 
-TEST(MeshIoErrors, DuplicateVertices) {
-  expectFileError("duplicate.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 0 3 2\n",
-                  "vertices 1 and 3 are at the same position");
+TEST(MeshIoErrors, AFaceOnTwoVerticesAtTheSamePosition) {
+  expectFileError("duplicate.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 1 3 2\n",
+                  "face 1 has zero area: its vertices 1 and 3 are at the same position");
+  // Two faces on top of each other, through a copy of a vertex: they face opposite ways.
+  expectFileError("overlap.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 0 3 2\n",
+                  "opposite orientations");
+}
+
+// A surface may touch itself at a point (CGAL's cow.off does, once): each copy has its own
+// faces, so the mesh is a manifold; it is read, with a note.
+TEST(MeshIo, VerticesAtTheSamePositionWithTheirOwnFacesAreKept) {
+  const std::string path = writeFile(
+      "touching.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 3 4 5\n");
+  const ReadResult result = readMesh(path);
+  EXPECT_EQ(result.mesh.vertexCount(), 6);
+  ASSERT_EQ(result.notes.size(), 1u);
+  EXPECT_EQ(result.notes[0], path + ": vertices 0 and 3 are at the same position, each with its "
+                                    "own faces: the surface touches itself there");
 }
 
 TEST(MeshIoErrors, NonManifoldEdge) {
