@@ -58,8 +58,10 @@ bool raisesRegularity(const Quad& q) {
 // Flips interior edges where `rule` asks and the flip neither duplicates an edge nor folds the
 // surface. On a cut surface (`stitched`: seamPartners() of the mesh), nor joins two border
 // vertices, nor makes an edge that stitching would double (an inside vertex joined to both
-// copies of a seam sample). Returns the number of flips.
-int flipEdges(Mesh& mesh, FlipRule rule, const std::vector<int>* stitched = nullptr) {
+// copies of a seam sample). With `region`, only edges with an end in it. Returns the number
+// of flips.
+int flipEdges(Mesh& mesh, FlipRule rule, const std::vector<int>* stitched = nullptr,
+              const std::vector<bool>* region = nullptr) {
   const bool borderApart = stitched != nullptr;
   std::map<std::pair<int, int>, int> stitchedEdges;  // each triangle side counted once
   auto stitchedEdge = [&](int a, int b) {
@@ -80,7 +82,7 @@ int flipEdges(Mesh& mesh, FlipRule rule, const std::vector<int>* stitched = null
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
       faceOf[directed(a, b)] = f;
-      if (a < b) work.emplace_back(a, b);
+      if (a < b && (!region || (*region)[a] || (*region)[b])) work.emplace_back(a, b);
     }
   auto third = [&](int f, int a, int b) {
     for (int v : mesh.triangles[f])
@@ -127,7 +129,7 @@ int flipEdges(Mesh& mesh, FlipRule rule, const std::vector<int>* stitched = null
       for (int k = 0; k < 3; ++k)
         faceOf[directed(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])] = f;
     for (auto [u, v] : {std::pair{a, c}, std::pair{a, d}, std::pair{b, c}, std::pair{b, d}})
-      work.emplace_back(std::min(u, v), std::max(u, v));
+      if (!region || (*region)[u] || (*region)[v]) work.emplace_back(std::min(u, v), std::max(u, v));
     --valence[a], --valence[b], ++valence[c], ++valence[d];
     if (borderApart) {  // an inside edge is the side of two triangles
       auto& old = stitchedEdges[stitchedEdge(a, b)];
@@ -157,6 +159,7 @@ struct Rings {
     for (int f = 0; f < m.faceCount(); ++f)
       for (int v : m.triangles[f]) faces[fill[v]++] = f;
   }
+  bool empty(int v) const { return offset[v] == offset[v + 1]; }
 };
 
 Vec3 circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -282,6 +285,12 @@ void relaxPass(LiftedMesh& lm, const SurfaceMap& surface,
       break;
     }
   }
+}
+
+Vec3 ringNormal(const Mesh& m, const Rings& rings, int v) {
+  Vec3 n = Vec3::Zero();
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) n += normal(m, m.triangles[rings.faces[k]]);
+  return n.normalized();
 }
 
 // The smallest angle of v's ring with v moved to `to`, or -1 if that folds the ring.
@@ -463,12 +472,16 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
   }
 }
 
-void polishSeams(Mesh& m, const std::vector<bool>& seamVertex, const Mesh& surface, int passes) {
-  const SurfaceProjection projection(surface);
-  std::vector<bool> movable(m.vertexCount(), false);
-  for (const Triangle& t : m.triangles)
-    if (seamVertex[t[0]] || seamVertex[t[1]] || seamVertex[t[2]])
-      for (int v : t) movable[v] = true;
+namespace {
+
+// Passes of relaxation of the `movable` inside vertices towards their ring's centroid within
+// their tangent plane, onto `surface` by closest point, unless that folds their ring or drops
+// its smallest angle under the lesser of what it was and 30 degrees; Delaunay flips after each
+// pass, then valence flips and a last relaxation. With `local`, flips only touch edges at the
+// movable vertices, and no valence flip is made (they may lower angles to 25 degrees).
+void relaxOnSurface(Mesh& m, const std::vector<bool>& movable, const SurfaceProjection& surface,
+                    int passes, bool local = false) {
+  const std::vector<bool>* region = local ? &movable : nullptr;
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   const std::vector<double> unit(m.vertexCount(), 1.0);
   auto relax = [&] {
@@ -479,7 +492,7 @@ void polishSeams(Mesh& m, const std::vector<bool>& seamVertex, const Mesh& surfa
       const Vec3 move = relaxationMove(m, rings, unit, v, PolishTarget::Centroid, up);
       const double floor = std::min(30.0, ringSmallestAngle(m, rings, v, m.points[v], up));
       for (double step = 1.0; step >= 0.25; step *= 0.5) {
-        const Vec3 to = projection.closestPoint(m.points[v] + step * move);
+        const Vec3 to = surface.closestPoint(m.points[v] + step * move);
         if (ringSmallestAngle(m, rings, v, to, up) >= floor) {
           m.points[v] = to;
           break;
@@ -489,12 +502,116 @@ void polishSeams(Mesh& m, const std::vector<bool>& seamVertex, const Mesh& surfa
   };
   for (int pass = 0; pass < passes; ++pass) {
     relax();
-    flipEdges(m, notDelaunay);
+    flipEdges(m, notDelaunay, nullptr, region);
   }
-  if (passes > 0) {
+  if (passes > 0 && !local) {
     flipEdges(m, raisesRegularity);
     relax();
   }
+}
+
+// `marked` and the vertices that share a triangle with one.
+std::vector<bool> withNeighbours(const Mesh& m, const std::vector<bool>& marked) {
+  std::vector<bool> grown = marked;
+  for (const Triangle& t : m.triangles)
+    if (marked[t[0]] || marked[t[1]] || marked[t[2]])
+      for (int v : t) grown[v] = true;
+  return grown;
+}
+
+}  // namespace
+
+void polishSeams(Mesh& m, const std::vector<bool>& seamVertex, const Mesh& surface, int passes) {
+  relaxOnSurface(m, withNeighbours(m, seamVertex), SurfaceProjection(surface), passes);
+}
+
+namespace {
+
+// The smallest angle of the triangles that touch a marked vertex.
+double smallestAngleAround(const Mesh& m, const std::vector<bool>& marked) {
+  double smallest = 180;
+  for (const Triangle& t : m.triangles)
+    if (marked[t[0]] || marked[t[1]] || marked[t[2]])
+      smallest = std::min(smallest, smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
+  return smallest;
+}
+
+// Whether moving v to `to` turns one of its triangles over (its normal by more than 90
+// degrees). A spike's triangles turn steeply from the ring's normal: only this is ruled out.
+bool turnsOver(const Mesh& m, const Rings& rings, int v, const Vec3& to) {
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+    const Triangle& t = m.triangles[rings.faces[k]];
+    auto at = [&](int c) -> const Vec3& { return t[c] == v ? to : m.points[t[c]]; };
+    if (!((at(1) - at(0)).cross(at(2) - at(0)).dot(normal(m, t)) > 0)) return true;
+  }
+  return false;
+}
+
+// The vertex nearest to p among those `allowed`, or -1.
+template <class Allowed>
+int nearestVertex(const Mesh& m, const Vec3& p, const Allowed& allowed) {
+  int best = -1;
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (allowed(v) && (best < 0 || (m.points[v] - p).squaredNorm() < (m.points[best] - p).squaredNorm()))
+      best = v;
+  return best;
+}
+
+double meanEdgeLength(const Mesh& m) {
+  double sum = 0;
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) sum += (m.points[t[k]] - m.points[t[(k + 1) % 3]]).norm();
+  return sum / (3.0 * m.faceCount());
+}
+
+}  // namespace
+
+int pinTips(Mesh& m, const Mesh& surface, int rounds) {
+  if (m.triangles.empty()) return 0;
+  const SurfaceProjection projection(surface);
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  const double spacing = meanEdgeLength(m);
+  // The mesh's smallest angle may not fall under the lesser of what it was and 30 degrees,
+  // unless the tip is more than an edge length away: a result that cuts that much off is
+  // wrong whatever its angles (a thin horn's tip is a thin cone).
+  const double floor = std::min(30.0, smallestAngleAround(m, std::vector<bool>(m.vertexCount(), true)));
+  std::vector<bool> pinned(m.vertexCount(), false);
+  int count = 0;
+  for (int round = 0; round < rounds; ++round) {
+    const SurfaceProjection result(m);
+    std::vector<std::pair<double, int>> far;  // squared distance, input vertex
+    for (int i = 0; i < surface.vertexCount(); ++i) {
+      const double d2 = result.squaredDistance(surface.points[i]);
+      if (d2 > 0.25 * spacing * spacing) far.emplace_back(d2, i);
+    }
+    if (far.empty()) break;
+    std::sort(far.rbegin(), far.rend());
+    std::vector<Vec3> tips;  // this round's, two edge lengths apart
+    for (const auto& [squared, i] : far) {
+      const Vec3& tip = surface.points[i];
+      if (std::any_of(tips.begin(), tips.end(), [&](const Vec3& t) { return (t - tip).norm() < 2 * spacing; }))
+        continue;
+      tips.push_back(tip);
+      const int v = nearestVertex(m, tip, [&](int w) { return !border[w] && !pinned[w]; });
+      if (v < 0) break;
+      if (turnsOver(m, Rings(m), v, tip)) continue;
+      // Tried on a copy, with the two rings around it relaxed on the surface (the tip stays).
+      std::vector<bool> around(m.vertexCount(), false);
+      around[v] = true;
+      around = withNeighbours(m, withNeighbours(m, around));
+      std::vector<bool> movable = around;
+      for (int w = 0; w < m.vertexCount(); ++w) movable[w] = movable[w] && !pinned[w] && w != v;
+      Mesh tried = m;
+      tried.points[v] = tip;
+      relaxOnSurface(tried, movable, projection, 3, /*local=*/true);
+      if (std::sqrt(squared) > spacing || smallestAngleAround(tried, around) >= floor) {
+        m = std::move(tried);
+        pinned[v] = true;
+        ++count;
+      }
+    }
+  }
+  return count;
 }
 
 const char* toString(PolishTarget target) {

@@ -4,6 +4,7 @@
 #include "sites.h"
 #include "mesh_io.h"
 #include "polish.h"
+#include "projection.h"
 #include "test_support.h"
 #include "topology.h"
 
@@ -203,4 +204,35 @@ TEST(Polish, SeamVerticesRelaxOnTheSurfaceOnceStitched) {
   for (const Vec3& p : m.points) EXPECT_NEAR(p.z(), 0.0, 1e-12);
   for (int v = 0; v < m.vertexCount(); ++v)
     if (std::abs(surface.points[v].x() - 0.5) > 0.3) EXPECT_EQ(m.points[v], surface.points[v]);
+}
+
+// A thin spike of the input (a horn's tip) between the result's vertices: the result cuts it
+// off, and the Hausdorff distance is the spike's height. pinTips() puts the nearest vertex on
+// its tip; the result stays a valid mesh with the same vertices.
+TEST(Polish, AVertexIsPinnedOntoATipTheResultCutOff) {
+  Mesh input = test::grid(40);
+  const int top = 20 * 41 + 20;  // (0.5, 0.5)
+  input.points[top].z() = 0.3;
+  Mesh result = test::grid(8);
+  const double before = measureFidelity(result, input).hausdorffPercent;
+  EXPECT_GE(pinTips(result, input), 1);
+  EXPECT_NO_THROW(validateMesh(result, "pinned"));
+  EXPECT_EQ(result.vertexCount(), 81);
+  const Vec3 tip = input.points[top];
+  EXPECT_TRUE(std::any_of(result.points.begin(), result.points.end(),
+                          [&](const Vec3& p) { return (p - tip).norm() < 1e-12; }));
+  EXPECT_LT(measureFidelity(result, input).hausdorffPercent, 0.3 * before);
+  // Every vertex is still on the input surface (the pinned one at its tip, the relaxed ones
+  // around it by closest point).
+  const SurfaceProjection surface(input);
+  for (const Vec3& p : result.points) EXPECT_LT(surface.squaredDistance(p), 1e-20);
+}
+
+// A result that already follows its input has no tip to pin: it is left as it is.
+TEST(Polish, NothingIsPinnedWhereTheResultFollowsTheInput) {
+  const Mesh input = test::grid(8);
+  Mesh result = input;
+  EXPECT_EQ(pinTips(result, input), 0);
+  EXPECT_EQ(result.points, input.points);
+  EXPECT_EQ(result.triangles, input.triangles);
 }
