@@ -80,7 +80,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"output", output},
           {"iterations", r.iterations},
           {"converged", r.converged},
-          {"pinned_tips", r.pinnedTips},
+          {"snapped_tips", r.snappedTips},
           {"distortion",
            {{"min_area_ratio", r.distortion.minAreaRatio},
             {"max_area_ratio", r.distortion.maxAreaRatio},
@@ -143,9 +143,9 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
     out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
         << " slits through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)
         << "\n";
-  if (r.pinnedTips > 0)
-    out << "Pinned onto tips of the input the result had cut off: " << r.pinnedTips
-        << (r.pinnedTips == 1 ? " vertex\n" : " vertices\n");
+  if (r.snappedTips > 0)
+    out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips
+        << (r.snappedTips == 1 ? " vertex\n" : " vertices\n");
   out << "Time (ms): " << (r.ms.simplify > 0 ? "simplify " + format("%.1f", r.ms.simplify) + ", " : "")
       << (r.ms.cut > 0 ? "cut " + format("%.1f", r.ms.cut) + ", " : "")
       << (r.ms.resample > 0 ? "resample " + format("%.1f", r.ms.resample) + ", " : "")

@@ -147,7 +147,7 @@ Recording RemeshSession::header() const {
   return r;
 }
 
-Mesh RemeshSession::buildOutput(int& pinnedTips) const {
+Mesh RemeshSession::buildOutput(int& snappedTips) const {
   const std::vector<Vec2>& movable = solver_->movableSites();
   if (options_.method == RemeshMethod::Relocate) {
     std::vector<Vec3> lifted;
@@ -172,7 +172,7 @@ Mesh RemeshSession::buildOutput(int& pinnedTips) const {
   }
   const Mesh& original = original_ ? *original_ : input_;
   if (!cut_) {
-    if (options_.polish > 0) pinnedTips = pinTips(output.mesh, original);
+    if (options_.polish > 0) snappedTips = snapToTips(output.mesh, original);
     return std::move(output.mesh);
   }
   // Both copies of every seam sample are at the same place: one vertex again.
@@ -180,7 +180,7 @@ Mesh RemeshSession::buildOutput(int& pinnedTips) const {
   Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
   if (options_.polish > 0) polishSeams(stitched, seamVertex, input_, options_.polish);
   removeFlatTriangles(stitched);
-  if (options_.polish > 0) pinnedTips = pinTips(stitched, original);
+  if (options_.polish > 0) snappedTips = snapToTips(stitched, original);
   const Topology& want = cut_->topology;
   try {
     validateMesh(stitched, name_);
@@ -221,7 +221,7 @@ RemeshResult RemeshSession::finish() {
   result.iterations = iterationCount();
   result.converged = converged();
   Stopwatch stage;
-  result.output = buildOutput(result.pinnedTips);
+  result.output = buildOutput(result.snappedTips);
   result.ms.remesh = stage.lap();
   // Against what the user gave, not its simplification.
   const Mesh& original = original_ ? *original_ : input_;

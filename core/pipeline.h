@@ -53,7 +53,7 @@ struct RemeshResult {
   CutSummary cut;  // how the input was cut open (no seam edges: it was not)
   QualityMetrics before, after;
   Fidelity fidelity;  // output against input; zero when not measured
-  int pinnedTips = 0;  // vertices the polish pinned onto tips the result cut off (pinTips)
+  int snappedTips = 0;  // vertices the polish snapped onto tips the result cut off (snapToTips)
   int iterations = 0;
   bool converged = false;
   StageTimes ms;
@@ -83,7 +83,7 @@ class RemeshSession {
   RemeshResult finish();
 
  private:
-  Mesh buildOutput(int& pinnedTips) const;
+  Mesh buildOutput(int& snappedTips) const;
   // The site options with the seams of a cut surface marked.
   SiteOptions seamSites() const;
   // How many sites the options ask for (0 in them: as many as the input has vertices).

@@ -566,7 +566,7 @@ double meanEdgeLength(const Mesh& m) {
 
 }  // namespace
 
-int pinTips(Mesh& m, const Mesh& surface, int rounds) {
+int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
   if (m.triangles.empty()) return 0;
   const SurfaceProjection projection(surface);
   const std::vector<bool> border = vertexEdges(m).onBoundary;
@@ -575,7 +575,7 @@ int pinTips(Mesh& m, const Mesh& surface, int rounds) {
   // unless the tip is more than an edge length away: a result that cuts that much off is
   // wrong whatever its angles (a thin horn's tip is a thin cone).
   const double floor = std::min(30.0, smallestAngleAround(m, std::vector<bool>(m.vertexCount(), true)));
-  std::vector<bool> pinned(m.vertexCount(), false);
+  std::vector<bool> snapped(m.vertexCount(), false);
   int count = 0;
   for (int round = 0; round < rounds; ++round) {
     const SurfaceProjection result(m);
@@ -592,7 +592,7 @@ int pinTips(Mesh& m, const Mesh& surface, int rounds) {
       if (std::any_of(tips.begin(), tips.end(), [&](const Vec3& t) { return (t - tip).norm() < 2 * spacing; }))
         continue;
       tips.push_back(tip);
-      const int v = nearestVertex(m, tip, [&](int w) { return !border[w] && !pinned[w]; });
+      const int v = nearestVertex(m, tip, [&](int w) { return !border[w] && !snapped[w]; });
       if (v < 0) break;
       if (turnsOver(m, Rings(m), v, tip)) continue;
       // Tried on a copy, with the two rings around it relaxed on the surface (the tip stays).
@@ -600,13 +600,13 @@ int pinTips(Mesh& m, const Mesh& surface, int rounds) {
       around[v] = true;
       around = withNeighbours(m, withNeighbours(m, around));
       std::vector<bool> movable = around;
-      for (int w = 0; w < m.vertexCount(); ++w) movable[w] = movable[w] && !pinned[w] && w != v;
+      for (int w = 0; w < m.vertexCount(); ++w) movable[w] = movable[w] && !snapped[w] && w != v;
       Mesh tried = m;
       tried.points[v] = tip;
       relaxOnSurface(tried, movable, projection, 3, /*local=*/true);
       if (std::sqrt(squared) > spacing || smallestAngleAround(tried, around) >= floor) {
         m = std::move(tried);
-        pinned[v] = true;
+        snapped[v] = true;
         ++count;
       }
     }

@@ -56,7 +56,7 @@ TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
   EXPECT_GT(j["output"]["avg_min_angle_deg"].get<double>(), 50.0);
   EXPECT_GE(j["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>(), 0.0);
   EXPECT_EQ(j["output"]["fidelity"]["farthest_point"].size(), 3u);
-  EXPECT_GE(j["pinned_tips"].get<int>(), 0);
+  EXPECT_GE(j["snapped_tips"].get<int>(), 0);
   EXPECT_TRUE(j["output"]["fidelity"]["farthest_on"] == "input" ||
               j["output"]["fidelity"]["farthest_on"] == "output");
   for (const char* stage : {"parameterize", "density", "lloyd", "remesh", "metrics", "total"})

@@ -207,32 +207,32 @@ TEST(Polish, SeamVerticesRelaxOnTheSurfaceOnceStitched) {
 }
 
 // A thin spike of the input (a horn's tip) between the result's vertices: the result cuts it
-// off, and the Hausdorff distance is the spike's height. pinTips() puts the nearest vertex on
+// off, and the Hausdorff distance is the spike's height. snapToTips() puts the nearest vertex on
 // its tip; the result stays a valid mesh with the same vertices.
-TEST(Polish, AVertexIsPinnedOntoATipTheResultCutOff) {
+TEST(Polish, AVertexIsSnappedOntoATipTheResultCutOff) {
   Mesh input = test::grid(40);
   const int top = 20 * 41 + 20;  // (0.5, 0.5)
   input.points[top].z() = 0.3;
   Mesh result = test::grid(8);
   const double before = measureFidelity(result, input).hausdorffPercent;
-  EXPECT_GE(pinTips(result, input), 1);
-  EXPECT_NO_THROW(validateMesh(result, "pinned"));
+  EXPECT_GE(snapToTips(result, input), 1);
+  EXPECT_NO_THROW(validateMesh(result, "snapped"));
   EXPECT_EQ(result.vertexCount(), 81);
   const Vec3 tip = input.points[top];
   EXPECT_TRUE(std::any_of(result.points.begin(), result.points.end(),
                           [&](const Vec3& p) { return (p - tip).norm() < 1e-12; }));
   EXPECT_LT(measureFidelity(result, input).hausdorffPercent, 0.3 * before);
-  // Every vertex is still on the input surface (the pinned one at its tip, the relaxed ones
+  // Every vertex is still on the input surface (the snapped one at its tip, the relaxed ones
   // around it by closest point).
   const SurfaceProjection surface(input);
   for (const Vec3& p : result.points) EXPECT_LT(surface.squaredDistance(p), 1e-20);
 }
 
-// A result that already follows its input has no tip to pin: it is left as it is.
-TEST(Polish, NothingIsPinnedWhereTheResultFollowsTheInput) {
+// A result that already follows its input has no tip to snap to: it is left as it is.
+TEST(Polish, NothingIsSnappedWhereTheResultFollowsTheInput) {
   const Mesh input = test::grid(8);
   Mesh result = input;
-  EXPECT_EQ(pinTips(result, input), 0);
+  EXPECT_EQ(snapToTips(result, input), 0);
   EXPECT_EQ(result.points, input.points);
   EXPECT_EQ(result.triangles, input.triangles);
 }
