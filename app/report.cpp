@@ -81,6 +81,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
+          {"resample_dropped", r.resampleDropped.empty() ? nlohmann::json() : nlohmann::json(r.resampleDropped)},
           {"distortion",
            {{"min_area_ratio", r.distortion.minAreaRatio},
             {"max_area_ratio", r.distortion.maxAreaRatio},
@@ -139,6 +140,9 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
+  if (!r.resampleDropped.empty())
+    out << "The first resampling could not be parameterized (" << r.resampleDropped
+        << "): the input itself was, as with --no-resample\n";
   if (r.cut.seamEdges > 0)
     out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
         << " slits through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)

@@ -95,9 +95,22 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         // map is conformal too; the mean value map of the resampled surface (no slivers)
         // distorts less than its points in the mean value map of the input.
         if (resampled_ && resampled_->param.method == ParamMethod::Lscm) o.fallback = resampled_->mesh.uv;
-        Parameterization p = parameterize(surface(), o, name);
-        ms_.parameterize = stage.lap();
-        return p;
+        try {
+          Parameterization p = parameterize(surface(), o, name);
+          ms_.parameterize = stage.lap();
+          return p;
+        } catch (const Error& e) {
+          if (!resampled_) throw;
+          // Every map of the resampled surface failed where the input's own held (the first
+          // pass's map collapsed a part of it: CGAL's dino, triceratops): the input it is.
+          std::string why = e.what();  // "<name>: <problem>; try <advice>": the problem
+          if (why.rfind(name + ": ", 0) == 0) why.erase(0, name.size() + 2);
+          resampleDropped_ = why.substr(0, why.find("; try"));
+          resampled_.reset();
+          Parameterization p = parameterize(input_, options_.param, name);
+          ms_.parameterize = stage.lap();
+          return p;
+        }
       }()),
       density_([&] {
         Stopwatch stage;
@@ -217,6 +230,7 @@ RemeshResult RemeshSession::finish() {
   result.paramUsed = param_.method;
   result.distortion = param_.distortion;
   if (cut_) result.cut = cut_->summary;
+  result.resampleDropped = resampleDropped_;
   result.ms = ms_;
   result.iterations = iterationCount();
   result.converged = converged();

@@ -53,7 +53,10 @@ struct RemeshResult {
   CutSummary cut;  // how the input was cut open (no seam edges: it was not)
   QualityMetrics before, after;
   Fidelity fidelity;  // output against input; zero when not measured
-  int snappedTips = 0;  // vertices the polish snapped onto tips the result cut off (snapToTips)
+  int snappedTips = 0;
+  // Not empty: the resampled surface could not be parameterized (this says why), and the input
+  // itself was, as with resample = false.
+  std::string resampleDropped;  // vertices the polish snapped onto tips the result cut off (snapToTips)
   int iterations = 0;
   bool converged = false;
   StageTimes ms;
@@ -100,6 +103,7 @@ class RemeshSession {
   std::optional<CutResult> cut_;  // how input_ was cut open, if it was
   Mesh input_;                    // the disk to remesh
   std::optional<Resampling> resampled_;
+  std::string resampleDropped_;  // why the resampled surface was given up, if it was
   Parameterization param_;
   Density density_;
   Domain domain_;
