@@ -20,6 +20,9 @@ namespace lloydscope {
 
 namespace {
 
+// Where the run was made without its first pass (remesh(), startSession()), and why.
+const std::string kWithoutResampling = "Made without the first resampling, which failed: ";
+
 VkCommandBuffer gCommandBuffer = VK_NULL_HANDLE;
 
 // No backgrounds: the panes tile the window and the frame is cleared to ImGui's window colour.
@@ -131,6 +134,8 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
+  if (!result_.resampleDropped.empty())
+    message_ = kWithoutResampling + result_.resampleDropped;
   std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
   iteration_ = replay_->iterationCount() - 1;
@@ -162,12 +167,19 @@ void Inspector::openReplay(Recording recording) {
 void Inspector::startSession() {
   stopRun();
   try {
-    session_ = std::make_unique<RemeshSession>(*input_, options_, meshName_);
+    try {
+      session_ = std::make_unique<RemeshSession>(*input_, options_, meshName_);
+      message_.clear();
+    } catch (const Error& e) {
+      if (!options_.resample) throw;
+      // As remesh() does: without the first pass where it makes the run fail.
+      session_ = std::make_unique<RemeshSession>(*input_, withoutResampling(options_), meshName_);
+      message_ = kWithoutResampling + problemOf(e, meshName_);
+    }
     session_->step();  // the panes need one iteration to show
     Recording header = session_->header();
     header.iterations.push_back(session_->iterationRecord(0));
     openReplay(std::move(header));
-    message_.clear();
   } catch (const Error& e) {
     session_.reset();
     message_ = e.what();
@@ -208,8 +220,12 @@ void Inspector::collectIterations() {
 
 // A finished run: the final result's metrics for the table. The session is spent.
 void Inspector::finishSession() {
-  result_ = session_->finish();
-  result_.recording = Recording{};  // the replay holds its iterations already
+  try {
+    result_ = session_->finish();
+    result_.recording = Recording{};  // the replay holds its iterations already
+  } catch (const Error& e) {  // the seams did not stitch: the iterations stay to look at
+    message_ = e.what();
+  }
   session_.reset();
 }
 

@@ -141,8 +141,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
   if (!r.resampleDropped.empty())
-    out << "The first resampling could not be parameterized (" << r.resampleDropped
-        << "): the input itself was, as with --no-resample\n";
+    out << "Made without the first resampling (as with --no-resample), which failed: "
+        << r.resampleDropped << "\n";
   if (r.cut.seamEdges > 0)
     out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
         << " slits through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)

@@ -95,22 +95,9 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         // map is conformal too; the mean value map of the resampled surface (no slivers)
         // distorts less than its points in the mean value map of the input.
         if (resampled_ && resampled_->param.method == ParamMethod::Lscm) o.fallback = resampled_->mesh.uv;
-        try {
-          Parameterization p = parameterize(surface(), o, name);
-          ms_.parameterize = stage.lap();
-          return p;
-        } catch (const Error& e) {
-          if (!resampled_) throw;
-          // Every map of the resampled surface failed where the input's own held (the first
-          // pass's map collapsed a part of it: CGAL's dino, triceratops): the input it is.
-          std::string why = e.what();  // "<name>: <problem>; try <advice>": the problem
-          if (why.rfind(name + ": ", 0) == 0) why.erase(0, name.size() + 2);
-          resampleDropped_ = why.substr(0, why.find("; try"));
-          resampled_.reset();
-          Parameterization p = parameterize(input_, options_.param, name);
-          ms_.parameterize = stage.lap();
-          return p;
-        }
+        Parameterization p = parameterize(surface(), o, name);
+        ms_.parameterize = stage.lap();
+        return p;
       }()),
       density_([&] {
         Stopwatch stage;
@@ -230,7 +217,6 @@ RemeshResult RemeshSession::finish() {
   result.paramUsed = param_.method;
   result.distortion = param_.distortion;
   if (cut_) result.cut = cut_->summary;
-  result.resampleDropped = resampleDropped_;
   result.ms = ms_;
   result.iterations = iterationCount();
   result.converged = converged();
@@ -251,12 +237,36 @@ RemeshResult RemeshSession::finish() {
 }
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  Stopwatch total;
-  RemeshSession session(input, options, name);
-  while (!session.finished()) session.step();
-  RemeshResult result = session.finish();
-  result.ms.total = total.lap();
-  return result;
+  auto run = [&](const RemeshOptions& o) {
+    Stopwatch total;
+    RemeshSession session(input, o, name);
+    while (!session.finished()) session.step();
+    RemeshResult result = session.finish();
+    result.ms.total = total.lap();
+    return result;
+  };
+  if (!effective(options).resample) return run(options);
+  try {
+    return run(options);
+  } catch (const Error& e) {
+    // The first pass is an improvement, not a need: where the run fails with it (every map of
+    // the resampled surface collapses a part the cut's slits did not reach, as on CGAL's
+    // triceratops; or its seams do not stitch, as on the turbine), it runs without.
+    RemeshResult result = run(withoutResampling(options));
+    result.resampleDropped = problemOf(e, name);
+    return result;
+  }
+}
+
+RemeshOptions withoutResampling(RemeshOptions options) {
+  options.resample = false;
+  return options;
+}
+
+std::string problemOf(const Error& e, const std::string& name) {
+  std::string problem = e.what();  // "<name>: <problem>; try <advice>"
+  if (problem.rfind(name + ": ", 0) == 0) problem.erase(0, name.size() + 2);
+  return problem.substr(0, problem.find("; try"));
 }
 
 std::string describe(const RemeshOptions& o) {

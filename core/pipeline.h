@@ -53,17 +53,20 @@ struct RemeshResult {
   CutSummary cut;  // how the input was cut open (no seam edges: it was not)
   QualityMetrics before, after;
   Fidelity fidelity;  // output against input; zero when not measured
-  int snappedTips = 0;
-  // Not empty: the resampled surface could not be parameterized (this says why), and the input
-  // itself was, as with resample = false.
-  std::string resampleDropped;  // vertices the polish snapped onto tips the result cut off (snapToTips)
+  int snappedTips = 0;  // vertices the polish snapped onto tips the result cut off (snapToTips)
+  // Not empty: the run failed with the first pass (this says why) and was made without it.
+  std::string resampleDropped;
   int iterations = 0;
   bool converged = false;
   StageTimes ms;
 };
 
-// `input` must be a validated mesh; `name` is used in error messages. Throws Error.
+// `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
+// run fails with the first pass (options.resample), it is made again without it.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
+RemeshOptions withoutResampling(RemeshOptions options);
+// The problem an Error states, without the "<name>: " it starts with and any "; try ..." advice.
+std::string problemOf(const Error& e, const std::string& name);
 
 // The same pipeline one stage at a time, for the inspector's Step and Run: the constructor
 // parameterizes, computes the density and places the sites; step() is one iteration; finish()
@@ -103,7 +106,6 @@ class RemeshSession {
   std::optional<CutResult> cut_;  // how input_ was cut open, if it was
   Mesh input_;                    // the disk to remesh
   std::optional<Resampling> resampled_;
-  std::string resampleDropped_;  // why the resampled surface was given up, if it was
   Parameterization param_;
   Density density_;
   Domain domain_;

@@ -210,7 +210,7 @@ TEST_P(ClosedCgalSamples, KeepTheirGenus) {
 
 // CGAL's triceratops cut open: every map of its first resampling collapsed a part of it (a
 // horn the slits did not reach: 14 triangles under 10^-14 of the domain) while the input's own
-// map held. The pipeline parameterizes the input itself then, and says so.
+// map held. remesh() runs again without the first pass then, and says why.
 TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
   const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/triceratops.off";
   if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
