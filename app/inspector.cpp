@@ -320,6 +320,7 @@ void Inspector::setCamera(const std::string& text) {
   c.pitch = std::clamp(c.pitch, -1.5f, 1.5f);
   c.target = Vec3(x, y, z);
   camera_ = c;
+  fitPending_ = false;
 }
 
 Pane parsePane(const std::string& name) {
@@ -364,9 +365,30 @@ void OpeningView::applyTo(Inspector& inspector) const {
 void Inspector::fitCamera() {
   const auto [lo, hi] = boundingBox(replay_->recording().input);
   camera_.target = 0.5 * (lo + hi);
-  camera_.distance = static_cast<float>(1.05 * (hi - lo).norm());
+  camera_.distance = static_cast<float>(1.05 * (hi - lo).norm());  // until the pane is known
   camera_.yaw = -1.2f;
   camera_.pitch = 0.75f;
+  fitPending_ = true;
+}
+
+// The distance from which every vertex is inside the pane (with a margin) for the camera's
+// direction and the pane's shape: a long shape seen across (a triceratops) fits too, which a
+// distance from the bounding box alone did not make sure of.
+float Inspector::fittingDistance(const ImVec2& extent) const {
+  const glm::vec3 toEye(std::cos(camera_.pitch) * std::cos(camera_.yaw),
+                        std::cos(camera_.pitch) * std::sin(camera_.yaw), std::sin(camera_.pitch));
+  const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 0, 1), toEye));
+  const glm::vec3 up = glm::cross(toEye, right);
+  const float margin = 0.9f;
+  const float tanV = margin * std::tan(glm::radians(20.0f)), tanH = tanV * extent.x / extent.y;
+  float distance = 0;
+  for (const Vec3& p : replay_->recording().input.points) {
+    const glm::vec3 q(p.x() - camera_.target.x(), p.y() - camera_.target.y(), p.z() - camera_.target.z());
+    const float depth = glm::dot(q, toEye);  // towards the eye
+    distance = std::max({distance, depth + std::abs(glm::dot(q, right)) / tanH,
+                         depth + std::abs(glm::dot(q, up)) / tanV});
+  }
+  return distance > 0 ? distance : camera_.distance;
 }
 
 void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm::vec3& eye) const {
@@ -847,6 +869,10 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       io.MouseDragMaxDistanceSqr[0] < 9.0f)
     pick3D(io.MousePos, p0, extent);  // a click, not the end of an orbit
+  if (fitPending_) {
+    camera_.distance = fittingDistance(extent);
+    fitPending_ = false;
+  }
   const glm::mat4 viewProjection = cameraMatrices(extent).first;
 
   ImDrawList* dl = ImGui::GetWindowDrawList();

@@ -142,6 +142,7 @@ class Inspector {
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks  // of the current iteration's result, cached
   void fitCamera();
+  float fittingDistance(const ImVec2& extent) const;
   // The 3D view's view-projection matrix (Vulkan clip space) and eye, for a pane this size.
   std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent) const;
 
@@ -193,6 +194,7 @@ class Inspector {
   float playSpeed_ = 10.0f, playClock_ = 0.0f;
   CellFill fill_ = CellFill::None;
   Camera camera_;
+  bool fitPending_ = false;  // fitCamera() waits for the 3D pane's size to set the distance
   Selection selection_;
   std::optional<ExportJob> exportJob_;
   int exportNext_ = 0;

@@ -210,3 +210,27 @@ TEST(Inspector, OpensAMeshWhoseFirstResamplingFails) {
   ASSERT_EQ(run("inspect " + mesh + " --simplify 2000 --no-timings --size 640x400 --screenshot " + png), 0);
   EXPECT_EQ(readPng(png).width, 640);
 }
+
+// The first view fits the whole shape into the 3D pane, whatever its proportions: a strip ten
+// times as long as wide, seen across, touches none of the pane's sides (from the bounding box's
+// diagonal alone its ends were cut off) and still fills a good part of its width.
+TEST(Inspector, TheFirstViewFitsALongShape) {
+  Mesh strip = test::grid(20);
+  for (Vec3& p : strip.points) p = Vec3(10 * p.x(), p.y(), 0.3 * std::sin(3 * p.x()));
+  const std::string mesh = test::tempPath("strip.off"), png = test::tempPath("strip.png");
+  writeMesh(strip, mesh);
+  ASSERT_EQ(run("inspect " + mesh + " --max-iterations 3 --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  const Picture p = readPng(png);
+  ASSERT_EQ(p.width, 960);
+  auto isMesh = [&](int x, int y) {  // shaded by its angles: green to red, never grey
+    const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+    return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}) > 60;
+  };
+  int left = p.width, right = 0;  // of the mesh in the 3D pane (x 285..620), under its colour bar
+  for (int y = 150; y < 360; ++y)
+    for (int x = 286; x < 620; ++x)
+      if (isMesh(x, y)) left = std::min(left, x), right = std::max(right, x);
+  EXPECT_GT(left, 290);
+  EXPECT_LT(right, 615);
+  EXPECT_GT(right - left, 150);
+}
