@@ -159,7 +159,6 @@ struct Rings {
     for (int f = 0; f < m.faceCount(); ++f)
       for (int v : m.triangles[f]) faces[fill[v]++] = f;
   }
-  bool empty(int v) const { return offset[v] == offset[v + 1]; }
 };
 
 Vec3 circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -285,12 +284,6 @@ void relaxPass(LiftedMesh& lm, const SurfaceMap& surface,
       break;
     }
   }
-}
-
-Vec3 ringNormal(const Mesh& m, const Rings& rings, int v) {
-  Vec3 n = Vec3::Zero();
-  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) n += normal(m, m.triangles[rings.faces[k]]);
-  return n.normalized();
 }
 
 // The smallest angle of v's ring with v moved to `to`, or -1 if that folds the ring.
