@@ -171,7 +171,7 @@ void Inspector::startSession() {
       session_ = std::make_unique<RemeshSession>(*input_, options_, meshName_);
       message_.clear();
     } catch (const Error& e) {
-      if (!options_.resample) throw;
+      if (!usesResampling(options_)) throw;
       // As remesh() does: without the first pass where it makes the run fail.
       session_ = std::make_unique<RemeshSession>(*input_, withoutResampling(options_), meshName_);
       message_ = kWithoutResampling + problemOf(e, meshName_);
@@ -224,7 +224,11 @@ void Inspector::finishSession() {
     result_ = session_->finish();
     result_.recording = Recording{};  // the replay holds its iterations already
   } catch (const Error& e) {  // the seams did not stitch: the iterations stay to look at
-    message_ = e.what();
+    const QualityMetrics before = result_.before;
+    result_ = RemeshResult{};  // nothing of an earlier run's result is shown for this one
+    result_.before = before;
+    message_ = std::string(e.what()) +
+               (usesResampling(options_) ? " (inspect --no-resample makes it without the first resampling, as remesh does by itself)" : "");
   }
   session_.reset();
 }

@@ -840,14 +840,20 @@ void checkVertexFans(const Mesh& mesh, const std::string& name, const Numbering&
 
 // Everything that needs positions and connectivity; indices are known to be valid.
 void checkSurface(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
-  // Vertices at the same position are allowed: a surface may touch itself at a point (the
-  // cow's tail on its leg). What they would break is caught as what it is: a face on two of
-  // them has zero area, two faces on top of each other are oriented against each other.
+  // A face on two vertices at the same position has zero area: said as such first.
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle& f = mesh.triangles[t];
     if (hasZeroArea(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]))
       fail(name, zeroAreaProblem(mesh, t, numbering));
   }
+  // Inside vertices at the same position are allowed: a surface may touch itself at a point
+  // (CGAL's cow does once). On a border they are an unwelded seam, a crack or a triangle soup,
+  // whose pieces would be remeshed apart: refused.
+  const std::vector<bool> border = vertexEdges(mesh).onBoundary;
+  for (const auto& [a, b] : coincidentVertices(mesh))
+    if (border[a] || border[b])
+      fail(name, "vertices " + str(numbering.vertex(a)) + " and " + str(numbering.vertex(b)) +
+                     " are at the same position on a border (an unwelded seam or a crack)");
   checkEdges(mesh, name, numbering);
   checkVertexFans(mesh, name, numbering);
 }
@@ -1005,7 +1011,7 @@ ReadResult readMesh(const std::string& path) {
         (coincident.size() == 1 ? "vertices " + first + " are"
                                 : plural(static_cast<int>(coincident.size()), "pair", "pairs") +
                                       " of vertices (the first: " + first + ") are") +
-        " at the same position, each with its own faces: the surface touches itself there");
+        " at the same position, each with its own faces inside the surface: it touches itself there");
   }
   const int removed = removeUnusedVertices(result.mesh);
   if (removed > 0) {

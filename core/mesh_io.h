@@ -21,8 +21,8 @@ ReadResult readMesh(const std::string& path);
 
 // Checks what every later stage relies on and throws Error("<name>: <problem>") otherwise:
 // finite coordinates, indices in range, no zero-area faces, no vertex used by no face, manifold
-// edges and vertices, consistently oriented faces. Two vertices may be at the same position
-// (a surface that touches itself), each with its own faces.
+// edges and vertices, consistently oriented faces. Two inside vertices may be at the same
+// position (a surface that touches itself), each with its own faces; two border vertices not.
 void validateMesh(const Mesh& mesh, const std::string& name);
 
 // Writes by extension. The file appears complete or not at all (temporary file, then rename).

@@ -245,7 +245,7 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
     result.ms.total = total.lap();
     return result;
   };
-  if (!effective(options).resample) return run(options);
+  if (!usesResampling(options)) return run(options);
   try {
     return run(options);
   } catch (const Error& e) {
@@ -257,6 +257,8 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
     return result;
   }
 }
+
+bool usesResampling(const RemeshOptions& options) { return effective(options).resample; }
 
 RemeshOptions withoutResampling(RemeshOptions options) {
   options.resample = false;

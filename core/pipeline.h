@@ -64,6 +64,7 @@ struct RemeshResult {
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
 // run fails with the first pass (options.resample), it is made again without it.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
+bool usesResampling(const RemeshOptions& options);  // false with relocate or the input's vertices
 RemeshOptions withoutResampling(RemeshOptions options);
 // The problem an Error states, without the "<name>: " it starts with and any "; try ..." advice.
 std::string problemOf(const Error& e, const std::string& name);

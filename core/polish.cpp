@@ -540,16 +540,6 @@ bool turnsOver(const Mesh& m, const Rings& rings, int v, const Vec3& to) {
   return false;
 }
 
-// The vertex nearest to p among those `allowed`, or -1.
-template <class Allowed>
-int nearestVertex(const Mesh& m, const Vec3& p, const Allowed& allowed) {
-  int best = -1;
-  for (int v = 0; v < m.vertexCount(); ++v)
-    if (allowed(v) && (best < 0 || (m.points[v] - p).squaredNorm() < (m.points[best] - p).squaredNorm()))
-      best = v;
-  return best;
-}
-
 double meanEdgeLength(const Mesh& m) {
   double sum = 0;
   for (const Triangle& t : m.triangles)
@@ -568,25 +558,39 @@ int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
   // unless the tip is more than an edge length away: a result that cuts that much off is
   // wrong whatever its angles (a thin horn's tip is a thin cone).
   const double floor = std::min(30.0, smallestAngleAround(m, std::vector<bool>(m.vertexCount(), true)));
-  std::vector<bool> snapped(m.vertexCount(), false);
+  // Each try relaxes a copy of the whole mesh: a bounded number per round, and a tip that
+  // was refused is not tried again.
+  constexpr int kTriesPerRound = 32;
+  std::vector<bool> snapped(m.vertexCount(), false), refused(surface.vertexCount(), false);
   int count = 0;
   for (int round = 0; round < rounds; ++round) {
     const SurfaceProjection result(m);
     std::vector<std::pair<double, int>> far;  // squared distance, input vertex
     for (int i = 0; i < surface.vertexCount(); ++i) {
       const double d2 = result.squaredDistance(surface.points[i]);
-      if (d2 > 0.25 * spacing * spacing) far.emplace_back(d2, i);
+      if (d2 > 0.25 * spacing * spacing && !refused[i]) far.emplace_back(d2, i);
     }
     if (far.empty()) break;
     std::sort(far.rbegin(), far.rend());
     std::vector<Vec3> tips;  // this round's, two edge lengths apart
     for (const auto& [squared, i] : far) {
+      if (static_cast<int>(tips.size()) == kTriesPerRound) break;
       const Vec3& tip = surface.points[i];
       if (std::any_of(tips.begin(), tips.end(), [&](const Vec3& t) { return (t - tip).norm() < 2 * spacing; }))
         continue;
       tips.push_back(tip);
-      const int v = nearestVertex(m, tip, [&](int w) { return !border[w] && !snapped[w]; });
-      if (v < 0) break;
+      refused[i] = true;  // unless kept below
+      // The nearest free corner of the result's triangle closest to the tip: of the part of
+      // the result that cut it off, not of a neighbouring part nearer in space.
+      Triangle corners = m.triangles[result.closestTriangle(tip)];
+      std::sort(corners.begin(), corners.end(), [&](int a, int b) {
+        return (m.points[a] - tip).squaredNorm() < (m.points[b] - tip).squaredNorm();
+      });
+      const auto free = std::find_if(corners.begin(), corners.end(), [&](int w) { return !border[w] && !snapped[w]; });
+      if (free == corners.end()) continue;
+      const int v = *free;
+      // The snap may turn no triangle over; the relaxation and the flips after it never do (each
+      // move and flip checks its triangles).
       if (turnsOver(m, Rings(m), v, tip)) continue;
       // Tried on a copy, with the two rings around it relaxed on the surface (the tip stays).
       std::vector<bool> around(m.vertexCount(), false);
@@ -597,9 +601,12 @@ int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
       Mesh tried = m;
       tried.points[v] = tip;
       relaxOnSurface(tried, movable, projection, 3, /*local=*/true);
-      if (std::sqrt(squared) > spacing || smallestAngleAround(tried, around) >= floor) {
+      // Flips at the rim of the two rings make triangles one ring further out: check those too.
+      const std::vector<bool> changed = withNeighbours(tried, around);
+      if (std::sqrt(squared) > spacing || smallestAngleAround(tried, changed) >= floor) {
         m = std::move(tried);
         snapped[v] = true;
+        refused[i] = false;
         ++count;
       }
     }

@@ -61,11 +61,13 @@ void polishSeams(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh
 // Where a thin tip of the surface (a horn, a finger, an ear) ends between the result's vertices,
 // the result cuts it off, and the Hausdorff distance is what it cut. In each round the input
 // vertices farther than half an edge length from the result, farthest first and two edge
-// lengths apart, each take the nearest inside vertex of the result, which is snapped there and stays
-// while the two rings around it relax on `surface` (as polishSeams does, flipping only there).
-// A snap is kept if no triangle turns over and the smallest angle around stays at the lesser of
-// the mesh's smallest angle and 30 degrees, or, whatever the angles, if the tip was more than
-// an edge length away. Returns how many vertices were snapped.
+// lengths apart (32 at most), each take the nearest inside corner of the result's triangle
+// closest to them, which is snapped there and stays while the two rings around it relax on
+// `surface` (as polishSeams does, flipping only there). A snap is made if it turns none of the
+// vertex's triangles over, and kept if the smallest angle of the triangles around stays at the
+// lesser of the mesh's smallest angle and 30 degrees, or, whatever the angles, if the tip was
+// more than an edge length away. A refused tip is not tried again. Returns how many vertices
+// were snapped.
 int snapToTips(Mesh& result, const Mesh& surface, int rounds = 3);
 
 // Flips interior edges whose two opposite angles sum to more than 180 degrees (the 3D

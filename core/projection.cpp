@@ -42,6 +42,11 @@ Vec3 SurfaceProjection::closestPoint(const Vec3& p) const {
   return Vec3(c.x(), c.y(), c.z());
 }
 
+int SurfaceProjection::closestTriangle(const Vec3& p) const {
+  const auto closest = tree_->tree.closest_point_and_primitive(point(p));
+  return static_cast<int>(closest.second - tree_->triangles.cbegin());
+}
+
 double SurfaceProjection::squaredDistance(const Vec3& p) const {
   return tree_->tree.squared_distance(point(p));
 }

@@ -15,6 +15,8 @@ class SurfaceProjection {
   SurfaceProjection(SurfaceProjection&&) noexcept;
 
   Vec3 closestPoint(const Vec3& p) const;
+  // The index of the surface's triangle that holds closestPoint(p).
+  int closestTriangle(const Vec3& p) const;
   double squaredDistance(const Vec3& p) const;  // thread-safe, as closestPoint
 
  private:

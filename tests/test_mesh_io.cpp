@@ -461,21 +461,32 @@ TEST(MeshIoErrors, ZeroAreaFace) {
 TEST(MeshIoErrors, AFaceOnTwoVerticesAtTheSamePosition) {
   expectFileError("duplicate.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 1 3 2\n",
                   "face 1 has zero area: its vertices 1 and 3 are at the same position");
-  // Two faces on top of each other, through a copy of a vertex: they face opposite ways.
-  expectFileError("overlap.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 0 3 2\n",
-                  "opposite orientations");
 }
 
-// A surface may touch itself at a point (CGAL's cow.off does, once): each copy has its own
-// faces, so the mesh is a manifold; it is read, with a note.
-TEST(MeshIo, VerticesAtTheSamePositionWithTheirOwnFacesAreKept) {
+// On a border, two vertices at one place are an unwelded seam or a crack (here two faces on top
+// of each other through a copy of a vertex, and two triangles meeting at a corner).
+TEST(MeshIoErrors, BorderVerticesAtTheSamePosition) {
+  expectFileError("overlap.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 0 3 2\n",
+                  "vertices 1 and 3 are at the same position on a border");
+  expectFileError("corner.off",
+                  "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 3 4 5\n",
+                  "vertices 0 and 3 are at the same position on a border");
+}
+
+// A closed surface may touch itself at a point (CGAL's cow.off does, once): each copy has its
+// own faces, so the mesh is a manifold; it is read, with a note. Here two tetrahedra touching
+// at a corner.
+TEST(MeshIo, InsideVerticesAtTheSamePositionWithTheirOwnFacesAreKept) {
   const std::string path = writeFile(
-      "touching.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 3 4 5\n");
+      "touching.off",
+      "OFF\n8 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 0 0\n-1 0 0\n0 -1 0\n0 0 -1\n"
+      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+      "3 4 5 6\n3 4 7 5\n3 4 6 7\n3 5 7 6\n");
   const ReadResult result = readMesh(path);
-  EXPECT_EQ(result.mesh.vertexCount(), 6);
+  EXPECT_EQ(result.mesh.vertexCount(), 8);
   ASSERT_EQ(result.notes.size(), 1u);
-  EXPECT_EQ(result.notes[0], path + ": vertices 0 and 3 are at the same position, each with its "
-                                    "own faces: the surface touches itself there");
+  EXPECT_EQ(result.notes[0], path + ": vertices 0 and 4 are at the same position, each with its "
+                                    "own faces inside the surface: it touches itself there");
 }
 
 TEST(MeshIoErrors, NonManifoldEdge) {

@@ -228,6 +228,19 @@ TEST(Polish, AVertexIsSnappedOntoATipTheResultCutOff) {
   for (const Vec3& p : result.points) EXPECT_LT(surface.squaredDistance(p), 1e-20);
 }
 
+// A low bump (under an edge length from the result) is snapped to only where the triangles
+// around keep their smallest angle at 30 degrees or more (the grid's is 45).
+TEST(Polish, ASnapCloserThanAnEdgeLengthKeepsTheAngles) {
+  Mesh input = test::grid(40);
+  const int top = 20 * 41 + 20;  // (0.5, 0.5)
+  input.points[top].z() = 0.1;   // the grid's edges are 0.125 and 0.177 long
+  Mesh result = test::grid(8);
+  const double before = measureFidelity(result, input).hausdorffPercent;
+  EXPECT_EQ(snapToTips(result, input), 1);
+  EXPECT_GE(measureQuality(result).minAngle, 30.0);
+  EXPECT_LT(measureFidelity(result, input).hausdorffPercent, 0.5 * before);
+}
+
 // A result that already follows its input has no tip to snap to: it is left as it is.
 TEST(Polish, NothingIsSnappedWhereTheResultFollowsTheInput) {
   const Mesh input = test::grid(8);
