@@ -35,6 +35,7 @@ constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFla
 // Seams (where a surface that is not a disk was cut open) in both views: purple, no other
 // layer uses it.
 constexpr ImU32 kSeamColor = IM_COL32(150, 40, 190, 255);
+constexpr ImU32 kFarthestColor = IM_COL32(230, 30, 30, 255);  // where the result strays most
 
 ImU32 rgb(float r, float g, float b, float a = 1.0f) {
   return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a));
@@ -358,6 +359,7 @@ void Inspector::exported(const std::string& error) {
 
 void OpeningView::applyTo(Inspector& inspector) const {
   if (iteration >= 0) inspector.setIteration(iteration);
+  inspector.showFinal(final);
   for (int cell : cells) inspector.pinCell(cell);
   for (int triangle : triangles) inspector.pinTriangle(triangle);
   if (!camera.empty()) inspector.setCamera(camera);
@@ -418,7 +420,11 @@ void Inspector::uploadMesh() {
   const IterationView& view = replay_->view(iteration_);
   const Layers shown = layers();
   // The mesh the user opened; from a recording alone, the mesh that was parameterized.
-  const Mesh& mesh = !shown.input3D ? view.output : input_ ? *input_ : replay_->recording().input;
+  const bool final = finalShown();
+  const Mesh& mesh = final            ? result_.output
+                     : !shown.input3D ? view.output
+                     : input_         ? *input_
+                                      : replay_->recording().input;
   std::vector<std::array<float, 3>> colors;
   for (const Triangle& t : mesh.triangles) {
     if (!colorByAngle_) {
@@ -434,7 +440,7 @@ void Inspector::uploadMesh() {
   const Mesh& cut = !shown.input3D ? view.output : replay_->recording().input;
   seam3D_.clear();
   std::set<std::pair<int, int>> seams;
-  if (!replay_->seams().empty())
+  if (!replay_->seams().empty() && !final)  // the final result is stitched: no seam is apart
     for (const auto& e : !shown.input3D ? seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut))
                                         : replay_->seams())
       seams.insert(e);
@@ -445,13 +451,14 @@ void Inspector::uploadMesh() {
         seam3D_.push_back({a, b, (b - a).cross(c - a).normalized()});
       }
   std::vector<Marker> sites;
-  if (shown.sites3D)
+  if (shown.sites3D && !final)
     for (const Vec3& s : view.liftedSites)
       sites.push_back(marker(s, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
   renderer_.uploadMarkers(sites);
   uploadedIteration_ = iteration_;
   uploadedInput_ = shown.input3D;
   uploadedSites_ = shown.sites3D;
+  uploadedFinal_ = final;
   uploadedMethod_ = replay_->method();
 }
 
@@ -515,6 +522,10 @@ void Inspector::frame() {
   plotsPane(ImVec2(left, plotsTop), ImVec2(display.x - left, plotsHeight));
   timelinePane(ImVec2(left, plotsTop + plotsHeight), ImVec2(display.x - left, timelineHeight));
   if (bigFont) ImGui::PopFont();
+}
+
+bool Inspector::finalShown() const {
+  return showFinal_ && !stage_ && !result_.output.triangles.empty();
 }
 
 Layers Inspector::layers() const {
@@ -686,6 +697,9 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::TextUnformatted("3D view");
   bool showInput = showInput_;
   if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
+  if (result_.output.triangles.empty()) ImGui::BeginDisabled();
+  ImGui::Checkbox("show the final result", &showFinal_);
+  if (result_.output.triangles.empty()) ImGui::EndDisabled();
   bool byAngle = colorByAngle_;
   if (ImGui::Checkbox("colour by minimum angle", &byAngle)) {
     colorByAngle_ = byAngle;
@@ -866,12 +880,12 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
 
   const Layers shown = layers();
   if (uploadedIteration_ != iteration_ || uploadedInput_ != shown.input3D ||
-      uploadedSites_ != shown.sites3D ||
+      uploadedSites_ != shown.sites3D || uploadedFinal_ != finalShown() ||
       uploadedMethod_ != replay_->method())
     uploadMesh();
 
   if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-      io.MouseDragMaxDistanceSqr[0] < 9.0f)
+      io.MouseDragMaxDistanceSqr[0] < 9.0f && !finalShown())
     pick3D(io.MousePos, p0, extent);  // a click, not the end of an orbit
   if (fitPending_) {
     camera_.distance = fittingDistance(extent);
@@ -901,8 +915,16 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     return true;
   };
   drawSeams3D(dl, toScreen, cameraMatrices(extent).second);
-  selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen,
-                    !shown.input3D);
+  if (finalShown()) {
+    ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip
+    if (result_.fidelity.samples > 0 && toScreen(result_.fidelity.farthestPoint, at)) {
+      const float r = presentation_ ? 14.0f : 9.0f;
+      dl->AddCircle(at, r, kFarthestColor, 24, presentation_ ? 4.0f : 2.5f);
+    }
+  } else {
+    selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_),
+                      toScreen, !shown.input3D);
+  }
   dl->PopClipRect();
 
   if (colorByAngle_)
@@ -910,10 +932,13 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
       const auto c = angleColor(60.0 * t);
       return rgb(c[0], c[1], c[2]);
     });
-  dl->AddText(ImVec2(p0.x + 8, p0.y + 4), rgb(0.1f, 0.1f, 0.1f),
-              shown.input3D ? (input_ ? "input mesh" : "the mesh that was parameterized")
-                            : (std::string("result at iteration ") + std::to_string(iteration_) +
-                                           " (" + toString(replay_->method()) + ")").c_str());
+  const std::string label =
+      finalShown()    ? format("final result (red ring: farthest from the input, %.2f%%)",
+                               result_.fidelity.hausdorffPercent)
+      : shown.input3D ? (input_ ? "input mesh" : "the mesh that was parameterized")
+                      : "result at iteration " + std::to_string(iteration_) + " (" +
+                            toString(replay_->method()) + ")";
+  dl->AddText(ImVec2(p0.x + 8, p0.y + 4), rgb(0.1f, 0.1f, 0.1f), label.c_str());
   ImGui::End();
 }
 

@@ -62,6 +62,7 @@ struct OpeningView {
   bool presentation = false;          // classroom mode
   std::optional<Stage> stage;         // show this stage of the lesson, with its caption
   bool compareSolvers = false;        // also the other solver's curves (Inspector::compareSolvers)
+  bool final = false;                 // the 3D pane shows the final result (showFinal)
   void applyTo(Inspector& inspector) const;
 };
 
@@ -80,6 +81,10 @@ class Inspector {
   void setPresentation(bool on) { presentation_ = on; }
   // Shows one stage of the lesson (its layers and caption); none: everything, no caption.
   void showStage(std::optional<Stage> stage) { stage_ = stage; }
+  // The 3D pane shows the final result (polished, stitched, snapped: what remesh writes) with a
+  // red ring where it is farthest from the input, instead of an iteration's mesh. Only once
+  // the run has finished; off in a lesson stage.
+  void showFinal(bool on) { showFinal_ = on; }
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
   // The CPU work of the current iteration's panes (its cells, lifted mesh, metrics and cell
@@ -189,6 +194,8 @@ class Inspector {
   std::vector<SeamEdge> seam3D_;  // of the mesh uploaded to the 3D pane
   int edgesIteration_ = -1;
   bool showInput_ = false, uploadedInput_ = false, uploadedSites_ = false;
+  bool showFinal_ = false, uploadedFinal_ = false;
+  bool finalShown() const;  // showFinal_, and there is a final result, and no lesson stage
   bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;
   bool playing_ = false, showTimings_ = true;
   float playSpeed_ = 10.0f, playClock_ = 0.0f;

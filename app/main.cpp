@@ -173,6 +173,9 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--iterations", iterations,
                          "With --screenshot: FIRST:LAST, one numbered PNG per iteration");
   inspectCmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)");
+  inspectCmd->add_flag("--final", shot.view.final,
+                       "The 3D pane shows the final result (what remesh writes), with a red ring "
+                       "where it is farthest from the input");
   inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)");
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
                          "Pin this triangle of the result (repeatable)");

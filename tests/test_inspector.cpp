@@ -234,3 +234,23 @@ TEST(Inspector, TheFirstViewFitsALongShape) {
   EXPECT_LT(right, 615);
   EXPECT_GT(right - left, 150);
 }
+
+// With --final the 3D pane shows the final result, and a red ring where it is farthest from
+// the input (the Hausdorff distance); an iteration's mesh has no ring.
+TEST(Inspector, TheFinalResultShowsWhereItStraysFarthest) {
+  const std::string iteration = test::tempPath("iteration.png"), final = test::tempPath("final.png");
+  const std::string common = " --no-timings --size 960x600 --screenshot ";
+  ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + common + iteration), 0);
+  ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + " --final" + common + final), 0);
+  auto redIn3D = [](const Picture& p) {
+    int red = 0;  // inside the 3D pane, right of its colour bar (whose 0 degrees is red)
+    for (int y = 30; y < 370; ++y)
+      for (int x = 330; x < 620; ++x) {
+        const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+        red += c[0] > 200 && c[1] < 70 && c[2] < 70;
+      }
+    return red;
+  };
+  EXPECT_EQ(redIn3D(readPng(iteration)), 0);
+  EXPECT_GT(redIn3D(readPng(final)), 20);
+}
