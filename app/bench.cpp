@@ -118,6 +118,9 @@ void runBench(const BenchOptions& options) {
       RemeshOptions unpolished;  // shows what the default's last clean-up buys
       unpolished.polish = -1;
       rows.push_back(lloydscopeRow(name(path), size, "lloydscope --polish -1", input, unpolished));
+      RemeshOptions unsnapped;  // shows what the snaps to tips buy
+      unsnapped.snapToTips = false;
+      rows.push_back(lloydscopeRow(name(path), size, "lloydscope --no-snap", input, unsnapped));
       RemeshOptions direct;  // shows what parameterizing a resampled surface buys
       direct.resample = false;
       rows.push_back(lloydscopeRow(name(path), size, "lloydscope --no-resample", input, direct));

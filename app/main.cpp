@@ -24,7 +24,7 @@ struct RemeshArgs {
   int sites = 0, simplify = 0, polish = 3;
   int maxIterations = 0;
   double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1, floor = 0.1;
-  bool json = false, noFidelity = false, noResample = false;
+  bool json = false, noFidelity = false, noResample = false, noSnap = false;
 };
 
 // The preset first, then whatever the user named explicitly on top of it.
@@ -57,6 +57,7 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   o.simplifyTo = a.simplify;
   if (cmd.count("--polish")) o.polish = a.polish;
   if (a.noResample) o.resample = false;
+  if (a.noSnap) o.snapToTips = false;
   if (cmd.count("--polish-target")) o.polishTarget = parsePolishTarget(a.polishTarget);
   return o;
 }
@@ -117,6 +118,9 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
       ->check(CLI::Range(0.0, 100.0));
   cmd.add_flag("--no-resample", r.noResample,
                "Parameterize the input itself, not a rough first remeshing of it");
+  cmd.add_flag("--no-snap", r.noSnap,
+               "Leave out the polish's last step, which snaps a vertex onto each thin tip of the "
+               "input the result would cut off");
   cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
 }
 

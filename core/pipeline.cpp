@@ -172,7 +172,7 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
   }
   const Mesh& original = original_ ? *original_ : input_;
   if (!cut_) {
-    if (options_.polish > 0) snappedTips = snapToTips(output.mesh, original);
+    if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(output.mesh, original);
     return std::move(output.mesh);
   }
   // Both copies of every seam sample are at the same place: one vertex again.
@@ -180,7 +180,7 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
   Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
   if (options_.polish > 0) polishSeams(stitched, seamVertex, input_, options_.polish);
   removeFlatTriangles(stitched);
-  if (options_.polish > 0) snappedTips = snapToTips(stitched, original);
+  if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(stitched, original);
   const Topology& want = cut_->topology;
   try {
     validateMesh(stitched, name_);
@@ -288,7 +288,7 @@ std::string describe(const RemeshOptions& o) {
     << " max-iterations=" << o.lloyd.maxIterations;
   if (o.method == RemeshMethod::Retriangulate) {
     s << " polish=" << o.polish;
-    if (o.polish > 0) s << " polish-target=" << toString(o.polishTarget);
+    if (o.polish > 0) s << " polish-target=" << toString(o.polishTarget) << " snap=" << (o.snapToTips ? "yes" : "no");
   }
   return s.str();
 }

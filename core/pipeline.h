@@ -34,6 +34,7 @@ struct RemeshOptions {
   // flips and k relaxation passes on the surface.
   int polish = 3;
   PolishTarget polishTarget = PolishTarget::Centroid;
+  bool snapToTips = true;  // the polish's last step (core/polish: snapToTips), when polish > 0
 };
 
 // The reference report's settings: discrete authalic map with a square border, uniform density,

@@ -1,4 +1,5 @@
 // The command line as a user meets it: exit codes, one-line errors, JSON, files left alone.
+#include "mesh_io.h"
 #include "test_support.h"
 
 #include <nlohmann/json.hpp>
@@ -36,6 +37,25 @@ void expectCleanFailure(const std::string& file, const std::string& contents,
 const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 }  // namespace
+
+// --no-snap leaves the snaps to tips out: on a spike the result cuts off, the distance stays.
+TEST(Cli, NoSnapLeavesTheTipsAlone) {
+  Mesh spike = test::grid(40);
+  spike.points[20 * 41 + 20].z() = 0.3;
+  const std::string in = test::tempPath("spike.off"), out = test::tempPath("spike_out.off");
+  writeMesh(spike, in);
+  auto run = [&](const std::string& extra) {
+    const CliRun r = runCli("remesh " + in + " -o " + out + " --sites 100 --json" + extra);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto snapped = run(""), unsnapped = run(" --no-snap");
+  EXPECT_GE(snapped["snapped_tips"].get<int>(), 1);
+  EXPECT_EQ(unsnapped["snapped_tips"].get<int>(), 0);
+  EXPECT_FALSE(unsnapped["settings"]["snap_to_tips"].get<bool>());
+  EXPECT_LT(snapped["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>(),
+            unsnapped["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>());
+}
 
 TEST(Cli, TheCurvatureDensitysFloorIsAnOption) {
   const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") +
@@ -163,7 +183,8 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
   EXPECT_NE(table.find("time ratio"), std::string::npos);
   EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --polish -1 |"), std::string::npos) << table;
   EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --no-resample |"), std::string::npos) << table;
-  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 5) << rows;  // header and four rows
+  EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --no-snap |"), std::string::npos) << table;
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 6) << rows;  // header and five rows
   EXPECT_EQ(rows.rfind("model,size,method,vertices", 0), 0u);
 }
 
