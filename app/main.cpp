@@ -91,7 +91,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                  "where the polish moves each vertex: centroid (default, of its ring) or "
                  "circumcenter (optimal Delaunay)");
   cmd.add_option("--simplify", r.simplify,
-                 "Quadric edge collapse to N vertices first (the boundary stays in place)");
+                 "Quadric edge collapse to N vertices first (the boundary stays in place), and "
+                 "N vertices in the result (a coarser input is remeshed finer)");
   cmd.add_option("--preset", r.preset,
                  "best (default) or reference: the report's settings (authalic, square border, "
                  "uniform density, input vertices as sites, plain Lloyd)");

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -201,6 +202,19 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
     throw Error(name_ + ": the remeshed seams did not stitch back into " + want.describe() +
                 " (" + e.what() + "); cutting this surface open is not reliable yet");
   }
+}
+
+int RemeshSession::siteCount() const {
+  if (options_.sites.count > 0) return options_.sites.count;
+  if (options_.simplifyTo <= 0) return input_.vertexCount();
+  // A cut surface's disk holds each seam vertex twice: as many more sites, so that the result
+  // has simplifyTo vertices once stitched.
+  const int surfaceVertices =
+      cut_ && !cut_->original.empty()
+          ? *std::max_element(cut_->original.begin(), cut_->original.end()) + 1
+          : input_.vertexCount();
+  return static_cast<int>(std::lround(options_.simplifyTo * static_cast<double>(input_.vertexCount()) /
+                                      std::max(surfaceVertices, 1)));
 }
 
 SiteOptions RemeshSession::seamSites() const {

@@ -19,7 +19,9 @@
 namespace lloydscope {
 
 struct RemeshOptions {
-  int simplifyTo = 0;  // > 0: quadric edge collapse to this many vertices first
+  // > 0: quadric edge collapse to this many vertices first, and as many in the result (without
+  // sites.count): a coarser input is remeshed finer, to that size too.
+  int simplifyTo = 0;
   // Parameterize a rough first remeshing of the input instead of the input (core/resample):
   // its conformal map holds where the input's slivers fold it. Not with relocate, nor with
   // the input's vertices as sites.
@@ -94,10 +96,9 @@ class RemeshSession {
   Mesh buildOutput(int& snappedTips) const;
   // The site options with the seams of a cut surface marked.
   SiteOptions seamSites() const;
-  // How many sites the options ask for (0 in them: as many as the input has vertices).
-  int siteCount() const {
-    return options_.sites.count > 0 ? options_.sites.count : input_.vertexCount();
-  }
+  // How many sites the options ask for: 0 in them is the size simplifyTo asks for (a coarser
+  // input is refined to it), or else as many as the input has vertices.
+  int siteCount() const;
   // The mesh that is parameterized: the resampled surface, or the input itself.
   const Mesh& surface() const { return resampled_ ? resampled_->mesh.mesh : input_; }
 

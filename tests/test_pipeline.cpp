@@ -162,6 +162,19 @@ TEST(Pipeline, SimplifiesFirstWhenAsked) {
   EXPECT_NE(describe(o).find("simplify=400"), std::string::npos);
 }
 
+// --simplify N asks for N vertices: a coarser input is not simplified but remeshed finer, to N
+// (the result of `remesh pig.off --simplify 2000` had the pig's 468 vertices).
+TEST(Pipeline, ACoarserInputIsRemeshedToTheSimplifySize) {
+  const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;  // 1000 vertices
+  RemeshOptions o;
+  o.simplifyTo = 1500;
+  o.lloyd.maxIterations = 20;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(input, o, "bumpy");
+  EXPECT_EQ(r.recording.input.vertexCount(), 1000);  // not simplified: the resampled surface
+  EXPECT_NEAR(r.output.vertexCount(), 1500, 15);
+}
+
 TEST(Cli, SimplifyWritesTheTargetSize) {
   const std::string out = test::tempPath("simplified.off");
   EXPECT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " simplify " + test::assetPath("bumpy_disk.off") +
