@@ -20,9 +20,6 @@ namespace lloydscope {
 
 namespace {
 
-// Where the run was made without its first pass (remesh(), startSession()), and why.
-const std::string kWithoutResampling = "Made without the first resampling, which failed: ";
-
 VkCommandBuffer gCommandBuffer = VK_NULL_HANDLE;
 
 // No backgrounds: the panes tile the window and the frame is cleared to ImGui's window colour.
@@ -136,7 +133,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
   if (!result_.resampleDropped.empty())
-    message_ = kWithoutResampling + result_.resampleDropped;
+    message_ = withoutResamplingText(result_.resampleDropped);
   std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
   iteration_ = replay_->iterationCount() - 1;
@@ -175,7 +172,7 @@ void Inspector::startSession() {
       if (!usesResampling(options_)) throw;
       // As remesh() does: without the first pass where it makes the run fail.
       session_ = std::make_unique<RemeshSession>(*input_, withoutResampling(options_), meshName_);
-      message_ = kWithoutResampling + problemOf(e, meshName_);
+      message_ = withoutResamplingText(problemOf(e, meshName_));
     }
     session_->step();  // the panes need one iteration to show
     Recording header = session_->header();

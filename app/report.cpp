@@ -106,6 +106,10 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"total", r.ms.total}}}};
 }
 
+std::string withoutResamplingText(const std::string& problem) {
+  return "Made without the first resampling (as with --no-resample), which failed: " + problem;
+}
+
 std::string farthestPointText(const Fidelity& f) {
   const Vec3& p = f.farthestPoint;
   return "(" + format("%.4g", p.x()) + ", " + format("%.4g", p.y()) + ", " +
@@ -142,9 +146,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
-  if (!r.resampleDropped.empty())
-    out << "Made without the first resampling (as with --no-resample), which failed: "
-        << r.resampleDropped << "\n";
+  if (!r.resampleDropped.empty()) out << withoutResamplingText(r.resampleDropped) << "\n";
   if (r.cut.seamEdges > 0)
     out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
         << " slits through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)

@@ -17,6 +17,9 @@ nlohmann::json toJson(const Fidelity& f);
 nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& options);
 nlohmann::json recordingSummary(const Recording& r);
 
+// "Made without the first resampling ..., which failed: <problem>" (RemeshResult::resampleDropped).
+std::string withoutResamplingText(const std::string& problem);
+
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);

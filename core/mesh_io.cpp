@@ -838,8 +838,10 @@ void checkVertexFans(const Mesh& mesh, const std::string& name, const Numbering&
   }
 }
 
-// Everything that needs positions and connectivity; indices are known to be valid.
-void checkSurface(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
+// Everything that needs positions and connectivity; indices are known to be valid. Returns
+// the inside vertices it allowed at the same position (coincidentVertices()).
+std::vector<std::pair<int, int>> checkSurface(const Mesh& mesh, const std::string& name,
+                                              const Numbering& numbering) {
   // A face on two vertices at the same position has zero area: said as such first.
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle& f = mesh.triangles[t];
@@ -850,12 +852,14 @@ void checkSurface(const Mesh& mesh, const std::string& name, const Numbering& nu
   // (CGAL's cow does once). On a border they are an unwelded seam, a crack or a triangle soup,
   // whose pieces would be remeshed apart: refused.
   const std::vector<bool> border = vertexEdges(mesh).onBoundary;
-  for (const auto& [a, b] : coincidentVertices(mesh))
+  const std::vector<std::pair<int, int>> coincident = coincidentVertices(mesh);
+  for (const auto& [a, b] : coincident)
     if (border[a] || border[b])
       fail(name, "vertices " + str(numbering.vertex(a)) + " and " + str(numbering.vertex(b)) +
                      " are at the same position on a border (an unwelded seam or a crack)");
   checkEdges(mesh, name, numbering);
   checkVertexFans(mesh, name, numbering);
+  return coincident;
 }
 
 // ------------------------------------------------------------------------------ triangulation
@@ -995,15 +999,14 @@ ReadResult readMesh(const std::string& path) {
     triangulatePolygon(v, n, raw.points, result.mesh.triangles);
     faceOfTriangle.resize(result.mesh.triangles.size(), f);
   }
-  checkSurface(result.mesh, path, Numbering{raw.base, &faceOfTriangle});
+  const Numbering numbering{raw.base, &faceOfTriangle};
+  const auto coincident = checkSurface(result.mesh, path, numbering);
 
   if (polygons > 0) {
     result.notes.push_back(path + ": " + plural(polygons, "polygon", "polygons") + " with more than 3 vertices " +
                            (polygons == 1 ? "was" : "were") + " triangulated");
   }
-  const auto coincident = coincidentVertices(result.mesh);
   if (!coincident.empty()) {
-    const Numbering numbering{raw.base, &faceOfTriangle};
     const std::string first = str(numbering.vertex(coincident[0].first)) + " and " +
                               str(numbering.vertex(coincident[0].second));
     result.notes.push_back(

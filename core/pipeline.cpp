@@ -171,9 +171,8 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
     o.seams = cut_.has_value();
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
-  const Mesh& original = original_ ? *original_ : input_;
   if (!cut_) {
-    if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(output.mesh, original);
+    if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(output.mesh, original());
     return std::move(output.mesh);
   }
   // Both copies of every seam sample are at the same place: one vertex again.
@@ -181,7 +180,7 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
   Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
   if (options_.polish > 0) polishSeams(stitched, seamVertex, input_, options_.polish);
   removeFlatTriangles(stitched);
-  if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(stitched, original);
+  if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(stitched, original());
   const Topology& want = cut_->topology;
   try {
     validateMesh(stitched, name_);
@@ -237,11 +236,9 @@ RemeshResult RemeshSession::finish() {
   Stopwatch stage;
   result.output = buildOutput(result.snappedTips);
   result.ms.remesh = stage.lap();
-  // Against what the user gave, not its simplification.
-  const Mesh& original = original_ ? *original_ : input_;
-  result.before = measureQuality(original);
+  result.before = measureQuality(original());
   result.after = measureQuality(result.output);
-  if (options_.measureFidelity) result.fidelity = measureFidelity(result.output, original);
+  if (options_.measureFidelity) result.fidelity = measureFidelity(result.output, original());
   result.ms.metrics = stage.lap();
   result.ms.total = result.ms.simplify + result.ms.cut + result.ms.resample + result.ms.parameterize + result.ms.density + result.ms.sites +
                     result.ms.lloyd + result.ms.remesh + result.ms.metrics;

@@ -101,6 +101,8 @@ class RemeshSession {
   int siteCount() const;
   // The mesh that is parameterized: the resampled surface, or the input itself.
   const Mesh& surface() const { return resampled_ ? resampled_->mesh.mesh : input_; }
+  // What the user gave: the result is measured and snapped against it, not its simplification.
+  const Mesh& original() const { return original_ ? *original_ : input_; }
 
   RemeshOptions options_;
   std::string name_;  // of the input, for error messages

@@ -573,6 +573,7 @@ int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
     if (far.empty()) break;
     std::sort(far.rbegin(), far.rend());
     std::vector<Vec3> tips;  // this round's, two edge lengths apart
+    Rings rings(m);          // rebuilt when a snap changes the mesh
     for (const auto& [squared, i] : far) {
       if (static_cast<int>(tips.size()) == kTriesPerRound) break;
       const Vec3& tip = surface.points[i];
@@ -591,7 +592,7 @@ int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
       const int v = *free;
       // The snap may turn no triangle over; the relaxation and the flips after it never do (each
       // move and flip checks its triangles).
-      if (turnsOver(m, Rings(m), v, tip)) continue;
+      if (turnsOver(m, rings, v, tip)) continue;
       // Tried on a copy, with the two rings around it relaxed on the surface (the tip stays).
       std::vector<bool> around(m.vertexCount(), false);
       around[v] = true;
@@ -605,6 +606,7 @@ int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
       const std::vector<bool> changed = withNeighbours(tried, around);
       if (std::sqrt(squared) > spacing || smallestAngleAround(tried, changed) >= floor) {
         m = std::move(tried);
+        rings = Rings(m);
         snapped[v] = true;
         refused[i] = false;
         ++count;
