@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 namespace lloydscope {
@@ -430,14 +431,61 @@ Vec3 SurfaceMap::at(const Location& l) const {
          l.weights[2] * mesh.points[t[2]];
 }
 
+namespace {
+
+// Splits inside edge (a, b) at its parameter midpoint: its two triangles become four.
+void splitEdge(LiftedMesh& lm, const SurfaceMap& surface, int a, int b) {
+  Mesh& m = lm.mesh;
+  auto find = [&](int from, int to) {  // the face with the directed edge from -> to, rotated to start there
+    for (int f = 0; f < m.faceCount(); ++f)
+      for (int k = 0; k < 3; ++k)
+        if (m.triangles[f][k] == from && m.triangles[f][(k + 1) % 3] == to) return std::pair{f, m.triangles[f][(k + 2) % 3]};
+    return std::pair{-1, -1};
+  };
+  const auto [f1, c] = find(a, b);
+  const auto [f2, d] = find(b, a);
+  if (f1 < 0 || f2 < 0) return;
+  const Location l = surface.domain.locate(0.5 * (lm.uv[a] + lm.uv[b]));
+  const int mid = m.vertexCount();
+  m.points.push_back(surface.at(l));
+  lm.uv.push_back(surface.domain.pointAt(l));
+  m.triangles[f1] = {a, mid, c};
+  m.triangles.push_back({mid, b, c});
+  m.triangles[f2] = {b, mid, d};
+  m.triangles.push_back({mid, a, d});
+}
+
+// Where stitching would make two inside edges of the disk one edge of four triangles (an inside
+// vertex joined to two copies of one seam sample, which no flip can undo at a node of the cut
+// graph, where three copies or more meet and flips would join border vertices), all but one of
+// them are split: the vertex is then joined to that sample once.
+// `partners` (seamPartners() of the disk) grows with the new vertices.
+void splitDoubledEdges(LiftedMesh& lm, const SurfaceMap& surface, std::vector<int>& partners) {
+  std::set<std::pair<int, int>> directed;
+  for (const Triangle& t : lm.mesh.triangles)
+    for (int k = 0; k < 3; ++k) directed.emplace(t[k], t[(k + 1) % 3]);
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> byStitchedEdge;
+  for (const auto& [a, b] : directed)
+    if (a < b && directed.count({b, a}))
+      byStitchedEdge[std::minmax(partners[a], partners[b])].emplace_back(a, b);
+  for (const auto& [stitched, edges] : byStitchedEdge)
+    for (size_t i = 1; i < edges.size(); ++i) splitEdge(lm, surface, edges[i].first, edges[i].second);
+  while (partners.size() < lm.uv.size()) partners.push_back(static_cast<int>(partners.size()));
+}
+
+}  // namespace
+
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options) {
   // The border stays as it is, so its stitching partners do too.
-  const std::vector<int> partners =
+  std::vector<int> partners =
       options.seams ? seamPartners(mesh.mesh, kSeamTolerance * boundingBoxDiagonal(mesh.mesh))
                     : std::vector<int>();
   const std::vector<int>* stitched = options.seams ? &partners : nullptr;
-  if (stitched) flipEdges(mesh.mesh, doubledWhenStitched, stitched);  // what the CDT left
+  if (stitched) {
+    flipEdges(mesh.mesh, doubledWhenStitched, stitched);  // what the CDT left
+    splitDoubledEdges(mesh, surface, partners);  // what no flip could remove
+  }
   flipEdges(mesh.mesh, notDelaunay, stitched);
   if (options.iterations <= 0) return;
   std::vector<int> triangleOf(mesh.uv.size());
