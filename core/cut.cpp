@@ -436,7 +436,9 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
   CutResult best = openAlong(mesh, faces, cut, name);
   std::vector<double> scale = areaScale(mesh, best.disk, conformalMap(best.disk, name));
   best.summary.areaSpread = spreadOf(scale);
-  while (best.summary.areaSpread > options.maxAreaSpread && best.summary.extremityCuts < options.maxExtremityCuts) {
+  const bool slit = !topology.isDisk() || best.summary.areaSpread > options.slitDisksAbove;
+  const CutSummary whole = best.summary;
+  while (slit && best.summary.areaSpread > options.maxAreaSpread && best.summary.extremityCuts < options.maxExtremityCuts) {
     const std::vector<int> onCut = verticesOf(cut);
     for (int v : onCut) scale[v] = std::numeric_limits<double>::infinity();  // slit to elsewhere
     const int shrunken = static_cast<int>(std::min_element(scale.begin(), scale.end()) - scale.begin());
@@ -451,6 +453,12 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
     cut = std::move(longer);
     best = std::move(tried);
     scale = std::move(triedScale);
+  }
+  // A disk's slits must bring its spread under slitDisksAbove, or they are left out: the
+  // protrusions of a terrain (CGAL's three peaks: 2 10^4 after 4 slits) are better whole.
+  if (topology.isDisk() && best.summary.areaSpread > options.slitDisksAbove) {
+    best.seam.clear();
+    best.summary = whole;
   }
   best.summary.seamEdges = static_cast<int>(best.seam.size());
   best.topology = topology;

@@ -62,20 +62,29 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
                              const std::string& name)
     : options_(effective(options)),
       name_(name),
-      original_(options_.simplifyTo > 0 || !analyzeTopology(input).isDisk()
-                    ? std::optional<Mesh>(input)
-                    : std::nullopt),
+      original_(input),
       input_([&] {
         Stopwatch stage;
         Mesh mesh = options_.simplifyTo > 0 ? simplify(input, {options_.simplifyTo}, name).mesh : input;
         ms_.simplify = stage.lap();
         const Topology topology = analyzeTopology(mesh);
-        if (topology.isDisk()) return mesh;
-        if (options_.method == RemeshMethod::Relocate)
+        if (options_.method == RemeshMethod::Relocate) {
+          if (topology.isDisk()) return mesh;
           throw Error(name + ": relocate keeps the input's triangles and needs a disk; this is " +
                       topology.describe() + " (use --method retriangulate)");
-        cut_ = cutToDisk(mesh, name);  // the seams are stitched again in buildOutput()
+        }
+        // A nearly closed disk is slit open too (CutOptions::slitDisksAbove); the seams are
+        // stitched again in buildOutput().
+        CutResult cut;
+        try {
+          cut = cutToDisk(mesh, name);
+        } catch (const Error&) {
+          if (!topology.isDisk()) throw;
+          return mesh;  // the slits are an improvement for a disk, not a need
+        }
         ms_.cut = stage.lap();
+        if (cut.seam.empty()) return mesh;
+        cut_ = std::move(cut);
         return cut_->disk;
       }()),
       resampled_([&]() -> std::optional<Resampling> {
@@ -204,16 +213,16 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
 }
 
 int RemeshSession::siteCount() const {
-  if (options_.sites.count > 0) return options_.sites.count;
-  if (options_.simplifyTo <= 0) return input_.vertexCount();
-  // A cut surface's disk holds each seam vertex twice: as many more sites, so that the result
-  // has simplifyTo vertices once stitched.
-  const int surfaceVertices =
-      cut_ && !cut_->original.empty()
-          ? *std::max_element(cut_->original.begin(), cut_->original.end()) + 1
-          : input_.vertexCount();
-  return static_cast<int>(std::lround(options_.simplifyTo * static_cast<double>(input_.vertexCount()) /
-                                      std::max(surfaceVertices, 1)));
+  const int wanted = options_.sites.count > 0 ? options_.sites.count : options_.simplifyTo;
+  if (wanted <= 0) return input_.vertexCount();
+  if (!cut_) return wanted;
+  // A cut surface's disk holds each seam sample twice: one more site per sample, so that the
+  // result has the vertices asked for once stitched. The input's seams have as many copies as
+  // the disk has vertices more than the surface; the result's are as many times more as its
+  // edges are shorter: the square root of the ratio of vertex counts.
+  const int surfaceVertices = *std::max_element(cut_->original.begin(), cut_->original.end()) + 1;
+  const double copies = input_.vertexCount() - surfaceVertices;
+  return wanted + static_cast<int>(std::lround(copies * std::sqrt(static_cast<double>(wanted) / surfaceVertices)));
 }
 
 SiteOptions RemeshSession::seamSites() const {

@@ -102,12 +102,12 @@ class RemeshSession {
   // The mesh that is parameterized: the resampled surface, or the input itself.
   const Mesh& surface() const { return resampled_ ? resampled_->mesh.mesh : input_; }
   // What the user gave: the result is measured and snapped against it, not its simplification.
-  const Mesh& original() const { return original_ ? *original_ : input_; }
+  const Mesh& original() const { return original_; }
 
   RemeshOptions options_;
   std::string name_;  // of the input, for error messages
   StageTimes ms_;  // before the members whose initializers time themselves into it
-  std::optional<Mesh> original_;  // the user's mesh, when input_ is its simplification or cut
+  Mesh original_;                 // the user's mesh (input_ may be its simplification or cut)
   std::optional<CutResult> cut_;  // how input_ was cut open, if it was
   Mesh input_;                    // the disk to remesh
   std::optional<Resampling> resampled_;

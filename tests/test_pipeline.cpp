@@ -90,8 +90,9 @@ class CgalSamples : public ::testing::TestWithParam<SampleBar> {};
 // three peaks did too (13.6% irregular) until the first sites were drawn by sqrt(rho), the
 // density a converged tessellation has, and it came out at 15.7% (its 1000-vertex
 // simplification in the bench still meets every bar). The lion head and the mannequin are
-// closed shapes with a small hole, whose conformal maps shrink the far side by 10^3-10^4:
-// valid and far better than the input, with irregularity and angles short of the bar.
+// closed shapes with a small hole, whose conformal maps shrink the far side by 10^3-10^4 (the
+// mannequin's so much that it is slit open and stitched back): valid and far better than the
+// input, with irregularity and angles short of the bar.
 TEST_P(CgalSamples, RemeshTo1000Vertices) {
   const std::string path = cgalSample(GetParam().file);
   if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
@@ -103,7 +104,8 @@ TEST_P(CgalSamples, RemeshTo1000Vertices) {
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   EXPECT_TRUE(analyzeTopology(r.output).isDisk());
   EXPECT_TRUE(r.converged);
-  EXPECT_NEAR(r.output.vertexCount(), 1000, 10);
+  // Within 1.5%: the mannequin is slit open (core/cut.h), its seams' copies estimated.
+  EXPECT_NEAR(r.output.vertexCount(), 1000, 15);
   EXPECT_GE(r.after.avgMinAngle, 52.0);
   EXPECT_LE(r.after.irregularBoundaryAware, 22.0);
   if (GetParam().meetsIssueBar) {
