@@ -134,6 +134,11 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   result_.recording = Recording{};  // the replay holds it
   if (!result_.resampleDropped.empty())
     message_ = withoutResamplingText(result_.resampleDropped);
+  if (result_.components > 1)
+    message_ = meshName_ + " has " + std::to_string(result_.components) +
+               " connected components, each remeshed on its own: the panes and the iteration "
+               "column follow the largest; the input column and \"show the final result\" are all "
+               "of them. " + message_;
   std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
   iteration_ = replay_->iterationCount() - 1;
@@ -365,8 +370,14 @@ void OpeningView::applyTo(Inspector& inspector) const {
   if (compareSolvers) inspector.compareSolvers();
 }
 
+// The mesh the 3D pane fits: the final result where it is shown (with several components, all
+// of them), else the surface the recording is about.
+const Mesh& Inspector::fittedMesh() const {
+  return finalShown() ? result_.output : replay_->recording().input;
+}
+
 void Inspector::fitCamera() {
-  const auto [lo, hi] = boundingBox(replay_->recording().input);
+  const auto [lo, hi] = boundingBox(fittedMesh());
   camera_.target = 0.5 * (lo + hi);
   camera_.distance = static_cast<float>(1.05 * (hi - lo).norm());  // until the pane is known
   camera_.yaw = -1.2f;
@@ -385,7 +396,7 @@ float Inspector::fittingDistance(const ImVec2& extent) const {
   const float margin = 0.9f;
   const float tanV = margin * std::tan(glm::radians(20.0f)), tanH = tanV * extent.x / extent.y;
   float distance = 0;
-  for (const Vec3& p : replay_->recording().input.points) {
+  for (const Vec3& p : fittedMesh().points) {
     const glm::vec3 q(p.x() - camera_.target.x(), p.y() - camera_.target.y(), p.z() - camera_.target.z());
     const float depth = glm::dot(q, toEye);  // towards the eye
     distance = std::max({distance, depth + std::abs(glm::dot(q, right)) / tanH,

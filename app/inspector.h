@@ -84,7 +84,10 @@ class Inspector {
   // The 3D pane shows the final result (polished, stitched, snapped: what remesh writes) with a
   // red ring where it is farthest from the input, instead of an iteration's mesh. Only once
   // the run has finished; off in a lesson stage.
-  void showFinal(bool on) { showFinal_ = on; }
+  void showFinal(bool on) {  // and the view fits it (with several components, all of them)
+    showFinal_ = on;
+    fitCamera();
+  }
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
   // The CPU work of the current iteration's panes (its cells, lifted mesh, metrics and cell
@@ -196,6 +199,7 @@ class Inspector {
   bool showInput_ = false, uploadedInput_ = false, uploadedSites_ = false;
   bool showFinal_ = false, uploadedFinal_ = false;
   bool finalShown() const;  // showFinal_, and there is a final result, and no lesson stage
+  const Mesh& fittedMesh() const;
   bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;
   bool playing_ = false, showTimings_ = true;
   float playSpeed_ = 10.0f, playClock_ = 0.0f;

@@ -80,6 +80,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"snap_to_tips", o.snapToTips}}},
           {"input", toJson(r.before)},
           {"output", output},
+          {"components", r.components},
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
@@ -141,8 +142,11 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   out << qualityTable(r.before, r.after, o.measureFidelity ? &r.fidelity : nullptr) << "\n";
   if (o.measureFidelity)
     out << "Hausdorff distance reached at " << farthestPointText(r.fidelity) << "\n";
-  out << "Lloyd iterations: " << r.iterations << (r.converged ? " (converged)" : " (not converged)")
-      << "\n";
+  if (r.components > 1)
+    out << "Remeshed " << r.components << " connected components, each on its own (the lines below"
+        << " on the map and the cut, and the recording, are the largest one's)\n";
+  out << "Lloyd iterations: " << r.iterations << (r.components > 1 ? ", all components" : "")
+      << (r.converged ? " (converged)" : " (not converged)") << "\n";
   out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";

@@ -68,6 +68,9 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         Mesh mesh = options_.simplifyTo > 0 ? simplify(input, {options_.simplifyTo}, name).mesh : input;
         ms_.simplify = stage.lap();
         const Topology topology = analyzeTopology(mesh);
+        if (topology.components > 1)
+          throw Error(name + ": it has " + topology.describe() +
+                      "; a session steps one surface (lloydscope remesh does each on its own)");
         if (options_.method == RemeshMethod::Relocate) {
           if (topology.isDisk()) return mesh;
           throw Error(name + ": relocate keeps the input's triangles and needs a disk; this is " +
@@ -256,7 +259,9 @@ RemeshResult RemeshSession::finish() {
   return result;
 }
 
-RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+namespace {
+
+RemeshResult remeshSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   auto run = [&](const RemeshOptions& o) {
     Stopwatch total;
     RemeshSession session(input, o, name);
@@ -276,6 +281,66 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
     result.resampleDropped = problemOf(e, name);
     return result;
   }
+}
+
+// Each connected component on its own, with its share (by area) of the vertices asked for; the
+// results side by side, measured together against the whole input. The largest component's
+// recording, map and cut stand for the run.
+RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  const std::vector<Mesh> parts = splitComponents(input);
+  const double totalArea = surfaceArea(input);
+  RemeshResult result;
+  result.components = static_cast<int>(parts.size());
+  result.converged = true;
+  double largest = -1;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const double area = surfaceArea(parts[i]);
+    auto share = [&](int count) {
+      return count > 0 ? std::max(4, static_cast<int>(std::lround(count * area / totalArea))) : 0;
+    };
+    RemeshOptions o = options;
+    o.simplifyTo = share(options.simplifyTo);
+    o.sites.count = share(options.sites.count);
+    o.measureFidelity = false;
+    const std::string partName =
+        name + " (component " + std::to_string(i + 1) + " of " + std::to_string(parts.size()) + ")";
+    RemeshResult r = remeshSurface(parts[i], o, partName);
+    const int offset = result.output.vertexCount();
+    result.output.points.insert(result.output.points.end(), r.output.points.begin(), r.output.points.end());
+    for (Triangle t : r.output.triangles) result.output.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    result.iterations += r.iterations;
+    result.converged = result.converged && r.converged;
+    result.snappedTips += r.snappedTips;
+    if (!r.resampleDropped.empty())
+      result.resampleDropped += (result.resampleDropped.empty() ? "" : "; ") + ("component " + std::to_string(i + 1) + ": " + r.resampleDropped);
+    for (double StageTimes::*stage : {&StageTimes::simplify, &StageTimes::cut, &StageTimes::resample, &StageTimes::parameterize,
+                                      &StageTimes::density, &StageTimes::sites, &StageTimes::lloyd, &StageTimes::remesh,
+                                      &StageTimes::metrics})
+      result.ms.*stage += r.ms.*stage;
+    if (area > largest) {
+      largest = area;
+      result.recording = std::move(r.recording);
+      result.paramUsed = r.paramUsed;
+      result.distortion = r.distortion;
+      result.cut = r.cut;
+    }
+  }
+  Stopwatch stage;
+  result.before = measureQuality(input);
+  result.after = measureQuality(result.output);
+  if (options.measureFidelity) result.fidelity = measureFidelity(result.output, input);
+  result.ms.metrics += stage.lap();
+  return result;
+}
+
+}  // namespace
+
+RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  if (analyzeTopology(input).components <= 1) return remeshSurface(input, options, name);
+  Stopwatch total;
+  RemeshResult result = remeshComponents(input, options, name);
+  result.ms.total = total.lap();
+  return result;
 }
 
 bool usesResampling(const RemeshOptions& options) { return effective(options).resample; }

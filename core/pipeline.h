@@ -59,13 +59,18 @@ struct RemeshResult {
   int snappedTips = 0;  // vertices the polish snapped onto tips the result cut off (snapToTips)
   // Not empty: the run failed with the first pass (this says why) and was made without it.
   std::string resampleDropped;
-  int iterations = 0;
+  int iterations = 0;  // summed over the components
   bool converged = false;
+  // Connected components of the input, each remeshed on its own (remesh()); with more than one,
+  // recording, paramUsed, distortion and cut are the largest one's.
+  int components = 1;
   StageTimes ms;
 };
 
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
-// run fails with the first pass (options.resample), it is made again without it.
+// run fails with the first pass (options.resample), it is made again without it. Several
+// connected components are remeshed each on its own, with shares of the vertices asked for
+// (options.simplifyTo, options.sites.count) by area.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
 bool usesResampling(const RemeshOptions& options);  // false with relocate or the input's vertices
 RemeshOptions withoutResampling(RemeshOptions options);

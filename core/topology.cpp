@@ -74,6 +74,28 @@ std::vector<std::vector<int>> traceBoundaryLoops(const std::vector<Edge>& halfEd
   return loops;
 }
 
+// Per vertex, its connected component (vertices joined through the faces, numbered in the
+// order of their first vertex), or -1 for a vertex no face uses; `count` receives how many.
+std::vector<int> vertexComponents(const Mesh& mesh, int& count) {
+  const int n = mesh.vertexCount();
+  DisjointSets sets(n);
+  std::vector<bool> used(n, false);
+  for (const Triangle& t : mesh.triangles) {
+    sets.unite(t[0], t[1]);
+    sets.unite(t[1], t[2]);
+    for (int v : t) used[v] = true;
+  }
+  std::vector<int> componentOf(n, -1), rootComponent(n, -1);
+  count = 0;
+  for (int v = 0; v < n; ++v) {
+    if (!used[v]) continue;
+    int& c = rootComponent[sets.find(v)];
+    if (c < 0) c = count++;
+    componentOf[v] = c;
+  }
+  return componentOf;
+}
+
 std::string plural(long long n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
@@ -94,20 +116,7 @@ Topology analyzeTopology(const Mesh& mesh) {
   const int n = mesh.vertexCount();
 
   // Components: vertices joined through the faces; vertices used by no face do not count.
-  DisjointSets sets(n);
-  std::vector<bool> used(n, false);
-  for (const Triangle& t : mesh.triangles) {
-    sets.unite(t[0], t[1]);
-    sets.unite(t[1], t[2]);
-    for (int v : t) used[v] = true;
-  }
-  std::vector<int> componentOf(n, -1), rootComponent(n, -1);
-  for (int v = 0; v < n; ++v) {
-    if (!used[v]) continue;
-    int& c = rootComponent[sets.find(v)];
-    if (c < 0) c = topology.components++;
-    componentOf[v] = c;
-  }
+  const std::vector<int> componentOf = vertexComponents(mesh, topology.components);
 
   const std::vector<Edge> halfEdges = sortedHalfEdges(mesh);
   topology.boundaryLoops = traceBoundaryLoops(halfEdges);
@@ -115,7 +124,7 @@ Topology analyzeTopology(const Mesh& mesh) {
   // V - E + F and the number of boundary loops, per component.
   std::vector<long long> chi(topology.components, 0), loops(topology.components, 0);
   for (int v = 0; v < n; ++v) {
-    if (used[v]) ++chi[componentOf[v]];
+    if (componentOf[v] >= 0) ++chi[componentOf[v]];
   }
   std::vector<Edge> edges;  // undirected, each once
   edges.reserve(halfEdges.size());
@@ -132,6 +141,22 @@ Topology analyzeTopology(const Mesh& mesh) {
     topology.genus += static_cast<int>((2 - chi[c] - loops[c]) / 2);
   }
   return topology;
+}
+
+std::vector<Mesh> splitComponents(const Mesh& mesh) {
+  int count = 0;
+  const std::vector<int> componentOf = vertexComponents(mesh, count);
+  std::vector<Mesh> parts(count);
+  std::vector<int> renumbered(mesh.vertexCount(), -1);
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    if (componentOf[v] < 0) continue;
+    Mesh& part = parts[componentOf[v]];
+    renumbered[v] = part.vertexCount();
+    part.points.push_back(mesh.points[v]);
+  }
+  for (const Triangle& t : mesh.triangles)
+    parts[componentOf[t[0]]].triangles.push_back({renumbered[t[0]], renumbered[t[1]], renumbered[t[2]]});
+  return parts;
 }
 
 void requireDisk(const Mesh& mesh, const std::string& name) {

@@ -22,6 +22,10 @@ struct Topology {
 // The mesh must have passed validateMesh() (manifold).
 Topology analyzeTopology(const Mesh& mesh);
 
+// Each connected component as a mesh of its own, in the order of their first vertex; vertices
+// keep their order, and those no face uses are left out.
+std::vector<Mesh> splitComponents(const Mesh& mesh);
+
 // Throws Error("<name>: not a topological disk (<describe()>); ...") unless the mesh is a disk.
 void requireDisk(const Mesh& mesh, const std::string& name);
 

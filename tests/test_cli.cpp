@@ -147,10 +147,17 @@ TEST(Cli, ATetrahedronIsCutAndStitchedBackClosed) {
   EXPECT_EQ(t.genus, 0);
   EXPECT_TRUE(t.boundaryLoops.empty());
 }
-TEST(Cli, TwoComponents) {
-  expectCleanFailure("two.off",
-                     "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n",
-                     "2 connected components");
+// Two components are remeshed each on its own, and the report says so (it was refused).
+TEST(Cli, TwoComponentsAreRemeshedEachOnItsOwn) {
+  const std::string path = test::tempPath("two.off"), out = test::tempPath("two_out.off");
+  test::writeText(path, "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n");
+  const CliRun r = runCli("remesh " + path + " -o " + out);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Remeshed 2 connected components, each on its own"), std::string::npos) << r.out;
+  EXPECT_EQ(analyzeTopology(readMesh(out).mesh).components, 2);
+  const CliRun json = runCli("remesh " + path + " --json");
+  ASSERT_EQ(json.code, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["components"], 2);
 }
 
 TEST(Cli, TruncatedRecording) {

@@ -128,6 +128,49 @@ TEST(Cut, SeveralComponentsAreRefusedWithTheReason) {
   }
 }
 
+// Two tori, one twice the other's size: each is cut, remeshed and stitched on its own, with
+// its share of the vertices by area (4 to 1), and the result has both, each of genus 1.
+TEST(Cut, SeveralComponentsAreRemeshedEachOnItsOwn) {
+  Mesh two = torus();
+  const Mesh small = torus();
+  const int offset = two.vertexCount();
+  for (const Vec3& p : small.points) two.points.push_back(0.5 * p + Vec3(10, 0, 0));
+  for (Triangle t : small.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  RemeshOptions o;
+  o.sites.count = 600;
+  const RemeshResult r = remesh(two, o, "two tori");
+  EXPECT_EQ(r.components, 2);
+  EXPECT_NO_THROW(validateMesh(r.output, "output"));
+  const std::vector<Mesh> parts = splitComponents(r.output);
+  ASSERT_EQ(parts.size(), 2u);
+  for (const Mesh& part : parts) {
+    const Topology t = analyzeTopology(part);
+    EXPECT_EQ(t.genus, 1);
+    EXPECT_TRUE(t.boundaryLoops.empty());
+  }
+  EXPECT_NEAR(parts[0].vertexCount(), 480, 10);
+  EXPECT_NEAR(parts[1].vertexCount(), 120, 5);
+  EXPECT_GE(r.after.avgMinAngle, 48.0);
+  EXPECT_LT(r.fidelity.hausdorffPercent, 2.0);
+}
+
+// The inspector steps one surface: a session refuses several, and says what does them.
+TEST(Cut, ASessionRefusesSeveralComponents) {
+  Mesh two = test::grid(2);
+  const Mesh other = test::grid(2);
+  const int offset = two.vertexCount();
+  for (const Vec3& p : other.points) two.points.push_back(p + Vec3(5, 0, 0));
+  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  try {
+    RemeshSession session(two, RemeshOptions{}, "two.off");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("two.off: it has 2 connected components; a session steps one surface"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Cut, StitchingTheCutDiskGivesTheTorusBack) {
   const Mesh input = torus();
   const CutResult cut = cutToDisk(input, "torus");

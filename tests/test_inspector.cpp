@@ -235,6 +235,35 @@ TEST(Inspector, TheFirstViewFitsALongShape) {
   EXPECT_GT(right - left, 150);
 }
 
+// Two components are remeshed each on its own; the panes follow the larger, and with --final
+// the 3D pane shows both: the view fits them all (it fitted the larger only, the other beyond
+// the pane's side).
+TEST(Inspector, TheFinalResultOfTwoComponentsFitsBoth) {
+  Mesh two = test::grid(8);
+  const Mesh other = test::grid(8, 0.9);
+  const int offset = two.vertexCount();
+  for (const Vec3& p : other.points) two.points.push_back(p + Vec3(3, 0, 0));
+  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  for (Vec3& p : two.points) p.z() = 0.1 * std::sin(3 * p.x()) * std::sin(3 * p.y());
+  const std::string mesh = test::tempPath("two_grids.off"), png = test::tempPath("two_grids.png");
+  writeMesh(two, mesh);
+  ASSERT_EQ(run("inspect " + mesh + " --final --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  const Picture p = readPng(png);
+  auto isMesh = [&](int x, int y) {  // shaded by its angles: green to red, never grey
+    const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+    return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}) > 60;
+  };
+  int left = p.width, right = 0, columns = 0;  // of the meshes in the 3D pane, under its colour bar
+  for (int x = 286; x < 620; ++x) {
+    bool any = false;
+    for (int y = 150; y < 360; ++y) any = any || isMesh(x, y);
+    if (any) left = std::min(left, x), right = std::max(right, x), ++columns;
+  }
+  EXPECT_GT(left, 290);
+  EXPECT_LT(right, 615);
+  EXPECT_LT(columns, right - left - 10);  // a gap between the two
+}
+
 // With --final the 3D pane shows the final result, and a red ring where it is farthest from
 // the input (the Hausdorff distance); an iteration's mesh has no ring.
 TEST(Inspector, TheFinalResultShowsWhereItStraysFarthest) {

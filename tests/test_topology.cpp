@@ -142,6 +142,19 @@ TEST(Topology, TwoSeparateTrianglesAreTwoComponents) {
   EXPECT_EQ(requireDiskError(mesh, "two.ply"), "two.ply: not a topological disk: it has 2 connected components");
 }
 
+// An unused vertex between them is left out; each part keeps its vertices' order.
+TEST(Topology, ComponentsSplitIntoMeshesOfTheirOwn) {
+  const Mesh mesh{{{0, 0, 0}, {1, 0, 0}, {9, 9, 9}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}},
+                  {{4, 5, 6}, {0, 1, 3}}};
+  const std::vector<Mesh> parts = splitComponents(mesh);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0].points, (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+  EXPECT_EQ(parts[0].triangles, (std::vector<Triangle>{{0, 1, 2}}));
+  EXPECT_EQ(parts[1].points, (std::vector<Vec3>{{5, 0, 0}, {6, 0, 0}, {5, 1, 0}}));
+  EXPECT_EQ(parts[1].triangles, (std::vector<Triangle>{{0, 1, 2}}));
+  for (const Mesh& part : parts) EXPECT_TRUE(analyzeTopology(part).isDisk());
+}
+
 TEST(Topology, TorusIsClosedGenusOne) {
   const Mesh mesh = torus();
   validateMesh(mesh, "torus");
