@@ -134,6 +134,8 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   result_.recording = Recording{};  // the replay holds it
   if (!result_.resampleDropped.empty())
     message_ = withoutResamplingText(result_.resampleDropped);
+  // remesh() kept a nearly closed disk whole: so do the inspector's own runs (Restart).
+  if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
   if (result_.components > 1)
     message_ = meshName_ + " has " + std::to_string(result_.components) +
                " connected components, each remeshed on its own: the panes and the iteration "

@@ -81,6 +81,10 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"input", toJson(r.before)},
           {"output", output},
           {"components", r.components},
+          {"slit_trial", r.slitTrial ? nlohmann::json{{"slit_avg_min_angle_deg", r.slitTrial->slit},
+                                                      {"whole_avg_min_angle_deg", r.slitTrial->whole},
+                                                      {"kept", r.cut.seamEdges > 0 ? "slit" : "whole"}}
+                                     : nlohmann::json()},
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
@@ -103,6 +107,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"sites", r.ms.sites},
             {"lloyd", r.ms.lloyd},
             {"remesh", r.ms.remesh},
+            {"compared", r.ms.compared},
             {"metrics", r.ms.metrics},
             {"total", r.ms.total}}}};
 }
@@ -153,8 +158,12 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   if (!r.resampleDropped.empty()) out << withoutResamplingText(r.resampleDropped) << "\n";
   if (r.cut.seamEdges > 0)
     out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
-        << " slits through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)
+        << (r.cut.extremityCuts == 1 ? " slit" : " slits") << " through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)
         << "\n";
+  if (r.slitTrial)
+    out << (r.cut.seamEdges > 0 ? "Kept slit open" : "Kept whole") << " (a nearly closed disk, remeshed both ways):"
+        << " average smallest angle " << format("%.1f", r.slitTrial->slit) << " deg slit, "
+        << format("%.1f", r.slitTrial->whole) << " deg whole\n";
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips
         << (r.snappedTips == 1 ? " vertex\n" : " vertices\n");
@@ -163,7 +172,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
       << (r.ms.resample > 0 ? "resample " + format("%.1f", r.ms.resample) + ", " : "")
       << "parameterize " << format("%.1f", r.ms.parameterize) << ", density "
       << format("%.1f", r.ms.density) << ", sites " << format("%.1f", r.ms.sites) << ", lloyd "
-      << format("%.1f", r.ms.lloyd) << ", remesh " << format("%.1f", r.ms.remesh) << ", metrics "
+      << format("%.1f", r.ms.lloyd) << ", remesh " << format("%.1f", r.ms.remesh)
+      << (r.ms.compared > 0 ? ", the other way " + format("%.1f", r.ms.compared) : "") << ", metrics "
       << format("%.1f", r.ms.metrics) << ", total " << format("%.1f", r.ms.total) << "\n";
   return out.str();
 }

@@ -37,6 +37,9 @@ struct RemeshOptions {
   int polish = 3;
   PolishTarget polishTarget = PolishTarget::Centroid;
   bool snapToTips = true;  // the polish's last step (core/polish: snapToTips), when polish > 0
+  // A nearly closed disk may be slit open (CutOptions::slitDisksAbove); remesh() then makes it
+  // whole too and keeps the better (RemeshResult::slitTrial). false: disks stay whole.
+  bool slitDisks = true;
 };
 
 // The reference report's settings: discrete authalic map with a square border, uniform density,
@@ -46,6 +49,12 @@ RemeshOptions referencePreset(RemeshMethod method);
 struct StageTimes {  // milliseconds
   double simplify = 0, cut = 0, resample = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
          metrics = 0, total = 0;
+  double compared = 0;  // the run a slit disk was compared with (SlitTrial), its metrics left out
+};
+
+// A nearly closed disk remeshed both slit open and whole: the average smallest angle of each.
+struct SlitTrial {
+  double slit = 0, whole = 0;
 };
 
 struct RemeshResult {
@@ -64,6 +73,7 @@ struct RemeshResult {
   // Connected components of the input, each remeshed on its own (remesh()); with more than one,
   // recording, paramUsed, distortion and cut are the largest one's.
   int components = 1;
+  std::optional<SlitTrial> slitTrial;  // with cut.seamEdges > 0 if the slit one was kept
   StageTimes ms;
 };
 

@@ -39,6 +39,15 @@ const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 }  // namespace
 
+// --no-slit keeps a nearly closed disk whole, and the settings line says so.
+TEST(Cli, NoSlitIsASetting) {
+  const CliRun r = runCli("remesh " + test::assetPath("bumpy_disk.off") + " --no-slit --max-iterations 2 --no-fidelity");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(" slit-disks=no"), std::string::npos) << r.out;
+  const CliRun plain = runCli("remesh " + test::assetPath("bumpy_disk.off") + " --max-iterations 2 --no-fidelity");
+  EXPECT_EQ(plain.out.find("slit-disks"), std::string::npos) << plain.out;
+}
+
 // --no-snap leaves the snaps to tips out: on a spike the result cuts off, the distance stays.
 TEST(Cli, NoSnapLeavesTheTipsAlone) {
   Mesh spike = test::grid(40);

@@ -280,7 +280,8 @@ TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
 
 // CGAL's mannequin is a disk (its neck is open), but its map to a disk shrinks the far side of
 // the head by 6 10^4: it is slit open like the closed samples (CutOptions::slitDisksAbove),
-// remeshed, and stitched back into one disk. The lion head (2 10^3) is left whole.
+// remeshed, and stitched back into one disk; made whole too, it comes out worse, and the slit
+// one is kept. --no-slit (slitDisks = false) keeps it whole.
 TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/mannequin-devil.off";
   if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
@@ -289,11 +290,39 @@ TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   const RemeshResult r = remesh(readMesh(path).mesh, o, path);
   EXPECT_GT(r.cut.extremityCuts, 0);
   EXPECT_GT(r.cut.seamEdges, 0);
+  ASSERT_TRUE(r.slitTrial.has_value());
+  EXPECT_GT(r.slitTrial->slit, r.slitTrial->whole);
+  EXPECT_EQ(r.slitTrial->slit, r.after.avgMinAngle);
+  EXPECT_GT(r.ms.compared, 0.0);
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   EXPECT_TRUE(analyzeTopology(r.output).isDisk()) << analyzeTopology(r.output).describe();
   EXPECT_NEAR(r.output.vertexCount(), 1000, 20);
   EXPECT_GT(r.after.avgMinAngle, 53.0);
   EXPECT_LT(r.fidelity.hausdorffPercent, 2.6);  // CGAL's isotropic remeshing: 2.57 (docs/bench.md)
+
+  o.slitDisks = false;
+  o.measureFidelity = false;
+  const RemeshResult whole = remesh(readMesh(path).mesh, o, path);
+  EXPECT_EQ(whole.cut.seamEdges, 0);
+  EXPECT_FALSE(whole.slitTrial.has_value());
+  EXPECT_EQ(whole.after.avgMinAngle, r.slitTrial->whole);
+}
+
+// CGAL's three peaks simplified to 1000 vertices: its peaks shrink it by 3 10^4 and five slits
+// bring that under 10^4, but through the peaks they cost (average smallest angle 50.2 against
+// 54.9): it is kept whole.
+TEST(NearlyClosedCgalSample, TheThreePeaksAreKeptWhole) {
+  const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/three_peaks.off";
+  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  RemeshOptions o;
+  o.simplifyTo = 1000;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(readMesh(path).mesh, o, path);
+  ASSERT_TRUE(r.slitTrial.has_value());
+  EXPECT_GT(r.slitTrial->whole, r.slitTrial->slit);
+  EXPECT_EQ(r.cut.seamEdges, 0);
+  EXPECT_GT(r.after.avgMinAngle, 54.0);
+  EXPECT_TRUE(analyzeTopology(r.output).isDisk());
 }
 
 TEST(NearlyClosedCgalSample, TheLionHeadIsNotSlit) {
