@@ -7,6 +7,7 @@
 
 #include "mesh_io.h"
 #include "report.h"
+#include "topology.h"
 
 #include <backends/imgui_impl_vulkan.h>
 
@@ -124,23 +125,35 @@ void Inspector::recordFrame(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffe
   vkCmdEndRenderPass(cmd);
 }
 
+namespace {
+
+Mesh largestComponent(const Mesh& mesh) {
+  std::vector<Mesh> parts = splitComponents(mesh);
+  auto byArea = [](const Mesh& a, const Mesh& b) { return surfaceArea(a) < surfaceArea(b); };
+  return std::move(*std::max_element(parts.begin(), parts.end(), byArea));
+}
+
+}  // namespace
+
 Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
                      RemeshOptions options, RemeshResult result, std::optional<Mesh> input)
     : gpu_(gpu), renderer_(gpu, renderPass),
       meshName_(meshName.substr(meshName.find_last_of('/') + 1)),  // the file, not where it lives
-      options_(std::move(options)), result_(std::move(result)),
+      options_(std::move(options)), slitDisksAsked_(options_.slitDisks), result_(std::move(result)),
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
   if (!result_.resampleDropped.empty())
     message_ = withoutResamplingText(result_.resampleDropped);
-  // remesh() kept a nearly closed disk whole: so do the inspector's own runs (Restart).
+  // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
-  if (result_.components > 1)
+  if (result_.components > 1) {
+    if (input_) input_ = largestComponent(*input_);  // what the panes show, and Restart steps
     message_ = meshName_ + " has " + std::to_string(result_.components) +
-               " connected components, each remeshed on its own: the panes and the iteration "
-               "column follow the largest; the input column and \"show the final result\" are all "
-               "of them. " + message_;
+               " connected components, each remeshed on its own: the panes, the iteration "
+               "column and Restart follow the largest; the input column and \"show the final "
+               "result\" are all of them. " + message_;
+  }
   std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
   iteration_ = replay_->iterationCount() - 1;
@@ -708,7 +721,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   bool showInput = showInput_;
   if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
   if (result_.output.triangles.empty()) ImGui::BeginDisabled();
-  ImGui::Checkbox("show the final result", &showFinal_);
+  // With several components the final result is larger than the surface the panes follow.
+  if (ImGui::Checkbox("show the final result", &showFinal_) && result_.components > 1) fitCamera();
   if (result_.output.triangles.empty()) ImGui::EndDisabled();
   bool byAngle = colorByAngle_;
   if (ImGui::Checkbox("colour by minimum angle", &byAngle)) {
@@ -837,6 +851,7 @@ void Inspector::fileControls() {
     try {
       stopRun();
       input_ = readMesh(meshPath_).mesh;
+      options_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
       meshName_ = meshPath_;
       meshName_ = meshName_.substr(meshName_.find_last_of('/') + 1);
       result_.before = measureQuality(*input_);

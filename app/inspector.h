@@ -158,6 +158,7 @@ class Inspector {
   MeshRenderer renderer_;
   std::string meshName_;
   RemeshOptions options_;
+  bool slitDisksAsked_;  // options_.slitDisks as given (remesh()'s choice may override it)
   RemeshResult result_;
   std::unique_ptr<Replay> replay_;
   std::optional<Mesh> input_;

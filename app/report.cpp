@@ -81,6 +81,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"input", toJson(r.before)},
           {"output", output},
           {"components", r.components},
+          {"components_kept", r.componentsKept},
           {"slit_trial", r.slitTrial ? nlohmann::json{{"slit_avg_min_angle_deg", r.slitTrial->slit},
                                                       {"whole_avg_min_angle_deg", r.slitTrial->whole},
                                                       {"kept", r.cut.seamEdges > 0 ? "slit" : "whole"}}
@@ -148,8 +149,11 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   if (o.measureFidelity)
     out << "Hausdorff distance reached at " << farthestPointText(r.fidelity) << "\n";
   if (r.components > 1)
-    out << "Remeshed " << r.components << " connected components, each on its own (the lines below"
-        << " on the map and the cut, and the recording, are the largest one's)\n";
+    out << "Remeshed " << r.components - r.componentsKept << " of " << r.components
+        << " connected components, each on its own (the lines below on the map and the cut, and the"
+        << " recording, are the largest one's)"
+        << (r.componentsKept > 0 ? "; " + std::to_string(r.componentsKept) + " too small for their share of the vertices kept as they are" : "")
+        << "\n";
   out << "Lloyd iterations: " << r.iterations << (r.components > 1 ? ", all components" : "")
       << (r.converged ? " (converged)" : " (not converged)") << "\n";
   out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "

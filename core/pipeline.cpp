@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <set>
 #include <sstream>
 
@@ -77,15 +76,15 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
           throw Error(name + ": relocate keeps the input's triangles and needs a disk; this is " +
                       topology.describe() + " (use --method retriangulate)");
         }
+        if (topology.isDisk() && !options_.slitDisks) return mesh;
         // A nearly closed disk is slit open too (CutOptions::slitDisksAbove); the seams are
         // stitched again in buildOutput().
         CutResult cut;
-        CutOptions cutOptions;
-        if (!options_.slitDisks) cutOptions.slitDisksAbove = std::numeric_limits<double>::infinity();
         try {
-          cut = cutToDisk(mesh, name, cutOptions);
+          cut = cutToDisk(mesh, name);
         } catch (const Error&) {
           if (!topology.isDisk()) throw;
+          ms_.cut = stage.lap();
           return mesh;  // the slits are an improvement for a disk, not a need
         }
         ms_.cut = stage.lap();
@@ -290,11 +289,19 @@ RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const s
 // the result with the larger average smallest angle is kept: slits through a shape's far side
 // (CGAL's mannequin, a camel head) pay, through the peaks of a terrain (CGAL's three peaks) they
 // cost. The other run's time counts.
+// If the slit run fails (its seams do not stitch), the whole one stands alone.
 RemeshResult remeshSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  RemeshResult slit = remeshOnce(input, options, name);
-  if (!options.slitDisks || slit.cut.seamEdges == 0 || !analyzeTopology(input).isDisk()) return slit;
+  const bool disk = analyzeTopology(input).isDisk();
   RemeshOptions o = options;
   o.slitDisks = false;
+  RemeshResult slit;
+  try {
+    slit = remeshOnce(input, options, name);
+  } catch (const Error&) {
+    if (!disk || !options.slitDisks) throw;
+    return remeshOnce(input, o, name);  // as it would have been without slits
+  }
+  if (!options.slitDisks || slit.cut.seamEdges == 0 || !disk) return slit;
   RemeshResult whole;
   try {
     whole = remeshOnce(input, o, name);
@@ -310,6 +317,16 @@ RemeshResult remeshSurface(const Mesh& input, const RemeshOptions& options, cons
   return std::move(kept);
 }
 
+// A component whose share of the vertices asked for is smaller than this is too small to be
+// remeshed at that size (debris, a loose triangle): it is kept as it is.
+constexpr int kSmallestRemeshedShare = 20;
+
+void append(Mesh& to, const Mesh& part) {
+  const int offset = to.vertexCount();
+  to.points.insert(to.points.end(), part.points.begin(), part.points.end());
+  for (Triangle t : part.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+}
+
 // Each connected component on its own, with its share (by area) of the vertices asked for; the
 // results side by side, measured together against the whole input. The largest component's
 // recording, map and cut stand for the run.
@@ -322,19 +339,21 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
   double largest = -1;
   for (size_t i = 0; i < parts.size(); ++i) {
     const double area = surfaceArea(parts[i]);
-    auto share = [&](int count) {
-      return count > 0 ? std::max(4, static_cast<int>(std::lround(count * area / totalArea))) : 0;
-    };
+    auto share = [&](int count) { return static_cast<int>(std::lround(count * area / totalArea)); };
     RemeshOptions o = options;
-    o.simplifyTo = share(options.simplifyTo);
-    o.sites.count = share(options.sites.count);
+    o.simplifyTo = options.simplifyTo > 0 ? share(options.simplifyTo) : 0;
+    o.sites.count = options.sites.count > 0 ? share(options.sites.count) : 0;
     o.measureFidelity = false;
+    if ((options.simplifyTo > 0 && o.simplifyTo < kSmallestRemeshedShare) ||
+        (options.sites.count > 0 && o.sites.count < kSmallestRemeshedShare)) {
+      append(result.output, parts[i]);
+      ++result.componentsKept;
+      continue;
+    }
     const std::string partName =
         name + " (component " + std::to_string(i + 1) + " of " + std::to_string(parts.size()) + ")";
     RemeshResult r = remeshSurface(parts[i], o, partName);
-    const int offset = result.output.vertexCount();
-    result.output.points.insert(result.output.points.end(), r.output.points.begin(), r.output.points.end());
-    for (Triangle t : r.output.triangles) result.output.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    append(result.output, r.output);
     result.iterations += r.iterations;
     result.converged = result.converged && r.converged;
     result.snappedTips += r.snappedTips;
@@ -350,6 +369,7 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
       result.paramUsed = r.paramUsed;
       result.distortion = r.distortion;
       result.cut = r.cut;
+      result.slitTrial = r.slitTrial;
     }
   }
   Stopwatch stage;

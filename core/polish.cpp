@@ -455,21 +455,32 @@ void splitEdge(LiftedMesh& lm, const SurfaceMap& surface, int a, int b) {
   m.triangles.push_back({mid, a, d});
 }
 
-// Where stitching would make two inside edges of the disk one edge of four triangles (an inside
+// Where stitching would make edges of the disk one edge of more than two triangles (an inside
 // vertex joined to two copies of one seam sample, which no flip can undo at a node of the cut
-// graph, where three copies or more meet and flips would join border vertices), all but one of
-// them are split: the vertex is then joined to that sample once.
+// graph, where three copies or more meet and flips would join border vertices; or an inside
+// edge between two seam samples that a seam joins too), inside edges are split until two
+// triangles are left: the vertex is then joined to that sample once.
 // `partners` (seamPartners() of the disk) grows with the new vertices.
 void splitDoubledEdges(LiftedMesh& lm, const SurfaceMap& surface, std::vector<int>& partners) {
   std::set<std::pair<int, int>> directed;
   for (const Triangle& t : lm.mesh.triangles)
     for (int k = 0; k < 3; ++k) directed.emplace(t[k], t[(k + 1) % 3]);
-  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> byStitchedEdge;
-  for (const auto& [a, b] : directed)
-    if (a < b && directed.count({b, a}))
-      byStitchedEdge[std::minmax(partners[a], partners[b])].emplace_back(a, b);
-  for (const auto& [stitched, edges] : byStitchedEdge)
-    for (size_t i = 1; i < edges.size(); ++i) splitEdge(lm, surface, edges[i].first, edges[i].second);
+  struct Group {
+    std::vector<std::pair<int, int>> inside;  // each edge of two triangles, once
+    int border = 0;                           // edges of one triangle
+  };
+  std::map<std::pair<int, int>, Group> byStitchedEdge;
+  for (const auto& [a, b] : directed) {
+    Group& group = byStitchedEdge[std::minmax(partners[a], partners[b])];
+    if (!directed.count({b, a})) ++group.border;
+    else if (a < b) group.inside.emplace_back(a, b);
+  }
+  for (const auto& [stitched, group] : byStitchedEdge) {
+    const size_t keep = group.border > 0 ? 0 : 1;
+    if (2 * group.inside.size() + group.border <= 2) continue;
+    for (size_t i = keep; i < group.inside.size(); ++i)
+      splitEdge(lm, surface, group.inside[i].first, group.inside[i].second);
+  }
   while (partners.size() < lm.uv.size()) partners.push_back(static_cast<int>(partners.size()));
 }
 

@@ -46,7 +46,8 @@ struct SurfaceMap {
 // The border stays as it is (its vertices do not move, its edges do not flip). A flat
 // triangle (under 10 degrees) that nothing else fixes loses an edge: a vertex fewer. `surfaceDensity`
 // (of the domain's triangles; empty: uniform) weights the centres so that a density that asked
-// for smaller cells keeps them. Vertices keep their order (but for merged ones); mesh.uv follows.
+// for smaller cells keeps them. Vertices keep their order (but for merged ones, and on a cut surface a few
+// added at the end where an edge that stitching would double is split); mesh.uv follows.
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options);
 

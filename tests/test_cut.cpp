@@ -129,27 +129,33 @@ TEST(Cut, SeveralComponentsAreRefusedWithTheReason) {
 }
 
 // Two tori, one twice the other's size: each is cut, remeshed and stitched on its own, with
-// its share of the vertices by area (4 to 1), and the result has both, each of genus 1.
+// its share of the vertices by area (4 to 1), and the result has both, each of genus 1 --
 TEST(Cut, SeveralComponentsAreRemeshedEachOnItsOwn) {
   Mesh two = torus();
   const Mesh small = torus();
   const int offset = two.vertexCount();
   for (const Vec3& p : small.points) two.points.push_back(0.5 * p + Vec3(10, 0, 0));
   for (Triangle t : small.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  // and a loose triangle, far too small for a share of 20 vertices: kept as it is.
+  const int loose = two.vertexCount();
+  for (const Vec3& p : {Vec3(20, 0, 0), Vec3(20.1, 0, 0), Vec3(20, 0.1, 0)}) two.points.push_back(p);
+  two.triangles.push_back({loose, loose + 1, loose + 2});
   RemeshOptions o;
   o.sites.count = 600;
   const RemeshResult r = remesh(two, o, "two tori");
-  EXPECT_EQ(r.components, 2);
+  EXPECT_EQ(r.components, 3);
+  EXPECT_EQ(r.componentsKept, 1);
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   const std::vector<Mesh> parts = splitComponents(r.output);
-  ASSERT_EQ(parts.size(), 2u);
-  for (const Mesh& part : parts) {
-    const Topology t = analyzeTopology(part);
+  ASSERT_EQ(parts.size(), 3u);
+  for (int i : {0, 1}) {
+    const Topology t = analyzeTopology(parts[i]);
     EXPECT_EQ(t.genus, 1);
     EXPECT_TRUE(t.boundaryLoops.empty());
   }
   EXPECT_NEAR(parts[0].vertexCount(), 480, 10);
   EXPECT_NEAR(parts[1].vertexCount(), 120, 5);
+  EXPECT_EQ(parts[2].points, (std::vector<Vec3>{two.points.end() - 3, two.points.end()}));
   EXPECT_GE(r.after.avgMinAngle, 48.0);
   EXPECT_LT(r.fidelity.hausdorffPercent, 2.0);
 }
