@@ -147,6 +147,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
     message_ = withoutResamplingText(result_.resampleDropped);
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
+  if (result_.slitTrial) message_ = slitTrialText(result_) + (message_.empty() ? "" : ". " + message_);
   if (result_.components > 1) {
     if (input_) input_ = largestComponent(*input_);  // what the panes show, and Restart steps
     message_ = meshName_ + " has " + std::to_string(result_.components) +

@@ -117,6 +117,15 @@ std::string withoutResamplingText(const std::string& problem) {
   return "Made without the first resampling (as with --no-resample), which failed: " + problem;
 }
 
+std::string slitTrialText(const RemeshResult& r) {
+  if (!r.slitTrial) return "";
+  return std::string(r.cut.seamEdges > 0 ? "Kept slit open" : "Kept whole") +
+         " (remeshed both slit open and whole: its map to a disk shrinks part of it over 10^4"
+         " times): average smallest angle " +
+         format("%.1f", r.slitTrial->slit) + " deg slit, " + format("%.1f", r.slitTrial->whole) +
+         " deg whole";
+}
+
 std::string farthestPointText(const Fidelity& f) {
   const Vec3& p = f.farthestPoint;
   return "(" + format("%.4g", p.x()) + ", " + format("%.4g", p.y()) + ", " +
@@ -164,10 +173,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
     out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
         << (r.cut.extremityCuts == 1 ? " slit" : " slits") << " through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)
         << "\n";
-  if (r.slitTrial)
-    out << (r.cut.seamEdges > 0 ? "Kept slit open" : "Kept whole") << " (a nearly closed disk, remeshed both ways):"
-        << " average smallest angle " << format("%.1f", r.slitTrial->slit) << " deg slit, "
-        << format("%.1f", r.slitTrial->whole) << " deg whole\n";
+  if (r.slitTrial) out << slitTrialText(r) << "\n";
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips
         << (r.snappedTips == 1 ? " vertex\n" : " vertices\n");

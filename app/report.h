@@ -19,6 +19,9 @@ nlohmann::json recordingSummary(const Recording& r);
 
 // "Made without the first resampling ..., which failed: <problem>" (RemeshResult::resampleDropped).
 std::string withoutResamplingText(const std::string& problem);
+// "Kept slit open (remeshed both slit open and whole: ...): ..." (RemeshResult::slitTrial), or
+// "" when the disk was not tried both ways.
+std::string slitTrialText(const RemeshResult& r);
 
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,

@@ -288,33 +288,40 @@ RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const s
 // A disk slit open (a nearly closed shape, CutOptions::slitDisksAbove) is made whole too, and
 // the result with the larger average smallest angle is kept: slits through a shape's far side
 // (CGAL's mannequin, a camel head) pay, through the peaks of a terrain (CGAL's three peaks) they
-// cost. The other run's time counts.
-// If the slit run fails (its seams do not stitch), the whole one stands alone.
+// cost. The other run's time counts; the distance to the input is measured once, on the one
+// kept. If the slit run fails (its seams do not stitch), the whole one stands alone.
 RemeshResult remeshSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  const bool disk = analyzeTopology(input).isDisk();
-  RemeshOptions o = options;
-  o.slitDisks = false;
-  RemeshResult slit;
+  if (!options.slitDisks || !analyzeTopology(input).isDisk()) return remeshOnce(input, options, name);
+  RemeshOptions slitOptions = options, wholeOptions = options;
+  slitOptions.measureFidelity = wholeOptions.measureFidelity = false;
+  wholeOptions.slitDisks = false;
+  RemeshResult kept;
   try {
-    slit = remeshOnce(input, options, name);
+    kept = remeshOnce(input, slitOptions, name);
   } catch (const Error&) {
-    if (!disk || !options.slitDisks) throw;
-    return remeshOnce(input, o, name);  // as it would have been without slits
+    kept = remeshOnce(input, wholeOptions, name);  // as it would have been without slits
   }
-  if (!options.slitDisks || slit.cut.seamEdges == 0 || !disk) return slit;
-  RemeshResult whole;
-  try {
-    whole = remeshOnce(input, o, name);
-  } catch (const Error&) {
-    return slit;
+  if (kept.cut.seamEdges > 0) {
+    try {
+      RemeshResult other = remeshOnce(input, wholeOptions, name);
+      const SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle};
+      if (trial.whole > trial.slit) std::swap(kept, other);
+      kept.slitTrial = trial;
+      kept.ms.compared = other.ms.total - other.ms.metrics;
+      kept.ms.metrics += other.ms.metrics;
+      kept.ms.total += other.ms.total;
+    } catch (const Error&) {
+      // the slit one stands alone
+    }
   }
-  RemeshResult& kept = whole.after.avgMinAngle > slit.after.avgMinAngle ? whole : slit;
-  const RemeshResult& other = &kept == &whole ? slit : whole;
-  kept.slitTrial = SlitTrial{slit.after.avgMinAngle, whole.after.avgMinAngle};
-  kept.ms.compared = other.ms.total - other.ms.metrics;
-  kept.ms.metrics += other.ms.metrics;
-  kept.ms.total += other.ms.total;
-  return std::move(kept);
+  if (options.measureFidelity) {
+    Stopwatch stage;
+    kept.fidelity = measureFidelity(kept.output, input);
+    const double ms = stage.lap();
+    kept.ms.metrics += ms;
+    kept.ms.total += ms;
+  }
+  return kept;
 }
 
 // A component whose share of the vertices asked for is smaller than this is too small to be
