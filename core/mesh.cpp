@@ -1,27 +1,35 @@
 #include "mesh.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace lloydscope {
 
 VertexEdges vertexEdges(const Mesh& mesh) {
-  // Sorted edge list: each undirected edge appears once per face that uses it.
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(3 * mesh.triangles.size());
+  // Each vertex's neighbours, once per face they share: across an inside edge twice, across a
+  // border edge once. Small per-vertex sorts instead of one sort of every edge: the polish
+  // asks for this after every pass.
+  const size_t n = mesh.points.size();
+  std::vector<int> offset(n + 1, 0);
   for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
-  std::sort(edges.begin(), edges.end());
-  VertexEdges v{std::vector<int>(mesh.points.size(), 0),
-                std::vector<bool>(mesh.points.size(), false)};
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    const auto [a, b] = edges[i];
-    ++v.valence[a];
-    ++v.valence[b];
-    if (j - i == 1) v.onBoundary[a] = v.onBoundary[b] = true;
-    i = j;
+    for (int v : t) offset[v + 1] += 2;
+  std::partial_sum(offset.begin(), offset.end(), offset.begin());
+  std::vector<int> neighbour(offset.back()), fill(offset.begin(), offset.end() - 1);
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      neighbour[fill[t[k]]++] = t[(k + 1) % 3];
+      neighbour[fill[t[k]]++] = t[(k + 2) % 3];
+    }
+  VertexEdges v{std::vector<int>(n, 0), std::vector<bool>(n, false)};
+  for (size_t u = 0; u < n; ++u) {
+    const auto begin = neighbour.begin() + offset[u], end = neighbour.begin() + offset[u + 1];
+    std::sort(begin, end);
+    for (auto i = begin; i != end;) {
+      const auto j = std::find_if(i, end, [&](int w) { return w != *i; });
+      ++v.valence[u];
+      if (j - i == 1) v.onBoundary[u] = true;  // an edge of one face
+      i = j;
+    }
   }
   return v;
 }
