@@ -1,6 +1,7 @@
 // Components, boundary loops, Euler characteristic and genus of small hand-built meshes.
 
 #include "mesh_io.h"
+#include "test_support.h"
 #include "topology.h"
 
 #include <gtest/gtest.h>
@@ -153,6 +154,27 @@ TEST(Topology, ComponentsSplitIntoMeshesOfTheirOwn) {
   EXPECT_EQ(parts[1].points, (std::vector<Vec3>{{5, 0, 0}, {6, 0, 0}, {5, 1, 0}}));
   EXPECT_EQ(parts[1].triangles, (std::vector<Triangle>{{0, 1, 2}}));
   for (const Mesh& part : parts) EXPECT_TRUE(analyzeTopology(part).isDisk());
+}
+
+// Valences and border flags: a 2 x 2 grid split along its diagonals (the centre joined to all
+// eight others but two corners), a tetrahedron, an unused vertex, and an edge of three faces,
+// which is not a border edge.
+TEST(Topology, VertexEdgesCountNeighboursAndBorders) {
+  const Mesh grid = test::grid(2);  // vertex j * 3 + i at (i, j)
+  const VertexEdges g = vertexEdges(grid);
+  EXPECT_EQ(g.valence, (std::vector<int>{3, 4, 2, 4, 6, 4, 2, 4, 3}));
+  for (int v = 0; v < 9; ++v) EXPECT_EQ(g.onBoundary[v], v != 4) << v;
+
+  const Mesh tetrahedron{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {5, 5, 5}},
+                         {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+  const VertexEdges t = vertexEdges(tetrahedron);
+  EXPECT_EQ(t.valence, (std::vector<int>{3, 3, 3, 3, 0}));
+  EXPECT_EQ(t.onBoundary, (std::vector<bool>(5, false)));
+
+  const Mesh fin{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}};
+  const VertexEdges f = vertexEdges(fin);  // edge 0-1 has three faces
+  EXPECT_EQ(f.valence, (std::vector<int>{4, 4, 2, 2, 2}));
+  EXPECT_EQ(f.onBoundary, (std::vector<bool>(5, true)));  // each also has an edge of one face
 }
 
 TEST(Topology, TorusIsClosedGenusOne) {
