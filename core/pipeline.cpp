@@ -324,8 +324,9 @@ RemeshResult remeshSurface(const Mesh& input, const RemeshOptions& options, cons
   return kept;
 }
 
-// A component whose share of the vertices asked for is smaller than this is too small to be
-// remeshed at that size (debris, a loose triangle): it is kept as it is.
+// The fewest vertices a component is remeshed to. One whose share of the vertices asked for is
+// smaller, and which has no more vertices than this (debris, a loose triangle), is kept as it
+// is; a larger one is remeshed to this many.
 constexpr int kSmallestRemeshedShare = 20;
 
 void append(Mesh& to, const Mesh& part) {
@@ -347,16 +348,16 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
   for (size_t i = 0; i < parts.size(); ++i) {
     const double area = surfaceArea(parts[i]);
     auto share = [&](int count) { return static_cast<int>(std::lround(count * area / totalArea)); };
-    RemeshOptions o = options;
-    o.simplifyTo = options.simplifyTo > 0 ? share(options.simplifyTo) : 0;
-    o.sites.count = options.sites.count > 0 ? share(options.sites.count) : 0;
-    o.measureFidelity = false;
-    if ((options.simplifyTo > 0 && o.simplifyTo < kSmallestRemeshedShare) ||
-        (options.sites.count > 0 && o.sites.count < kSmallestRemeshedShare)) {
+    const int asked = options.sites.count > 0 ? options.sites.count : options.simplifyTo;
+    if (asked > 0 && share(asked) < kSmallestRemeshedShare && parts[i].vertexCount() <= kSmallestRemeshedShare) {
       append(result.output, parts[i]);
       ++result.componentsKept;
       continue;
     }
+    RemeshOptions o = options;
+    if (options.simplifyTo > 0) o.simplifyTo = std::max(kSmallestRemeshedShare, share(options.simplifyTo));
+    if (options.sites.count > 0) o.sites.count = std::max(kSmallestRemeshedShare, share(options.sites.count));
+    o.measureFidelity = false;
     const std::string partName =
         name + " (component " + std::to_string(i + 1) + " of " + std::to_string(parts.size()) + ")";
     RemeshResult r = remeshSurface(parts[i], o, partName);

@@ -73,7 +73,7 @@ struct RemeshResult {
   // Connected components of the input, each remeshed on its own (remesh()); with more than one,
   // recording, paramUsed, distortion and cut are the largest one's.
   int components = 1;
-  int componentsKept = 0;  // of them, too small for their share of the vertices: kept as they are
+  int componentsKept = 0;  // of them, debris too small for its share of the vertices: kept as it is
   std::optional<SlitTrial> slitTrial;  // with cut.seamEdges > 0 if the slit one was kept
   StageTimes ms;
 };

@@ -160,6 +160,24 @@ TEST(Cut, SeveralComponentsAreRemeshedEachOnItsOwn) {
   EXPECT_LT(r.fidelity.hausdorffPercent, 2.0);
 }
 
+// A component whose share would be 2 vertices but that has 49 is remeshed to 20, not kept.
+TEST(Cut, ASmallComponentIsRemeshedToTwentyVertices) {
+  Mesh two = test::grid(10, 10.0);
+  const Mesh small = test::grid(6, 0.6);
+  const int offset = two.vertexCount();
+  for (const Vec3& p : small.points) two.points.push_back(p + Vec3(20, 0, 0));
+  for (Triangle t : small.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  RemeshOptions o;
+  o.sites.count = 600;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(two, o, "two grids");
+  EXPECT_EQ(r.componentsKept, 0);
+  const std::vector<Mesh> parts = splitComponents(r.output);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_NEAR(parts[0].vertexCount(), 598, 6);
+  EXPECT_NEAR(parts[1].vertexCount(), 20, 2);
+}
+
 // The inspector steps one surface: a session refuses several, and says what does them.
 TEST(Cut, ASessionRefusesSeveralComponents) {
   Mesh two = test::grid(2);
