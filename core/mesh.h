@@ -30,7 +30,8 @@ struct Mesh {
 };
 
 // Per vertex: the number of distinct neighbours, and whether an edge with a single face
-// touches it (the vertex is on a boundary).
+// touches it (the vertex is on a boundary). No triangle may repeat a corner (validateMesh()
+// refuses such faces).
 struct VertexEdges {
   std::vector<int> valence;
   std::vector<bool> onBoundary;
