@@ -120,8 +120,8 @@ std::string withoutResamplingText(const std::string& problem) {
 std::string slitTrialText(const RemeshResult& r) {
   if (!r.slitTrial) return "";
   return std::string(r.cut.seamEdges > 0 ? "Kept slit open" : "Kept whole") +
-         " (remeshed both slit open and whole: its map to a disk shrinks part of it over 10^4"
-         " times): average smallest angle " +
+         " (remeshed both slit open and whole: its map to a disk shrinks part of it over " +
+         std::to_string(static_cast<long>(CutOptions{}.slitDisksAbove)) + " times): average smallest angle " +
          format("%.1f", r.slitTrial->slit) + " deg slit, " + format("%.1f", r.slitTrial->whole) +
          " deg whole";
 }

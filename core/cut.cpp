@@ -454,10 +454,10 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
     best = std::move(tried);
     scale = std::move(triedScale);
   }
-  // A disk's slits must bring its spread under slitDisksAbove, or they are left out: the
+  // A disk's slits must bring its spread under keepDiskSlitsUnder, or they are left out: the
   // protrusions of a terrain (CGAL's three peaks as it comes: 2 10^4 after 4 slits) are better
   // whole.
-  if (topology.isDisk() && best.summary.areaSpread > options.slitDisksAbove) {
+  if (topology.isDisk() && best.summary.areaSpread > options.keepDiskSlitsUnder) {
     best.seam.clear();
     best.summary = whole;
   }

@@ -40,12 +40,14 @@ struct CutOptions {
   // kept only if it lowers the spread.
   double maxAreaSpread = 20;
   int maxExtremityCuts = 12;
-  // A disk is slit only where its own map's spread is above this (then, as any surface, while
-  // it is above maxAreaSpread), and only if the slits bring it under this: a nearly closed shape (CGAL's mannequin at 6 10^4, the camel head at 5 10^4 ..
-  // 2 10^5), whose far side the map to a disk shrinks so much that the cells there come out
-  // irregular. Below it (a face mask at 3-7 10^3, the lion head at 2-3 10^3) the seams cost
-  // more than the lower distortion gives (measured on issue 5's bench inputs).
-  double slitDisksAbove = 1e4;
+  // A disk is slit only where its own map's spread is above slitDisksAbove (then, as any
+  // surface, while it is above maxAreaSpread), and the slits are kept only if they bring it
+  // under keepDiskSlitsUnder: a nearly closed shape (CGAL's lion head at 2-3 10^3, the
+  // mannequin at 6 10^4, a camel head at 5 10^4 .. 2 10^5), whose far side the map to a disk
+  // shrinks so much that the cells there come out irregular. remesh() makes such a disk whole
+  // too and keeps the better result (the slits through a terrain's peaks cost).
+  double slitDisksAbove = 1e3;
+  double keepDiskSlitsUnder = 1e4;
 };
 
 // The cut, in two parts. Topological: the border loops joined one by one to the nearest by
