@@ -125,7 +125,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                "input the result would cut off");
   cmd.add_flag("--no-slit", r.noSlit,
                "Keep a nearly closed disk whole (by default it is also remeshed slit open, and the "
-               "result with the larger average smallest angle kept)");
+               "result meeting more of the quality bars kept, then the larger average smallest angle)");
   cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
 }
 

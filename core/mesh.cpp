@@ -34,6 +34,12 @@ VertexEdges vertexEdges(const Mesh& mesh) {
   return v;
 }
 
+void append(Mesh& to, const Mesh& part) {
+  const int offset = to.vertexCount();
+  to.points.insert(to.points.end(), part.points.begin(), part.points.end());
+  for (Triangle t : part.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+}
+
 std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh) {
   if (mesh.points.empty()) return {Vec3::Zero(), Vec3::Zero()};
   Vec3 lo = mesh.points.front(), hi = lo;

@@ -44,6 +44,8 @@ std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh);
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
 double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas
+// Appends `part`'s vertices and triangles to `to` (as another component).
+void append(Mesh& to, const Mesh& part);
 double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c);  // signed, > 0 if CCW
 
 }  // namespace lloydscope

@@ -79,13 +79,11 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         if (topology.isDisk() && !options_.slitDisks) return mesh;
         // A nearly closed disk is slit open too (CutOptions::slitDisksAbove); the seams are
         // stitched again in buildOutput().
-        CutResult cut;
+        CutResult cut;  // no seam: the mesh as it is
         try {
           cut = cutToDisk(mesh, name);
         } catch (const Error&) {
-          if (!topology.isDisk()) throw;
-          ms_.cut = stage.lap();
-          return mesh;  // the slits are an improvement for a disk, not a need
+          if (!topology.isDisk()) throw;  // the slits are an improvement for a disk, not a need
         }
         ms_.cut = stage.lap();
         if (cut.seam.empty()) return mesh;
@@ -301,8 +299,8 @@ bool betterThan(const QualityMetrics& a, const QualityMetrics& b) {
 // camel head, the lion head at 1000 vertices) pay, through the peaks of a terrain (CGAL's three
 // peaks) they cost. The other run's time counts; the distance to the input is measured once, on the one
 // kept. If the slit run fails (its seams do not stitch), the whole one stands alone.
-RemeshResult remeshSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  if (!options.slitDisks || !analyzeTopology(input).isDisk()) return remeshOnce(input, options, name);
+RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& options, const std::string& name) {
+  if (!options.slitDisks || !disk) return remeshOnce(input, options, name);
   RemeshOptions slitOptions = options, wholeOptions = options;
   slitOptions.measureFidelity = wholeOptions.measureFidelity = false;
   wholeOptions.slitDisks = false;
@@ -340,12 +338,6 @@ RemeshResult remeshSurface(const Mesh& input, const RemeshOptions& options, cons
 // is; a larger one is remeshed to this many.
 constexpr int kSmallestRemeshedShare = 20;
 
-void append(Mesh& to, const Mesh& part) {
-  const int offset = to.vertexCount();
-  to.points.insert(to.points.end(), part.points.begin(), part.points.end());
-  for (Triangle t : part.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-}
-
 // Each connected component on its own, with its share (by area) of the vertices asked for; the
 // results side by side, measured together against the whole input. The largest component's
 // recording, map and cut stand for the run.
@@ -371,17 +363,14 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
     o.measureFidelity = false;
     const std::string partName =
         name + " (component " + std::to_string(i + 1) + " of " + std::to_string(parts.size()) + ")";
-    RemeshResult r = remeshSurface(parts[i], o, partName);
+    RemeshResult r = remeshSurface(parts[i], analyzeTopology(parts[i]).isDisk(), o, partName);
     append(result.output, r.output);
     result.iterations += r.iterations;
     result.converged = result.converged && r.converged;
     result.snappedTips += r.snappedTips;
     if (!r.resampleDropped.empty())
       result.resampleDropped += (result.resampleDropped.empty() ? "" : "; ") + ("component " + std::to_string(i + 1) + ": " + r.resampleDropped);
-    for (double StageTimes::*stage : {&StageTimes::simplify, &StageTimes::cut, &StageTimes::resample, &StageTimes::parameterize,
-                                      &StageTimes::density, &StageTimes::sites, &StageTimes::lloyd, &StageTimes::remesh,
-                                      &StageTimes::compared, &StageTimes::metrics})
-      result.ms.*stage += r.ms.*stage;
+    result.ms += r.ms;  // the total is timed around them all, in remesh()
     if (area > largest) {
       largest = area;
       result.recording = std::move(r.recording);
@@ -402,7 +391,8 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
 }  // namespace
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  if (analyzeTopology(input).components <= 1) return remeshSurface(input, options, name);
+  const Topology topology = analyzeTopology(input);
+  if (topology.components <= 1) return remeshSurface(input, topology.isDisk(), options, name);
   Stopwatch total;
   RemeshResult result = remeshComponents(input, options, name);
   result.ms.total = total.lap();

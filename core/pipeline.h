@@ -50,6 +50,15 @@ struct StageTimes {  // milliseconds
   double simplify = 0, cut = 0, resample = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
          metrics = 0, total = 0;
   double compared = 0;  // the run a slit disk was compared with (SlitTrial), its metrics left out
+
+  StageTimes& operator+=(const StageTimes& o) {
+    for (double StageTimes::*stage : {&StageTimes::simplify, &StageTimes::cut, &StageTimes::resample,
+                                      &StageTimes::parameterize, &StageTimes::density, &StageTimes::sites,
+                                      &StageTimes::lloyd, &StageTimes::remesh, &StageTimes::metrics,
+                                      &StageTimes::total, &StageTimes::compared})
+      this->*stage += o.*stage;
+    return *this;
+  }
 };
 
 // A nearly closed disk remeshed both slit open and whole: the average smallest angle of each.

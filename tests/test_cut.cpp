@@ -31,9 +31,7 @@ Mesh sphere() {  // a cube's six grids pushed onto the unit sphere
         q[(axis + 2) % 3] = (p.y() - 1) * sign;
         p = q.normalized();
       }
-      const int offset = mesh.vertexCount();
-      for (const Vec3& p : face.points) mesh.points.push_back(p);
-      for (Triangle t : face.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+      append(mesh, face);
     }
   // Weld the cube's edges: the same point, one vertex.
   std::vector<int> weld(mesh.vertexCount());
@@ -52,6 +50,13 @@ Mesh sphere() {  // a cube's six grids pushed onto the unit sphere
   for (Triangle& t : mesh.triangles)
     for (int& v : t) v = weld[v];
   return mesh;
+}
+
+// Two unit grids side by side: two components.
+Mesh twoGrids() {
+  Mesh two = test::grid(2);
+  append(two, test::moved(test::grid(2), 1.0, Vec3(5, 0, 0)));
+  return two;
 }
 
 // (Not validateMesh: the copies of a cut vertex are at the same position, by design.)
@@ -113,11 +118,7 @@ TEST(Cut, ACutSurfaceGetsTheVerticesAsked) {
 }
 
 TEST(Cut, SeveralComponentsAreRefusedWithTheReason) {
-  Mesh two = test::grid(2);
-  const Mesh other = test::grid(2);
-  const int offset = two.vertexCount();
-  for (const Vec3& p : other.points) two.points.push_back(p + Vec3(5, 0, 0));
-  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const Mesh two = twoGrids();
   try {
     cutToDisk(two, "two.off");
     FAIL() << "no error";
@@ -132,10 +133,7 @@ TEST(Cut, SeveralComponentsAreRefusedWithTheReason) {
 // its share of the vertices by area (4 to 1), and the result has both, each of genus 1 --
 TEST(Cut, SeveralComponentsAreRemeshedEachOnItsOwn) {
   Mesh two = torus();
-  const Mesh small = torus();
-  const int offset = two.vertexCount();
-  for (const Vec3& p : small.points) two.points.push_back(0.5 * p + Vec3(10, 0, 0));
-  for (Triangle t : small.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  append(two, test::moved(torus(), 0.5, Vec3(10, 0, 0)));
   // and a loose triangle, far too small for a share of 20 vertices: kept as it is.
   const int loose = two.vertexCount();
   for (const Vec3& p : {Vec3(20, 0, 0), Vec3(20.1, 0, 0), Vec3(20, 0.1, 0)}) two.points.push_back(p);
@@ -163,10 +161,7 @@ TEST(Cut, SeveralComponentsAreRemeshedEachOnItsOwn) {
 // A component whose share would be 2 vertices but that has 49 is remeshed to 20, not kept.
 TEST(Cut, ASmallComponentIsRemeshedToTwentyVertices) {
   Mesh two = test::grid(10, 10.0);
-  const Mesh small = test::grid(6, 0.6);
-  const int offset = two.vertexCount();
-  for (const Vec3& p : small.points) two.points.push_back(p + Vec3(20, 0, 0));
-  for (Triangle t : small.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  append(two, test::moved(test::grid(6, 0.6), 1.0, Vec3(20, 0, 0)));
   RemeshOptions o;
   o.sites.count = 600;
   o.measureFidelity = false;
@@ -180,11 +175,7 @@ TEST(Cut, ASmallComponentIsRemeshedToTwentyVertices) {
 
 // The inspector steps one surface: a session refuses several, and says what does them.
 TEST(Cut, ASessionRefusesSeveralComponents) {
-  Mesh two = test::grid(2);
-  const Mesh other = test::grid(2);
-  const int offset = two.vertexCount();
-  for (const Vec3& p : other.points) two.points.push_back(p + Vec3(5, 0, 0));
-  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const Mesh two = twoGrids();
   try {
     RemeshSession session(two, RemeshOptions{}, "two.off");
     FAIL() << "no error";

@@ -240,10 +240,7 @@ TEST(Inspector, TheFirstViewFitsALongShape) {
 // the pane's side).
 TEST(Inspector, TheFinalResultOfTwoComponentsFitsBoth) {
   Mesh two = test::grid(8);
-  const Mesh other = test::grid(8, 0.9);
-  const int offset = two.vertexCount();
-  for (const Vec3& p : other.points) two.points.push_back(p + Vec3(3, 0, 0));
-  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  append(two, test::moved(test::grid(8, 0.9), 1.0, Vec3(3, 0, 0)));
   for (Vec3& p : two.points) p.z() = 0.1 * std::sin(3 * p.x()) * std::sin(3 * p.y());
   const std::string mesh = test::tempPath("two_grids.off"), png = test::tempPath("two_grids.png");
   writeMesh(two, mesh);

@@ -53,6 +53,12 @@ inline Mesh torus() {
   });
 }
 
+// `mesh` scaled by `scale` and moved by `offset`: a second component to append() beside it.
+inline Mesh moved(Mesh mesh, double scale, const Vec3& offset) {
+  for (Vec3& p : mesh.points) p = scale * p + offset;
+  return mesh;
+}
+
 inline std::string assetPath(const std::string& name) {
   return std::string(LLOYDSCOPE_SOURCE_DIR) + "/assets/" + name;
 }
