@@ -165,17 +165,32 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
 
 Inspector::~Inspector() { stopRun(); }
 
+namespace {
+std::vector<CvtSolver> otherSolvers(CvtSolver solver) {
+  std::vector<CvtSolver> others;
+  for (CvtSolver s : {CvtSolver::Lloyd, CvtSolver::Lbfgs, CvtSolver::Newton})
+    if (s != solver) others.push_back(s);
+  return others;
+}
+
+// The curves of the compared solvers, in otherSolvers() order.
+// (Green is the threshold line's, red the current iteration's.)
+const ImVec4 kComparisonColours[] = {{0.55f, 0.55f, 0.55f, 1}, {0.62f, 0.3f, 0.72f, 1}};
+}  // namespace
+
 void Inspector::compareSolvers() {
-  LloydOptions o = options_.lloyd;
-  o.solver = options_.lloyd.solver == CvtSolver::Lloyd ? CvtSolver::Lbfgs : CvtSolver::Lloyd;
-  o.distanceThreshold = replay_->recording().distanceThreshold;
-  o.percentThreshold = replay_->recording().percentThreshold;
-  comparison_ = relaxAgain(replay_->recording(), o);
-  comparisonSolver_ = o.solver;
+  comparisons_.clear();
+  for (CvtSolver solver : otherSolvers(options_.lloyd.solver)) {
+    LloydOptions o = options_.lloyd;
+    o.solver = solver;
+    o.distanceThreshold = replay_->recording().distanceThreshold;
+    o.percentThreshold = replay_->recording().percentThreshold;
+    comparisons_.push_back({solver, relaxAgain(replay_->recording(), o)});
+  }
 }
 
 void Inspector::openReplay(Recording recording) {
-  comparison_.clear();  // of another run
+  comparisons_.clear();  // of another run
   replay_ = std::make_unique<Replay>(std::move(recording));
   uploadedIteration_ = measuredIteration_ = edgesIteration_ = -1;
   canvasKey_ = CanvasKey{};
@@ -696,10 +711,11 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::Text("Hausdorff %.3f%%, RMS %.3f%% of diagonal", result_.fidelity.hausdorffPercent,
               result_.fidelity.rmsPercent);
   if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
-  const CvtSolver other =
-      options_.lloyd.solver == CvtSolver::Lloyd ? CvtSolver::Lbfgs : CvtSolver::Lloyd;
-  if (workerDone_ && ImGui::Button(("Compare with " + std::string(toString(other))).c_str()))
-    compareSolvers();  // its curves join the convergence plots, in grey
+  const std::vector<CvtSolver> others = otherSolvers(options_.lloyd.solver);
+  const std::string compare =
+      std::string("Compare with ") + toString(others[0]) + " and " + toString(others[1]);
+  if (workerDone_ && ImGui::Button(compare.c_str()))
+    compareSolvers();  // their curves join the convergence plots
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pick = pickTriangles2D_ ? 1 : 0;
     ImGui::TextUnformatted("2D click pins a");
@@ -810,9 +826,9 @@ void Inspector::settingsControls() {
   int method = options_.method == RemeshMethod::Relocate ? 0 : 1;
   if (combo("method", method, "relocate\0retriangulate\0"))
     options_.method = method == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate;
-  int solver = options_.lloyd.solver == CvtSolver::Lloyd ? 0 : 1;
-  if (combo("solver", solver, "lloyd\0lbfgs\0"))
-    options_.lloyd.solver = solver == 0 ? CvtSolver::Lloyd : CvtSolver::Lbfgs;
+  int solver = static_cast<int>(options_.lloyd.solver);  // in CvtSolver's order
+  if (combo("solver", solver, "lloyd\0lbfgs\0newton\0"))
+    options_.lloyd.solver = static_cast<CvtSolver>(solver);
   bool own = options_.sites.fromInputVertices;
   if (ImGui::Checkbox("sites = input vertices", &own)) options_.sites.fromInputVertices = own;
   if (!own) {
@@ -1124,8 +1140,9 @@ namespace {
 
 // A plot with axes and ticks over the whole recording; returns the iteration clicked, or -1.
 // `other`: a second run's values, drawn in grey behind the first (empty: none).
-int plot(const char* title, const std::vector<double>& values, const std::vector<double>& other,
-         bool logScale, double threshold, int current, const ImVec2& size) {
+int plot(const char* title, const std::vector<double>& values,
+         const std::vector<std::vector<double>>& others, bool logScale, double threshold,
+         int current, const ImVec2& size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(title, size);
@@ -1139,12 +1156,17 @@ int plot(const char* title, const std::vector<double>& values, const std::vector
   if (values.empty()) return -1;
   auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };
   double lo = INFINITY, hi = -INFINITY;
-  for (const std::vector<double>* series : {&values, &other})
-    for (double v : *series)
+  size_t longest = values.size();
+  auto extend = [&](const std::vector<double>& series) {
+    longest = std::max(longest, series.size());
+    for (double v : series)
       if (!logScale || v > 0) {
         lo = std::min(lo, transform(v));
         hi = std::max(hi, transform(v));
       }
+  };
+  extend(values);
+  for (const std::vector<double>& series : others) extend(series);
   if (threshold > 0) {
     lo = std::min(lo, transform(threshold));
     hi = std::max(hi, transform(threshold));
@@ -1154,7 +1176,7 @@ int plot(const char* title, const std::vector<double>& values, const std::vector
     lo = std::floor(lo);
     hi = std::ceil(hi);
   }
-  const int n = static_cast<int>(std::max(values.size(), other.size()));
+  const int n = static_cast<int>(longest);
   auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
   auto y = [&](double v) { return b.y - static_cast<float>((transform(v) - lo) / (hi - lo)) * (b.y - a.y); };
   // Y ticks: every power of ten on a log axis, five steps on a linear one.
@@ -1182,7 +1204,8 @@ int plot(const char* title, const std::vector<double>& values, const std::vector
       if (!logScale || series[k] > 0) line.emplace_back(x(static_cast<double>(k)), y(series[k]));
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, 1.5f);
   };
-  polyline(other, rgb(0.6f, 0.6f, 0.6f));
+  for (size_t k = 0; k < others.size(); ++k)
+    polyline(others[k], ImGui::ColorConvertFloat4ToU32(kComparisonColours[k]));
   polyline(values, rgb(0.15f, 0.3f, 0.7f));
   dl->AddLine(ImVec2(x(current), a.y), ImVec2(x(current), b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
   if (current < static_cast<int>(values.size()) && (!logScale || values[current] > 0))
@@ -1199,36 +1222,47 @@ int plot(const char* title, const std::vector<double>& values, const std::vector
 
 void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   beginPane("Convergence", pos, size, kCanvasPaneFlags);
-  struct Curves {
-    std::vector<double> energy, displacement, moving;
-    explicit Curves(const std::vector<IterationRecord>& its) {
+  struct Curves {  // one series per run
+    std::vector<std::vector<double>> energy, displacement, moving;
+    Curves() = default;
+    explicit Curves(const std::vector<IterationRecord>& its) { add(its); }
+    void add(const std::vector<IterationRecord>& its) {
+      energy.emplace_back();
+      displacement.emplace_back();
+      moving.emplace_back();
       for (const IterationRecord& it : its) {
-        energy.push_back(it.energy);
-        displacement.push_back(it.maxDisplacement);
-        moving.push_back(100.0 * it.fractionMoving);
+        energy.back().push_back(it.energy);
+        displacement.back().push_back(it.maxDisplacement);
+        moving.back().push_back(100.0 * it.fractionMoving);
       }
     }
   };
-  const Curves run(replay_->recording().iterations), other(comparison_);
-  if (!comparison_.empty()) {  // which curve is which
+  const Curves run(replay_->recording().iterations);
+  Curves others;
+  if (!comparisons_.empty()) {  // which curve is which
     const char* solver = toString(options_.lloyd.solver);
-    ImGui::TextColored(ImVec4(0.15f, 0.3f, 0.7f, 1), "%s: this run, %d iterations", solver,
+    ImGui::TextColored(ImVec4(0.15f, 0.3f, 0.7f, 1), "%s, this run: %d iterations", solver,
                        replay_->iterationCount());
-    ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.45f, 0.45f, 0.45f, 1), "   %s from the same start: %d iterations%s",
-                       toString(comparisonSolver_), static_cast<int>(comparison_.size()),
-                       100.0 * comparison_.back().fractionMoving < replay_->recording().percentThreshold
-                           ? " (converged)" : " (not converged)");
+    for (size_t k = 0; k < comparisons_.size(); ++k) {
+      const Comparison& c = comparisons_[k];
+      others.add(c.iterations);
+      const bool converged = !c.iterations.empty() && 100.0 * c.iterations.back().fractionMoving <
+                                                          replay_->recording().percentThreshold;
+      ImGui::SameLine();
+      ImGui::TextColored(kComparisonColours[k], "  %s%s: %d%s", toString(c.solver),
+                         k == 0 ? ", same start" : "", static_cast<int>(c.iterations.size()),
+                         converged ? "" : ", not converged");
+    }
   }
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 each((avail.x - 2 * ImGui::GetStyle().ItemSpacing.x) / 3, avail.y);
-  int jump = plot("CVT energy", run.energy, other.energy, false, 0, iteration_, each);
+  int jump = plot("CVT energy", run.energy[0], others.energy, false, 0, iteration_, each);
   ImGui::SameLine();
-  int k = plot("max distance site-centroid (log)", run.displacement, other.displacement, true,
+  int k = plot("max distance site-centroid (log)", run.displacement[0], others.displacement, true,
                replay_->recording().distanceThreshold, iteration_, each);
   if (k >= 0) jump = k;
   ImGui::SameLine();
-  k = plot("% sites farther than threshold (log)", run.moving, other.moving, true,
+  k = plot("% sites farther than threshold (log)", run.moving[0], others.moving, true,
            replay_->recording().percentThreshold, iteration_, each);
   if (k >= 0) jump = k;
   if (jump >= 0) setIteration(jump);

@@ -61,7 +61,7 @@ struct OpeningView {
   std::string camera;                 // "yaw pitch distance x y z"; empty: fit to the mesh
   bool presentation = false;          // classroom mode
   std::optional<Stage> stage;         // show this stage of the lesson, with its caption
-  bool compareSolvers = false;        // also the other solver's curves (Inspector::compareSolvers)
+  bool compareSolvers = false;        // also the other solvers' curves (Inspector::compareSolvers)
   bool final = false;                 // the 3D pane shows the final result (showFinal)
   void applyTo(Inspector& inspector) const;
 };
@@ -168,8 +168,11 @@ class Inspector {
   std::mutex pendingMutex_;
   std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
   std::string message_;                   // the last error or note, shown in the controls
-  std::vector<IterationRecord> comparison_;  // the other solver's run, if compared
-  CvtSolver comparisonSolver_ = CvtSolver::Lloyd;
+  struct Comparison {  // another solver's run from the same first sites
+    CvtSolver solver;
+    std::vector<IterationRecord> iterations;
+  };
+  std::vector<Comparison> comparisons_;  // the other solvers', if compared
   char meshPath_[512] = {}, recordingPath_[512] = {};
   CanvasRenderer canvas_;
   // What the 2D pane's geometry was built for: rebuilt when any of it changes.

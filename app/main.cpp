@@ -108,8 +108,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)");
   cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(CLI::PositiveNumber);
   cmd.add_option("--solver", r.solver,
-                 "lbfgs (default: quasi-Newton, converges in far fewer iterations) or lloyd (the "
-                 "reference's)");
+                 "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
+                 "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
   cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
       ->check(CLI::PositiveNumber);
   cmd.add_option("--distance-threshold", r.distanceThreshold,
@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
                          "Pin this triangle of the result (repeatable)");
   inspectCmd->add_flag("--compare-solvers", shot.view.compareSolvers,
-                       "Also relax the run's start with the other solver and plot both curves");
+                       "Also relax the run's start with the other two solvers and plot their curves");
   inspectCmd->add_flag("--presentation", shot.view.presentation,
                        "Classroom mode: large fonts, thick lines, no controls pane");
   std::string stage;

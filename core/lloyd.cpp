@@ -1,5 +1,7 @@
 #include "lloyd.h"
 
+#include "cvt_hessian.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -74,14 +76,18 @@ LloydSolver::LloydSolver(const Domain& domain, std::vector<Vec2> fixedSites,
 }
 
 LloydSolver::Evaluation LloydSolver::evaluate(const std::vector<Vec2>& movable) {
-  const std::vector<BoundedCell> cells =
-      computeCells(domain_, allSites(fixed_, movable), /*keepGeometry=*/false, &hints_,
+  const bool newton = options_.solver == CvtSolver::Newton;
+  std::vector<BoundedCell> cells =
+      computeCells(domain_, allSites(fixed_, movable),
+                   newton ? CellDetail::EdgeMoments : CellDetail::Integrals, &hints_,
                    options_.threads);
   Evaluation e;
   for (const BoundedCell& cell : cells) e.energy += cell.energy;
   for (size_t i = fixed_.size(); i < cells.size(); ++i) {
     e.centroids.push_back(cells[i].centroid);
     e.masses.push_back(cells[i].mass);
+    e.areas.push_back(cells[i].area);
+    if (newton) e.edges.push_back(std::move(cells[i].edges));
   }
   return e;
 }
@@ -159,6 +165,36 @@ std::vector<Vec2> LloydSolver::lbfgsStep(const Evaluation& current, Evaluation& 
   return trial;
 }
 
+std::vector<Vec2> LloydSolver::newtonStep(const Evaluation& current, Evaluation& next) {
+  const std::vector<Vec2>& x = movable_;
+  const std::vector<double> g = gradient(x, current);
+  const Eigen::Map<const Eigen::VectorXd> gradientVector(g.data(), g.size());
+  const CvtHessian hessian(fixed_, x, current.edges, current.masses);
+  Eigen::VectorXd direction = newtonDirection(hessian, gradientVector);
+  // The Hessian holds while the cells keep their neighbours: no site goes farther than half
+  // its cell's size in one step.
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double reach = 0.5 * std::sqrt(current.areas[i]);
+    const double length = direction.segment<2>(2 * i).norm();
+    if (length > reach) direction.segment<2>(2 * i) *= reach / length;
+  }
+  const double slope = gradientVector.dot(direction);
+  std::vector<Vec2> trial(x.size());
+  double step = 1.0;
+  for (int tries = 0; tries < kMaxHalvings && slope < 0; ++tries) {
+    for (size_t i = 0; i < x.size(); ++i)
+      trial[i] = snapToGrid(x[i] + step * Vec2(direction[2 * i], direction[2 * i + 1]));
+    next = evaluate(trial);
+    const double rise = next.energy - current.energy;
+    if (rise <= kArmijo * step * slope) return trial;
+    step *= 0.5;  // (the minimum of a parabola through E(0), E'(0), E(step) took more tries)
+  }
+  trial = current.centroids;  // no descent found: Lloyd's step, which always descends
+  for (Vec2& s : trial) s = snapToGrid(s);
+  next = evaluate(trial);
+  return trial;
+}
+
 const IterationRecord& LloydSolver::step() {
   const auto start = std::chrono::steady_clock::now();
   if (current_.empty()) current_.push_back(evaluate(movable_));
@@ -186,7 +222,7 @@ const IterationRecord& LloydSolver::step() {
     current_.clear();
   } else {
     Evaluation next;
-    movable_ = lbfgsStep(e, next);
+    movable_ = options_.solver == CvtSolver::Newton ? newtonStep(e, next) : lbfgsStep(e, next);
     current_.front() = std::move(next);
   }
   record.milliseconds =
@@ -204,12 +240,19 @@ void LloydSolver::run() {
   while (!converged() && static_cast<int>(iterations_.size()) < options_.maxIterations) step();
 }
 
-const char* toString(CvtSolver solver) { return solver == CvtSolver::Lloyd ? "lloyd" : "lbfgs"; }
+const char* toString(CvtSolver solver) {
+  switch (solver) {
+    case CvtSolver::Lloyd: return "lloyd";
+    case CvtSolver::Lbfgs: return "lbfgs";
+    case CvtSolver::Newton: return "newton";
+  }
+  return "?";
+}
 
 CvtSolver parseCvtSolver(const std::string& text) {
-  if (text == "lloyd") return CvtSolver::Lloyd;
-  if (text == "lbfgs") return CvtSolver::Lbfgs;
-  throw Error("unknown solver '" + text + "' (lloyd, lbfgs)");
+  for (CvtSolver s : {CvtSolver::Lloyd, CvtSolver::Lbfgs, CvtSolver::Newton})
+    if (text == toString(s)) return s;
+  throw Error("unknown solver '" + text + "' (lloyd, lbfgs, newton)");
 }
 
 }  // namespace lloydscope

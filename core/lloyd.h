@@ -13,6 +13,7 @@ namespace lloydscope {
 enum class CvtSolver {
   Lloyd,  // move every site to its centroid
   Lbfgs,  // L-BFGS steps on the CVT energy, preconditioned so its first step is Lloyd's
+  Newton, // truncated Newton steps on the CVT energy with its exact Hessian
 };
 
 struct LloydOptions {
@@ -88,10 +89,12 @@ class LloydSolver {
   struct Evaluation {  // the cells of one configuration, as the solvers need them
     double energy = 0;
     std::vector<Vec2> centroids;
-    std::vector<double> masses;
+    std::vector<double> masses, areas;
+    std::vector<std::vector<EdgeMoments>> edges;  // Newton's only
   };
   Evaluation evaluate(const std::vector<Vec2>& movable);
   std::vector<Vec2> lbfgsStep(const Evaluation& current, Evaluation& next);
+  std::vector<Vec2> newtonStep(const Evaluation& current, Evaluation& next);
   std::vector<double> gradient(const std::vector<Vec2>& x, const Evaluation& e) const;
 
   const Domain& domain_;

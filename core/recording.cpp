@@ -166,7 +166,8 @@ Recording decodePayload(Reader& in, const std::string& path) {
 
 std::vector<BoundedCell> Recording::cells(const Domain& domain, int iteration,
                                           bool keepGeometry, CellHints* hints) const {
-  return computeCells(domain, allSites(fixedSites, iterations.at(iteration).sites), keepGeometry,
+  return computeCells(domain, allSites(fixedSites, iterations.at(iteration).sites),
+                      keepGeometry ? CellDetail::Geometry : CellDetail::Integrals,
                       hints);
 }
 

@@ -31,15 +31,31 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 // A point within this distance (in the unit parameter domain) of a triangle's side is on it.
 constexpr double kOnSide = 1e-9;
 
+// A convex polygon whose sides are labelled: edge[i] names the side from points[i] to
+// points[i + 1]: the site across it for a Voronoi edge, kTriangleSide for a cut by clipping.
+constexpr int kTriangleSide = -2;
+struct LabelledPolygon {
+  std::vector<Vec2> points;
+  std::vector<int> edge;
+  size_t size() const { return points.size(); }
+  void clear() {
+    points.clear();
+    edge.clear();
+  }
+  void push(const Vec2& p, int label) {
+    points.push_back(p);
+    edge.push_back(label);
+  }
+};
+
 // Sutherland-Hodgman: the part of a convex polygon left of each edge of a CCW triangle, in
 // `result`. Returns which edges of the triangle the part reaches (bit k: the edge from corner k
 // to corner k+1): only across those can the cell overlap a neighbouring triangle.
 // `side` and `scratch` are reused between calls to keep allocation out of the inner loop.
-int clipToTriangle(const std::vector<Vec2>& polygon, const Vec2 (&corner)[3],
-                   std::vector<Vec2>& result, std::vector<Vec2>& scratch,
-                   std::vector<double>& side) {
+int clipToTriangle(const LabelledPolygon& polygon, const Vec2 (&corner)[3],
+                   LabelledPolygon& result, LabelledPolygon& scratch, std::vector<double>& side) {
   int reaches = 0;
-  const std::vector<Vec2>* in = &polygon;
+  const LabelledPolygon* in = &polygon;
   for (int k = 0; k < 3; ++k) {
     const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
     const double onEdge = kOnSide * edge.norm();  // cross() is |edge| times the distance
@@ -47,7 +63,7 @@ int clipToTriangle(const std::vector<Vec2>& polygon, const Vec2 (&corner)[3],
     side.resize(n);
     bool anyIn = false, anyOut = false, anyOn = false;
     for (size_t i = 0; i < n; ++i) {
-      side[i] = cross(edge, (*in)[i] - a);
+      side[i] = cross(edge, in->points[i] - a);
       (side[i] >= 0 ? anyIn : anyOut) = true;
       anyOn = anyOn || std::abs(side[i]) <= onEdge;
     }
@@ -57,13 +73,15 @@ int clipToTriangle(const std::vector<Vec2>& polygon, const Vec2 (&corner)[3],
     }
     if (anyOn || anyOut) reaches |= 1 << k;
     if (!anyOut) continue;  // nothing to cut on this side
-    std::vector<Vec2>& out = (in == &result) ? scratch : result;
+    LabelledPolygon& out = (in == &result) ? scratch : result;
     out.clear();
-    for (size_t i = 0, j = n - 1; i < n; j = i++) {  // edge (p, q) = (in[j], in[i])
-      const Vec2 &p = (*in)[j], &q = (*in)[i];
-      if ((side[j] >= 0) != (side[i] >= 0))
-        out.push_back(p + (side[j] / (side[j] - side[i])) * (q - p));
-      if (side[i] >= 0) out.push_back(q);
+    for (size_t i = 0, j = n - 1; i < n; j = i++) {  // side (p, q) = (in[j], in[i])
+      const Vec2 &p = in->points[j], &q = in->points[i];
+      const bool pIn = side[j] >= 0, qIn = side[i] >= 0;
+      // Leaving, the polygon goes on along the triangle's side; entering, along (p, q).
+      if (pIn != qIn)
+        out.push(p + (side[j] / (side[j] - side[i])) * (q - p), pIn ? kTriangleSide : in->edge[j]);
+      if (qIn) out.push(q, in->edge[i]);
     }
     in = &out;
   }
@@ -161,41 +179,81 @@ void storeCircumcenters(size_t begin, size_t end,
 }
 
 // The cell of v: the circumcentres of its faces, counter-clockwise, starting at the smallest
-// (so that the cell's integrals do not depend on how the triangulation stores its faces).
-void voronoiPolygon(const Delaunay& dt, Delaunay::Vertex_handle v, std::vector<Vec2>& polygon) {
+// (so that the cell's integrals do not depend on how the triangulation stores its faces); each
+// side labelled with the site across it.
+void voronoiPolygon(Delaunay::Vertex_handle v, LabelledPolygon& polygon) {
   polygon.clear();
-  auto face = dt.incident_faces(v), end = face;
+  auto face = v->incident_faces(), end = face;
   do {
     const Vec2& p = face->info();
-    if (polygon.empty() || p != polygon.back()) polygon.push_back(p);
+    // The side from this circumcentre to the next is dual to the Delaunay edge (v, w) that
+    // this face shares with the next one counter-clockwise around v.
+    const int across = face->vertex(Delaunay::cw(face->index(v)))->info();
+    if (!polygon.points.empty() && p == polygon.points.back())
+      polygon.edge.back() = across;  // the side before had no length
+    else
+      polygon.push(p, across);
   } while (++face != end);
-  while (polygon.size() > 1 && polygon.front() == polygon.back()) polygon.pop_back();
-  std::rotate(polygon.begin(),
-              std::min_element(polygon.begin(), polygon.end(),
-                               [](const Vec2& a, const Vec2& b) {
-                                 return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-                               }),
-              polygon.end());
+  while (polygon.size() > 1 && polygon.points.front() == polygon.points.back()) {
+    polygon.points.pop_back();
+    polygon.edge.pop_back();
+  }
+  const auto first = std::min_element(
+      polygon.points.begin(), polygon.points.end(),
+      [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  const auto shift = first - polygon.points.begin();
+  std::rotate(polygon.points.begin(), first, polygon.points.end());
+  std::rotate(polygon.edge.begin(), polygon.edge.begin() + shift, polygon.edge.end());
 }
 
 // Buffers reused from cell to cell.
 struct Workspace {
   std::vector<int> visitedBy, queue;
-  std::vector<Vec2> polygon, piece, scratch;
+  LabelledPolygon polygon, piece, scratch;
   std::vector<double> rho, side;
   std::vector<std::pair<int, PolygonIntegrals>> parts;  // (triangle, integrals of the piece)
+  std::vector<std::pair<std::pair<int, int>, int>> edgeOrder;  // ((site, triangle), part)
+  std::vector<EdgeMoments> edgeParts;
 };
+
+// Adds, for each Voronoi side of `piece` (inside one parameter triangle, where the density
+// `rho` at its points is linear), the side's EdgeMoments about `site` to w.edgeParts. Simpson's
+// rule is exact: the integrands are cubic along a side.
+void addEdgeMoments(const LabelledPolygon& piece, const std::vector<double>& rho, const Vec2& site,
+                    int triangle, Workspace& w) {
+  for (size_t i = 0; i < piece.size(); ++i) {
+    if (piece.edge[i] < 0) continue;  // a cut by the clipping, or a far dummy site's edge
+    const size_t j = (i + 1) % piece.size();
+    const double length = (piece.points[j] - piece.points[i]).norm();
+    if (length == 0) continue;
+    const Vec2 q[3] = {piece.points[i] - site, 0.5 * (piece.points[i] + piece.points[j]) - site,
+                       piece.points[j] - site};
+    const double weight[3] = {length / 6 * rho[i], length / 6 * 2 * (rho[i] + rho[j]),
+                              length / 6 * rho[j]};  // Simpson's, times rho
+    EdgeMoments m;
+    m.neighbour = piece.edge[i];
+    for (int k = 0; k < 3; ++k) {
+      m.mass += weight[k];
+      m.first += weight[k] * q[k];
+      m.second += weight[k] * q[k] * q[k].transpose();
+    }
+    w.edgeOrder.push_back({{m.neighbour, triangle}, static_cast<int>(w.edgeParts.size())});
+    w.edgeParts.push_back(m);
+  }
+}
 
 // Visits, breadth first through shared edges, the parameter triangles that the cell overlaps,
 // starting from `start`, the one that holds the site, and integrates cell ∩ triangle for each.
 // The parts are summed in triangle order, so the result does not depend on where the walk
 // started: a cell recomputed later is bit-identical.
-void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, const Vec2& site,
-                      int start, int cellId, bool keepGeometry, Workspace& w,
+void clipAndIntegrate(const Domain& domain, const LabelledPolygon& voronoi, const Vec2& site,
+                      int start, int cellId, CellDetail detail, Workspace& w,
                       BoundedCell& cell) {
   w.queue.assign(1, start);
   w.visitedBy[start] = cellId;
   w.parts.clear();
+  w.edgeParts.clear();
+  w.edgeOrder.clear();
   for (size_t head = 0; head < w.queue.size(); ++head) {
     const int t = w.queue[head];
     const Triangle& tri = domain.triangles()[t];
@@ -203,11 +261,12 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
     const int reaches = clipToTriangle(voronoi, corner, w.piece, w.scratch, w.side);
     if (w.piece.size() < 3) continue;
     w.rho.resize(w.piece.size());
-    for (size_t i = 0; i < w.piece.size(); ++i) w.rho[i] = domain.densityAt(t, w.piece[i]);
-    const PolygonIntegrals part = integratePolygon(w.piece, w.rho, site);
+    for (size_t i = 0; i < w.piece.size(); ++i) w.rho[i] = domain.densityAt(t, w.piece.points[i]);
+    const PolygonIntegrals part = integratePolygon(w.piece.points, w.rho, site);
     if (part.area <= 0) continue;
     w.parts.emplace_back(t, part);
-    if (keepGeometry) cell.pieces.push_back({t, w.piece});
+    if (detail != CellDetail::Integrals) addEdgeMoments(w.piece, w.rho, site, t, w);
+    if (detail == CellDetail::Geometry) cell.pieces.push_back({t, w.piece.points});
     for (int k = 0; k < 3; ++k) {
       const int n = domain.neighbours()[t][(k + 2) % 3];  // across edge (corner k, corner k+1)
       if ((reaches & (1 << k)) && n >= 0 && w.visitedBy[n] != cellId) {
@@ -225,7 +284,20 @@ void clipAndIntegrate(const Domain& domain, const std::vector<Vec2>& voronoi, co
     sum.moment += part.moment;
     sum.energy += part.energy;
   }
-  if (keepGeometry)
+  // The same for the edges: by neighbour, and each one's parts in triangle order.
+  std::sort(w.edgeOrder.begin(), w.edgeOrder.end());
+  for (const auto& [key, index] : w.edgeOrder) {
+    const EdgeMoments& part = w.edgeParts[index];
+    if (cell.edges.empty() || cell.edges.back().neighbour != part.neighbour) {
+      cell.edges.push_back(part);
+      continue;
+    }
+    EdgeMoments& sum = cell.edges.back();
+    sum.mass += part.mass;
+    sum.first += part.first;
+    sum.second += part.second;
+  }
+  if (detail == CellDetail::Geometry)
     std::sort(cell.pieces.begin(), cell.pieces.end(),
               [](const CellPiece& a, const CellPiece& b) { return a.triangle < b.triangle; });
   cell.area = sum.area;
@@ -335,7 +407,7 @@ PolygonIntegrals integratePolygon(const std::vector<Vec2>& polygon,
 }
 
 std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
-                                      bool keepGeometry, CellHints* hints,
+                                      CellDetail detail, CellHints* hints,
                                       int threadCount) {
   std::vector<BoundedCell> cells(sites.size());
   for (size_t i = 0; i < sites.size(); ++i) cells[i].centroid = sites[i];
@@ -362,11 +434,10 @@ std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Ve
           (hint >= 0 ? domain.locate(sites[id], hint) : domain.locate(sites[id])).triangle;
       hints->triangle[id] = start;
       BoundedCell& cell = cells[id];
-      voronoiPolygon(dt, v, w.polygon);
-      const std::vector<Vec2>& polygon = w.polygon;
-      clipAndIntegrate(domain, polygon, sites[id], start, id, keepGeometry, w, cell);
-      if (keepGeometry) {
-        cell.voronoi = polygon;
+      voronoiPolygon(v, w.polygon);
+      clipAndIntegrate(domain, w.polygon, sites[id], start, id, detail, w, cell);
+      if (detail == CellDetail::Geometry) {
+        cell.voronoi = w.polygon.points;
         auto n = dt.incident_vertices(v), end = n;
         do {
           if (!dt.is_infinite(n) && n->info() != kDummy) cell.neighbours.push_back(n->info());

@@ -13,11 +13,22 @@ struct CellPiece {
   std::vector<Vec2> polygon;   // Voronoi cell ∩ that triangle, counter-clockwise
 };
 
+// The integrals along the edge between a cell and one neighbouring cell, inside the domain,
+// about the cell's own site z: the CVT energy's Hessian is made of them (Iri, Murota and
+// Ohya 1984; Liu et al. 2009, section 3).
+struct EdgeMoments {
+  int neighbour = -1;                          // the site across the edge
+  double mass = 0;                             // ∫ rho ds
+  Vec2 first = Vec2::Zero();                   // ∫ rho (x - z) ds
+  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();  // ∫ rho (x - z)(x - z)ᵀ ds
+};
+
 struct BoundedCell {
   // Geometry, filled only when asked for (the solver needs just the integrals).
   std::vector<Vec2> voronoi;        // the whole Voronoi cell, counter-clockwise (not clipped)
   std::vector<CellPiece> pieces;    // its parts inside the domain, one per parameter triangle
   std::vector<int> neighbours;      // sites whose cells share an edge with this one
+  std::vector<EdgeMoments> edges;   // those inside the domain, by neighbour (EdgeMoments asked)
 
   double area = 0;    // of cell ∩ domain, in the parameter domain
   double mass = 0;    // ∫ rho over cell ∩ domain
@@ -52,12 +63,19 @@ struct CellHints {
   std::vector<int> order;     // the sites in the spatial (Hilbert) order of the last call
 };
 
+// What computeCells fills beyond each cell's area, mass, centroid and energy.
+enum class CellDetail {
+  Integrals,    // nothing more: what Lloyd's and the L-BFGS steps need
+  EdgeMoments,  // BoundedCell::edges too: what Newton's step needs
+  Geometry,     // everything: polygons and neighbours to draw, and the edges
+};
+
 // Cells of all `sites`, in their order. Deterministic: the same sites give bit-identical cells,
 // whatever the hints. `hints`, if given, is read and updated: pass it back next iteration to
 // skip the spatial search and the spatial sort.
 // `threads`: 0 for every core (from 500 sites up), or how many.
 std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Vec2>& sites,
-                                      bool keepGeometry, CellHints* hints = nullptr,
+                                      CellDetail detail, CellHints* hints = nullptr,
                                       int threads = 0);
 
 }  // namespace lloydscope

@@ -1,3 +1,4 @@
+#include "cvt_hessian.h"
 #include "lloyd.h"
 #include "test_support.h"
 
@@ -28,7 +29,8 @@ TEST_P(FourSites, ConvergeToTheCentresOfThe2x2Grid) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, FourSites,
-                         ::testing::Values(CvtSolver::Lloyd, CvtSolver::Lbfgs));
+                         ::testing::Values(CvtSolver::Lloyd, CvtSolver::Lbfgs,
+                                           CvtSolver::Newton));
 
 TEST(Lloyd, EnergyNeverIncreasesAndSitesMoveToCentroids) {
   const Domain domain = unitSquare();
@@ -44,7 +46,7 @@ TEST(Lloyd, EnergyNeverIncreasesAndSitesMoveToCentroids) {
   for (size_t k = 1; k < its.size(); ++k) {
     EXPECT_LE(its[k].energy, its[k - 1].energy * (1 + 1e-12));
     // Lloyd: site <- centroid, exactly, on the grid the sites live on.
-    const auto before = computeCells(domain, allSites(solver.fixedSites(), its[k - 1].sites), false);
+    const auto before = computeCells(domain, allSites(solver.fixedSites(), its[k - 1].sites), CellDetail::Integrals);
     for (size_t i = 0; i < its[k].sites.size(); ++i)
       EXPECT_EQ(its[k].sites[i], snapToGrid(before[solver.fixedSites().size() + i].centroid));
     EXPECT_EQ(its[k].index, static_cast<int>(k));
@@ -91,4 +93,53 @@ TEST(Lloyd, ConvergenceUsesBothThresholds) {
   solver.run();
   EXPECT_EQ(solver.iterations().size(), 1u);
   EXPECT_TRUE(solver.converged());
+}
+
+TEST(CvtHessian, IsTheDerivativeOfTheGradient) {
+  // Sites over a 6 x 6 grid of triangles with a density that varies linearly in each: the
+  // Hessian times a direction must match central differences of the gradient 2 m (z - c).
+  const Mesh grid = test::grid(6);
+  std::vector<Vec2> uv;
+  std::vector<double> density;
+  for (const Vec3& p : grid.points) {
+    uv.emplace_back(p.x(), p.y());
+    density.push_back(1.0 + 3.0 * p.x() + 2.0 * p.y() * p.y());
+  }
+  const Domain domain(uv, grid.triangles, vertexDensity(grid.triangles, density));
+  const std::vector<Vec2> fixed = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}};
+  std::vector<Vec2> movable;
+  for (int i = 0; i < 40; ++i)
+    movable.emplace_back(0.5 + 0.45 * std::sin(1.7 * i), 0.5 + 0.45 * std::cos(2.3 * i + 0.4));
+  auto gradient = [&](const std::vector<Vec2>& z, std::vector<std::vector<EdgeMoments>>* edges,
+                      std::vector<double>* masses) {
+    const auto cells = computeCells(domain, allSites(fixed, z), CellDetail::EdgeMoments);
+    Eigen::VectorXd g(2 * z.size());
+    for (size_t i = 0; i < z.size(); ++i) {
+      const BoundedCell& c = cells[fixed.size() + i];
+      g.segment<2>(2 * i) = 2 * c.mass * (z[i] - c.centroid);
+      if (edges) edges->push_back(c.edges);
+      if (masses) masses->push_back(c.mass);
+    }
+    return g;
+  };
+  std::vector<std::vector<EdgeMoments>> edges;
+  std::vector<double> masses;
+  gradient(movable, &edges, &masses);
+  const CvtHessian h(fixed, movable, edges, masses);
+  Eigen::VectorXd direction(2 * movable.size());
+  for (int k = 0; k < direction.size(); ++k) direction[k] = std::sin(0.9 * k + 0.3);
+  const double eps = 1e-6;
+  std::vector<Vec2> plus = movable, minus = movable;
+  for (size_t i = 0; i < movable.size(); ++i) {
+    plus[i] += eps * direction.segment<2>(2 * i);
+    minus[i] -= eps * direction.segment<2>(2 * i);
+  }
+  const Eigen::VectorXd difference =
+      (gradient(plus, nullptr, nullptr) - gradient(minus, nullptr, nullptr)) / (2 * eps);
+  const Eigen::VectorXd product = h * direction;
+  EXPECT_LT((product - difference).norm(), 1e-5 * difference.norm());
+
+  // And it is not the Lloyd part alone: the edges matter.
+  EXPECT_GT((h.lloydDiagonal().cwiseProduct(direction) - difference).norm(),
+            0.1 * difference.norm());
 }

@@ -69,7 +69,7 @@ TEST(Integrals, UniformEnergyOfASquareAboutItsCentre) {
 TEST(BoundedCells, FourSitesAtTheCentresOfA2x2GridAreCentroidal) {
   const Domain domain = unitSquare();
   const std::vector<Vec2> sites = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
-  const auto cells = computeCells(domain, sites, true);
+  const auto cells = computeCells(domain, sites, CellDetail::Geometry);
   for (size_t i = 0; i < sites.size(); ++i) {
     EXPECT_NEAR(cells[i].area, 0.25, 1e-12);
     EXPECT_NEAR((cells[i].centroid - sites[i]).norm(), 0.0, 1e-12);
@@ -85,7 +85,7 @@ TEST(BoundedCells, CellsTileTheDomainAndMassesAddUp) {
   std::vector<Vec2> sites;
   for (int i = 0; i < 200; ++i) sites.emplace_back(u(rng), u(rng));
   double area = 0, mass = 0;
-  for (const BoundedCell& c : computeCells(domain, sites, false)) {
+  for (const BoundedCell& c : computeCells(domain, sites, CellDetail::Integrals)) {
     area += c.area;
     mass += c.mass;
   }
@@ -99,7 +99,7 @@ TEST(BoundedCells, NonConvexDomainIsClippedToItsTriangles) {
                       {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}}, {});
   const std::vector<Vec2> sites = {{0.2, 0.2}, {0.8, 0.2}, {0.2, 0.8}, {0.6, 0.6}};
   double area = 0;
-  for (const BoundedCell& c : computeCells(domain, sites, true)) area += c.area;
+  for (const BoundedCell& c : computeCells(domain, sites, CellDetail::Geometry)) area += c.area;
   EXPECT_NEAR(area, 0.75, 1e-12);
 }
 
@@ -113,11 +113,11 @@ TEST(BoundedCells, HintsDoNotChangeABit) {
   hints.triangle.assign(sites.size(), 1);
   hints.order.resize(sites.size());  // the reverse order: a bad one, and not CGAL's
   std::iota(hints.order.rbegin(), hints.order.rend(), 0);
-  const auto a = computeCells(domain, sites, false);
-  const auto b = computeCells(domain, sites, false, &hints);
+  const auto a = computeCells(domain, sites, CellDetail::Integrals);
+  const auto b = computeCells(domain, sites, CellDetail::Integrals, &hints);
   // Nor does the number of threads the cells are split over.
-  const auto c = computeCells(domain, sites, false, nullptr, 1);
-  const auto d = computeCells(domain, sites, false, nullptr, 3);
+  const auto c = computeCells(domain, sites, CellDetail::Integrals, nullptr, 1);
+  const auto d = computeCells(domain, sites, CellDetail::Integrals, nullptr, 3);
   for (size_t i = 0; i < sites.size(); ++i)
     for (const auto* other : {&b, &c, &d}) {
       EXPECT_EQ(a[i].mass, (*other)[i].mass);
@@ -146,7 +146,7 @@ TEST(BoundedCells, CellsTileAFineDomainExactly) {
     std::vector<Vec2> sites;
     for (int i = 0; i < count; ++i) sites.emplace_back(u(rng), u(rng));
     double area = 0, mass = 0;
-    for (const BoundedCell& c : computeCells(domain, sites, false)) {
+    for (const BoundedCell& c : computeCells(domain, sites, CellDetail::Integrals)) {
       area += c.area;
       mass += c.mass;
     }
@@ -169,15 +169,15 @@ TEST(BoundedCells, VoronoiEdgesAreJoinedAcrossParameterTriangles) {
     return length;
   };
   const Domain fine(uv, grid.triangles, {});
-  const auto edges = voronoiEdges(fine, computeCells(fine, sites, true));
+  const auto edges = voronoiEdges(fine, computeCells(fine, sites, CellDetail::Geometry));
   EXPECT_EQ(edges.size(), 5u);
   // Each edge bounds two cells: the outlines hold every edge twice.
-  const auto cells = computeCells(fine, sites, true);
+  const auto cells = computeCells(fine, sites, CellDetail::Geometry);
   double outlines = 0;
   for (const BoundedCell& cell : cells) outlines += totalLength(cellOutline(fine, cell));
   EXPECT_NEAR(outlines, 2 * totalLength(edges), 1e-12);
   const Domain coarse({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {});
-  const auto reference = voronoiEdges(coarse, computeCells(coarse, sites, true));
+  const auto reference = voronoiEdges(coarse, computeCells(coarse, sites, CellDetail::Geometry));
   EXPECT_EQ(reference.size(), 5u);
   EXPECT_NEAR(totalLength(edges), totalLength(reference), 1e-12);
 }
@@ -187,7 +187,7 @@ TEST(BoundedCells, VoronoiEdgesAreTheLinesBetweenCellsEachOnce) {
   // y = 1/2, total length 2, split where they cross the domain's diagonal and each other.
   const Domain domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {});
   const auto cells =
-      computeCells(domain, {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}}, true);
+      computeCells(domain, {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}}, CellDetail::Geometry);
   double length = 0;
   for (const auto& [p, q] : voronoiEdges(domain, cells)) {
     length += (q - p).norm();
