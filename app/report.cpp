@@ -183,7 +183,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
       << "parameterize " << format("%.1f", r.ms.parameterize) << ", density "
       << format("%.1f", r.ms.density) << ", sites " << format("%.1f", r.ms.sites) << ", lloyd "
       << format("%.1f", r.ms.lloyd) << ", remesh " << format("%.1f", r.ms.remesh)
-      << (r.ms.compared > 0 ? ", the other way " + format("%.1f", r.ms.compared) : "") << ", metrics "
+      << (r.ms.compared > 0 ? ", the other way (alongside) " + format("%.1f", r.ms.compared) : "") << ", metrics "
       << format("%.1f", r.ms.metrics) << ", total " << format("%.1f", r.ms.total) << "\n";
   return out.str();
 }

@@ -80,6 +80,7 @@ class LloydSolver {
   // Steps until converged() or options.maxIterations iterations were recorded.
   void run();
 
+  void setThreads(int threads) { options_.threads = threads; }  // LloydOptions::threads
   const std::vector<Vec2>& fixedSites() const { return fixed_; }
   const std::vector<Vec2>& movableSites() const { return movable_; }
   const std::vector<IterationRecord>& iterations() const { return iterations_; }

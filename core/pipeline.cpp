@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <future>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -261,10 +263,13 @@ RemeshResult RemeshSession::finish() {
 
 namespace {
 
-RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+// `started`, if given, is called with each session as soon as it is built (and its cut known).
+RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const std::string& name,
+                        const std::function<void(RemeshSession&)>& started = {}) {
   auto run = [&](const RemeshOptions& o) {
     Stopwatch total;
     RemeshSession session(input, o, name);
+    if (started) started(session);
     while (!session.finished()) session.step();
     RemeshResult result = session.finish();
     result.ms.total = total.lap();
@@ -301,28 +306,42 @@ bool betterThan(const QualityMetrics& a, const QualityMetrics& b) {
 // kept. If the slit run fails (its seams do not stitch), the whole one stands alone.
 RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& options, const std::string& name) {
   if (!options.slitDisks || !disk) return remeshOnce(input, options, name);
+  Stopwatch wall;
   RemeshOptions slitOptions = options, wholeOptions = options;
   slitOptions.measureFidelity = wholeOptions.measureFidelity = false;
   wholeOptions.slitDisks = false;
+  // Once the slit run is known to slit, the whole run goes on beside it on another thread, each
+  // with one thread for its cells (a core each on two: 1.4-1.6x faster than one after the
+  // other with both cores each, on CGAL's lion head and mannequin). Neither's result depends on
+  // its threads.
+  std::future<RemeshResult> whole;
+  auto startWhole = [&](RemeshSession& session) {
+    if (!session.isCut() || whole.valid()) return;
+    session.setThreads(1);
+    wholeOptions.lloyd.threads = 1;
+    whole = std::async(std::launch::async, [&] { return remeshOnce(input, wholeOptions, name); });
+  };
   RemeshResult kept;
   try {
-    kept = remeshOnce(input, slitOptions, name);
+    kept = remeshOnce(input, slitOptions, name, startWhole);
   } catch (const Error&) {
-    kept = remeshOnce(input, wholeOptions, name);  // as it would have been without slits
+    // As it would have been without slits.
+    kept = whole.valid() ? whole.get() : remeshOnce(input, wholeOptions, name);
   }
-  if (kept.cut.seamEdges > 0) {
+  if (kept.cut.seamEdges > 0 && whole.valid()) {
     try {
-      RemeshResult other = remeshOnce(input, wholeOptions, name);
+      RemeshResult other = whole.get();
       const SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle};
       if (betterThan(other.after, kept.after)) std::swap(kept, other);
       kept.slitTrial = trial;
       kept.ms.compared = other.ms.total - other.ms.metrics;
       kept.ms.metrics += other.ms.metrics;
-      kept.ms.total += other.ms.total;
     } catch (const Error&) {
       // the slit one stands alone
     }
   }
+  if (whole.valid()) whole.wait();  // (a slit run that failed after its cut)
+  kept.ms.total = wall.lap();  // both runs, side by side
   if (options.measureFidelity) {
     Stopwatch stage;
     kept.fidelity = measureFidelity(kept.output, input);

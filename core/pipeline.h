@@ -49,7 +49,9 @@ RemeshOptions referencePreset(RemeshMethod method);
 struct StageTimes {  // milliseconds
   double simplify = 0, cut = 0, resample = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
          metrics = 0, total = 0;
-  double compared = 0;  // the run a slit disk was compared with (SlitTrial), its metrics left out
+  // The run a slit disk was compared with (SlitTrial), its metrics left out: it runs beside
+  // the kept one, so `total` (wall clock) is less than the sum of the stages and this.
+  double compared = 0;
 
   StageTimes& operator+=(const StageTimes& o) {
     for (double StageTimes::*stage : {&StageTimes::simplify, &StageTimes::cut, &StageTimes::resample,
@@ -118,6 +120,10 @@ class RemeshSession {
   Recording header() const;
   // Builds the result from the current sites (converged or not). Call once.
   RemeshResult finish();
+  // Whether the input was cut (or a nearly closed disk slit) open, to be stitched at the end.
+  bool isCut() const { return cut_.has_value(); }
+  // For the cells of the steps to come (LloydOptions::threads; the results do not depend on it).
+  void setThreads(int threads) { solver_->setThreads(threads); }
 
  private:
   Mesh buildOutput(int& snappedTips) const;

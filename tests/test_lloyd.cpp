@@ -143,3 +143,39 @@ TEST(CvtHessian, IsTheDerivativeOfTheGradient) {
   EXPECT_GT((h.lloydDiagonal().cwiseProduct(direction) - difference).norm(),
             0.1 * difference.norm());
 }
+
+TEST(Lloyd, NewtonConvergesInFewerIterationsThanLbfgs) {
+  const Domain domain = unitSquare();
+  std::vector<Vec2> sites;
+  for (int i = 0; i < 200; ++i) sites.emplace_back(0.5 + 0.45 * std::cos(i * 2.4) * i / 200.0,
+                                                   0.5 + 0.45 * std::sin(i * 2.4) * i / 200.0);
+  LloydOptions options;
+  options.solver = CvtSolver::Lbfgs;
+  LloydSolver lbfgs(domain, {}, sites, options);
+  lbfgs.run();
+  options.solver = CvtSolver::Newton;
+  LloydSolver newton(domain, {}, sites, options);
+  newton.run();
+  ASSERT_TRUE(lbfgs.converged());
+  ASSERT_TRUE(newton.converged());
+  EXPECT_LT(2 * newton.iterations().size(), lbfgs.iterations().size());
+  for (size_t k = 1; k < newton.iterations().size(); ++k)  // it descends, as L-BFGS does
+    EXPECT_LE(newton.iterations()[k].energy, newton.iterations()[k - 1].energy);
+}
+
+TEST(Lloyd, ChangingThreadsMidRunChangesNoBit) {
+  // What lets remesh() give a slit disk's two runs a core each once it knows it slits.
+  const Domain domain = unitSquare();
+  std::vector<Vec2> sites;
+  for (int i = 0; i < 700; ++i) sites.emplace_back(0.5 + 0.45 * std::cos(i * 2.4) * i / 700.0,
+                                                   0.5 + 0.45 * std::sin(i * 2.4) * i / 700.0);
+  LloydOptions options;
+  options.maxIterations = 6;
+  options.threads = 2;
+  LloydSolver steady(domain, {}, sites, options), switched(domain, {}, sites, options);
+  steady.run();
+  for (int k = 0; k < 3; ++k) switched.step();
+  switched.setThreads(1);
+  switched.run();
+  EXPECT_EQ(switched.movableSites(), steady.movableSites());
+}
