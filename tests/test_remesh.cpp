@@ -45,6 +45,34 @@ TEST(Lift, PointsOutsideGoToTheClosestPointOfTheDomain) {
   EXPECT_NEAR((domain.pointAt(l) - Vec2(1.0, 0.25)).norm(), 0.0, 1e-12);
 }
 
+TEST(Lift, LocateFindsTheTriangleOfEveryPointOfANonConvexDomain) {
+  // An L of 3 x 3 squares' triangles: its bounding box's buckets straddle the notch, where the
+  // answer must come from the closest point, and inside the L from the triangle holding it.
+  const Mesh grid = test::grid(3);
+  std::vector<Triangle> l;
+  for (const Triangle& t : grid.triangles) {
+    const Vec3 c = (grid.points[t[0]] + grid.points[t[1]] + grid.points[t[2]]) / 3;
+    if (c.x() < 2.0 / 3 || c.y() < 1.0 / 3) l.push_back(t);
+  }
+  std::vector<Vec2> uv;
+  for (const Vec3& p : grid.points) uv.emplace_back(p.x(), p.y());
+  const Domain domain(uv, l, {});
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const Vec2 p(0.013 + i / 41.0, 0.007 + j / 41.0);
+      const Location at = domain.locate(p);
+      ASSERT_GE(at.triangle, 0);
+      const bool inNotch = p.x() > 2.0 / 3 && p.y() > 1.0 / 3;
+      EXPECT_EQ(at.inside, !inNotch) << p.transpose();
+      EXPECT_NEAR(at.weights.sum(), 1.0, 1e-12);
+      EXPECT_GE(at.weights.minCoeff(), 0.0);
+      const Vec2 found = domain.pointAt(at);
+      // In the notch: the closest point of the L, on its side x = 2/3 or y = 1/3.
+      const double distance = inNotch ? std::min(p.x() - 2.0 / 3, p.y() - 1.0 / 3) : 0.0;
+      EXPECT_NEAR((found - p).norm(), distance, 1e-9) << p.transpose();
+    }
+}
+
 TEST(Relocate, KeepsConnectivityAndMovesOnlyInsideVertices) {
   const Mesh mesh = wavyGrid(6);
   const Parameterization p = parameterize(mesh, {}, "wavy");
