@@ -42,25 +42,31 @@ struct LabelledPolygon {
     points.clear();
     edge.clear();
   }
+  template <bool labelled = true>
   void push(const Vec2& p, int label) {
     points.push_back(p);
-    edge.push_back(label);
+    if constexpr (labelled) edge.push_back(label);
   }
 };
 
-// Sutherland-Hodgman: the part of a convex polygon left of each edge of a CCW triangle, in
-// `result`. Returns which edges of the triangle the part reaches (bit k: the edge from corner k
-// to corner k+1): only across those can the cell overlap a neighbouring triangle.
-// `side` and `scratch` are reused between calls to keep allocation out of the inner loop.
-int clipToTriangle(const LabelledPolygon& polygon, const Vec2 (&corner)[3],
-                   LabelledPolygon& result, LabelledPolygon& scratch, std::vector<double>& side) {
-  int reaches = 0;
+// Sutherland-Hodgman: the part of a convex polygon left of each edge of a CCW triangle: the
+// polygon itself where the triangle holds it whole, else in one of the buffers `one` and
+// `other` (no copy). `reaches` receives which edges of the triangle the part reaches (bit k:
+// the edge from corner k to corner k+1): only across those can the cell overlap a
+// neighbouring triangle. `side` is reused between calls to keep allocation out of the inner
+// loop. Without `labelled`, a clipped result has no labels (the solvers but Newton's need
+// none, and keeping them costs a tenth of the cells' time).
+template <bool labelled>
+const LabelledPolygon& clipToTriangle(const LabelledPolygon& polygon, const Vec2 (&corner)[3],
+                                      LabelledPolygon& one, LabelledPolygon& other,
+                                      std::vector<double>& side, int& reaches) {
+  reaches = 0;
   const LabelledPolygon* in = &polygon;
   for (int k = 0; k < 3; ++k) {
     const Vec2 &a = corner[k], edge = corner[(k + 1) % 3] - a;
     const double onEdge = kOnSide * edge.norm();  // cross() is |edge| times the distance
     const size_t n = in->size();
-    side.resize(n);
+    if (side.size() < n) side.resize(n);
     bool anyIn = false, anyOut = false, anyOn = false;
     for (size_t i = 0; i < n; ++i) {
       side[i] = cross(edge, in->points[i] - a);
@@ -68,25 +74,27 @@ int clipToTriangle(const LabelledPolygon& polygon, const Vec2 (&corner)[3],
       anyOn = anyOn || std::abs(side[i]) <= onEdge;
     }
     if (!anyIn) {
-      result.clear();
-      return 0;
+      reaches = 0;
+      one.clear();
+      return one;
     }
     if (anyOn || anyOut) reaches |= 1 << k;
     if (!anyOut) continue;  // nothing to cut on this side
-    LabelledPolygon& out = (in == &result) ? scratch : result;
+    LabelledPolygon& out = (in == &one) ? other : one;
     out.clear();
     for (size_t i = 0, j = n - 1; i < n; j = i++) {  // side (p, q) = (in[j], in[i])
       const Vec2 &p = in->points[j], &q = in->points[i];
       const bool pIn = side[j] >= 0, qIn = side[i] >= 0;
       // Leaving, the polygon goes on along the triangle's side; entering, along (p, q).
+      const auto label = [&](size_t at) { return labelled ? in->edge[at] : 0; };
       if (pIn != qIn)
-        out.push(p + (side[j] / (side[j] - side[i])) * (q - p), pIn ? kTriangleSide : in->edge[j]);
-      if (qIn) out.push(q, in->edge[i]);
+        out.push<labelled>(p + (side[j] / (side[j] - side[i])) * (q - p),
+                           pIn ? kTriangleSide : label(j));
+      if (qIn) out.push<labelled>(q, label(i));
     }
     in = &out;
   }
-  if (in != &result) result = *in;
-  return reaches;
+  return *in;
 }
 
 void integrateTriangle(const Vec2 (&p)[3], const double (&rho)[3], const Vec2& site,
@@ -258,15 +266,19 @@ void clipAndIntegrate(const Domain& domain, const LabelledPolygon& voronoi, cons
     const int t = w.queue[head];
     const Triangle& tri = domain.triangles()[t];
     const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
-    const int reaches = clipToTriangle(voronoi, corner, w.piece, w.scratch, w.side);
-    if (w.piece.size() < 3) continue;
-    w.rho.resize(w.piece.size());
-    for (size_t i = 0; i < w.piece.size(); ++i) w.rho[i] = domain.densityAt(t, w.piece.points[i]);
-    const PolygonIntegrals part = integratePolygon(w.piece.points, w.rho, site);
+    int reaches;
+    const LabelledPolygon& piece =
+        detail == CellDetail::Integrals
+            ? clipToTriangle<false>(voronoi, corner, w.piece, w.scratch, w.side, reaches)
+            : clipToTriangle<true>(voronoi, corner, w.piece, w.scratch, w.side, reaches);
+    if (piece.size() < 3) continue;
+    if (w.rho.size() < piece.size()) w.rho.resize(piece.size());
+    for (size_t i = 0; i < piece.size(); ++i) w.rho[i] = domain.densityAt(t, piece.points[i]);
+    const PolygonIntegrals part = integratePolygon(piece.points, w.rho, site);
     if (part.area <= 0) continue;
     w.parts.emplace_back(t, part);
-    if (detail != CellDetail::Integrals) addEdgeMoments(w.piece, w.rho, site, t, w);
-    if (detail == CellDetail::Geometry) cell.pieces.push_back({t, w.piece.points});
+    if (detail != CellDetail::Integrals) addEdgeMoments(piece, w.rho, site, t, w);
+    if (detail == CellDetail::Geometry) cell.pieces.push_back({t, piece.points});
     for (int k = 0; k < 3; ++k) {
       const int n = domain.neighbours()[t][(k + 2) % 3];  // across edge (corner k, corner k+1)
       if ((reaches & (1 << k)) && n >= 0 && w.visitedBy[n] != cellId) {
