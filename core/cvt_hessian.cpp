@@ -48,7 +48,10 @@ Eigen::VectorXd newtonDirection(const CvtHessian& hessian, const Eigen::VectorXd
   Eigen::VectorXd p = Eigen::VectorXd::Zero(g.size()), r = -g;
   Eigen::VectorXd z = inverseDiagonal.cwiseProduct(r), d = z;
   double rz = r.dot(z);
-  for (Eigen::Index k = 0; k < 2 * g.size(); ++k) {
+  // At most kMaxIterations: near the minimum, where the residual must fall furthest, a few
+  // dozen suffice, and a step that asks for more is no better for it.
+  constexpr Eigen::Index kMaxIterations = 200;
+  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(2 * g.size(), kMaxIterations); ++k) {
     const Eigen::VectorXd hd = hessian * d;
     const double curvature = d.dot(hd);
     if (curvature <= 0) {
