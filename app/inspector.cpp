@@ -168,14 +168,21 @@ Inspector::~Inspector() { stopRun(); }
 namespace {
 std::vector<CvtSolver> otherSolvers(CvtSolver solver) {
   std::vector<CvtSolver> others;
-  for (CvtSolver s : {CvtSolver::Lloyd, CvtSolver::Lbfgs, CvtSolver::Newton})
+  for (CvtSolver s : kCvtSolvers)
     if (s != solver) others.push_back(s);
   return others;
 }
 
-// The curves of the compared solvers, in otherSolvers() order.
-// (Green is the threshold line's, red the current iteration's.)
-const ImVec4 kComparisonColours[] = {{0.55f, 0.55f, 0.55f, 1}, {0.62f, 0.3f, 0.72f, 1}};
+// Each solver's curves and legend have one colour, whichever run it is: plain Lloyd grey,
+// L-BFGS blue, Newton purple (green is the threshold line's, red the current iteration's).
+ImVec4 solverColour(CvtSolver solver) {
+  switch (solver) {
+    case CvtSolver::Lloyd: return {0.55f, 0.55f, 0.55f, 1};
+    case CvtSolver::Lbfgs: return {0.15f, 0.3f, 0.7f, 1};
+    case CvtSolver::Newton: return {0.62f, 0.3f, 0.72f, 1};
+  }
+  return {0, 0, 0, 1};
+}
 }  // namespace
 
 void Inspector::compareSolvers() {
@@ -1139,10 +1146,11 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
 namespace {
 
 // A plot with axes and ticks over the whole recording; returns the iteration clicked, or -1.
-// `other`: a second run's values, drawn in grey behind the first (empty: none).
-int plot(const char* title, const std::vector<double>& values,
-         const std::vector<std::vector<double>>& others, bool logScale, double threshold,
-         int current, const ImVec2& size) {
+// `values` (in `colour`) are the run's; `others`, drawn behind them in `otherColours`, are
+// other runs' (empty: none).
+int plot(const char* title, const std::vector<double>& values, ImU32 colour,
+         const std::vector<std::vector<double>>& others, const std::vector<ImU32>& otherColours,
+         bool logScale, double threshold, int current, const ImVec2& size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(title, size);
@@ -1204,9 +1212,8 @@ int plot(const char* title, const std::vector<double>& values,
       if (!logScale || series[k] > 0) line.emplace_back(x(static_cast<double>(k)), y(series[k]));
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, 1.5f);
   };
-  for (size_t k = 0; k < others.size(); ++k)
-    polyline(others[k], ImGui::ColorConvertFloat4ToU32(kComparisonColours[k]));
-  polyline(values, rgb(0.15f, 0.3f, 0.7f));
+  for (size_t k = 0; k < others.size(); ++k) polyline(others[k], otherColours[k]);
+  polyline(values, colour);
   dl->AddLine(ImVec2(x(current), a.y), ImVec2(x(current), b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
   if (current < static_cast<int>(values.size()) && (!logScale || values[current] > 0))
     dl->AddCircleFilled(ImVec2(x(current), y(values[current])), 4.0f, rgb(0.85f, 0.3f, 0.1f));
@@ -1238,32 +1245,36 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
     }
   };
   const Curves run(replay_->recording().iterations);
+  const ImU32 colour = ImGui::ColorConvertFloat4ToU32(solverColour(options_.lloyd.solver));
   Curves others;
+  std::vector<ImU32> otherColours;
   if (!comparisons_.empty()) {  // which curve is which
-    const char* solver = toString(options_.lloyd.solver);
-    ImGui::TextColored(ImVec4(0.15f, 0.3f, 0.7f, 1), "%s, this run: %d iterations", solver,
-                       replay_->iterationCount());
+    ImGui::TextColored(solverColour(options_.lloyd.solver), "%s, this run: %d iterations",
+                       toString(options_.lloyd.solver), replay_->iterationCount());
     for (size_t k = 0; k < comparisons_.size(); ++k) {
       const Comparison& c = comparisons_[k];
       others.add(c.iterations);
+      otherColours.push_back(ImGui::ColorConvertFloat4ToU32(solverColour(c.solver)));
       const bool converged = !c.iterations.empty() && 100.0 * c.iterations.back().fractionMoving <
                                                           replay_->recording().percentThreshold;
       ImGui::SameLine();
-      ImGui::TextColored(kComparisonColours[k], "  %s%s: %d%s", toString(c.solver),
+      ImGui::TextColored(solverColour(c.solver), "  %s%s: %d%s", toString(c.solver),
                          k == 0 ? ", same start" : "", static_cast<int>(c.iterations.size()),
                          converged ? "" : ", not converged");
     }
   }
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 each((avail.x - 2 * ImGui::GetStyle().ItemSpacing.x) / 3, avail.y);
-  int jump = plot("CVT energy", run.energy[0], others.energy, false, 0, iteration_, each);
+  int jump = plot("CVT energy", run.energy[0], colour, others.energy, otherColours, false, 0,
+                  iteration_, each);
   ImGui::SameLine();
-  int k = plot("max distance site-centroid (log)", run.displacement[0], others.displacement, true,
-               replay_->recording().distanceThreshold, iteration_, each);
+  int k = plot("max distance site-centroid (log)", run.displacement[0], colour,
+               others.displacement, otherColours, true, replay_->recording().distanceThreshold,
+               iteration_, each);
   if (k >= 0) jump = k;
   ImGui::SameLine();
-  k = plot("% sites farther than threshold (log)", run.moving[0], others.moving, true,
-           replay_->recording().percentThreshold, iteration_, each);
+  k = plot("% sites farther than threshold (log)", run.moving[0], colour, others.moving,
+           otherColours, true, replay_->recording().percentThreshold, iteration_, each);
   if (k >= 0) jump = k;
   if (jump >= 0) setIteration(jump);
   ImGui::End();

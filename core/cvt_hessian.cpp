@@ -18,7 +18,7 @@ CvtHessian::CvtHessian(const std::vector<Vec2>& fixed, const std::vector<Vec2>& 
       const size_t j = static_cast<size_t>(e.neighbour);
       const Vec2 zj = j < nf ? fixed[j] : movable[j - nf];
       const double d = (zi - zj).norm();
-      if (j == nf + i || d == 0) continue;
+      if (d == 0) continue;  // (two sites on one point share one cell: no edge between them)
       own -= (2 / d) * e.second;
       if (j < nf) continue;  // a fixed site is not a variable
       pairs_.emplace_back(static_cast<int>(i), static_cast<int>(j - nf));
@@ -41,9 +41,11 @@ Eigen::VectorXd CvtHessian::operator*(const Eigen::VectorXd& v) const {
 }
 
 Eigen::VectorXd newtonDirection(const CvtHessian& hessian, const Eigen::VectorXd& g) {
-  const Eigen::VectorXd inverseDiagonal = hessian.lloydDiagonal().cwiseMax(1e-300).cwiseInverse();
-  // Eisenstat and Walker's forcing term: the residual shrinks with the gradient, so the steps
-  // become Newton's as the sites settle.
+  // A site with no mass (outside the domain, or on another) does not move in this step.
+  const Eigen::VectorXd inverseDiagonal = hessian.lloydDiagonal().unaryExpr(
+      [](double m) { return m > 0 ? 1.0 / m : 0.0; });
+  // The forcing term of Nocedal and Wright's line-search Newton-CG (their algorithm 7.1): the
+  // residual shrinks with the gradient, so the steps become Newton's as the sites settle.
   const double tolerance = std::min(0.5, std::sqrt(g.norm())) * g.norm();
   Eigen::VectorXd p = Eigen::VectorXd::Zero(g.size()), r = -g;
   Eigen::VectorXd z = inverseDiagonal.cwiseProduct(r), d = z;

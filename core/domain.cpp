@@ -28,41 +28,46 @@ struct Domain::Index {
   std::vector<Triangle3> triangles;
   std::vector<int> triangleId;  // of each indexed triangle in Domain::triangles()
   Tree tree;
-  Vec2 lo = Vec2::Zero();
-  double perCell = 0;  // buckets per unit of u or v
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();  // the buckets' box: the triangles' bounding box
+  Vec2 perUnit = Vec2::Zero();                 // buckets per unit of u and of v
   int columns = 0, rows = 0;
   std::vector<int> start, bucket;  // bucket[start[c] .. start[c + 1]): the triangles of cell c
 
-  int cellOf(double x, double origin, int count) const {
-    return std::clamp(static_cast<int>((x - origin) * perCell), 0, count - 1);
+  bool inBox(const Vec2& p) const {  // (false for NaN)
+    return p.x() >= lo.x() && p.y() >= lo.y() && p.x() <= hi.x() && p.y() <= hi.y();
+  }
+  int cellOf(const Vec2& p) const {  // p in the box
+    const int x = std::min(static_cast<int>((p.x() - lo.x()) * perUnit.x()), columns - 1);
+    const int y = std::min(static_cast<int>((p.y() - lo.y()) * perUnit.y()), rows - 1);
+    return y * columns + x;
   }
   void buildGrid(const std::vector<Vec2>& uv, const std::vector<Triangle>& all);
 };
 
 void Domain::Index::buildGrid(const std::vector<Vec2>& uv, const std::vector<Triangle>& all) {
   if (triangleId.empty()) return;
-  Vec2 hi = uv[all[triangleId[0]][0]];
-  lo = hi;
+  hi = lo = uv[all[triangleId[0]][0]];
   for (int t : triangleId)
     for (int v : all[t]) {
       lo = lo.cwiseMin(uv[v]);
       hi = hi.cwiseMax(uv[v]);
     }
   const Vec2 size = (hi - lo).cwiseMax(1e-300);
-  // About one bucket per triangle.
-  perCell = std::sqrt(static_cast<double>(triangleId.size()) / (size.x() * size.y()));
-  if (!std::isfinite(perCell)) perCell = 1.0 / std::max(size.x(), size.y());
-  columns = std::clamp(static_cast<int>(std::ceil(size.x() * perCell)), 1, 4096);
-  rows = std::clamp(static_cast<int>(std::ceil(size.y() * perCell)), 1, 4096);
+  // About one bucket per triangle, as square as the box allows.
+  double perSide = std::sqrt(static_cast<double>(triangleId.size()) / (size.x() * size.y()));
+  if (!std::isfinite(perSide)) perSide = 1.0 / std::max(size.x(), size.y());
+  columns = std::clamp(static_cast<int>(std::ceil(size.x() * perSide)), 1, 4096);
+  rows = std::clamp(static_cast<int>(std::ceil(size.y() * perSide)), 1, 4096);
+  perUnit = Vec2(columns / size.x(), rows / size.y());
   auto forCells = [&](int t, const auto& fn) {
     Vec2 a = uv[all[t][0]], b = a;
     for (int v : all[t]) {
       a = a.cwiseMin(uv[v]);
       b = b.cwiseMax(uv[v]);
     }
-    for (int y = cellOf(a.y(), lo.y(), rows); y <= cellOf(b.y(), lo.y(), rows); ++y)
-      for (int x = cellOf(a.x(), lo.x(), columns); x <= cellOf(b.x(), lo.x(), columns); ++x)
-        fn(y * columns + x);
+    const int first = cellOf(a), last = cellOf(b);
+    for (int y = first / columns; y <= last / columns; ++y)
+      for (int x = first % columns; x <= last % columns; ++x) fn(y * columns + x);
   };
   start.assign(static_cast<size_t>(columns) * rows + 1, 0);
   for (int t : triangleId) forCells(t, [&](int c) { ++start[c + 1]; });
@@ -135,8 +140,8 @@ Location Domain::locate(const Vec2& p) const {
   Location l;
   if (index_->triangles.empty()) return l;
   const Index& g = *index_;
-  if (p.x() >= g.lo.x() && p.y() >= g.lo.y()) {
-    const int c = g.cellOf(p.y(), g.lo.y(), g.rows) * g.columns + g.cellOf(p.x(), g.lo.x(), g.columns);
+  if (g.inBox(p)) {
+    const int c = g.cellOf(p);
     for (int k = g.start[c]; k < g.start[c + 1]; ++k) {
       const Eigen::Vector3d w = barycentric(g.bucket[k], p);
       if (w.minCoeff() >= 0.0) return {g.bucket[k], w / w.sum(), true};

@@ -102,6 +102,27 @@ std::vector<double> LloydSolver::gradient(const std::vector<Vec2>& x, const Eval
   return g;
 }
 
+bool LloydSolver::lineSearch(const Evaluation& current, const std::vector<double>& direction,
+                             double slope, std::vector<Vec2>& trial, Evaluation& next) {
+  const std::vector<Vec2>& x = movable_;
+  trial.resize(x.size());
+  double step = 1.0;
+  for (int tries = 0; tries < kMaxHalvings && slope < 0; ++tries, step *= 0.5) {
+    for (size_t i = 0; i < x.size(); ++i)
+      trial[i] = snapToGrid(x[i] + step * Vec2(direction[2 * i], direction[2 * i + 1]));
+    next = evaluate(trial);
+    if (next.energy <= current.energy + kArmijo * step * slope) return true;
+  }
+  return false;
+}
+
+std::vector<Vec2> LloydSolver::lloydStep(const Evaluation& current, Evaluation& next) {
+  std::vector<Vec2> trial = current.centroids;
+  for (Vec2& s : trial) s = snapToGrid(s);
+  next = evaluate(trial);
+  return trial;
+}
+
 std::vector<Vec2> LloydSolver::lbfgsStep(const Evaluation& current, Evaluation& next) {
   const std::vector<Vec2>& x = movable_;
   const std::vector<double> g = gradient(x, current);
@@ -129,23 +150,14 @@ std::vector<Vec2> LloydSolver::lbfgsStep(const Evaluation& current, Evaluation& 
   }
   const double slope = -dot(g, q);  // directional derivative along -q
 
-  std::vector<Vec2> trial(x.size());
-  double step = 1.0;
-  bool accepted = false;
-  if (slope < 0) {
-    for (int tries = 0; tries < kMaxHalvings && !accepted; ++tries, step *= 0.5) {
-      for (size_t i = 0; i < x.size(); ++i)
-        trial[i] = snapToGrid(x[i] - step * Vec2(q[2 * i], q[2 * i + 1]));
-      next = evaluate(trial);
-      accepted = next.energy <= current.energy + kArmijo * step * slope;
-    }
-  }
-  if (!accepted) {  // not a descent direction: forget the history, take a Lloyd step
+  std::vector<double> descent(q.size());
+  for (size_t j = 0; j < q.size(); ++j) descent[j] = -q[j];
+  std::vector<Vec2> trial;
+  if (!lineSearch(current, descent, slope, trial, next)) {
+    // Not a descent direction: forget the history, take a Lloyd step.
     historyS_.clear();
     historyY_.clear();
-    trial = current.centroids;
-    for (Vec2& s : trial) s = snapToGrid(s);
-    next = evaluate(trial);
+    trial = lloydStep(current, next);
   }
   const std::vector<double> gNext = gradient(trial, next);
   std::vector<double> s(g.size()), y(g.size());
@@ -179,20 +191,11 @@ std::vector<Vec2> LloydSolver::newtonStep(const Evaluation& current, Evaluation&
     if (length > reach) direction.segment<2>(2 * i) *= reach / length;
   }
   const double slope = gradientVector.dot(direction);
-  std::vector<Vec2> trial(x.size());
-  double step = 1.0;
-  for (int tries = 0; tries < kMaxHalvings && slope < 0; ++tries) {
-    for (size_t i = 0; i < x.size(); ++i)
-      trial[i] = snapToGrid(x[i] + step * Vec2(direction[2 * i], direction[2 * i + 1]));
-    next = evaluate(trial);
-    const double rise = next.energy - current.energy;
-    if (rise <= kArmijo * step * slope) return trial;
-    step *= 0.5;  // (the minimum of a parabola through E(0), E'(0), E(step) took more tries)
-  }
-  trial = current.centroids;  // no descent found: Lloyd's step, which always descends
-  for (Vec2& s : trial) s = snapToGrid(s);
-  next = evaluate(trial);
-  return trial;
+  std::vector<Vec2> trial;
+  if (lineSearch(current, std::vector<double>(direction.data(), direction.data() + direction.size()),
+                 slope, trial, next))
+    return trial;
+  return lloydStep(current, next);  // no descent found: Lloyd's step always descends
 }
 
 const IterationRecord& LloydSolver::step() {
@@ -250,7 +253,7 @@ const char* toString(CvtSolver solver) {
 }
 
 CvtSolver parseCvtSolver(const std::string& text) {
-  for (CvtSolver s : {CvtSolver::Lloyd, CvtSolver::Lbfgs, CvtSolver::Newton})
+  for (CvtSolver s : kCvtSolvers)
     if (text == toString(s)) return s;
   throw Error("unknown solver '" + text + "' (lloyd, lbfgs, newton)");
 }

@@ -16,6 +16,8 @@ enum class CvtSolver {
   Newton, // truncated Newton steps on the CVT energy with its exact Hessian
 };
 
+constexpr CvtSolver kCvtSolvers[] = {CvtSolver::Lloyd, CvtSolver::Lbfgs, CvtSolver::Newton};
+
 struct LloydOptions {
   CvtSolver solver = CvtSolver::Lbfgs;
   // Converged when fewer than percentThreshold % of the movable sites moved more than
@@ -94,6 +96,12 @@ class LloydSolver {
     std::vector<std::vector<EdgeMoments>> edges;  // Newton's only
   };
   Evaluation evaluate(const std::vector<Vec2>& movable);
+  // Armijo backtracking from the movable sites along `direction` (u, v per site), whose
+  // directional derivative is `slope`: whether a step lowered the energy enough (`trial` and
+  // `next` then hold it).
+  bool lineSearch(const Evaluation& current, const std::vector<double>& direction, double slope,
+                  std::vector<Vec2>& trial, Evaluation& next);
+  std::vector<Vec2> lloydStep(const Evaluation& current, Evaluation& next);  // to the centroids
   std::vector<Vec2> lbfgsStep(const Evaluation& current, Evaluation& next);
   std::vector<Vec2> newtonStep(const Evaluation& current, Evaluation& next);
   std::vector<double> gradient(const std::vector<Vec2>& x, const Evaluation& e) const;

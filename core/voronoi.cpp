@@ -220,7 +220,7 @@ struct Workspace {
   LabelledPolygon polygon, piece, scratch;
   std::vector<double> rho, side;
   std::vector<std::pair<int, PolygonIntegrals>> parts;  // (triangle, integrals of the piece)
-  std::vector<std::pair<std::pair<int, int>, int>> edgeOrder;  // ((site, triangle), part)
+  std::vector<std::pair<std::pair<int, int>, int>> edgeOrder;  // ((neighbour, triangle), part)
   std::vector<EdgeMoments> edgeParts;
 };
 

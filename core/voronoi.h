@@ -24,7 +24,7 @@ struct EdgeMoments {
 };
 
 struct BoundedCell {
-  // Geometry, filled only when asked for (the solver needs just the integrals).
+  // Filled only when asked for (CellDetail): Lloyd's and L-BFGS need just the integrals.
   std::vector<Vec2> voronoi;        // the whole Voronoi cell, counter-clockwise (not clipped)
   std::vector<CellPiece> pieces;    // its parts inside the domain, one per parameter triangle
   std::vector<int> neighbours;      // sites whose cells share an edge with this one
