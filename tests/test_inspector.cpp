@@ -68,9 +68,13 @@ void checkScene(const std::string& name, const std::string& args) {
 TEST(Inspector, FirstIteration) { checkScene("inspector_iteration0.png", "--iteration 0"); }
 TEST(Inspector, SecondIteration) { checkScene("inspector_iteration1.png", "--iteration 1"); }
 TEST(Inspector, LastIteration) { checkScene("inspector_last.png", ""); }
-// The run's L-BFGS curves and plain Lloyd's from the same start, in grey.
+// The run's L-BFGS curves (blue), plain Lloyd's (grey) and Newton's (purple) from the same start.
 TEST(Inspector, ComparesTheSolversCurves) {
   checkScene("inspector_compared.png", "--compare-solvers --pane plots");
+}
+// A Newton run: each solver keeps its colour (Newton purple, L-BFGS blue, Lloyd grey).
+TEST(Inspector, ColoursEachSolverTheSameWhicheverRuns) {
+  checkScene("inspector_compared_newton.png", "--solver newton --compare-solvers --pane plots");
 }
 
 TEST(Inspector, PicturesDifferBetweenIterations) {

@@ -71,6 +71,12 @@ TEST(Lift, LocateFindsTheTriangleOfEveryPointOfANonConvexDomain) {
       const double distance = inNotch ? std::min(p.x() - 2.0 / 3, p.y() - 1.0 / 3) : 0.0;
       EXPECT_NEAR((found - p).norm(), distance, 1e-9) << p.transpose();
     }
+  // Far off: the closest point, never a bucket out of range.
+  for (const Vec2& far : {Vec2(1e300, 0.5), Vec2(-1e300, 1e300), Vec2(0.5, 1e30)}) {
+    const Location at = domain.locate(far);
+    ASSERT_GE(at.triangle, 0);
+    EXPECT_FALSE(at.inside);
+  }
 }
 
 TEST(Relocate, KeepsConnectivityAndMovesOnlyInsideVertices) {
