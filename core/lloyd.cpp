@@ -86,8 +86,9 @@ LloydSolver::Evaluation LloydSolver::evaluate(const std::vector<Vec2>& movable) 
   for (size_t i = fixed_.size(); i < cells.size(); ++i) {
     e.centroids.push_back(cells[i].centroid);
     e.masses.push_back(cells[i].mass);
+    if (!newton) continue;
     e.areas.push_back(cells[i].area);
-    if (newton) e.edges.push_back(std::move(cells[i].edges));
+    e.edges.push_back(std::move(cells[i].edges));
   }
   return e;
 }

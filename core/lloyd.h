@@ -92,7 +92,8 @@ class LloydSolver {
   struct Evaluation {  // the cells of one configuration, as the solvers need them
     double energy = 0;
     std::vector<Vec2> centroids;
-    std::vector<double> masses, areas;
+    std::vector<double> masses;
+    std::vector<double> areas;                    // Newton's only
     std::vector<std::vector<EdgeMoments>> edges;  // Newton's only
   };
   Evaluation evaluate(const std::vector<Vec2>& movable);

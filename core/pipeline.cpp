@@ -218,8 +218,14 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
   }
 }
 
+namespace {
+// The vertices the options ask the result to have: --sites, else --simplify, else 0 (as many
+// as the input).
+int verticesAsked(const RemeshOptions& o) { return o.sites.count > 0 ? o.sites.count : o.simplifyTo; }
+}  // namespace
+
 int RemeshSession::siteCount() const {
-  const int wanted = options_.sites.count > 0 ? options_.sites.count : options_.simplifyTo;
+  const int wanted = verticesAsked(options_);
   if (wanted <= 0) return input_.vertexCount();
   if (!cut_) return wanted;
   // A cut surface's disk holds each seam sample twice: one more site per sample, so that the
@@ -373,7 +379,7 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
   for (size_t i = 0; i < parts.size(); ++i) {
     const double area = surfaceArea(parts[i]);
     auto share = [&](int count) { return static_cast<int>(std::lround(count * area / totalArea)); };
-    const int asked = options.sites.count > 0 ? options.sites.count : options.simplifyTo;
+    const int asked = verticesAsked(options);
     if (asked > 0 && share(asked) < kSmallestRemeshedShare && parts[i].vertexCount() <= kSmallestRemeshedShare) {
       append(result.output, parts[i]);
       ++result.componentsKept;

@@ -250,6 +250,23 @@ void addEdgeMoments(const LabelledPolygon& piece, const std::vector<double>& rho
   }
 }
 
+// One EdgeMoments per neighbour from w.edgeParts, by neighbour, each one's parts summed in
+// triangle order (as the cell's own integrals are: bit-identical wherever the walk started).
+void sumEdgeParts(Workspace& w, std::vector<EdgeMoments>& edges) {
+  std::sort(w.edgeOrder.begin(), w.edgeOrder.end());
+  for (const auto& [key, index] : w.edgeOrder) {
+    const EdgeMoments& part = w.edgeParts[index];
+    if (edges.empty() || edges.back().neighbour != part.neighbour) {
+      edges.push_back(part);
+      continue;
+    }
+    EdgeMoments& sum = edges.back();
+    sum.mass += part.mass;
+    sum.first += part.first;
+    sum.second += part.second;
+  }
+}
+
 // Visits, breadth first through shared edges, the parameter triangles that the cell overlaps,
 // starting from `start`, the one that holds the site, and integrates cell ∩ triangle for each.
 // The parts are summed in triangle order, so the result does not depend on where the walk
@@ -296,19 +313,7 @@ void clipAndIntegrate(const Domain& domain, const LabelledPolygon& voronoi, cons
     sum.moment += part.moment;
     sum.energy += part.energy;
   }
-  // The same for the edges: by neighbour, and each one's parts in triangle order.
-  std::sort(w.edgeOrder.begin(), w.edgeOrder.end());
-  for (const auto& [key, index] : w.edgeOrder) {
-    const EdgeMoments& part = w.edgeParts[index];
-    if (cell.edges.empty() || cell.edges.back().neighbour != part.neighbour) {
-      cell.edges.push_back(part);
-      continue;
-    }
-    EdgeMoments& sum = cell.edges.back();
-    sum.mass += part.mass;
-    sum.first += part.first;
-    sum.second += part.second;
-  }
+  sumEdgeParts(w, cell.edges);
   if (detail == CellDetail::Geometry)
     std::sort(cell.pieces.begin(), cell.pieces.end(),
               [](const CellPiece& a, const CellPiece& b) { return a.triangle < b.triangle; });
