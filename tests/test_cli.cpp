@@ -43,8 +43,8 @@ const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 // CGAL's mannequin is a nearly closed disk: remeshed both slit open and whole, and the report
 // says which it kept; --no-slit keeps it whole without trying, and the settings line says so.
 TEST(Cli, NoSlitKeepsANearlyClosedDiskWhole) {
-  const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/mannequin-devil.off";
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  const std::string path = test::cgalSample("mannequin-devil.off");
+  SKIP_UNLESS_EXTRACTED(path);
   const CliRun both = runCli("remesh " + path + " --simplify 300 --no-fidelity");
   ASSERT_EQ(both.code, 0) << both.err;
   EXPECT_NE(both.out.find("(remeshed both slit open and whole: its map to a disk shrinks part of it"), std::string::npos) << both.out;

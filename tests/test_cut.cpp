@@ -260,9 +260,8 @@ class ClosedCgalSamples : public ::testing::TestWithParam<ClosedSample> {};
 // edges away first. The cow has two vertices at one point (its surface touches itself), each
 // with its own faces: it was refused until such vertices were allowed.
 TEST_P(ClosedCgalSamples, KeepTheirGenus) {
-  const std::string path =
-      std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/" + GetParam().file;
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  const std::string path = test::cgalSample(GetParam().file);
+  SKIP_UNLESS_EXTRACTED(path);
   RemeshOptions o;
   o.simplifyTo = 1000;
   o.measureFidelity = false;
@@ -279,8 +278,8 @@ TEST_P(ClosedCgalSamples, KeepTheirGenus) {
 // horn the slits did not reach: 14 triangles under 10^-14 of the domain) while the input's own
 // map held. remesh() runs again without the first pass then, and says why.
 TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
-  const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/triceratops.off";
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  const std::string path = test::cgalSample("triceratops.off");
+  SKIP_UNLESS_EXTRACTED(path);
   RemeshOptions o;
   o.simplifyTo = 2000;
   o.measureFidelity = false;
@@ -298,8 +297,8 @@ TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
 // remeshed, and stitched back into one disk; made whole too, it comes out worse, and the slit
 // one is kept. --no-slit (slitDisks = false) keeps it whole.
 TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
-  const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/mannequin-devil.off";
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  const std::string path = test::cgalSample("mannequin-devil.off");
+  SKIP_UNLESS_EXTRACTED(path);
   RemeshOptions o;
   o.simplifyTo = 1000;
   const RemeshResult r = remesh(readMesh(path).mesh, o, path);
@@ -327,8 +326,8 @@ TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
 // bring that under 10^4, but through the peaks they cost (average smallest angle 50.2 against
 // 54.9, irregular 24.2% against 13.8): it is kept whole.
 TEST(NearlyClosedCgalSample, TheThreePeaksAreKeptWhole) {
-  const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/three_peaks.off";
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  const std::string path = test::cgalSample("three_peaks.off");
+  SKIP_UNLESS_EXTRACTED(path);
   RemeshOptions o;
   o.simplifyTo = 1000;
   o.measureFidelity = false;
@@ -343,9 +342,9 @@ TEST(NearlyClosedCgalSample, TheThreePeaksAreKeptWhole) {
 // The lion head's map to a disk shrinks its far side by 3 10^3: slit (and, remeshed, tried
 // both ways); the mushroom's by 60: left whole.
 TEST(NearlyClosedCgalSample, TheLionHeadIsSlitTheMushroomIsNot) {
-  const std::string lion = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/lion-head.off";
-  const std::string mushroom = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/mushroom.off";
-  if (!std::ifstream(lion).good() || !std::ifstream(mushroom).good()) GTEST_SKIP() << "not extracted (run ./build.sh)";
+  const std::string lion = test::cgalSample("lion-head.off"), mushroom = test::cgalSample("mushroom.off");
+  SKIP_UNLESS_EXTRACTED(lion);
+  SKIP_UNLESS_EXTRACTED(mushroom);
   const CutResult slit = cutToDisk(readMesh(lion).mesh, lion);
   EXPECT_FALSE(slit.seam.empty());
   EXPECT_LT(slit.summary.areaSpread, CutOptions{}.keepDiskSlitsUnder);

@@ -208,8 +208,8 @@ TEST(Inspector, DrawsTheSeamsOfACutSurface) {
 // without that pass (remesh() says why, and so does the inspector's left pane) instead of
 // the inspector refusing to open it.
 TEST(Inspector, OpensAMeshWhoseFirstResamplingFails) {
-  const std::string mesh = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/triceratops.off";
-  if (!std::ifstream(mesh).good()) GTEST_SKIP() << mesh << " not extracted (run ./build.sh)";
+  const std::string mesh = test::cgalSample("triceratops.off");
+  SKIP_UNLESS_EXTRACTED(mesh);
   const std::string png = test::tempPath("triceratops.png");
   ASSERT_EQ(run("inspect " + mesh + " --simplify 2000 --no-timings --size 640x400 --screenshot " + png), 0);
   EXPECT_EQ(readPng(png).width, 640);

@@ -8,6 +8,15 @@ namespace {
 Domain unitSquare() {
   return Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {});
 }
+
+// `count` sites on a spiral from the centre of the unit square outwards.
+std::vector<Vec2> spiral(int count) {
+  std::vector<Vec2> sites;
+  for (int i = 0; i < count; ++i)
+    sites.emplace_back(0.5 + 0.45 * std::cos(i * 2.4) * i / count,
+                       0.5 + 0.45 * std::sin(i * 2.4) * i / count);
+  return sites;
+}
 }  // namespace
 
 class FourSites : public ::testing::TestWithParam<CvtSolver> {};
@@ -70,9 +79,7 @@ TEST(Lloyd, SitesLiveOnAGridThatPacksThemIntoEightBytes) {
 
 TEST(Lloyd, LbfgsReachesALowerEnergyInFewerIterations) {
   const Domain domain = unitSquare();
-  std::vector<Vec2> sites;
-  for (int i = 0; i < 60; ++i) sites.emplace_back(0.5 + 0.45 * std::cos(i * 2.4) * i / 60.0,
-                                                  0.5 + 0.45 * std::sin(i * 2.4) * i / 60.0);
+  const std::vector<Vec2> sites = spiral(60);
   LloydOptions options;
   options.maxIterations = 40;
   options.solver = CvtSolver::Lloyd;
@@ -98,14 +105,8 @@ TEST(Lloyd, ConvergenceUsesBothThresholds) {
 TEST(CvtHessian, IsTheDerivativeOfTheGradient) {
   // Sites over a 6 x 6 grid of triangles with a density that varies linearly in each: the
   // Hessian times a direction must match central differences of the gradient 2 m (z - c).
-  const Mesh grid = test::grid(6);
-  std::vector<Vec2> uv;
-  std::vector<double> density;
-  for (const Vec3& p : grid.points) {
-    uv.emplace_back(p.x(), p.y());
-    density.push_back(1.0 + 3.0 * p.x() + 2.0 * p.y() * p.y());
-  }
-  const Domain domain(uv, grid.triangles, vertexDensity(grid.triangles, density));
+  const Domain domain =
+      test::gridDomain(6, [](const Vec3& p) { return 1.0 + 3.0 * p.x() + 2.0 * p.y() * p.y(); });
   const std::vector<Vec2> fixed = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}};
   std::vector<Vec2> movable;
   for (int i = 0; i < 40; ++i)
@@ -146,9 +147,7 @@ TEST(CvtHessian, IsTheDerivativeOfTheGradient) {
 
 TEST(Lloyd, NewtonConvergesInFewerIterationsThanLbfgs) {
   const Domain domain = unitSquare();
-  std::vector<Vec2> sites;
-  for (int i = 0; i < 200; ++i) sites.emplace_back(0.5 + 0.45 * std::cos(i * 2.4) * i / 200.0,
-                                                   0.5 + 0.45 * std::sin(i * 2.4) * i / 200.0);
+  const std::vector<Vec2> sites = spiral(200);
   LloydOptions options;
   options.solver = CvtSolver::Lbfgs;
   LloydSolver lbfgs(domain, {}, sites, options);
@@ -166,9 +165,7 @@ TEST(Lloyd, NewtonConvergesInFewerIterationsThanLbfgs) {
 TEST(Lloyd, ChangingThreadsMidRunChangesNoBit) {
   // What lets remesh() give a slit disk's two runs a core each once it knows it slits.
   const Domain domain = unitSquare();
-  std::vector<Vec2> sites;
-  for (int i = 0; i < 700; ++i) sites.emplace_back(0.5 + 0.45 * std::cos(i * 2.4) * i / 700.0,
-                                                   0.5 + 0.45 * std::sin(i * 2.4) * i / 700.0);
+  const std::vector<Vec2> sites = spiral(700);
   LloydOptions options;
   options.maxIterations = 6;
   options.threads = 2;

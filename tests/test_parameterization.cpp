@@ -202,8 +202,8 @@ TEST(Density, ALargerCurvatureFloorIsMoreUniform) {
 // Quadric simplification leaves slivers that LSCM flips almost for free: the mushroom's LSCM
 // folds 17 triangles. The local mean-value repair unfolds them.
 TEST(Parameterization, LscmFoldsAreRepairedLocally) {
-  const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/mushroom.off";
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  const std::string path = test::cgalSample("mushroom.off");
+  SKIP_UNLESS_EXTRACTED(path);
   const Mesh input = simplify(readMesh(path).mesh, {1000}, "mushroom").mesh;
   const Parameterization p = parameterize(input, {ParamMethod::Lscm, Border::Circle}, "mushroom");
   for (const Triangle& t : input.triangles)

@@ -73,12 +73,8 @@ TEST(Pipeline, ReferencePresetIsTheReportsSettings) {
   EXPECT_EQ(o.lloyd.solver, CvtSolver::Lloyd);
 }
 
-// CGAL's disk-topology sample meshes, extracted by build.sh into data/cgal (never committed),
-// remeshed to 1000 vertices with the default settings.
-std::string cgalSample(const char* name) {
-  return std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/" + name;
-}
-
+// CGAL's disk-topology sample meshes (test::cgalSample), remeshed to 1000 vertices with the
+// default settings.
 struct SampleBar {
   const char* file;
   bool meetsIssueBar;  // irregular <= 15%, smallest angle >= 30, average >= 53 (issue 5)
@@ -94,8 +90,8 @@ class CgalSamples : public ::testing::TestWithParam<SampleBar> {};
 // mannequin's so much that it is slit open and stitched back): valid and far better than the
 // input, with irregularity and angles short of the bar.
 TEST_P(CgalSamples, RemeshTo1000Vertices) {
-  const std::string path = cgalSample(GetParam().file);
-  if (!std::ifstream(path).good()) GTEST_SKIP() << path << " not extracted (run ./build.sh)";
+  const std::string path = test::cgalSample(GetParam().file);
+  SKIP_UNLESS_EXTRACTED(path);
   const Mesh input = readMesh(path).mesh;
   RemeshOptions o;
   o.sites.count = 1000;

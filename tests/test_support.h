@@ -1,6 +1,7 @@
 // Small meshes and helpers shared by the tests.
 #pragma once
 
+#include "domain.h"
 #include "mesh.h"
 
 #include <gtest/gtest.h>
@@ -25,6 +26,19 @@ inline Mesh grid(int n, double size = 1.0) {
       m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   return m;
+}
+
+// grid(n) as a parameter domain (u, v = x, y), with the density rho(point) at each vertex.
+template <class Rho>
+inline Domain gridDomain(int n, Rho rho) {
+  const Mesh g = grid(n);
+  std::vector<Vec2> uv;
+  std::vector<double> density;
+  for (const Vec3& p : g.points) {
+    uv.emplace_back(p.x(), p.y());
+    density.push_back(rho(p));
+  }
+  return Domain(uv, g.triangles, vertexDensity(g.triangles, density));
 }
 
 // An n x m grid on the surface (u, v) -> point(u, v), u and v in [0, 1], closed up in u and/or
@@ -62,6 +76,17 @@ inline Mesh moved(Mesh mesh, double scale, const Vec3& offset) {
 inline std::string assetPath(const std::string& name) {
   return std::string(LLOYDSCOPE_SOURCE_DIR) + "/assets/" + name;
 }
+
+// CGAL's sample mesh `name` ("lion-head.off"), extracted by build.sh into data/cgal (never
+// committed).
+inline std::string cgalSample(const std::string& name) {
+  return std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/" + name;
+}
+
+// Skips the test where ./build.sh has not extracted `path` (a CGAL sample).
+#define SKIP_UNLESS_EXTRACTED(path) \
+  if (!std::ifstream(path).good()) GTEST_SKIP() << (path) << " not extracted (run ./build.sh)"
+
 
 // CTest runs test processes in parallel: every process gets names of its own.
 inline std::string tempPath(const std::string& name) {

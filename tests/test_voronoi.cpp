@@ -128,18 +128,14 @@ TEST(BoundedCells, HintsDoNotChangeABit) {
 
 TEST(BoundedCells, CellsTileAFineDomainExactly) {
   // Cells much larger and much smaller than the parameter triangles, over a 12 x 12 grid.
-  const Mesh grid = test::grid(12);
-  std::vector<Vec2> uv;
-  std::vector<double> density;
-  for (const Vec3& p : grid.points) {
-    uv.emplace_back(p.x(), p.y());
-    density.push_back(1.0 + 3.0 * p.x() * p.y());
-  }
-  const Domain domain(uv, grid.triangles, vertexDensity(grid.triangles, density));
+  const Domain domain = test::gridDomain(12, [](const Vec3& p) { return 1.0 + 3.0 * p.x() * p.y(); });
   double domainMass = 0;
-  for (const Triangle& t : grid.triangles)
-    domainMass += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]) *
-                  (density[t[0]] + density[t[1]] + density[t[2]]) / 3.0;
+  for (size_t t = 0; t < domain.triangles().size(); ++t) {
+    const Triangle& c = domain.triangles()[t];
+    const std::array<double, 3>& rho = domain.density()[t];
+    domainMass += triangleArea(domain.uv()[c[0]], domain.uv()[c[1]], domain.uv()[c[2]]) *
+                  (rho[0] + rho[1] + rho[2]) / 3.0;
+  }
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int count : {7, 60, 900}) {
