@@ -161,7 +161,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
     out << "Remeshed " << r.components - r.componentsKept << " of " << r.components
         << " connected components, each on its own (the lines below on the map and the cut, and the"
         << " recording, are the largest one's)"
-        << (r.componentsKept > 0 ? "; " + std::to_string(r.componentsKept) + " with 20 vertices or fewer, too small for their share, kept as they are" : "")
+        << (r.componentsKept > 0 ? "; " + std::to_string(r.componentsKept) + " with " + std::to_string(kSmallestRemeshedShare) + " vertices or fewer, too small for their share, kept as they are" : "")
         << "\n";
   out << "Lloyd iterations: " << r.iterations << (r.components > 1 ? ", all components" : "")
       << (r.converged ? " (converged)" : " (not converged)") << "\n";

@@ -361,11 +361,6 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   return kept;
 }
 
-// The fewest vertices a component is remeshed to. One whose share of the vertices asked for is
-// smaller, and which has no more vertices than this (debris, a loose triangle), is kept as it
-// is; a larger one is remeshed to this many.
-constexpr int kSmallestRemeshedShare = 20;
-
 // Each connected component on its own, with its share (by area) of the vertices asked for; the
 // results side by side, measured together against the whole input. The largest component's
 // recording, map and cut stand for the run.

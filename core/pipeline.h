@@ -70,6 +70,11 @@ struct SlitTrial {
   double slit = 0, whole = 0;
 };
 
+// The fewest vertices remesh() remeshes a connected component to. One whose share of the
+// vertices asked for is smaller, and which has no more vertices than this (debris, a loose
+// triangle), is kept as it is; a larger one is remeshed to this many.
+constexpr int kSmallestRemeshedShare = 20;
+
 struct RemeshResult {
   Mesh output;
   Recording recording;
