@@ -285,7 +285,7 @@ void clipAndIntegrate(const Domain& domain, const LabelledPolygon& voronoi, cons
     const Vec2 corner[3] = {domain.uv()[tri[0]], domain.uv()[tri[1]], domain.uv()[tri[2]]};
     int reaches;
     const LabelledPolygon& piece =
-        detail == CellDetail::Integrals
+        detail != CellDetail::EdgeMoments
             ? clipToTriangle<false>(voronoi, corner, w.piece, w.scratch, w.side, reaches)
             : clipToTriangle<true>(voronoi, corner, w.piece, w.scratch, w.side, reaches);
     if (piece.size() < 3) continue;
@@ -294,7 +294,7 @@ void clipAndIntegrate(const Domain& domain, const LabelledPolygon& voronoi, cons
     const PolygonIntegrals part = integratePolygon(piece.points, w.rho, site);
     if (part.area <= 0) continue;
     w.parts.emplace_back(t, part);
-    if (detail != CellDetail::Integrals) addEdgeMoments(piece, w.rho, site, t, w);
+    if (detail == CellDetail::EdgeMoments) addEdgeMoments(piece, w.rho, site, t, w);
     if (detail == CellDetail::Geometry) cell.pieces.push_back({t, piece.points});
     for (int k = 0; k < 3; ++k) {
       const int n = domain.neighbours()[t][(k + 2) % 3];  // across edge (corner k, corner k+1)

@@ -67,7 +67,7 @@ struct CellHints {
 enum class CellDetail {
   Integrals,    // nothing more: what Lloyd's and the L-BFGS steps need
   EdgeMoments,  // BoundedCell::edges too: what Newton's step needs
-  Geometry,     // everything: polygons and neighbours to draw, and the edges
+  Geometry,     // the polygons and neighbours to draw (not the edges: a view needs none)
 };
 
 // Cells of all `sites`, in their order. Deterministic: the same sites give bit-identical cells,
