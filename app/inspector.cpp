@@ -148,6 +148,12 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
   if (result_.slitTrial) message_ = slitTrialText(result_) + (message_.empty() ? "" : ". " + message_);
+  if (result_.charts > 0) {
+    if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
+    message_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
+               "largest chart (on its own); the input column and \"show the final result\" are "
+               "the whole surface. " + message_;
+  }
   if (result_.components > 1) {
     if (input_) input_ = largestComponent(*input_);  // what the panes show, and Restart steps
     message_ = meshName_ + " has " + std::to_string(result_.components) +

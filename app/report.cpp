@@ -86,6 +86,14 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                       {"whole_avg_min_angle_deg", r.slitTrial->whole},
                                                       {"kept", r.cut.seamEdges > 0 ? "slit" : "whole"}}
                                      : nlohmann::json()},
+          {"charts", r.charts},
+          {"chart_trial", r.chartTrial ? nlohmann::json{{"charts", r.chartTrial->charts},
+                                                        {"one_cut_avg_min_angle_deg", r.chartTrial->oneCutAvgMinAngle},
+                                                        {"charts_avg_min_angle_deg", r.chartTrial->chartsAvgMinAngle},
+                                                        {"one_cut_hausdorff_percent", r.chartTrial->oneCutHausdorff},
+                                                        {"charts_hausdorff_percent", r.chartTrial->chartsHausdorff},
+                                                        {"kept", r.charts > 0 ? "charts" : "one-cut"}}
+                                       : nlohmann::json()},
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
@@ -124,6 +132,16 @@ std::string slitTrialText(const RemeshResult& r) {
          std::to_string(static_cast<long>(CutOptions{}.slitDisksAbove)) + " times): average smallest angle " +
          format("%.1f", r.slitTrial->slit) + " deg slit, " + format("%.1f", r.slitTrial->whole) +
          " deg whole";
+}
+
+std::string chartTrialText(const RemeshResult& r) {
+  if (!r.chartTrial) return "";
+  const ChartTrial& t = *r.chartTrial;
+  return std::string(r.charts > 0 ? "Kept chart by chart" : "Kept cut to one disk") +
+         " (remeshed both ways: no conformal map of the one disk held): average smallest angle " +
+         format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +
+         format("%.1f", t.oneCutAvgMinAngle) + " deg one disk; Hausdorff " + format("%.3f", t.chartsHausdorff) +
+         "% and " + format("%.3f", t.oneCutHausdorff) + "%";
 }
 
 std::string farthestPointText(const Fidelity& f) {
@@ -165,15 +183,18 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << "\n";
   out << "Lloyd iterations: " << r.iterations << (r.components > 1 ? ", all components" : "")
       << (r.converged ? " (converged)" : " (not converged)") << "\n";
-  out << "Parameterization: " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
+  out << "Parameterization" << (r.charts > 0 ? " (largest chart)" : "") << ": " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
       << format("%.3g", r.distortion.maxAreaRatio)
       << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
   if (!r.resampleDropped.empty()) out << withoutResamplingText(r.resampleDropped) << "\n";
-  if (r.cut.seamEdges > 0)
+  if (r.charts > 0)
+    out << "Split into " << r.charts << " charts along " << r.cut.seamEdges << " seam edges\n";
+  else if (r.cut.seamEdges > 0)
     out << "Cut open along " << r.cut.seamEdges << " edges (" << r.cut.extremityCuts
         << (r.cut.extremityCuts == 1 ? " slit" : " slits") << " through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)
         << "\n";
   if (r.slitTrial) out << slitTrialText(r) << "\n";
+  if (r.chartTrial) out << chartTrialText(r) << "\n";
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips
         << (r.snappedTips == 1 ? " vertex\n" : " vertices\n");
@@ -183,7 +204,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
       << "parameterize " << format("%.1f", r.ms.parameterize) << ", density "
       << format("%.1f", r.ms.density) << ", sites " << format("%.1f", r.ms.sites) << ", lloyd "
       << format("%.1f", r.ms.lloyd) << ", remesh " << format("%.1f", r.ms.remesh)
-      << (r.ms.compared > 0 ? ", the other way (alongside) " + format("%.1f", r.ms.compared) : "") << ", metrics "
+      << (r.ms.compared > 0 ? std::string(r.slitTrial ? ", the other way (alongside) " : ", the other way ") + format("%.1f", r.ms.compared) : "") << ", metrics "
       << format("%.1f", r.ms.metrics) << ", total " << format("%.1f", r.ms.total) << "\n";
   return out.str();
 }

@@ -22,6 +22,8 @@ std::string withoutResamplingText(const std::string& problem);
 // "Kept slit open (remeshed both slit open and whole: ...): ..." (RemeshResult::slitTrial), or
 // "" when the disk was not tried both ways.
 std::string slitTrialText(const RemeshResult& r);
+// "Kept chart by chart (...)" or "Kept cut to one disk (...)"; empty without a chart trial.
+std::string chartTrialText(const RemeshResult& r);
 
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,

@@ -1,5 +1,6 @@
 #include "pipeline.h"
 
+#include "charts.h"
 #include "mesh_io.h"
 #include "polish.h"
 #include "simplify.h"
@@ -99,8 +100,10 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         // No finer than the input: more sites than that are sampled on the resampled surface.
         // On a cut surface the resampled vertices are the sites, whose seam samples match.
         SiteOptions sites = seamSites();
-        sites.count = cut_ ? siteCount() : std::min(siteCount(), input_.vertexCount());
-        Resampling r = resample(input_, sites, options_.density, {}, name);
+        sites.count = seamed() ? siteCount() : std::min(siteCount(), input_.vertexCount());
+        ResampleOptions how;
+        how.fallback = options_.param.fallback;
+        Resampling r = resample(input_, sites, options_.density, how, name);
         ms_.resample = stage.lap();
         return r;
       }()),
@@ -110,7 +113,12 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         // Where LSCM folds on the resampled surface, its points in the input's map -- if that
         // map is conformal too; the mean value map of the resampled surface (no slivers)
         // distorts less than its points in the mean value map of the input.
-        if (resampled_ && resampled_->param.method == ParamMethod::Lscm) o.fallback = resampled_->mesh.uv;
+        // (A chart's projection, ParamOptions::fallback, is as good: nearly isometric.)
+        if (resampled_) {
+          const ParamMethod used = resampled_->param.method;
+          o.fallback.clear();  // of the input's vertices, not the resampled surface's
+          if (used == ParamMethod::Lscm || used == ParamMethod::Given) o.fallback = resampled_->mesh.uv;
+        }
         Parameterization p = parameterize(surface(), o, name);
         ms_.parameterize = stage.lap();
         return p;
@@ -128,12 +136,15 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         return d;
       }()) {
   Stopwatch stage;
-  SiteOptions siteOptions = resampled_ ? options_.sites : seamSites();
+  SiteOptions siteOptions = seamSites();
   siteOptions.count = siteCount();
   // The resampled surface's vertices are already well spread: where there are as many of them
   // as sites, they are where Lloyd starts.
-  if (resampled_ && (cut_ || siteCount() <= input_.vertexCount()))
-    siteOptions.fromInputVertices = true;
+  if (resampled_) {
+    siteOptions.onSeam.clear();  // of the input's vertices, not the resampled surface's
+    siteOptions.seamNode.clear();
+    if (seamed() || siteCount() <= input_.vertexCount()) siteOptions.fromInputVertices = true;
+  }
   sites_ = initialSites(surface(), param_, domain_, siteOptions);
   ms_.sites = stage.lap();
   solver_ = std::make_unique<LloydSolver>(domain_, sites_.fixed, sites_.movable, options_.lloyd);
@@ -183,7 +194,7 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
     PolishOptions o;
     o.iterations = options_.polish;
     o.target = options_.polishTarget;
-    o.seams = cut_.has_value();
+    o.seams = seamed();
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
   if (!cut_) {
@@ -196,26 +207,8 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
   if (options_.polish > 0) polishSeams(stitched, seamVertex, input_, options_.polish);
   removeFlatTriangles(stitched);
   if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(stitched, original());
-  const Topology& want = cut_->topology;
-  try {
-    validateMesh(stitched, name_);
-    const Topology got = analyzeTopology(stitched);
-    std::set<Triangle> faces;  // the same three vertices twice: two sides of one triangle
-    for (Triangle t : stitched.triangles) {
-      std::sort(t.begin(), t.end());
-      if (!faces.insert(t).second) throw Error("two triangles have the same corners");
-    }
-    if (2 * stitched.vertexCount() < siteCount())
-      throw Error("only " + std::to_string(stitched.vertexCount()) + " of " +
-                  std::to_string(siteCount()) + " vertices are left");
-    if (got.genus == want.genus && got.boundaryLoops.size() == want.boundaryLoops.size() &&
-        got.components == 1)
-      return stitched;
-    throw Error(got.describe());
-  } catch (const Error& e) {
-    throw Error(name_ + ": the remeshed seams did not stitch back into " + want.describe() +
-                " (" + e.what() + "); cutting this surface open is not reliable yet");
-  }
+  requireStitched(stitched, cut_->topology, siteCount(), name_);
+  return stitched;
 }
 
 namespace {
@@ -223,6 +216,28 @@ namespace {
 // as the input).
 int verticesAsked(const RemeshOptions& o) { return o.sites.count > 0 ? o.sites.count : o.simplifyTo; }
 }  // namespace
+
+void requireStitched(const Mesh& stitched, const Topology& want, int verticesWanted, const std::string& name) {
+  try {
+    validateMesh(stitched, name);
+    const Topology got = analyzeTopology(stitched);
+    std::set<Triangle> faces;  // the same three vertices twice: two sides of one triangle
+    for (Triangle t : stitched.triangles) {
+      std::sort(t.begin(), t.end());
+      if (!faces.insert(t).second) throw Error("two triangles have the same corners");
+    }
+    if (2 * stitched.vertexCount() < verticesWanted)
+      throw Error("only " + std::to_string(stitched.vertexCount()) + " of " +
+                  std::to_string(verticesWanted) + " vertices are left");
+    if (got.genus == want.genus && got.boundaryLoops.size() == want.boundaryLoops.size() &&
+        got.components == 1)
+      return;
+    throw Error(got.describe());
+  } catch (const Error& e) {
+    throw Error(name + ": the remeshed seams did not stitch back into " + want.describe() +
+                " (" + e.what() + "); cutting this surface open is not reliable yet");
+  }
+}
 
 int RemeshSession::siteCount() const {
   const int wanted = verticesAsked(options_);
@@ -238,11 +253,16 @@ int RemeshSession::siteCount() const {
 }
 
 SiteOptions RemeshSession::seamSites() const {
-  SiteOptions sites = options_.sites;
-  if (cut_) {
-    sites.seamNode = cut_->seamNode;
-    sites.onSeam = cut_->onSeam;
-  }
+  SiteOptions sites = options_.sites;  // a chart's seams (core/charts), per input vertex
+  if (!cut_) return sites;
+  sites.seamNode = cut_->seamNode;
+  sites.onSeam = cut_->onSeam;
+  if (!options_.sites.onSeam.empty())
+    for (size_t v = 0; v < cut_->original.size(); ++v) {
+      const int was = cut_->original[v];
+      sites.onSeam[v] = sites.onSeam[v] || options_.sites.onSeam[was];
+      sites.seamNode[v] = sites.seamNode[v] || options_.sites.seamNode[was];
+    }
   return sites;
 }
 
@@ -306,13 +326,146 @@ bool betterThan(const QualityMetrics& a, const QualityMetrics& b) {
   return barsMet(a) != barsMet(b) ? barsMet(a) > barsMet(b) : a.avgMinAngle > b.avgMinAngle;
 }
 
+// A part of the surface remeshed on its own (a chart, a component) added to the whole's counts
+// and times; the largest by area (`largest` so far) gives its recording and map. Returns
+// whether it was that.
+bool addPart(RemeshResult& whole, RemeshResult& part, const std::string& label, double area, double& largest) {
+  whole.iterations += part.iterations;
+  whole.converged = whole.converged && part.converged;
+  if (!part.resampleDropped.empty())
+    whole.resampleDropped += (whole.resampleDropped.empty() ? "" : "; ") + (label + ": " + part.resampleDropped);
+  whole.ms += part.ms;
+  if (area <= largest) return false;
+  largest = area;
+  whole.recording = std::move(part.recording);
+  whole.paramUsed = part.paramUsed;
+  whole.distortion = part.distortion;
+  return true;
+}
+
+void measureFidelityOf(RemeshResult& result, const Mesh& input) {
+  Stopwatch stage;
+  result.fidelity = measureFidelity(result.output, input);
+  const double ms = stage.lap();
+  result.ms.metrics += ms;
+  result.ms.total += ms;
+}
+
+// Half a chart's seam samples are another chart's: its border edges with both ends on a seam.
+double seamLength(const Chart& chart) {
+  double length = 0;
+  const Topology topology = analyzeTopology(chart.mesh);
+  for (const std::vector<int>& loop : topology.boundaryLoops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      if (chart.onSeam[a] && chart.onSeam[b]) length += (chart.mesh.points[a] - chart.mesh.points[b]).norm();
+    }
+  return length;
+}
+
+// The surface split into charts (core/charts), each a disk remeshed on its own, with its share
+// of the vertices by area and half its seam samples more (each is also another chart's), its
+// border sampled at the whole surface's spacing so that both sides of a seam get the same
+// samples; its projection is the map tried where LSCM folds. Then stitched, the seams relaxed
+// (polishSeams), snapped to tips.
+RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  Stopwatch wall, stage;
+  RemeshResult result;
+  const Mesh mesh = options.simplifyTo > 0 ? simplify(input, {options.simplifyTo}, name).mesh : input;
+  result.ms.simplify = stage.lap();
+  const int asked = verticesAsked(options) > 0 ? verticesAsked(options) : mesh.vertexCount();
+  const Charts charts = splitIntoCharts(mesh, asked);
+  if (charts.charts.size() < 2) throw Error(name + ": one chart covers it");
+  const double area = surfaceArea(mesh);
+  const double spacing = std::sqrt(2.0 * area / (std::sqrt(3.0) * asked));
+  result.ms.cut = stage.lap();
+  result.charts = static_cast<int>(charts.charts.size());
+  result.cut.seamEdges = charts.seamEdges;
+  result.converged = true;
+  Mesh pieces;
+  double largest = -1;
+  for (size_t i = 0; i < charts.charts.size(); ++i) {
+    const Chart& chart = charts.charts[i];
+    const std::string chartName =
+        name + " (chart " + std::to_string(i + 1) + " of " + std::to_string(charts.charts.size()) + ")";
+    validateMesh(chart.mesh, chartName);
+    const double chartArea = surfaceArea(chart.mesh);
+    RemeshOptions o = options;
+    o.simplifyTo = 0;
+    o.sites.count = std::max(1, static_cast<int>(std::lround(asked * chartArea / area + 0.5 * seamLength(chart) / spacing)));
+    o.sites.onSeam = chart.onSeam;
+    o.sites.seamNode = chart.seamNode;
+    o.sites.spacing = spacing;
+    o.param.fallback = chart.uv;
+    o.slitDisks = false;
+    o.snapToTips = false;  // on the whole, stitched
+    o.measureFidelity = false;
+    RemeshResult r = remeshOnce(chart.mesh, o, chartName);
+    append(pieces, r.output);
+    if (addPart(result, r, "chart " + std::to_string(i + 1), chartArea, largest)) result.largestChart = chart.mesh;
+  }
+  stage.lap();
+  std::vector<bool> seamVertex;
+  Mesh stitched = stitchSeams(pieces, kSeamTolerance * boundingBoxDiagonal(pieces), &seamVertex);
+  if (options.polish > 0) polishSeams(stitched, seamVertex, mesh, options.polish);
+  removeFlatTriangles(stitched);
+  if (options.polish > 0 && options.snapToTips) result.snappedTips = snapToTips(stitched, input);
+  requireStitched(stitched, analyzeTopology(mesh), asked, name);
+  result.output = std::move(stitched);
+  result.ms.remesh += stage.lap();
+  result.before = measureQuality(input);
+  result.after = measureQuality(result.output);
+  result.ms.metrics += stage.lap();
+  result.ms.total = wall.lap();
+  return result;
+}
+
+// A surface cut open to one disk: where no conformal map of that disk holds (LSCM folds and a
+// map with a fixed border takes over: CGAL's cow, camel and elephant, parts with many handles),
+// the cells come out stretched on the surface; it is then remeshed chart by chart too
+// (remeshCharts), and that result kept if it is better (betterThan) and no farther from the
+// input (a Hausdorff distance at most kChartsFartherBy times the other's): ChartTrial.
+constexpr double kChartsFartherBy = 1.1;
+RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  Stopwatch wall;
+  RemeshOptions once = options;
+  once.measureFidelity = false;
+  RemeshResult kept = remeshOnce(input, once, name);
+  const bool stretched = kept.paramUsed == ParamMethod::MeanValue || kept.paramUsed == ParamMethod::Tutte;
+  if (!stretched || options.param.method != ParamMethod::Auto || !usesResampling(options)) {
+    kept.ms.total = wall.lap();
+    if (options.measureFidelity) measureFidelityOf(kept, input);
+    return kept;
+  }
+  try {
+    RemeshResult charted = remeshCharts(input, once, name);
+    measureFidelityOf(kept, input);
+    measureFidelityOf(charted, input);
+    const ChartTrial trial{charted.charts, kept.after.avgMinAngle, charted.after.avgMinAngle,
+                           kept.fidelity.hausdorffPercent, charted.fidelity.hausdorffPercent};
+    const bool better = betterThan(charted.after, kept.after) &&
+                        trial.chartsHausdorff <= kChartsFartherBy * trial.oneCutHausdorff;
+    RemeshResult& other = better ? kept : charted;
+    const double otherMs = other.ms.total - other.ms.metrics, checks = other.ms.metrics;
+    if (better) kept = std::move(charted);
+    kept.chartTrial = trial;
+    kept.ms.compared = otherMs;
+    kept.ms.metrics += checks;
+  } catch (const Error&) {  // a chart failed, or its seams did not stitch: the one cut stands
+    if (options.measureFidelity) measureFidelityOf(kept, input);
+  }
+  kept.ms.total = wall.lap();
+  return kept;
+}
+
 // A disk slit open (a nearly closed shape, CutOptions::slitDisksAbove) is made whole too, and
 // the better result kept (betterThan): slits through a shape's far side (CGAL's mannequin, a
 // camel head, the lion head at 1000 vertices) pay, through the peaks of a terrain (CGAL's three
 // peaks) they cost. The other run's time counts; the distance to the input is measured once, on the one
 // kept. If the slit run fails (its seams do not stitch), the whole one stands alone.
 RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& options, const std::string& name) {
-  if (!options.slitDisks || !disk) return remeshOnce(input, options, name);
+  if (!disk) return remeshCutSurface(input, options, name);
+  if (!options.slitDisks) return remeshOnce(input, options, name);
   Stopwatch wall;
   RemeshOptions slitOptions = options, wholeOptions = options;
   slitOptions.measureFidelity = wholeOptions.measureFidelity = false;
@@ -351,13 +504,7 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
     }
   }
   kept.ms.total = wall.lap();  // both runs, side by side
-  if (options.measureFidelity) {
-    Stopwatch stage;
-    kept.fidelity = measureFidelity(kept.output, input);
-    const double ms = stage.lap();
-    kept.ms.metrics += ms;
-    kept.ms.total += ms;
-  }
+  if (options.measureFidelity) measureFidelityOf(kept, input);
   return kept;
 }
 
@@ -388,19 +535,13 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
         name + " (component " + std::to_string(i + 1) + " of " + std::to_string(parts.size()) + ")";
     RemeshResult r = remeshSurface(parts[i], analyzeTopology(parts[i]).isDisk(), o, partName);
     append(result.output, r.output);
-    result.iterations += r.iterations;
-    result.converged = result.converged && r.converged;
     result.snappedTips += r.snappedTips;
-    if (!r.resampleDropped.empty())
-      result.resampleDropped += (result.resampleDropped.empty() ? "" : "; ") + ("component " + std::to_string(i + 1) + ": " + r.resampleDropped);
-    result.ms += r.ms;  // the total is timed around them all, in remesh()
-    if (area > largest) {
-      largest = area;
-      result.recording = std::move(r.recording);
-      result.paramUsed = r.paramUsed;
-      result.distortion = r.distortion;
-      result.cut = r.cut;
-      result.slitTrial = r.slitTrial;
+    const CutSummary cut = r.cut;
+    const std::optional<SlitTrial> slitTrial = r.slitTrial;
+    // (The total is timed around them all, in remesh().)
+    if (addPart(result, r, "component " + std::to_string(i + 1), area, largest)) {
+      result.cut = cut;
+      result.slitTrial = slitTrial;
     }
   }
   Stopwatch stage;

@@ -70,6 +70,15 @@ struct SlitTrial {
   double slit = 0, whole = 0;
 };
 
+// A surface cut to one disk whose map was not conformal (LSCM folded), remeshed chart by chart
+// too: what each gave. The charts are kept if they are better (more of issue 5's bars, or as
+// many and a larger average smallest angle) and at most 1.1 times as far from the input.
+struct ChartTrial {
+  int charts = 0;
+  double oneCutAvgMinAngle = 0, chartsAvgMinAngle = 0;
+  double oneCutHausdorff = 0, chartsHausdorff = 0;  // % of the diagonal
+};
+
 // The fewest vertices remesh() remeshes a connected component to. One whose share of the
 // vertices asked for is smaller, and which has no more vertices than this (debris, a loose
 // triangle), is kept as it is; a larger one is remeshed to this many.
@@ -93,8 +102,18 @@ struct RemeshResult {
   int components = 1;
   int componentsKept = 0;  // of them, debris too small for its share of the vertices: kept as it is
   std::optional<SlitTrial> slitTrial;  // with cut.seamEdges > 0 if the slit one was kept
+  // > 0: the surface was remeshed chart by chart (core/charts); recording, paramUsed and
+  // distortion are then the largest chart's, cut.seamEdges the charts' seams.
+  int charts = 0;
+  Mesh largestChart;  // with charts > 0: the chart the recording is of
+  std::optional<ChartTrial> chartTrial;
   StageTimes ms;
 };
+
+// Throws Error("<name>: the remeshed seams did not stitch back into ...") unless `stitched` is a
+// valid manifold with `want`'s genus and boundary loops, one component, no triangle twice, and
+// at least half the vertices wanted.
+void requireStitched(const Mesh& stitched, const Topology& want, int verticesWanted, const std::string& name);
 
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
 // run fails with the first pass (options.resample), it is made again without it. Several
@@ -132,8 +151,10 @@ class RemeshSession {
 
  private:
   Mesh buildOutput(int& snappedTips) const;
-  // The site options with the seams of a cut surface marked.
+  // The site options with the seams of a cut surface marked (and a chart's, given in them).
   SiteOptions seamSites() const;
+  // Whether the border holds seams to stitch: a cut's, or those of a chart of a surface.
+  bool seamed() const { return cut_.has_value() || !options_.sites.onSeam.empty(); }
   // How many sites the options ask for: 0 in them is the size simplifyTo asks for (a coarser
   // input is refined to it), or else as many as the input has vertices.
   int siteCount() const;

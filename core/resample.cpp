@@ -15,7 +15,9 @@ Vec3 Resampling::toInput(const Mesh& input, int triangle, const Eigen::Vector3d&
 Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
                     const DensityOptions& density, const ResampleOptions& options,
                     const std::string& name) {
-  Parameterization param = parameterize(input, {}, name);
+  ParamOptions map;
+  map.fallback = options.fallback;
+  Parameterization param = parameterize(input, map, name);
   Density rho = computeDensity(input, param.uv, density);
   Domain domain(param.uv, input.triangles, rho);
   const InitialSites sites = initialSites(input, param, domain, siteOptions);

@@ -19,6 +19,7 @@ namespace lloydscope {
 struct ResampleOptions {
   int iterations = 20;  // L-BFGS iterations of the rough pass (it need not converge)
   int polish = 3;       // relaxation passes on the surface after it
+  std::vector<Vec2> fallback;  // a map of the input to try where LSCM folds (ParamOptions::fallback)
 };
 
 struct Resampling {

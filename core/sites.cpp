@@ -168,7 +168,8 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   }
   const int count = options.count > 0 ? options.count : mesh.vertexCount();
   // An equilateral mesh of N vertices has about 2N triangles of area (sqrt 3 / 4) h^2.
-  const double spacing = std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
+  const double spacing = options.spacing > 0 ? options.spacing
+                                             : std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
   sites.fixed = resampleBorder(mesh, param, spacing, options);
   const int inside = std::max(0, count - static_cast<int>(sites.fixed.size()));
   sites.movable = sampleDensity(domain, inside, options.seed);

@@ -21,6 +21,9 @@ struct SiteOptions {
   // copies of a seam must get the same samples: nodes are always samples, and no other corner
   // is taken on a seam. Empty: no seams.
   std::vector<bool> seamNode, onSeam;
+  // > 0: the border's samples this far apart (3D arc length) whatever `count` gives: charts of
+  // one surface (core/charts) sample their shared borders alike.
+  double spacing = 0;
 };
 
 struct InitialSites {

@@ -30,6 +30,21 @@ TEST(Sites, InsideSitesAreDrawnBySqrtOfTheDensity) {
   EXPECT_NEAR(double(left) / right, 2.0, 0.25);
 }
 
+// Charts of one surface (core/charts) sample their shared borders at one spacing, whatever
+// their own number of sites: the unit square's border (length 4) at 0.1 is 40 samples.
+TEST(Sites, TheBorderSpacingCanBeGiven) {
+  const Mesh grid = test::grid(20);
+  const Parameterization param = parameterize(grid, {ParamMethod::Tutte, Border::Square, {}}, "grid");
+  const Domain domain(param.uv, grid.triangles, vertexDensity(grid.triangles, std::vector<double>(grid.vertexCount(), 1.0)));
+  SiteOptions o;
+  o.count = 500;  // its own spacing would be about 0.068: 59 samples
+  EXPECT_GT(initialSites(grid, param, domain, o).fixed.size(), 50u);
+  o.spacing = 0.1;
+  const InitialSites sites = initialSites(grid, param, domain, o);
+  EXPECT_EQ(sites.fixed.size(), 40u);
+  EXPECT_EQ(sites.fixed.size() + sites.movable.size(), 500u);
+}
+
 // A grid with a hole of one missing triangle, far smaller than the spacing of 35 sites: the
 // cut joins it to the border at one node, and it still comes back as a hole.
 TEST(Sites, AHoleSmallerThanTheSpacingStaysAHole) {

@@ -1,0 +1,47 @@
+// Splitting a surface into charts (issue 6): where one cut to a disk leaves a map that no
+// parameterization holds (a part with many handles: CGAL's anchor, coupling and turbine; a
+// closed animal whose conformal map folds), each chart, nearly flat, is mapped on its own and
+// remeshed on its own; the charts' shared borders are seams whose samples both sides place
+// alike (the same 3D spacing from the same nodes), stitched back afterwards.
+#pragma once
+
+#include "mesh.h"
+
+#include <vector>
+
+namespace lloydscope {
+
+struct ChartOptions {
+  // A chart's face normals stay within this angle of its seed face's: nearly a height field,
+  // which a conformal map flattens with little distortion and no fold.
+  double coneDegrees = 60;
+  // A chart with fewer than this many of the result's vertices (by its share of the area) is
+  // merged into the neighbour it shares the longest border with.
+  int smallestShare = 20;
+};
+
+struct Chart {
+  Mesh mesh;                  // manifold, connected; may have several border loops or handles
+  std::vector<int> original;  // per chart vertex, the surface's vertex
+  // Per chart vertex: on a border shared with another chart, and a node there (where three
+  // charts or a chart border and the surface's border meet; one vertex of a border loop that
+  // meets none): what SiteOptions needs to sample the two sides of a seam alike.
+  std::vector<bool> onSeam, seamNode;
+  // Per chart vertex, its projection onto the plane normal to the chart's mean normal, if every
+  // face is within 75 degrees of it (a map to try where a conformal one folds); else empty.
+  std::vector<Vec2> uv;
+};
+
+struct Charts {
+  std::vector<Chart> charts;
+  int seamEdges = 0;  // edges of the surface between two charts
+};
+
+// The charts of a valid manifold mesh of one component, each a topological disk: grown from the
+// first face not yet taken over its neighbours within the normal cone, then the small ones
+// merged into a neighbour where the union is a disk (one that stays within 75 degrees of its
+// mean normal first). `resultVertices`: the size the result
+// will have (smallestShare).
+Charts splitIntoCharts(const Mesh& mesh, int resultVertices, const ChartOptions& options = {});
+
+}  // namespace lloydscope
