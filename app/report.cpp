@@ -92,7 +92,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                         {"charts_avg_min_angle_deg", r.chartTrial->chartsAvgMinAngle},
                                                         {"one_cut_hausdorff_percent", r.chartTrial->oneCutHausdorff},
                                                         {"charts_hausdorff_percent", r.chartTrial->chartsHausdorff},
-                                                        {"kept", r.charts > 0 ? "charts" : "one-cut"}}
+                                                        {"kept", r.charts > 0 ? "charts" : "one-cut"},
+                                                        {"failed", r.chartTrial->failed}}
                                        : nlohmann::json()},
           {"iterations", r.iterations},
           {"converged", r.converged},
@@ -137,6 +138,8 @@ std::string slitTrialText(const RemeshResult& r) {
 std::string chartTrialText(const RemeshResult& r) {
   if (!r.chartTrial) return "";
   const ChartTrial& t = *r.chartTrial;
+  if (!t.failed.empty())
+    return "Kept cut to one disk (no conformal map of it held; remeshed chart by chart too, which failed: " + t.failed + ")";
   return std::string(r.charts > 0 ? "Kept chart by chart" : "Kept cut to one disk") +
          " (remeshed both ways: no conformal map of the one disk held): average smallest angle " +
          format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +

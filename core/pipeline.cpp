@@ -441,8 +441,12 @@ RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, c
     RemeshResult charted = remeshCharts(input, once, name);
     measureFidelityOf(kept, input);
     measureFidelityOf(charted, input);
-    const ChartTrial trial{charted.charts, kept.after.avgMinAngle, charted.after.avgMinAngle,
-                           kept.fidelity.hausdorffPercent, charted.fidelity.hausdorffPercent};
+    ChartTrial trial;
+    trial.charts = charted.charts;
+    trial.oneCutAvgMinAngle = kept.after.avgMinAngle;
+    trial.chartsAvgMinAngle = charted.after.avgMinAngle;
+    trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
+    trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
     const bool better = betterThan(charted.after, kept.after) &&
                         trial.chartsHausdorff <= kChartsFartherBy * trial.oneCutHausdorff;
     RemeshResult& other = better ? kept : charted;
@@ -451,7 +455,9 @@ RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, c
     kept.chartTrial = trial;
     kept.ms.compared = otherMs;
     kept.ms.metrics += checks;
-  } catch (const Error&) {  // a chart failed, or its seams did not stitch: the one cut stands
+  } catch (const Error& e) {  // a chart failed, or its seams did not stitch: the one cut stands
+    kept.chartTrial = ChartTrial{};
+    kept.chartTrial->failed = problemOf(e, name);
     if (options.measureFidelity) measureFidelityOf(kept, input);
   }
   kept.ms.total = wall.lap();

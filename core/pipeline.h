@@ -77,6 +77,7 @@ struct ChartTrial {
   int charts = 0;
   double oneCutAvgMinAngle = 0, chartsAvgMinAngle = 0;
   double oneCutHausdorff = 0, chartsHausdorff = 0;  // % of the diagonal
+  std::string failed;  // not empty: the chart by chart run failed (why), the one cut stands
 };
 
 // The fewest vertices remesh() remeshes a connected component to. One whose share of the

@@ -27,3 +27,6 @@ $bin inspect data/cgal/mannequin-devil.off --simplify 1000 --no-timings \
   --screenshot docs/result_mannequin_slit.png --size 1280x800
 # A closed surface of genus 2, cut open and stitched back: its seams are purple in both views.
 $bin inspect data/cgal/eight.off --no-timings --screenshot docs/result_eight_seams.png --size 1280x800
+# A closed surface of genus 3 whose one cut has no conformal map: remeshed chart by chart.
+$bin inspect data/cgal/elephant.off --simplify 1000 --final --no-timings \
+  --screenshot docs/result_elephant_charts.png --size 1280x800
