@@ -181,13 +181,20 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
     for (const Vec2& s : movable) lifted.push_back(lift(input_, domain_, s));
     return relocate(input_, sites_.movableVertex, lifted);
   }
-  LiftedMesh output = retriangulate(surface(), domain_, solver_->fixedSites(), movable);
+  // A chart's border samples must be where the neighbouring chart's are, which lifting them
+  // through a map nearly flat at the border may miss (onto an inside edge): they are put on
+  // the border's edges themselves (the one disk of a cut gives both copies the same lift).
+  const bool sharedSeams = options_.sites.sharesSeams();
+  LiftedMesh output = retriangulate(surface(), domain_, solver_->fixedSites(), movable,
+                                    sharedSeams ? sites_.fixedPoints : std::vector<Vec3>{});
   SurfaceMap map{surface(), domain_};
   if (resampled_) {  // from the resampled surface's chords onto the input surface itself
     map.lift = [this](const Location& l) {
       return resampled_->toInput(input_, l.triangle, l.weights);
     };
-    for (int v = 0; v < output.mesh.vertexCount(); ++v)
+    // A chart's border samples are the resampled chart's own border vertices, already there.
+    const int exact = sharedSeams ? static_cast<int>(sites_.fixed.size()) : 0;
+    for (int v = exact; v < output.mesh.vertexCount(); ++v)
       output.mesh.points[v] = map.at(domain_.locate(output.uv[v]));
   }
   if (options_.polish >= 0) {
@@ -423,8 +430,9 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
 // A surface cut open to one disk: where no conformal map of that disk holds (LSCM folds and a
 // map with a fixed border takes over: CGAL's cow, camel and elephant, parts with many handles),
 // the cells come out stretched on the surface; it is then remeshed chart by chart too
-// (remeshCharts), and that result kept if it is better (betterThan) and no farther from the
-// input (a Hausdorff distance at most kChartsFartherBy times the other's): ChartTrial.
+// (remeshCharts), and that result kept if its average smallest angle is larger and it is no
+// farther from the input (a Hausdorff distance at most kChartsFartherBy times the other's):
+// ChartTrial.
 constexpr double kChartsFartherBy = 1.1;
 RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   Stopwatch wall;
@@ -447,7 +455,7 @@ RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, c
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
     trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
     trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
-    const bool better = betterThan(charted.after, kept.after) &&
+    const bool better = trial.chartsAvgMinAngle > trial.oneCutAvgMinAngle &&
                         trial.chartsHausdorff <= kChartsFartherBy * trial.oneCutHausdorff;
     RemeshResult& other = better ? kept : charted;
     const double otherMs = other.ms.total - other.ms.metrics, checks = other.ms.metrics;

@@ -71,8 +71,8 @@ struct SlitTrial {
 };
 
 // A surface cut to one disk whose map was not conformal (LSCM folded), remeshed chart by chart
-// too: what each gave. The charts are kept if they are better (more of issue 5's bars, or as
-// many and a larger average smallest angle) and at most 1.1 times as far from the input.
+// too: what each gave. The charts are kept if their average smallest angle is larger and they
+// are at most 1.1 times as far from the input.
 struct ChartTrial {
   int charts = 0;
   double oneCutAvgMinAngle = 0, chartsAvgMinAngle = 0;

@@ -114,10 +114,12 @@ Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& p
 }
 
 LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
-                         const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites) {
+                         const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites,
+                         const std::vector<Vec3>& borderPoints) {
   const std::vector<Vec2> sites = allSites(border, movableSites);
   std::vector<Vec3> points;
-  for (const Vec2& p : sites) points.push_back(lift(input, domain, p));
+  for (size_t i = 0; i < sites.size(); ++i)
+    points.push_back(i < borderPoints.size() ? borderPoints[i] : lift(input, domain, sites[i]));
   LiftedMesh result;
   std::vector<int> kept;
   result.mesh = assemble(triangulateSites(border, movableSites), points, &kept);

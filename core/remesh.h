@@ -29,8 +29,11 @@ struct LiftedMesh {
 // The reference's alternative: a new mesh, the constrained Delaunay triangulation of the
 // border samples (in order, counter-clockwise, joined by constraint edges) and the movable
 // sites, restricted to the domain and lifted to 3D. Vertices: border samples, then sites.
+// `borderPoints`, if not empty, are the border samples' points (InitialSites::fixedPoints),
+// taken as they are.
 LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
-                         const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites);
+                         const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites,
+                         const std::vector<Vec3>& borderPoints = {});
 
 // The 2D triangles of retriangulate(), before lifting (same vertex order).
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,

@@ -32,9 +32,9 @@ std::vector<double> angleSums(const Mesh& mesh) {
 
 // Samples along the border at 3D arc-length spacing close to `spacing`, corners kept: those of
 // the surface (a border vertex where the surface's angles sum to far from 180 degrees) and
-// those of the parameter domain.
+// those of the parameter domain. Their points on the surface go to `points`.
 std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param,
-                                 double spacing, const SiteOptions& options) {
+                                 double spacing, const SiteOptions& options, std::vector<Vec3>& points) {
   const std::vector<int>& loop = param.boundaryLoop;
   const int n = static_cast<int>(loop.size());
   const std::vector<double> angles = angleSums(mesh);
@@ -98,6 +98,7 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
         for (int i = nearest; i <= edges - (fewest - s); ++i)
           if (std::abs(length[i] - target) < std::abs(length[nearest] - target)) nearest = i;
         samples.push_back(param.uv[loop[(begin + nearest) % n]]);
+        points.push_back(mesh.points[loop[(begin + nearest) % n]]);
         last = nearest;
       }
       continue;
@@ -110,9 +111,9 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
         ++segment;
       const double span = length[segment + 1] - length[segment];
       const double t = span > 0 ? (target - length[segment]) / span : 0.0;
-      const Vec2& a = param.uv[loop[(begin + segment) % n]];
-      const Vec2& b = param.uv[loop[(begin + segment + 1) % n]];
-      samples.push_back((1 - t) * a + t * b);
+      const int a = loop[(begin + segment) % n], b = loop[(begin + segment + 1) % n];
+      samples.push_back((1 - t) * param.uv[a] + t * param.uv[b]);
+      points.push_back((1 - t) * mesh.points[a] + t * mesh.points[b]);
     }
   }
   return samples;
@@ -158,7 +159,10 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
                           const SiteOptions& options) {
   InitialSites sites;
   if (options.fromInputVertices) {
-    for (int v : param.boundaryLoop) sites.fixed.push_back(param.uv[v]);
+    for (int v : param.boundaryLoop) {
+      sites.fixed.push_back(param.uv[v]);
+      sites.fixedPoints.push_back(mesh.points[v]);
+    }
     for (int v = 0; v < mesh.vertexCount(); ++v)
       if (!param.onBoundary[v]) {
         sites.movable.push_back(param.uv[v]);
@@ -170,7 +174,7 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   // An equilateral mesh of N vertices has about 2N triangles of area (sqrt 3 / 4) h^2.
   const double spacing = options.spacing > 0 ? options.spacing
                                              : std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
-  sites.fixed = resampleBorder(mesh, param, spacing, options);
+  sites.fixed = resampleBorder(mesh, param, spacing, options, sites.fixedPoints);
   const int inside = std::max(0, count - static_cast<int>(sites.fixed.size()));
   sites.movable = sampleDensity(domain, inside, options.seed);
   sites.movableVertex.assign(sites.movable.size(), -1);

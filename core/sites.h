@@ -24,10 +24,17 @@ struct SiteOptions {
   // > 0: the border's samples this far apart (3D arc length) whatever `count` gives: charts of
   // one surface (core/charts) sample their shared borders alike.
   double spacing = 0;
+  // Seams shared with another surface's samples (a chart's, with its spacing given): their
+  // points must match exactly, so the border samples' points are InitialSites::fixedPoints.
+  bool sharesSeams() const { return spacing > 0 && !onSeam.empty(); }
 };
 
 struct InitialSites {
   std::vector<Vec2> fixed;      // along the border, counter-clockwise, in order
+  // Each fixed site's point on the mesh's border, interpolated along its edge in 3D: exactly
+  // where both copies of a seam sample are (lifting it through the map may land it on an
+  // inside edge where the map is nearly flat at the border).
+  std::vector<Vec3> fixedPoints;
   std::vector<Vec2> movable;
   std::vector<int> movableVertex;  // the input vertex each movable site started at, or -1
 };
