@@ -116,6 +116,24 @@ TEST(Retriangulate, GivesAValidDiskWithAllSitesUsed) {
   EXPECT_EQ(out.faceCount(), 2 * out.vertexCount() - static_cast<int>(border.size()) - 2);
 }
 
+// Border points given (a chart's samples, InitialSites::fixedPoints) are taken as they are,
+// not lifted through the map.
+TEST(Retriangulate, TakesTheBorderPointsGiven) {
+  const Mesh mesh = wavyGrid(8);
+  const Parameterization p = parameterize(mesh, {}, "wavy");
+  const Domain domain(p.uv, mesh.triangles, {});
+  std::vector<Vec2> border;
+  std::vector<Vec3> points;
+  for (int v : p.boundaryLoop) {
+    border.push_back(p.uv[v]);
+    points.push_back(mesh.points[v] + Vec3(0, 0, 1));  // not where the map lifts it
+  }
+  const Mesh out = retriangulate(mesh, domain, border, {Vec2(0.5, 0.5)}, points).mesh;
+  for (size_t i = 0; i < border.size(); ++i) EXPECT_EQ(out.points[i], points[i]);
+  const Mesh lifted = retriangulate(mesh, domain, border, {Vec2(0.5, 0.5)}).mesh;
+  EXPECT_NEAR((lifted.points[0] - points[0]).norm(), 1.0, 1e-9);
+}
+
 TEST(Retriangulate, RespectsANonConvexBorder) {
   // L-shaped border: without constraints the Delaunay triangulation would fill the notch.
   const std::vector<Vec2> border = {{0, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}};

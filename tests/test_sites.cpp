@@ -5,6 +5,7 @@
 #include "test_support.h"
 #include "topology.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace lloydscope;
@@ -43,6 +44,29 @@ TEST(Sites, TheBorderSpacingCanBeGiven) {
   const InitialSites sites = initialSites(grid, param, domain, o);
   EXPECT_EQ(sites.fixed.size(), 40u);
   EXPECT_EQ(sites.fixed.size() + sites.movable.size(), 500u);
+}
+
+// Each border sample's point is on a border edge of the mesh itself, interpolated in 3D: where
+// the sample of a neighbouring chart on the same edge is, whatever the map does there.
+TEST(Sites, FixedPointsLieOnTheBorderEdges) {
+  Mesh grid = test::grid(10);
+  for (Vec3& p : grid.points) p.z() = std::sin(3 * p.x()) * std::cos(2 * p.y());
+  const Parameterization param = parameterize(grid, {ParamMethod::Tutte, Border::Circle, {}}, "grid");
+  const Domain domain(param.uv, grid.triangles, vertexDensity(grid.triangles, std::vector<double>(grid.vertexCount(), 1.0)));
+  SiteOptions o;
+  o.count = 300;
+  const InitialSites sites = initialSites(grid, param, domain, o);
+  ASSERT_EQ(sites.fixedPoints.size(), sites.fixed.size());
+  const std::vector<int>& loop = param.boundaryLoop;
+  for (const Vec3& p : sites.fixedPoints) {
+    double nearest = INFINITY;
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const Vec3 &a = grid.points[loop[i]], &b = grid.points[loop[(i + 1) % loop.size()]];
+      const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      nearest = std::min(nearest, (a + t * (b - a) - p).norm());
+    }
+    EXPECT_LT(nearest, 1e-12);
+  }
 }
 
 // A grid with a hole of one missing triangle, far smaller than the spacing of 35 sites: the
