@@ -303,6 +303,8 @@ Charts splitIntoCharts(const Mesh& mesh, int resultVertices, const ChartOptions&
     for (int s : chart.original) {
       chart.onSeam.push_back(onSeam[s]);
       chart.seamNode.push_back(node[s]);
+      if (node[s] && chartsAt[s].size() > 2)
+        chart.nodeSamples += (chartsAt[s].size() - 2.0) / (2.0 * chartsAt[s].size());
     }
     const Vec3 n = labelling.normal(c);
     const Vec3 e1 = n.unitOrthogonal(), e2 = n.cross(e1);

@@ -29,6 +29,10 @@ struct Chart {
   // charts or a chart border and the surface's border meet; one vertex of a border loop that
   // meets none): what SiteOptions needs to sample the two sides of a seam alike.
   std::vector<bool> onSeam, seamNode;
+  // The sites to add to the chart's share for the nodes where k > 2 charts meet: stitching
+  // merges a node's k copies into one, where a seam sample's two copies count half in each
+  // chart; (k - 2) / 2k per node and chart makes the result's count come out as asked.
+  double nodeSamples = 0;
   // Per chart vertex, its projection onto the plane normal to the chart's mean normal, if every
   // face is within 75 degrees of it (a map to try where a conformal one folds); else empty.
   std::vector<Vec2> uv;

@@ -399,7 +399,8 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
     const double chartArea = surfaceArea(chart.mesh);
     RemeshOptions o = options;
     o.simplifyTo = 0;
-    o.sites.count = std::max(1, static_cast<int>(std::lround(asked * chartArea / area + 0.5 * seamLength(chart) / spacing)));
+    o.sites.count = std::max(1, static_cast<int>(std::lround(asked * chartArea / area + 0.5 * seamLength(chart) / spacing +
+                                                             chart.nodeSamples)));
     o.sites.onSeam = chart.onSeam;
     o.sites.seamNode = chart.seamNode;
     o.sites.spacing = spacing;

@@ -98,5 +98,5 @@ TEST(Charts, AClosedSurfaceNoMapOfOneCutHoldsIsRemeshedChartByChart) {
   EXPECT_EQ(got.genus, want.genus);
   EXPECT_EQ(got.boundaryLoops.size(), 0u);
   EXPECT_EQ(got.components, 1);
-  EXPECT_NEAR(r.output.vertexCount(), 1000, 50);
+  EXPECT_NEAR(r.output.vertexCount(), 1000, 20);  // 974 without Chart::nodeSamples
 }
