@@ -496,6 +496,11 @@ void Inspector::uploadMesh() {
     for (const auto& e : !shown.input3D ? seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut))
                                         : replay_->seams())
       seams.insert(e);
+  if (!final)  // a chart's seams with the others, either way round
+    for (const auto& [a, b] : !shown.input3D ? replay_->sharedSeamsOnOutput() : replay_->recording().sharedSeams) {
+      seams.insert({a, b});
+      seams.insert({b, a});
+    }
   for (const Triangle& t : cut.triangles)  // each seam edge with its triangle's normal
     for (int k = 0; k < 3; ++k)
       if (seams.count({t[k], t[(k + 1) % 3]})) {
@@ -1060,7 +1065,8 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, format("%.2e", fillRange_[1]).c_str(),
                  format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
   dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - ImGui::GetFontSize() - 5), rgb(0.1f, 0.1f, 0.1f),
-              replay_->seams().empty() ? "dots: sites  rings: centroids  squares: fixed border sites"
+              replay_->seams().empty() && replay_->recording().sharedSeams.empty()
+                  ? "dots: sites  rings: centroids  squares: fixed border sites"
                                             : "dots: sites  rings: centroids  squares: fixed  purple: seams");
   dl->PopClipRect();
   ImGui::End();
@@ -1122,6 +1128,8 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   // Where a surface that is not a disk was cut open: both copies of every seam.
   const Recording& recording = replay_->recording();
   for (const auto& [a, b] : replay_->seams())
+    g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
+  for (const auto& [a, b] : recording.sharedSeams)  // a chart's, with the other charts
     g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
   // Dots a sixth of the site spacing: the cells stay visible between them.
   const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f) *

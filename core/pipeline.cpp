@@ -160,6 +160,43 @@ bool RemeshSession::finished() const {
   return converged() || iterationCount() >= options_.lloyd.maxIterations;
 }
 
+namespace {
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+// The border edges of `surface` (a chart, or its resampling) whose two ends lie on border edges
+// of `chart` with both ends on a seam: where the chart meets the others.
+std::vector<std::pair<int, int>> sharedSeamEdges(const Mesh& surface, const Mesh& chart,
+                                                 const std::vector<bool>& onSeam) {
+  std::vector<std::pair<Vec3, Vec3>> seams;
+  for (const std::vector<int>& loop : analyzeTopology(chart).boundaryLoops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      if (onSeam[a] && onSeam[b]) seams.emplace_back(chart.points[a], chart.points[b]);
+    }
+  const double tolerance = kSeamTolerance * boundingBoxDiagonal(chart);
+  auto onASeam = [&](const Vec3& p) {
+    return std::any_of(seams.begin(), seams.end(), [&](const auto& s) {
+      return distanceToSegment(p, s.first, s.second) <= tolerance;
+    });
+  };
+  std::vector<std::pair<int, int>> edges;
+  for (const std::vector<int>& loop : analyzeTopology(surface).boundaryLoops) {
+    std::vector<bool> on;
+    for (int v : loop) on.push_back(onASeam(surface.points[v]));
+    for (size_t i = 0; i < loop.size(); ++i)
+      if (on[i] && on[(i + 1) % loop.size()]) edges.emplace_back(loop[i], loop[(i + 1) % loop.size()]);
+  }
+  return edges;
+}
+
+}  // namespace
+
 Recording RemeshSession::header() const {
   Recording r;
   r.settings = describe(options_);
@@ -171,6 +208,7 @@ Recording RemeshSession::header() const {
   r.density = density_;
   r.fixedSites = solver_->fixedSites();
   r.movableVertex = sites_.movableVertex;
+  if (options_.sites.sharesSeams()) r.sharedSeams = sharedSeamEdges(surface(), input_, options_.sites.onSeam);
   return r;
 }
 
@@ -428,20 +466,21 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   return result;
 }
 
-// A surface cut open to one disk: where no conformal map of that disk holds (LSCM folds and a
-// map with a fixed border takes over: CGAL's cow, camel and elephant, parts with many handles),
-// the cells come out stretched on the surface; it is then remeshed chart by chart too
-// (remeshCharts), and that result kept if its average smallest angle is larger and it is no
-// farther from the input (a Hausdorff distance at most kChartsFartherBy times the other's):
-// ChartTrial.
-constexpr double kChartsFartherBy = 1.1;
+// A surface cut open to one disk is remeshed chart by chart too (remeshCharts), and the charts
+// kept if they are rounder (a larger average smallest angle) and no farther from the input (a
+// Hausdorff distance at most kChartsFartherBy times the other's), or closer (at most
+// kChartsCloserBy times) and nearly as round (kChartsRounderBy degrees less at most):
+// ChartTrial. Where no conformal map of the one disk holds (LSCM folds and a map with a fixed
+// border takes over: CGAL's cow and elephant, parts with many handles), its cells come out
+// stretched, and the charts are rounder; on a CAD part with sharp edges (CGAL's spool, rotor,
+// lion) the charts' seams follow the edges, and the charts are closer.
+constexpr double kChartsFartherBy = 1.1, kChartsCloserBy = 0.8, kChartsRounderBy = 2.0;
 RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   Stopwatch wall;
   RemeshOptions once = options;
   once.measureFidelity = false;
   RemeshResult kept = remeshOnce(input, once, name);
-  const bool stretched = kept.paramUsed == ParamMethod::MeanValue || kept.paramUsed == ParamMethod::Tutte;
-  if (!stretched || options.param.method != ParamMethod::Auto || !usesResampling(options)) {
+  if (options.param.method != ParamMethod::Auto || !usesResampling(options)) {
     kept.ms.total = wall.lap();
     if (options.measureFidelity) measureFidelityOf(kept, input);
     return kept;
@@ -456,8 +495,11 @@ RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, c
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
     trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
     trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
-    const bool better = trial.chartsAvgMinAngle > trial.oneCutAvgMinAngle &&
-                        trial.chartsHausdorff <= kChartsFartherBy * trial.oneCutHausdorff;
+    const bool rounder = trial.chartsAvgMinAngle > trial.oneCutAvgMinAngle &&
+                         trial.chartsHausdorff <= kChartsFartherBy * trial.oneCutHausdorff;
+    const bool closer = trial.chartsHausdorff <= kChartsCloserBy * trial.oneCutHausdorff &&
+                        trial.chartsAvgMinAngle >= trial.oneCutAvgMinAngle - kChartsRounderBy;
+    const bool better = rounder || closer;
     RemeshResult& other = better ? kept : charted;
     const double otherMs = other.ms.total - other.ms.metrics, checks = other.ms.metrics;
     if (better) kept = std::move(charted);

@@ -70,9 +70,9 @@ struct SlitTrial {
   double slit = 0, whole = 0;
 };
 
-// A surface cut to one disk whose map was not conformal (LSCM folded), remeshed chart by chart
-// too: what each gave. The charts are kept if their average smallest angle is larger and they
-// are at most 1.1 times as far from the input.
+// A surface cut to one disk, remeshed chart by chart too: what each gave. The charts are kept
+// if their average smallest angle is larger and they are at most 1.1 times as far from the
+// input, or if they are at most 0.8 times as far and at most 2 degrees less round.
 struct ChartTrial {
   int charts = 0;
   double oneCutAvgMinAngle = 0, chartsAvgMinAngle = 0;

@@ -103,6 +103,8 @@ std::string encodePayload(const Recording& r) {
   w.putPoints(r.fixedSites);
   w.put<std::uint32_t>(static_cast<std::uint32_t>(r.movableVertex.size()));
   for (int v : r.movableVertex) w.put(v);
+  w.put<std::uint32_t>(static_cast<std::uint32_t>(r.sharedSeams.size()));
+  for (const auto& [a, b] : r.sharedSeams) w.put(a), w.put(b);
   w.put<std::uint32_t>(static_cast<std::uint32_t>(r.iterations.size()));
   for (const IterationRecord& it : r.iterations) {
     w.put(it.index);
@@ -144,6 +146,13 @@ Recording decodePayload(Reader& in, const std::string& path) {
   r.fixedSites = in.getPoints();
   r.movableVertex.resize(in.getCount(4));
   for (int& v : r.movableVertex) v = in.get<int>();
+  r.sharedSeams.resize(in.getCount(8));
+  for (auto& [a, b] : r.sharedSeams) {
+    a = in.get<int>();
+    b = in.get<int>();
+    if (std::min(a, b) < 0 || std::max(a, b) >= r.input.vertexCount())
+      throw Error(path + ": damaged recording (a seam vertex is out of range)");
+  }
   r.iterations.resize(in.getCount(48));
   for (IterationRecord& it : r.iterations) {
     it.index = in.get<int>();

@@ -13,7 +13,8 @@ namespace lloydscope {
 struct Recording {
   // 2: sites as grid indices (8 bytes a site), centroids recomputed rather than stored.
   // 3: the density per triangle corner.
-  static constexpr std::uint32_t kVersion = 3;
+  // 4: the seams shared with other charts.
+  static constexpr std::uint32_t kVersion = 4;
 
   std::string settings;  // the settings that produced it, one line ("param=conformal ...")
   RemeshMethod method = RemeshMethod::Retriangulate;
@@ -23,6 +24,9 @@ struct Recording {
   Density density;                 // per input triangle, at its corners
   std::vector<Vec2> fixedSites;    // border samples, counter-clockwise
   std::vector<int> movableVertex;  // input vertex each movable site started at, or -1
+  // A chart of a surface remeshed chart by chart (core/charts): the border edges of `input`
+  // (vertex pairs) on seams with the other charts, whose twins are in other recordings.
+  std::vector<std::pair<int, int>> sharedSeams;
   std::vector<IterationRecord> iterations;
 
   Domain domain() const { return Domain(uv, input.triangles, density); }

@@ -1,6 +1,7 @@
 #include "replay.h"
 
 #include <algorithm>
+#include <map>
 
 namespace lloydscope {
 
@@ -8,6 +9,16 @@ Replay::Replay(Recording recording)
     : recording_(std::move(recording)), domain_(recording_.domain()), method_(recording_.method),
       seams_(seamEdges(recording_.input, kSeamTolerance * boundingBoxDiagonal(recording_.input))) {
   setMethod(method_);
+  // The fixed sites are the border vertices' own parameter points.
+  std::map<std::pair<double, double>, int> fixedAt;
+  for (size_t j = 0; j < recording_.fixedSites.size(); ++j)
+    fixedAt[{recording_.fixedSites[j].x(), recording_.fixedSites[j].y()}] = static_cast<int>(j);
+  auto fixedSite = [&](int v) {
+    const auto it = fixedAt.find({recording_.uv[v].x(), recording_.uv[v].y()});
+    return it == fixedAt.end() ? -1 : it->second;
+  };
+  for (const auto& [a, b] : recording_.sharedSeams)
+    if (fixedSite(a) >= 0 && fixedSite(b) >= 0) sharedOnOutput_.emplace_back(fixedSite(a), fixedSite(b));
 }
 
 void Replay::setMethod(RemeshMethod method) {

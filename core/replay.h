@@ -31,6 +31,9 @@ class Replay {
   // Where the parameterized mesh was cut open (seamEdges() of recording().input): empty for a
   // disk the pipeline did not cut.
   const std::vector<std::pair<int, int>>& seams() const { return seams_; }
+  // A chart's seams with the other charts (Recording::sharedSeams), as edges of the views'
+  // output meshes (retriangulate: its border vertices are the fixed sites, in order).
+  const std::vector<std::pair<int, int>>& sharedSeamsOnOutput() const { return sharedOnOutput_; }
   const Domain& domain() const { return domain_; }
   RemeshMethod method() const { return method_; }
   int iterationCount() const { return static_cast<int>(recording_.iterations.size()); }
@@ -45,7 +48,7 @@ class Replay {
   Recording recording_;
   Domain domain_;
   RemeshMethod method_;
-  std::vector<std::pair<int, int>> seams_;
+  std::vector<std::pair<int, int>> seams_, sharedOnOutput_;
   IterationView view_;
   CellHints hints_;  // each site's parameter triangle in the last view: nearby iterations
                             // start their searches there

@@ -1,6 +1,7 @@
 #include "charts.h"
 #include "mesh_io.h"
 #include "pipeline.h"
+#include "replay.h"
 #include "test_support.h"
 #include "topology.h"
 
@@ -98,5 +99,12 @@ TEST(Charts, AClosedSurfaceNoMapOfOneCutHoldsIsRemeshedChartByChart) {
   EXPECT_EQ(got.genus, want.genus);
   EXPECT_EQ(got.boundaryLoops.size(), 0u);
   EXPECT_EQ(got.components, 1);
-  EXPECT_NEAR(r.output.vertexCount(), 1000, 20);  // 974 without Chart::nodeSamples
+  EXPECT_NEAR(r.output.vertexCount(), 1000, 20);
+  // The recording is the largest chart's: on a closed surface its whole border is seams with
+  // the other charts, for the inspector to draw on the map and on each iteration's mesh.
+  size_t borderEdges = 0;
+  for (const auto& loop : analyzeTopology(r.recording.input).boundaryLoops) borderEdges += loop.size();
+  EXPECT_EQ(r.recording.sharedSeams.size(), borderEdges);
+  const Replay replay(r.recording);
+  EXPECT_EQ(replay.sharedSeamsOnOutput().size(), r.recording.sharedSeams.size());  // 974 without Chart::nodeSamples
 }

@@ -52,6 +52,19 @@ TEST(Recording, RoundTripIsExact) {
   }
 }
 
+// A chart's seams with the other charts travel with its recording; an index past the mesh is
+// refused as damage, not drawn.
+TEST(Recording, SharedSeamsRoundTrip) {
+  Recording r = sphereCapRun().recording;
+  r.sharedSeams = {{0, 1}, {1, 2}};
+  const std::string path = test::tempPath("seams.lsrec");
+  saveRecording(r, path);
+  EXPECT_EQ(loadRecording(path).sharedSeams, r.sharedSeams);
+  r.sharedSeams = {{0, r.input.vertexCount()}};
+  saveRecording(r, path);
+  expectError(path, "seam vertex is out of range");
+}
+
 TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {
   const Recording& r = sphereCapRun().recording;
   const Domain domain = r.domain();
