@@ -467,14 +467,10 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
 }
 
 // A surface cut open to one disk is remeshed chart by chart too (remeshCharts), and the charts
-// kept if they are rounder (a larger average smallest angle) and no farther from the input (a
-// Hausdorff distance at most kChartsFartherBy times the other's), or closer (at most
-// kChartsCloserBy times) and nearly as round (kChartsRounderBy degrees less at most):
-// ChartTrial. Where no conformal map of the one disk holds (LSCM folds and a map with a fixed
-// border takes over: CGAL's cow and elephant, parts with many handles), its cells come out
-// stretched, and the charts are rounder; on a CAD part with sharp edges (CGAL's spool, rotor,
-// lion) the charts' seams follow the edges, and the charts are closer.
-constexpr double kChartsFartherBy = 1.1, kChartsCloserBy = 0.8, kChartsRounderBy = 2.0;
+// kept if ChartTrial::chartsBetter(). Where no conformal map of the one disk holds (LSCM folds
+// and a map with a fixed border takes over: CGAL's cow and elephant, parts with many handles),
+// its cells come out stretched, and the charts are rounder; on a CAD part with sharp edges
+// (CGAL's spool, rotor, lion) the charts' seams follow the edges, and the charts are closer.
 RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   Stopwatch wall;
   RemeshOptions once = options;
@@ -495,11 +491,7 @@ RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, c
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
     trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
     trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
-    const bool rounder = trial.chartsAvgMinAngle > trial.oneCutAvgMinAngle &&
-                         trial.chartsHausdorff <= kChartsFartherBy * trial.oneCutHausdorff;
-    const bool closer = trial.chartsHausdorff <= kChartsCloserBy * trial.oneCutHausdorff &&
-                        trial.chartsAvgMinAngle >= trial.oneCutAvgMinAngle - kChartsRounderBy;
-    const bool better = rounder || closer;
+    const bool better = trial.chartsBetter();
     RemeshResult& other = better ? kept : charted;
     const double otherMs = other.ms.total - other.ms.metrics, checks = other.ms.metrics;
     if (better) kept = std::move(charted);
@@ -618,6 +610,12 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
   RemeshResult result = remeshComponents(input, options, name);
   result.ms.total = total.lap();
   return result;
+}
+
+bool ChartTrial::chartsBetter() const {
+  const bool rounder = chartsAvgMinAngle > oneCutAvgMinAngle && chartsHausdorff <= kFartherBy * oneCutHausdorff;
+  const bool closer = chartsHausdorff <= kCloserBy * oneCutHausdorff && chartsAvgMinAngle >= oneCutAvgMinAngle - kRounderBy;
+  return rounder || closer;
 }
 
 bool usesResampling(const RemeshOptions& options) { return effective(options).resample; }

@@ -70,14 +70,18 @@ struct SlitTrial {
   double slit = 0, whole = 0;
 };
 
-// A surface cut to one disk, remeshed chart by chart too: what each gave. The charts are kept
-// if their average smallest angle is larger and they are at most 1.1 times as far from the
-// input, or if they are at most 0.8 times as far and at most 2 degrees less round.
+// A surface cut to one disk, remeshed chart by chart too: what each gave.
 struct ChartTrial {
   int charts = 0;
   double oneCutAvgMinAngle = 0, chartsAvgMinAngle = 0;
   double oneCutHausdorff = 0, chartsHausdorff = 0;  // % of the diagonal
   std::string failed;  // not empty: the chart by chart run failed (why), the one cut stands
+
+  // The charts are kept if they are rounder (a larger average smallest angle) and at most
+  // kFartherBy times as far from the input (Hausdorff), or at most kCloserBy times as far and
+  // at most kRounderBy degrees less round.
+  static constexpr double kFartherBy = 1.1, kCloserBy = 0.8, kRounderBy = 2.0;
+  bool chartsBetter() const;
 };
 
 // The fewest vertices remesh() remeshes a connected component to. One whose share of the

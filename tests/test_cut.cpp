@@ -18,39 +18,7 @@ Mesh tube() {  // genus 0 with two boundary loops
   });
 }
 
-Mesh sphere() {  // a cube's six grids pushed onto the unit sphere
-  Mesh mesh;
-  const int n = 6;
-  for (int axis = 0; axis < 3; ++axis)
-    for (int sign : {-1, 1}) {
-      Mesh face = test::grid(n, 2.0);
-      for (Vec3& p : face.points) {
-        Vec3 q;
-        q[axis] = sign;
-        q[(axis + 1) % 3] = p.x() - 1;
-        q[(axis + 2) % 3] = (p.y() - 1) * sign;
-        p = q.normalized();
-      }
-      append(mesh, face);
-    }
-  // Weld the cube's edges: the same point, one vertex.
-  std::vector<int> weld(mesh.vertexCount());
-  std::vector<Vec3> unique;
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    int found = -1;
-    for (size_t u = 0; u < unique.size() && found < 0; ++u)
-      if ((unique[u] - mesh.points[v]).norm() < 1e-9) found = static_cast<int>(u);
-    if (found < 0) {
-      found = static_cast<int>(unique.size());
-      unique.push_back(mesh.points[v]);
-    }
-    weld[v] = found;
-  }
-  mesh.points = unique;
-  for (Triangle& t : mesh.triangles)
-    for (int& v : t) v = weld[v];
-  return mesh;
-}
+Mesh sphere() { return test::cube(6, true); }
 
 // Two unit grids side by side: two components.
 Mesh twoGrids() {

@@ -67,6 +67,41 @@ inline Mesh torus() {
   });
 }
 
+// The cube [-1, 1]^3 as six n x n grids welded at its edges (closed, genus 0), or those grids
+// pushed onto the unit sphere.
+inline Mesh cube(int n, bool onSphere) {
+  Mesh mesh;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {-1, 1}) {
+      Mesh face = grid(n, 2.0);
+      for (Vec3& p : face.points) {
+        Vec3 q;
+        q[axis] = sign;
+        q[(axis + 1) % 3] = p.x() - 1;
+        q[(axis + 2) % 3] = (p.y() - 1) * sign;
+        p = onSphere ? Vec3(q.normalized()) : q;
+      }
+      append(mesh, face);
+    }
+  // Weld the cube's edges: the same point, one vertex.
+  std::vector<int> weld(mesh.vertexCount());
+  std::vector<Vec3> unique;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    int found = -1;
+    for (size_t u = 0; u < unique.size() && found < 0; ++u)
+      if ((unique[u] - mesh.points[v]).norm() < 1e-9) found = static_cast<int>(u);
+    if (found < 0) {
+      found = static_cast<int>(unique.size());
+      unique.push_back(mesh.points[v]);
+    }
+    weld[v] = found;
+  }
+  mesh.points = unique;
+  for (Triangle& t : mesh.triangles)
+    for (int& v : t) v = weld[v];
+  return mesh;
+}
+
 // `mesh` scaled by `scale` and moved by `offset`: a second component to append() beside it.
 inline Mesh moved(Mesh mesh, double scale, const Vec3& offset) {
   for (Vec3& p : mesh.points) p = scale * p + offset;
