@@ -1,5 +1,7 @@
 #include "charts.h"
 
+#include "cgal_types.h"
+#include "cut.h"
 #include "topology.h"
 
 #include <algorithm>
@@ -289,11 +291,12 @@ Charts splitIntoCharts(const Mesh& mesh, int resultVertices, const ChartOptions&
     for (const std::vector<int>& loop : analyzeTopology(chart.mesh).boundaryLoops) {
       bool allSeam = true, hasNode = false;
       int smallest = -1;
-      for (int v : loop) {
-        const int s = chart.original[v];
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const int s = chart.original[loop[i]], next = chart.original[loop[(i + 1) % loop.size()]];
         allSeam = allSeam && onSeam[s];
         hasNode = hasNode || node[s];
         smallest = smallest < 0 ? s : std::min(smallest, s);
+        if (onSeam[s] && onSeam[next]) chart.seamLength += (mesh.points[s] - mesh.points[next]).norm();
       }
       if (allSeam && !hasNode) node[smallest] = true;
     }
@@ -311,6 +314,33 @@ Charts splitIntoCharts(const Mesh& mesh, int resultVertices, const ChartOptions&
     for (const Vec3& p : chart.mesh.points) chart.uv.emplace_back(p.dot(e1), p.dot(e2));
   }
   return result;
+}
+
+std::vector<std::pair<int, int>> sharedSeamEdges(const Mesh& surface, const Mesh& chart,
+                                                 const std::vector<bool>& onSeam) {
+  std::vector<Kernel::Segment_3> seams;
+  for (const std::vector<int>& loop : analyzeTopology(chart).boundaryLoops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      if (!onSeam[a] || !onSeam[b]) continue;
+      const Vec3 &p = chart.points[a], &q = chart.points[b];
+      seams.emplace_back(Point3(p.x(), p.y(), p.z()), Point3(q.x(), q.y(), q.z()));
+    }
+  const double tolerance = kSeamTolerance * boundingBoxDiagonal(chart);
+  auto onASeam = [&](const Vec3& p) {
+    const Point3 point(p.x(), p.y(), p.z());
+    return std::any_of(seams.begin(), seams.end(), [&](const Kernel::Segment_3& s) {
+      return CGAL::squared_distance(point, s) <= tolerance * tolerance;
+    });
+  };
+  std::vector<std::pair<int, int>> edges;
+  for (const std::vector<int>& loop : analyzeTopology(surface).boundaryLoops) {
+    std::vector<bool> on;
+    for (int v : loop) on.push_back(onASeam(surface.points[v]));
+    for (size_t i = 0; i < loop.size(); ++i)
+      if (on[i] && on[(i + 1) % loop.size()]) edges.emplace_back(loop[i], loop[(i + 1) % loop.size()]);
+  }
+  return edges;
 }
 
 }  // namespace lloydscope

@@ -7,6 +7,7 @@
 
 #include "mesh.h"
 
+#include <utility>
 #include <vector>
 
 namespace lloydscope {
@@ -33,6 +34,9 @@ struct Chart {
   // merges a node's k copies into one, where a seam sample's two copies count half in each
   // chart; (k - 2) / 2k per node and chart makes the result's count come out as asked.
   double nodeSamples = 0;
+  // The length of its border on seams (edges with both ends on a seam): half its samples there
+  // are another chart's.
+  double seamLength = 0;
   // Per chart vertex, its projection onto the plane normal to the chart's mean normal, if every
   // face is within 75 degrees of it (a map to try where a conformal one folds); else empty.
   std::vector<Vec2> uv;
@@ -49,5 +53,10 @@ struct Charts {
 // mean normal first). `resultVertices`: the size the result
 // will have (smallestShare).
 Charts splitIntoCharts(const Mesh& mesh, int resultVertices, const ChartOptions& options = {});
+
+// The border edges of `surface` (a chart's mesh, or its resampling) whose two ends lie on the
+// chart's seams (its border edges with both ends `onSeam`): where it meets the other charts.
+std::vector<std::pair<int, int>> sharedSeamEdges(const Mesh& surface, const Mesh& chart,
+                                                 const std::vector<bool>& onSeam);
 
 }  // namespace lloydscope

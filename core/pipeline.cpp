@@ -160,43 +160,6 @@ bool RemeshSession::finished() const {
   return converged() || iterationCount() >= options_.lloyd.maxIterations;
 }
 
-namespace {
-
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
-// The border edges of `surface` (a chart, or its resampling) whose two ends lie on border edges
-// of `chart` with both ends on a seam: where the chart meets the others.
-std::vector<std::pair<int, int>> sharedSeamEdges(const Mesh& surface, const Mesh& chart,
-                                                 const std::vector<bool>& onSeam) {
-  std::vector<std::pair<Vec3, Vec3>> seams;
-  for (const std::vector<int>& loop : analyzeTopology(chart).boundaryLoops)
-    for (size_t i = 0; i < loop.size(); ++i) {
-      const int a = loop[i], b = loop[(i + 1) % loop.size()];
-      if (onSeam[a] && onSeam[b]) seams.emplace_back(chart.points[a], chart.points[b]);
-    }
-  const double tolerance = kSeamTolerance * boundingBoxDiagonal(chart);
-  auto onASeam = [&](const Vec3& p) {
-    return std::any_of(seams.begin(), seams.end(), [&](const auto& s) {
-      return distanceToSegment(p, s.first, s.second) <= tolerance;
-    });
-  };
-  std::vector<std::pair<int, int>> edges;
-  for (const std::vector<int>& loop : analyzeTopology(surface).boundaryLoops) {
-    std::vector<bool> on;
-    for (int v : loop) on.push_back(onASeam(surface.points[v]));
-    for (size_t i = 0; i < loop.size(); ++i)
-      if (on[i] && on[(i + 1) % loop.size()]) edges.emplace_back(loop[i], loop[(i + 1) % loop.size()]);
-  }
-  return edges;
-}
-
-}  // namespace
-
 Recording RemeshSession::header() const {
   Recording r;
   r.settings = describe(options_);
@@ -396,18 +359,6 @@ void measureFidelityOf(RemeshResult& result, const Mesh& input) {
   result.ms.total += ms;
 }
 
-// Half a chart's seam samples are another chart's: its border edges with both ends on a seam.
-double seamLength(const Chart& chart) {
-  double length = 0;
-  const Topology topology = analyzeTopology(chart.mesh);
-  for (const std::vector<int>& loop : topology.boundaryLoops)
-    for (size_t i = 0; i < loop.size(); ++i) {
-      const int a = loop[i], b = loop[(i + 1) % loop.size()];
-      if (chart.onSeam[a] && chart.onSeam[b]) length += (chart.mesh.points[a] - chart.mesh.points[b]).norm();
-    }
-  return length;
-}
-
 // The surface split into charts (core/charts), each a disk remeshed on its own, with its share
 // of the vertices by area and half its seam samples more (each is also another chart's), its
 // border sampled at the whole surface's spacing so that both sides of a seam get the same
@@ -437,7 +388,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
     const double chartArea = surfaceArea(chart.mesh);
     RemeshOptions o = options;
     o.simplifyTo = 0;
-    o.sites.count = std::max(1, static_cast<int>(std::lround(asked * chartArea / area + 0.5 * seamLength(chart) / spacing +
+    o.sites.count = std::max(1, static_cast<int>(std::lround(asked * chartArea / area + 0.5 * chart.seamLength / spacing +
                                                              chart.nodeSamples)));
     o.sites.onSeam = chart.onSeam;
     o.sites.seamNode = chart.seamNode;
