@@ -121,6 +121,9 @@ void runBench(const BenchOptions& options) {
       RemeshOptions unsnapped;  // shows what the snaps to tips buy
       unsnapped.snapToTips = false;
       rows.push_back(lloydscopeRow(name(path), size, "lloydscope --no-snap", input, unsnapped));
+      RemeshOptions unfitted;  // shows what the fit to the input buys
+      unfitted.fit = false;
+      rows.push_back(lloydscopeRow(name(path), size, "lloydscope --no-fit", input, unfitted));
       RemeshOptions newton;  // shows why the default solver is L-BFGS, not Newton's
       newton.lloyd.solver = CvtSolver::Newton;
       rows.push_back(lloydscopeRow(name(path), size, "lloydscope --solver newton", input, newton));

@@ -24,7 +24,7 @@ struct RemeshArgs {
   int sites = 0, simplify = 0, polish = 3;
   int maxIterations = 0;
   double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1, floor = 0.1;
-  bool json = false, noFidelity = false, noResample = false, noSnap = false, noSlit = false;
+  bool json = false, noFidelity = false, noResample = false, noSnap = false, noFit = false, noSlit = false;
 };
 
 // The preset first, then whatever the user named explicitly on top of it.
@@ -58,6 +58,7 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   if (cmd.count("--polish")) o.polish = a.polish;
   if (a.noResample) o.resample = false;
   if (a.noSnap) o.snapToTips = false;
+  if (a.noFit) o.fit = false;
   if (a.noSlit) o.slitDisks = false;
   if (cmd.count("--polish-target")) o.polishTarget = parsePolishTarget(a.polishTarget);
   return o;
@@ -123,6 +124,10 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_flag("--no-snap", r.noSnap,
                "Leave out the polish's last step, which snaps a vertex onto each thin tip of the "
                "input the result would cut off");
+  cmd.add_flag("--no-fit", r.noFit,
+               "Leave every vertex of the result on the input (by default retriangulate's last step "
+               "moves them along their normals so that the result lies closer to the input, border and "
+               "angles kept)");
   cmd.add_flag("--no-slit", r.noSlit,
                "Keep a nearly closed disk whole (by default it is also remeshed slit open, and the "
                "result meeting more of the quality bars kept, then the larger average smallest angle)");

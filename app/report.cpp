@@ -77,7 +77,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"percent_threshold", o.lloyd.percentThreshold},
             {"max_iterations", o.lloyd.maxIterations},
             {"polish", o.polish},
-            {"snap_to_tips", o.snapToTips}}},
+            {"snap_to_tips", o.snapToTips},
+            {"fit", o.fit && o.method == RemeshMethod::Retriangulate}}},
           {"input", toJson(r.before)},
           {"output", output},
           {"components", r.components},
@@ -98,6 +99,9 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
+          {"fit", {{"vertices_moved", r.fit.moved},
+                   {"mean_percent_diagonal", r.fit.meanPercent},
+                   {"max_percent_diagonal", r.fit.maxPercent}}},
           {"resample_dropped", r.resampleDropped.empty() ? nlohmann::json() : nlohmann::json(r.resampleDropped)},
           {"distortion",
            {{"min_area_ratio", r.distortion.minAreaRatio},
@@ -201,6 +205,10 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips
         << (r.snappedTips == 1 ? " vertex\n" : " vertices\n");
+  if (r.fit.moved > 0)
+    out << "Fitted to the input: " << r.fit.moved << " vertices moved along their normals, "
+        << format("%.3f", r.fit.meanPercent) << "% of the diagonal on average, at most " << format("%.3f", r.fit.maxPercent)
+        << "%\n";
   out << "Time (ms): " << (r.ms.simplify > 0 ? "simplify " + format("%.1f", r.ms.simplify) + ", " : "")
       << (r.ms.cut > 0 ? "cut " + format("%.1f", r.ms.cut) + ", " : "")
       << (r.ms.resample > 0 ? "resample " + format("%.1f", r.ms.resample) + ", " : "")

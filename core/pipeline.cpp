@@ -43,6 +43,7 @@ RemeshOptions referencePreset(RemeshMethod method) {
   o.lloyd = LloydOptions{};  // 1e-6 and 5%
   o.lloyd.solver = CvtSolver::Lloyd;
   o.polish = -1;  // the report had no clean-up
+  o.fit = false;
   o.resample = false;
   return o;
 }
@@ -175,7 +176,19 @@ Recording RemeshSession::header() const {
   return r;
 }
 
-Mesh RemeshSession::buildOutput(int& snappedTips) const {
+namespace {
+// The last steps, on the whole result (stitched where it was cut): the snaps to the tips it cut
+// off, then the fit to the input.
+void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
+  if (o.polish > 0 && o.snapToTips) done.snappedTips = snapToTips(result, original);
+  if (!o.fit) return;
+  FitOptions fit;
+  fit.threads = o.lloyd.threads;
+  done.fit = fitToSurface(result, original, fit);
+}
+}  // namespace
+
+Mesh RemeshSession::buildOutput(RemeshResult& result) const {
   const std::vector<Vec2>& movable = solver_->movableSites();
   if (options_.method == RemeshMethod::Relocate) {
     std::vector<Vec3> lifted;
@@ -206,7 +219,7 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
   if (!cut_) {
-    if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(output.mesh, original());
+    lastSteps(output.mesh, original(), options_, result);
     return std::move(output.mesh);
   }
   // Both copies of every seam sample are at the same place: one vertex again.
@@ -214,7 +227,7 @@ Mesh RemeshSession::buildOutput(int& snappedTips) const {
   Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
   if (options_.polish > 0) polishSeams(stitched, seamVertex, input_, options_.polish);
   removeFlatTriangles(stitched);
-  if (options_.polish > 0 && options_.snapToTips) snappedTips = snapToTips(stitched, original());
+  lastSteps(stitched, original(), options_, result);
   requireStitched(stitched, cut_->topology, siteCount(), name_);
   return stitched;
 }
@@ -283,7 +296,7 @@ RemeshResult RemeshSession::finish() {
   result.iterations = iterationCount();
   result.converged = converged();
   Stopwatch stage;
-  result.output = buildOutput(result.snappedTips);
+  result.output = buildOutput(result);
   result.ms.remesh = stage.lap();
   result.before = measureQuality(original());
   result.after = measureQuality(result.output);
@@ -395,7 +408,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
     o.sites.spacing = spacing;
     o.param.fallback = chart.uv;
     o.slitDisks = false;
-    o.snapToTips = false;  // on the whole, stitched
+    o.snapToTips = o.fit = false;  // on the whole, stitched
     o.measureFidelity = false;
     RemeshResult r = remeshOnce(chart.mesh, o, chartName);
     append(pieces, r.output);
@@ -406,7 +419,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   Mesh stitched = stitchSeams(pieces, kSeamTolerance * boundingBoxDiagonal(pieces), &seamVertex);
   if (options.polish > 0) polishSeams(stitched, seamVertex, mesh, options.polish);
   removeFlatTriangles(stitched);
-  if (options.polish > 0 && options.snapToTips) result.snappedTips = snapToTips(stitched, input);
+  lastSteps(stitched, input, options, result);
   requireStitched(stitched, analyzeTopology(mesh), asked, name);
   result.output = std::move(stitched);
   result.ms.remesh += stage.lap();
@@ -536,6 +549,7 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
     RemeshResult r = remeshSurface(parts[i], analyzeTopology(parts[i]).isDisk(), o, partName);
     append(result.output, r.output);
     result.snappedTips += r.snappedTips;
+    result.fit += r.fit.scaled(boundingBoxDiagonal(parts[i]) / boundingBoxDiagonal(input));
     const CutSummary cut = r.cut;
     const std::optional<SlitTrial> slitTrial = r.slitTrial;
     // (The total is timed around them all, in remesh().)
@@ -600,6 +614,7 @@ std::string describe(const RemeshOptions& o) {
   if (o.method == RemeshMethod::Retriangulate) {
     s << " polish=" << o.polish;
     if (o.polish > 0) s << " polish-target=" << toString(o.polishTarget) << " snap=" << (o.snapToTips ? "yes" : "no");
+    s << " fit=" << (o.fit ? "yes" : "no");
     if (!o.slitDisks) s << " slit-disks=no";
   }
   return s.str();

@@ -3,6 +3,7 @@
 
 #include "cut.h"
 #include "density.h"
+#include "fit.h"
 #include "lloyd.h"
 #include "metrics.h"
 #include "parameterization.h"
@@ -37,6 +38,9 @@ struct RemeshOptions {
   int polish = 3;
   PolishTarget polishTarget = PolishTarget::Centroid;
   bool snapToTips = true;  // the polish's last step (core/polish: snapToTips), when polish > 0
+  // Retriangulate's very last step: the result's vertices moved along their normals so that it
+  // lies closer to the input (core/fit), its border and angles kept.
+  bool fit = true;
   // A nearly closed disk may be slit open (CutOptions::slitDisksAbove); remesh() then makes it
   // whole too and keeps the better (SlitTrial). false: disks stay whole.
   bool slitDisks = true;
@@ -98,6 +102,7 @@ struct RemeshResult {
   QualityMetrics before, after;
   Fidelity fidelity;  // output against input; zero when not measured
   int snappedTips = 0;  // vertices the polish snapped onto tips the result cut off (snapToTips)
+  FitResult fit;  // how far RemeshOptions::fit moved the vertices
   // Not empty: the run failed with the first pass (this says why) and was made without it.
   std::string resampleDropped;
   int iterations = 0;  // summed over the components
@@ -152,10 +157,13 @@ class RemeshSession {
   // Whether the input was cut (or a nearly closed disk slit) open, to be stitched at the end.
   bool isCut() const { return cut_.has_value(); }
   // For the cells of the steps to come (LloydOptions::threads; the results do not depend on it).
-  void setThreads(int threads) { solver_->setThreads(threads); }
+  void setThreads(int threads) {  // for the cells, and the fit's closest points
+    options_.lloyd.threads = threads;
+    solver_->setThreads(threads);
+  }
 
  private:
-  Mesh buildOutput(int& snappedTips) const;
+  Mesh buildOutput(RemeshResult& result) const;  // sets its snappedTips and fit
   // The site options with the seams of a cut surface marked (and a chart's, given in them).
   SiteOptions seamSites() const;
   // Whether the border holds seams to stitch: a cut's, or those of a chart of a surface.

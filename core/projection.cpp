@@ -6,6 +6,8 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 
+#include <algorithm>
+#include <thread>
 #include <vector>
 
 namespace lloydscope {
@@ -40,6 +42,22 @@ SurfaceProjection::SurfaceProjection(SurfaceProjection&&) noexcept = default;
 Vec3 SurfaceProjection::closestPoint(const Vec3& p) const {
   const Point3 c = tree_->tree.closest_point(point(p));
   return Vec3(c.x(), c.y(), c.z());
+}
+
+std::vector<Vec3> SurfaceProjection::closestPoints(const std::vector<Vec3>& points, int threadCount) const {
+  std::vector<Vec3> closest(points.size());
+  const size_t threads = points.size() < 1000 ? 1
+                         : threadCount > 0    ? static_cast<size_t>(threadCount)
+                                              : std::max(1u, std::thread::hardware_concurrency());
+  auto work = [&](size_t t) {
+    for (size_t i = points.size() * t / threads; i < points.size() * (t + 1) / threads; ++i)
+      closest[i] = closestPoint(points[i]);
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& thread : pool) thread.join();
+  return closest;
 }
 
 int SurfaceProjection::closestTriangle(const Vec3& p) const {

@@ -75,6 +75,21 @@ TEST(Cli, NoSnapLeavesTheTipsAlone) {
             unsnapped["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>());
 }
 
+TEST(Cli, NoFitLeavesTheVerticesOnTheInput) {
+  auto run = [&](const std::string& extra) {
+    const CliRun r = runCli("remesh " + test::assetPath("bumpy_disk.off") + " --sites 300 --json" + extra);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto fitted = run(""), unfitted = run(" --no-fit");
+  EXPECT_TRUE(fitted["settings"]["fit"].get<bool>());
+  EXPECT_FALSE(unfitted["settings"]["fit"].get<bool>());
+  EXPECT_GT(fitted["fit"]["vertices_moved"].get<int>(), 100);
+  EXPECT_EQ(unfitted["fit"]["vertices_moved"].get<int>(), 0);
+  EXPECT_LT(fitted["output"]["fidelity"]["rms_percent_diagonal"].get<double>(),
+            unfitted["output"]["fidelity"]["rms_percent_diagonal"].get<double>());
+}
+
 TEST(Cli, TheCurvatureDensitysFloorIsAnOption) {
   const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") +
                           " --density curvature --floor 4 --max-iterations 2 --no-fidelity --json");
@@ -218,9 +233,10 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
   EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --polish -1 |"), std::string::npos) << table;
   EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --no-resample |"), std::string::npos) << table;
   EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --no-snap |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --no-fit |"), std::string::npos) << table;
   EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope --solver newton |"), std::string::npos)
       << table;
-  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 7) << rows;  // header and six rows
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 8) << rows;  // header and seven rows
   EXPECT_EQ(rows.rfind("model,size,method,vertices", 0), 0u);
 }
 

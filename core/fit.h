@@ -1,0 +1,37 @@
+// The result fitted to the input: its vertices moved along their normals so that the input lies
+// on both sides of it (least squares), as a good approximation does, instead of wholly on one
+// side of each triangle, as it does with every vertex on the input. Where the input curves, a
+// triangle whose corners are on it cuts under it by its sagitta; lifted by about half of that,
+// it is about half as far.
+#pragma once
+
+#include "mesh.h"
+
+namespace lloydscope {
+
+struct FitOptions {
+  // A move that would leave an angle of the vertex's triangles under this many degrees, and
+  // under the smallest they had, is halved, quartered or not made: the fit never takes the
+  // smallest angle under this or under what it was (larger angles may shrink a little, and
+  // the average smallest angle with them: by up to 0.5 deg on issue 5's bench).
+  double keepAngle = 40.0;
+  int threads = 0;  // for the closest points; 0: all cores
+};
+
+struct FitResult {
+  int moved = 0;  // vertices moved (the border stays on the input's border)
+  double meanPercent = 0, maxPercent = 0;  // how far they moved, in % of the surface's diagonal
+
+  FitResult& operator+=(const FitResult& o);  // the two parts' vertices together
+  // The percentages times `factor`: with a part's diagonal over the whole's, in % of the whole's.
+  FitResult scaled(double factor) const;
+};
+
+// Samples `mesh` at its vertices, edge midpoints and triangle centres, finds each sample's
+// closest point on `surface` (CGAL's AABB tree), and moves the vertices inside the border along
+// their normals by the moves that minimize the samples' weighted squared distances to those
+// points, measured along each sample's normal (one Gauss-Newton step, the closest points held:
+// a sparse linear system). A vertex on a vertex of `surface` (a tip snapped to) stays.
+FitResult fitToSurface(Mesh& mesh, const Mesh& surface, const FitOptions& options = {});
+
+}  // namespace lloydscope

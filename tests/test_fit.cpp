@@ -1,0 +1,101 @@
+#include "fit.h"
+#include "metrics.h"
+#include "mesh_io.h"
+#include "pipeline.h"
+#include "test_support.h"
+
+#include <algorithm>
+
+using namespace lloydscope;
+
+namespace {
+double smallestAngle(const Mesh& mesh) { return measureQuality(mesh).minAngle; }
+}  // namespace
+
+// Two polyhedra with their vertices on the unit sphere, a coarse and a fine one: each coarse
+// triangle cuts under the fine surface by about its sagitta. Fitted, the coarse one lies on
+// both sides of the fine one, nearer at its farthest and far nearer on average.
+TEST(Fit, ACoarseSphereComesAboutHalfAsFarFromAFineOne) {
+  const Mesh fine = test::cube(24, true);
+  Mesh coarse = test::cube(5, true);  // only its 8 corners are vertices of the fine one
+  const Fidelity before = measureFidelity(coarse, fine);
+  const double anglesBefore = smallestAngle(coarse);
+  const FitResult r = fitToSurface(coarse, fine);
+  const Fidelity after = measureFidelity(coarse, fine);
+  // Closed: no border. Of the rest, a move that would sharpen a triangle already under the
+  // guard's angle (near the cube's corners) is not made.
+  EXPECT_GT(r.moved, coarse.vertexCount() / 2);
+  EXPECT_GT(r.meanPercent, 0);
+  EXPECT_LT(after.hausdorffPercent, 0.7 * before.hausdorffPercent);
+  EXPECT_LT(after.rmsPercent, 0.6 * before.rmsPercent);
+  EXPECT_GE(smallestAngle(coarse), std::min(anglesBefore, FitOptions{}.keepAngle) - 1e-9);
+  int out = 0;
+  for (const Vec3& p : coarse.points) out += p.norm() > 1.0 + 1e-12;
+  EXPECT_EQ(out, r.moved);  // every move is out of the sphere
+}
+
+// A grid lifted off a plane is put back on it (the moves' signs and sizes), its border and the
+// plane's own points staying.
+TEST(Fit, AGridAboveAPlaneComesBackOntoIt) {
+  const Mesh input = test::grid(12);
+  Mesh result = test::grid(5);  // the same unit square, coarser
+  const std::vector<bool> border = vertexEdges(result).onBoundary;
+  for (int v = 0; v < result.vertexCount(); ++v)
+    if (!border[v]) result.points[v].z() = 0.02;
+  const FitResult r = fitToSurface(result, input);
+  int inside = 0;
+  for (int v = 0; v < result.vertexCount(); ++v) {
+    EXPECT_NEAR(result.points[v].z(), 0.0, 0.004) << v;  // most of the way
+    inside += !border[v];
+  }
+  EXPECT_EQ(r.moved, inside);
+  const Mesh flat = test::grid(5);
+  Mesh unmoved = flat;
+  EXPECT_EQ(fitToSurface(unmoved, input).moved, 0);  // already on it: nothing to gain
+  EXPECT_EQ(unmoved.points, flat.points);
+}
+
+// The border stays on the input's border, a vertex on an input vertex (a snapped tip) stays on
+// it, and no move leaves a smaller angle than the guard's.
+TEST(Fit, KeepsTheBorderSnappedVerticesAndAngles) {
+  const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  RemeshOptions o;
+  o.sites.count = 300;
+  o.fit = false;
+  Mesh result = remesh(input, o, "bumpy_disk.off").output;
+  const double anglesBefore = smallestAngle(result);
+  const std::vector<bool> border = vertexEdges(result).onBoundary;
+  const int tip = static_cast<int>(std::find(border.begin(), border.end(), false) - border.begin());
+  // As snapToTips leaves a vertex: on the input vertex nearest to it.
+  const Vec3 at = result.points[tip];
+  result.points[tip] = *std::min_element(input.points.begin(), input.points.end(), [&](const Vec3& a, const Vec3& b) {
+    return (a - at).squaredNorm() < (b - at).squaredNorm();
+  });
+  const std::vector<Vec3> before = result.points;
+  const FitResult r = fitToSurface(result, input);
+  EXPECT_GT(r.moved, result.vertexCount() / 2);
+  EXPECT_EQ(result.points[tip], before[tip]);
+  for (int v = 0; v < result.vertexCount(); ++v)
+    if (border[v]) EXPECT_EQ(result.points[v], before[v]) << v;
+  // The snap may have sharpened a triangle: the guard holds against the smaller of the two.
+  EXPECT_GE(smallestAngle(result), std::min({anglesBefore, smallestAngle(Mesh{before, result.triangles}),
+                                             FitOptions{}.keepAngle}) - 1e-9);
+}
+
+// remesh() fits by default: the same triangles, closer to the input, no rounder or less round
+// by more than a tenth of a degree on average.
+TEST(Fit, RemeshFitsTheResultByDefault) {
+  const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  RemeshOptions o;
+  o.sites.count = 400;
+  const RemeshResult fitted = remesh(input, o, "bumpy_disk.off");
+  o.fit = false;
+  const RemeshResult unfitted = remesh(input, o, "bumpy_disk.off");
+  EXPECT_EQ(fitted.output.triangles, unfitted.output.triangles);
+  EXPECT_GT(fitted.fit.moved, 0);
+  EXPECT_EQ(unfitted.fit.moved, 0);
+  EXPECT_LT(fitted.fidelity.rmsPercent, 0.9 * unfitted.fidelity.rmsPercent);
+  EXPECT_LE(fitted.fidelity.hausdorffPercent, unfitted.fidelity.hausdorffPercent);
+  EXPECT_NEAR(fitted.after.avgMinAngle, unfitted.after.avgMinAngle, 0.1);
+  EXPECT_FALSE(referencePreset(RemeshMethod::Retriangulate).fit);
+}
