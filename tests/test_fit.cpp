@@ -15,7 +15,7 @@ double smallestAngle(const Mesh& mesh) { return measureQuality(mesh).minAngle; }
 // Two polyhedra with their vertices on the unit sphere, a coarse and a fine one: each coarse
 // triangle cuts under the fine surface by about its sagitta. Fitted, the coarse one lies on
 // both sides of the fine one, nearer at its farthest and far nearer on average.
-TEST(Fit, ACoarseSphereComesAboutHalfAsFarFromAFineOne) {
+TEST(Fit, ACoarseSphereComesNearerToAFineOne) {
   const Mesh fine = test::cube(24, true);
   Mesh coarse = test::cube(5, true);  // only its 8 corners are vertices of the fine one
   const Fidelity before = measureFidelity(coarse, fine);
