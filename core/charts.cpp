@@ -31,8 +31,8 @@ std::vector<std::array<int, 3>> facesAcross(const Mesh& mesh) {
   return across;
 }
 
-Vec3 faceNormal(const Mesh& mesh, const Triangle& t) {
-  const Vec3 n = (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]);
+Vec3 unitNormal(const Mesh& mesh, const Triangle& t) {
+  const Vec3 n = faceNormal(mesh, t);
   const double length = n.norm();
   return length > 0 ? Vec3(n / length) : Vec3::Zero();
 }
@@ -53,7 +53,7 @@ class Labelling {
     for (const Triangle& t : mesh.triangles) {
       area_.push_back(triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]));
       total += area_.back();
-      normal_.push_back(faceNormal(mesh, t));
+      normal_.push_back(unitNormal(mesh, t));
     }
     smallest_ = total * options.smallestShare / std::max(1, resultVertices);
     grow(std::cos(options.coneDegrees * M_PI / 180.0));

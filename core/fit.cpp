@@ -1,6 +1,7 @@
 #include "fit.h"
 
 #include "metrics.h"
+#include "polish.h"
 #include "projection.h"
 
 #include <Eigen/Sparse>
@@ -14,26 +15,12 @@ namespace lloydscope {
 
 namespace {
 
-Vec3 faceNormal(const Mesh& mesh, const Triangle& t) {  // its length is twice the area
-  return (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]);
-}
-
 std::vector<Vec3> vertexNormals(const Mesh& mesh) {
   std::vector<Vec3> normals(mesh.points.size(), Vec3::Zero());
   for (const Triangle& t : mesh.triangles)
     for (int v : t) normals[v] += faceNormal(mesh, t);
   for (Vec3& n : normals) n = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
   return normals;
-}
-
-double smallestAngle(const Mesh& mesh, const std::vector<int>& faces) {
-  double smallest = 180;
-  for (int f : faces) {
-    const Triangle& t = mesh.triangles[f];
-    for (double a : cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]))
-      smallest = std::min(smallest, a);
-  }
-  return smallest;
 }
 
 // A point where the mesh is sampled: the mean of some of its vertices (one, an edge's two or a
@@ -66,10 +53,9 @@ std::vector<Sample> samplesOf(const Mesh& mesh) {
 
 // Each vertex's move along its normal that minimizes the weighted squared distances of the
 // samples to their closest points on the input, measured along each sample's normal (the
-// closest points kept where they are: one Gauss-Newton step). Border vertices do not move.
-Eigen::VectorXd normalMoves(const Mesh& mesh, const std::vector<Sample>& samples, const std::vector<bool>& fixed,
-                            const SurfaceProjection& projection, int threads) {
-  const std::vector<Vec3> normals = vertexNormals(mesh);
+// closest points kept where they are: one Gauss-Newton step). Fixed vertices do not move.
+Eigen::VectorXd normalMoves(const Mesh& mesh, const std::vector<Vec3>& normals, const std::vector<Sample>& samples,
+                            const std::vector<bool>& fixed, const SurfaceProjection& projection, int threads) {
   std::vector<Vec3> at(samples.size()), along(samples.size());
   for (size_t i = 0; i < samples.size(); ++i) {
     at[i] = along[i] = Vec3::Zero();
@@ -81,31 +67,27 @@ Eigen::VectorXd normalMoves(const Mesh& mesh, const std::vector<Sample>& samples
   }
   const std::vector<Vec3> closest = projection.closestPoints(at, threads);
   std::vector<Eigen::Triplet<double>> entries;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(mesh.vertexCount()), diagonal = rhs;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(mesh.vertexCount());
+  double diagonal = 0;  // the sum of the squared shares: the scale of the system's diagonal
   for (size_t i = 0; i < samples.size(); ++i) {
     const Sample& s = samples[i];
     const double d = (closest[i] - at[i]).dot(along[i]);
     // The sample moves by sum over its corners of share * (n_v . n) * t_v along n.
     for (int u : s.corners) {
       const double a = normals[u].dot(along[i]) / s.corners.size();
+      diagonal += s.weight * a * a;
+      if (fixed[u]) continue;
       rhs[u] += s.weight * a * d;
-      diagonal[u] += s.weight * a * a;
       for (int v : s.corners)
-        entries.emplace_back(u, v, s.weight * a * normals[v].dot(along[i]) / s.corners.size());
+        if (!fixed[v]) entries.emplace_back(u, v, s.weight * a * normals[v].dot(along[i]) / s.corners.size());
     }
   }
-  // Border vertices stay: their rows and columns become the identity, their moves zero. A small
-  // pull towards no move keeps the system definite where samples say little.
-  const double damping = 1e-3 * diagonal.sum() / std::max(1, mesh.vertexCount());
-  std::vector<Eigen::Triplet<double>> kept;
-  for (const auto& e : entries)
-    if (!fixed[e.row()] && !fixed[e.col()]) kept.push_back(e);
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    kept.emplace_back(v, v, fixed[v] ? 1.0 : damping);
-    if (fixed[v]) rhs[v] = 0;
-  }
+  // Fixed vertices' rows and columns are the identity, their moves zero. A small pull towards
+  // no move keeps the system definite where samples say little.
+  const double damping = 1e-3 * diagonal / std::max(1, mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v) entries.emplace_back(v, v, fixed[v] ? 1.0 : damping);
   Eigen::SparseMatrix<double> system(mesh.vertexCount(), mesh.vertexCount());
-  system.setFromTriplets(kept.begin(), kept.end());
+  system.setFromTriplets(entries.begin(), entries.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
   if (solver.info() != Eigen::Success) return Eigen::VectorXd::Zero(mesh.vertexCount());
   Eigen::VectorXd moves = solver.solve(rhs);
@@ -141,31 +123,23 @@ FitResult fitToSurface(Mesh& mesh, const Mesh& surface, const FitOptions& option
     const Vec3& p = mesh.points[v];
     if (inputVertices.count({p.x(), p.y(), p.z()})) fixed[v] = true;
   }
-  std::vector<std::vector<int>> faces(mesh.points.size());
-  for (size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int v : mesh.triangles[f]) faces[v].push_back(static_cast<int>(f));
+  const Rings rings(mesh);
   const std::vector<Vec3> start = mesh.points;
-
   const std::vector<Vec3> normals = vertexNormals(mesh);
-  const Eigen::VectorXd moves = normalMoves(mesh, samples, fixed, projection, options.threads);
+  const Eigen::VectorXd moves = normalMoves(mesh, normals, samples, fixed, projection, options.threads);
   for (int v = 0; v < mesh.vertexCount(); ++v) {
     if (moves[v] == 0) continue;
-    const Vec3 was = mesh.points[v];
-    const double before = smallestAngle(mesh, faces[v]);
-    std::vector<Vec3> facing;
-    for (int f : faces[v]) facing.push_back(faceNormal(mesh, mesh.triangles[f]));
-    auto keeps = [&] {
-      for (size_t i = 0; i < faces[v].size(); ++i)
-        if (faceNormal(mesh, mesh.triangles[faces[v][i]]).dot(facing[i]) <= 0) return false;  // turned over
-      const double after = smallestAngle(mesh, faces[v]);
-      return after >= options.keepAngle || after >= before;
-    };
+    const double before = smallestAngleOfRing(mesh, rings, v, mesh.points[v]);
     // The whole move, else half of it, else a quarter, else none: the others' moves were solved
     // for with this one whole, so a part of it is a compromise, still closer than none.
     for (double part = 1; part > 0.2; part /= 2) {
-      mesh.points[v] = was + part * moves[v] * normals[v];
-      if (keeps()) break;
-      mesh.points[v] = was;
+      const Vec3 to = mesh.points[v] + part * moves[v] * normals[v];
+      if (turnsOver(mesh, rings, v, to)) continue;
+      const double after = smallestAngleOfRing(mesh, rings, v, to);
+      if (after >= options.keepAngle || after >= before) {
+        mesh.points[v] = to;
+        break;
+      }
     }
   }
 

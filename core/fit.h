@@ -1,8 +1,8 @@
 // The result fitted to the input: its vertices moved along their normals so that the input lies
 // on both sides of it (least squares), as a good approximation does, instead of wholly on one
 // side of each triangle, as it does with every vertex on the input. Where the input curves, a
-// triangle whose corners are on it cuts under it by its sagitta; lifted by about half of that,
-// it is about half as far.
+// triangle whose corners are on it cuts under it by its sagitta; lifted by part of that, it is
+// nearer. On issue 5's bench: Hausdorff distance down by 0-36%, RMS by 12-48%.
 #pragma once
 
 #include "mesh.h"

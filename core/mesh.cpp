@@ -71,4 +71,18 @@ double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c) {
   return 0.5 * (u.x() * v.y() - u.y() * v.x());
 }
 
+Rings::Rings(const Mesh& m) : offset(m.vertexCount() + 1, 0) {
+  for (const Triangle& t : m.triangles)
+    for (int v : t) ++offset[v + 1];
+  for (size_t v = 1; v < offset.size(); ++v) offset[v] += offset[v - 1];
+  faces.resize(offset.back());
+  std::vector<int> fill(offset.begin(), offset.end() - 1);
+  for (int f = 0; f < m.faceCount(); ++f)
+    for (int v : m.triangles[f]) faces[fill[v]++] = f;
+}
+
+Vec3 faceNormal(const Mesh& m, const Triangle& t) {
+  return (m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]);
+}
+
 }  // namespace lloydscope

@@ -38,11 +38,18 @@ struct VertexEdges {
 };
 VertexEdges vertexEdges(const Mesh& mesh);
 
+// Each vertex's triangles: faces[offset[v]] .. faces[offset[v + 1] - 1].
+struct Rings {
+  std::vector<int> offset, faces;
+  explicit Rings(const Mesh& m);
+};
+
 // Lowest and highest corner of the axis-aligned bounding box (zeros for an empty mesh).
 std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh);
 // Length of its diagonal.
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
+Vec3 faceNormal(const Mesh& mesh, const Triangle& t);  // not unit: its length is twice the area
 double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas
 // Appends `part`'s vertices and triangles to `to` (as another component).
 void append(Mesh& to, const Mesh& part);

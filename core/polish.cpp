@@ -15,9 +15,6 @@ namespace lloydscope {
 
 namespace {
 
-Vec3 normal(const Mesh& m, const Triangle& t) {
-  return (m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]);
-}
 
 using EdgeKey = long long;
 
@@ -116,9 +113,9 @@ int flipEdges(Mesh& mesh, FlipRule rule, const std::vector<int>* stitched = null
                     borderApart && stitchedEdges[stitchedEdge(a, b)] > 2};
     if (!rule(quad)) continue;
     const Triangle n1{c, a, d}, n2{d, b, c};  // keep both facing the same way
-    const Vec3 before = normal(mesh, mesh.triangles[f1]).normalized() +
-                        normal(mesh, mesh.triangles[f2]).normalized();
-    const Vec3 m1 = normal(mesh, n1), m2 = normal(mesh, n2);
+    const Vec3 before = faceNormal(mesh, mesh.triangles[f1]).normalized() +
+                        faceNormal(mesh, mesh.triangles[f2]).normalized();
+    const Vec3 m1 = faceNormal(mesh, n1), m2 = faceNormal(mesh, n2);
     if (m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() < 1e-14 || m2.norm() < 1e-14)
       continue;
     for (int f : {f1, f2})
@@ -149,19 +146,6 @@ int flipToDelaunay(Mesh& mesh) { return flipEdges(mesh, notDelaunay); }
 namespace {
 
 // Each vertex's triangles, as offsets into one array.
-struct Rings {
-  std::vector<int> offset, faces;
-  Rings(const Mesh& m) : offset(m.vertexCount() + 1, 0) {
-    for (const Triangle& t : m.triangles)
-      for (int v : t) ++offset[v + 1];
-    for (size_t v = 1; v < offset.size(); ++v) offset[v] += offset[v - 1];
-    faces.resize(offset.back());
-    std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for (int f = 0; f < m.faceCount(); ++f)
-      for (int v : m.triangles[f]) faces[fill[v]++] = f;
-  }
-};
-
 Vec3 circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, n = ab.cross(ac);
   const double n2 = n.squaredNorm();
@@ -291,13 +275,7 @@ void relaxPass(LiftedMesh& lm, const SurfaceMap& surface,
 double ringSmallestAngle(const Mesh& m, const Rings& rings, int v, const Vec3& to,
                          const Vec3& up) {
   if (!keepsRingUnfolded(m, rings, v, to, up)) return -1;
-  double smallest = 180;
-  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
-    const Triangle& t = m.triangles[rings.faces[k]];
-    auto at = [&](int i) -> const Vec3& { return t[i] == v ? to : m.points[t[i]]; };
-    smallest = std::min(smallest, smallestAngle(at(0), at(1), at(2)));
-  }
-  return smallest;
+  return smallestAngleOfRing(m, rings, v, to);
 }
 
 // Where relaxation left small angles: each inside vertex of a triangle under kRepairBelow
@@ -375,7 +353,7 @@ bool mergeVertex(Mesh& m, int from, int to) {
     }
     Triangle after = tri;
     std::replace(after.begin(), after.end(), from, to);
-    const Vec3 n0 = normal(m, tri), n1 = normal(m, after);
+    const Vec3 n0 = faceNormal(m, tri), n1 = faceNormal(m, after);
     if (!(n1.dot(n0) > 0.1 * n0.norm() * n1.norm())) return false;
     changed.push_back(g);
   }
@@ -588,17 +566,6 @@ double smallestAngleAround(const Mesh& m, const std::vector<bool>& marked) {
   return smallest;
 }
 
-// Whether moving v to `to` turns one of its triangles over (its normal by more than 90
-// degrees). A spike's triangles turn steeply from the ring's normal: only this is ruled out.
-bool turnsOver(const Mesh& m, const Rings& rings, int v, const Vec3& to) {
-  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
-    const Triangle& t = m.triangles[rings.faces[k]];
-    auto at = [&](int c) -> const Vec3& { return t[c] == v ? to : m.points[t[c]]; };
-    if (!((at(1) - at(0)).cross(at(2) - at(0)).dot(normal(m, t)) > 0)) return true;
-  }
-  return false;
-}
-
 double meanEdgeLength(const Mesh& m) {
   double sum = 0;
   for (const Triangle& t : m.triangles)
@@ -688,6 +655,25 @@ PolishTarget parsePolishTarget(const std::string& text) {
   for (PolishTarget t : {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter})
     if (text == toString(t)) return t;
   throw Error("unknown polish target '" + text + "' (voronoi, centroid, circumcenter)");
+}
+
+bool turnsOver(const Mesh& m, const Rings& rings, int v, const Vec3& to) {
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+    const Triangle& t = m.triangles[rings.faces[k]];
+    auto at = [&](int c) -> const Vec3& { return t[c] == v ? to : m.points[t[c]]; };
+    if (!((at(1) - at(0)).cross(at(2) - at(0)).dot(faceNormal(m, t)) > 0)) return true;
+  }
+  return false;
+}
+
+double smallestAngleOfRing(const Mesh& m, const Rings& rings, int v, const Vec3& to) {
+  double smallest = 180;
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+    const Triangle& t = m.triangles[rings.faces[k]];
+    auto at = [&](int i) -> const Vec3& { return t[i] == v ? to : m.points[t[i]]; };
+    smallest = std::min(smallest, smallestAngle(at(0), at(1), at(2)));
+  }
+  return smallest;
 }
 
 }  // namespace lloydscope

@@ -71,6 +71,12 @@ void polishSeams(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh
 // were snapped.
 int snapToTips(Mesh& result, const Mesh& surface, int rounds = 3);
 
+// Whether moving v to `to` turns one of its triangles over (its normal by more than 90
+// degrees). A spike's triangles turn steeply from the ring's normal: only this is ruled out.
+bool turnsOver(const Mesh& m, const Rings& rings, int v, const Vec3& to);
+// The smallest angle, in degrees, of v's triangles with v moved to `to`.
+double smallestAngleOfRing(const Mesh& m, const Rings& rings, int v, const Vec3& to);
+
 // Flips interior edges whose two opposite angles sum to more than 180 degrees (the 3D
 // Delaunay criterion) where the flip neither duplicates an edge nor folds the surface.
 // Returns the number of flips.
