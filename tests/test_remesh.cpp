@@ -12,25 +12,29 @@ Mesh wavyGrid(int n) {
   for (Vec3& p : mesh.points) p.z() = 0.2 * std::sin(4 * p.x()) * std::cos(3 * p.y());
   return mesh;
 }
+
+// wavyGrid(n), its LSCM map and the map's domain.
+struct WavyMap {
+  explicit WavyMap(int n) : mesh(wavyGrid(n)), p(parameterize(mesh, {}, "wavy")), domain(p.uv, mesh.triangles, {}) {}
+  const Mesh mesh;
+  const Parameterization p;
+  const Domain domain;
+};
 }  // namespace
 
 TEST(Lift, AVertexOwnUVReturnsThatVertex) {
-  const Mesh mesh = wavyGrid(10);
-  const Parameterization p = parameterize(mesh, {}, "wavy");
-  const Domain domain(p.uv, mesh.triangles, {});
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    EXPECT_NEAR((lift(mesh, domain, p.uv[v]) - mesh.points[v]).norm(), 0.0, 1e-12) << v;
+  const WavyMap w(10);
+  for (int v = 0; v < w.mesh.vertexCount(); ++v)
+    EXPECT_NEAR((lift(w.mesh, w.domain, w.p.uv[v]) - w.mesh.points[v]).norm(), 0.0, 1e-12) << v;
 }
 
 TEST(Lift, BarycentricInsideATriangle) {
-  const Mesh mesh = wavyGrid(4);
-  const Parameterization p = parameterize(mesh, {}, "wavy");
-  const Domain domain(p.uv, mesh.triangles, {});
-  const Triangle& t = mesh.triangles[7];
-  const Vec2 uv = 0.2 * p.uv[t[0]] + 0.3 * p.uv[t[1]] + 0.5 * p.uv[t[2]];
-  const Vec3 expected = 0.2 * mesh.points[t[0]] + 0.3 * mesh.points[t[1]] + 0.5 * mesh.points[t[2]];
-  EXPECT_NEAR((lift(mesh, domain, uv) - expected).norm(), 0.0, 1e-12);
-  const Location l = domain.locate(uv, 0);  // by walking from triangle 0
+  const WavyMap w(4);
+  const Triangle& t = w.mesh.triangles[7];
+  const Vec2 uv = 0.2 * w.p.uv[t[0]] + 0.3 * w.p.uv[t[1]] + 0.5 * w.p.uv[t[2]];
+  const Vec3 expected = 0.2 * w.mesh.points[t[0]] + 0.3 * w.mesh.points[t[1]] + 0.5 * w.mesh.points[t[2]];
+  EXPECT_NEAR((lift(w.mesh, w.domain, uv) - expected).norm(), 0.0, 1e-12);
+  const Location l = w.domain.locate(uv, 0);  // by walking from triangle 0
   EXPECT_EQ(l.triangle, 7);
   EXPECT_TRUE(l.inside);
 }
@@ -80,35 +84,31 @@ TEST(Lift, LocateFindsTheTriangleOfEveryPointOfANonConvexDomain) {
 }
 
 TEST(Relocate, KeepsConnectivityAndMovesOnlyInsideVertices) {
-  const Mesh mesh = wavyGrid(6);
-  const Parameterization p = parameterize(mesh, {}, "wavy");
-  const Domain domain(p.uv, mesh.triangles, {});
+  const WavyMap w(6);
   std::vector<int> inside;
   std::vector<Vec2> sites;
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    if (!p.onBoundary[v]) {
+  for (int v = 0; v < w.mesh.vertexCount(); ++v)
+    if (!w.p.onBoundary[v]) {
       inside.push_back(v);
-      sites.push_back(0.5 * p.uv[v] + Vec2(0.25, 0.25));  // pulled towards the centre
+      sites.push_back(0.5 * w.p.uv[v] + Vec2(0.25, 0.25));  // pulled towards the centre
     }
   std::vector<Vec3> lifted;
-  for (const Vec2& s : sites) lifted.push_back(lift(mesh, domain, s));
-  const Mesh out = relocate(mesh, inside, lifted);
-  EXPECT_EQ(out.triangles, mesh.triangles);
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    if (p.onBoundary[v]) EXPECT_EQ(out.points[v], mesh.points[v]);
+  for (const Vec2& s : sites) lifted.push_back(lift(w.mesh, w.domain, s));
+  const Mesh out = relocate(w.mesh, inside, lifted);
+  EXPECT_EQ(out.triangles, w.mesh.triangles);
+  for (int v = 0; v < w.mesh.vertexCount(); ++v)
+    if (w.p.onBoundary[v]) EXPECT_EQ(out.points[v], w.mesh.points[v]);
   for (size_t i = 0; i < inside.size(); ++i)
     EXPECT_EQ(out.points[inside[i]], lifted[i]);
 }
 
 TEST(Retriangulate, GivesAValidDiskWithAllSitesUsed) {
-  const Mesh mesh = wavyGrid(8);
-  const Parameterization p = parameterize(mesh, {}, "wavy");
-  const Domain domain(p.uv, mesh.triangles, {});
+  const WavyMap w(8);
   std::vector<Vec2> border, sites;
-  for (int v : p.boundaryLoop) border.push_back(p.uv[v]);
+  for (int v : w.p.boundaryLoop) border.push_back(w.p.uv[v]);
   for (int i = 0; i < 40; ++i)
     sites.push_back(Vec2(0.5, 0.5) + 0.3 * (i / 40.0) * Vec2(std::cos(i * 2.4), std::sin(i * 2.4)));
-  const Mesh out = retriangulate(mesh, domain, border, sites).mesh;
+  const Mesh out = retriangulate(w.mesh, w.domain, border, sites).mesh;
   EXPECT_EQ(out.vertexCount(), static_cast<int>(border.size() + sites.size()));
   EXPECT_NO_THROW(validateMesh(out, "out"));
   EXPECT_TRUE(analyzeTopology(out).isDisk());
@@ -119,18 +119,16 @@ TEST(Retriangulate, GivesAValidDiskWithAllSitesUsed) {
 // Border points given (a chart's samples, InitialSites::fixedPoints) are taken as they are,
 // not lifted through the map.
 TEST(Retriangulate, TakesTheBorderPointsGiven) {
-  const Mesh mesh = wavyGrid(8);
-  const Parameterization p = parameterize(mesh, {}, "wavy");
-  const Domain domain(p.uv, mesh.triangles, {});
+  const WavyMap w(8);
   std::vector<Vec2> border;
   std::vector<Vec3> points;
-  for (int v : p.boundaryLoop) {
-    border.push_back(p.uv[v]);
-    points.push_back(mesh.points[v] + Vec3(0, 0, 1));  // not where the map lifts it
+  for (int v : w.p.boundaryLoop) {
+    border.push_back(w.p.uv[v]);
+    points.push_back(w.mesh.points[v] + Vec3(0, 0, 1));  // not where the map lifts it
   }
-  const Mesh out = retriangulate(mesh, domain, border, {Vec2(0.5, 0.5)}, points).mesh;
+  const Mesh out = retriangulate(w.mesh, w.domain, border, {Vec2(0.5, 0.5)}, points).mesh;
   for (size_t i = 0; i < border.size(); ++i) EXPECT_EQ(out.points[i], points[i]);
-  const Mesh lifted = retriangulate(mesh, domain, border, {Vec2(0.5, 0.5)}).mesh;
+  const Mesh lifted = retriangulate(w.mesh, w.domain, border, {Vec2(0.5, 0.5)}).mesh;
   EXPECT_NEAR((lifted.points[0] - points[0]).norm(), 1.0, 1e-9);
 }
 
