@@ -143,9 +143,9 @@ std::string chartTrialText(const RemeshResult& r) {
   if (!r.chartTrial) return "";
   const ChartTrial& t = *r.chartTrial;
   if (!t.failed.empty())
-    return "Kept cut to one disk (remeshed chart by chart too, which failed: " + t.failed + ")";
-  return std::string(r.charts > 0 ? "Kept chart by chart" : "Kept cut to one disk") +
-         " (remeshed both ways, cut to one disk and chart by chart): average smallest angle " +
+    return "Kept as one disk (remeshed chart by chart too, which failed: " + t.failed + ")";
+  return std::string(r.charts > 0 ? "Kept chart by chart" : "Kept as one disk") +
+         " (remeshed both ways, as one disk and chart by chart): average smallest angle " +
          format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +
          format("%.1f", t.oneCutAvgMinAngle) + " deg one disk; Hausdorff " + format("%.3f", t.chartsHausdorff) +
          "% and " + format("%.3f", t.oneCutHausdorff) + "%";

@@ -22,7 +22,7 @@ std::string withoutResamplingText(const std::string& problem);
 // "Kept slit open (remeshed both slit open and whole: ...): ..." (RemeshResult::slitTrial), or
 // "" when the disk was not tried both ways.
 std::string slitTrialText(const RemeshResult& r);
-// "Kept chart by chart (...)" or "Kept cut to one disk (...)"; empty without a chart trial.
+// "Kept chart by chart (...)" or "Kept as one disk (...)"; empty without a chart trial.
 std::string chartTrialText(const RemeshResult& r);
 
 // Input and output side by side.

@@ -430,21 +430,16 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   return result;
 }
 
-// A surface cut open to one disk is remeshed chart by chart too (remeshCharts), and the charts
-// kept if ChartTrial::chartsBetter(). Where no conformal map of the one disk holds (LSCM folds
-// and a map with a fixed border takes over: CGAL's cow and elephant, parts with many handles),
-// its cells come out stretched, and the charts are rounder; on a CAD part with sharp edges
-// (CGAL's spool, rotor, lion) the charts' seams follow the edges, and the charts are closer.
-RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  Stopwatch wall;
+// The surface remeshed chart by chart too (remeshCharts), and the charts kept in `kept`'s place
+// if ChartTrial::chartsBetter(); both are measured against the input to tell. Where no
+// conformal map of the one disk holds (LSCM folds or its border overlaps itself, and a map
+// with a fixed border takes over: CGAL's cow and elephant, parts with many handles, the back
+// half of a body whose arms curl over it), its cells come out stretched, and the charts are
+// rounder; on a CAD part with sharp edges (CGAL's spool, rotor, lion) the charts' seams follow
+// the edges, and the charts are closer.
+void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name) {
   RemeshOptions once = options;
   once.measureFidelity = false;
-  RemeshResult kept = remeshOnce(input, once, name);
-  if (options.param.method != ParamMethod::Auto || !usesResampling(options)) {
-    kept.ms.total = wall.lap();
-    if (options.measureFidelity) measureFidelityOf(kept, input);
-    return kept;
-  }
   try {
     RemeshResult charted = remeshCharts(input, once, name);
     measureFidelityOf(kept, input);
@@ -460,13 +455,27 @@ RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, c
     const double otherMs = other.ms.total - other.ms.metrics, checks = other.ms.metrics;
     if (better) kept = std::move(charted);
     kept.chartTrial = trial;
-    kept.ms.compared = otherMs;
+    kept.ms.compared += otherMs;
     kept.ms.metrics += checks;
   } catch (const Error& e) {  // a chart failed, or its seams did not stitch: the one cut stands
     kept.chartTrial = ChartTrial{};
     kept.chartTrial->failed = problemOf(e, name);
     if (options.measureFidelity) measureFidelityOf(kept, input);
   }
+}
+
+bool triesCharts(const RemeshOptions& options) {
+  return options.param.method == ParamMethod::Auto && usesResampling(options);
+}
+
+// A surface that is not a disk, cut open to one, remeshed so and chart by chart (tryCharts).
+RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  Stopwatch wall;
+  RemeshOptions once = options;
+  once.measureFidelity = false;
+  RemeshResult kept = remeshOnce(input, once, name);
+  if (triesCharts(options)) tryCharts(kept, input, options, name);
+  else if (options.measureFidelity) measureFidelityOf(kept, input);
   kept.ms.total = wall.lap();
   return kept;
 }
@@ -474,14 +483,12 @@ RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, c
 // A disk slit open (a nearly closed shape, CutOptions::slitDisksAbove) is made whole too, and
 // the better result kept (betterThan): slits through a shape's far side (CGAL's mannequin, a
 // camel head, the lion head at 1000 vertices) pay, through the peaks of a terrain (CGAL's three
-// peaks) they cost. The other run's time counts; the distance to the input is measured once, on the one
-// kept. If the slit run fails (its seams do not stitch), the whole one stands alone.
-RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& options, const std::string& name) {
-  if (!disk) return remeshCutSurface(input, options, name);
-  if (!options.slitDisks) return remeshOnce(input, options, name);
-  Stopwatch wall;
+// peaks) they cost. The other run's time counts. If the slit run fails (its seams do not
+// stitch), the whole one stands alone. Neither is measured against the input here.
+RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   RemeshOptions slitOptions = options, wholeOptions = options;
   slitOptions.measureFidelity = wholeOptions.measureFidelity = false;
+  if (!options.slitDisks) return remeshOnce(input, wholeOptions, name);
   wholeOptions.slitDisks = false;
   // Once the slit run is known to slit, the whole run goes on beside it on another thread, each
   // with half the cores for its cells (a core each on two: 1.4-1.6x faster than one after the
@@ -516,8 +523,22 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
       // the slit one stands alone
     }
   }
-  kept.ms.total = wall.lap();  // both runs, side by side
-  if (options.measureFidelity) measureFidelityOf(kept, input);
+  return kept;
+}
+
+// A map with a fixed border (mean value, Tutte) is what the one disk got where no conformal
+// map of it held.
+bool conformalHeld(ParamMethod used) { return used == ParamMethod::Lscm || used == ParamMethod::Given; }
+
+// A disk is remeshed as one (remeshDisk), and chart by chart too where its map is not conformal
+// (tryCharts); a surface of another topology is cut open (remeshCutSurface).
+RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& options, const std::string& name) {
+  if (!disk) return remeshCutSurface(input, options, name);
+  Stopwatch wall;
+  RemeshResult kept = remeshDisk(input, options, name);
+  if (triesCharts(options) && !conformalHeld(kept.paramUsed)) tryCharts(kept, input, options, name);
+  else if (options.measureFidelity) measureFidelityOf(kept, input);
+  kept.ms.total = wall.lap();  // every run, side by side or one after the other
   return kept;
 }
 

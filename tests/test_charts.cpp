@@ -1,5 +1,6 @@
 #include "charts.h"
 #include "mesh_io.h"
+#include "parameterization.h"
 #include "pipeline.h"
 #include "replay.h"
 #include "test_support.h"
@@ -17,6 +18,27 @@ Charts unmergedTorusCharts() {
   ChartOptions options;
   options.smallestShare = 0;
   return splitIntoCharts(test::torus(), 1000, options);
+}
+
+// A disk whose rim waves up and down (z = r^3 sin 5t): its border is longer than a flat disk's
+// would be, so a conformal map with a free border overlaps itself, as a lettuce leaf laid flat.
+Mesh ruffledDisk() {
+  constexpr int rings = 12, spokes = 72;
+  Mesh m;
+  m.points.emplace_back(0, 0, 0);
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j < spokes; ++j) {
+      const double r = double(i) / rings, t = 2 * M_PI * j / spokes;
+      m.points.emplace_back(r * std::cos(t), r * std::sin(t), r * r * r * std::sin(5 * t));
+    }
+  auto at = [](int i, int j) { return i == 0 ? 0 : 1 + (i - 1) * spokes + j % spokes; };
+  for (int j = 0; j < spokes; ++j) m.triangles.push_back({0, at(1, j), at(1, j + 1)});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < spokes; ++j) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
 }
 
 }  // namespace
@@ -107,6 +129,30 @@ TEST(Charts, AClosedSurfaceNoMapOfOneCutHoldsIsRemeshedChartByChart) {
   EXPECT_EQ(r.recording.sharedSeams.size(), borderEdges);
   const Replay replay(r.recording);
   EXPECT_EQ(replay.sharedSeamsOnOutput().size(), r.recording.sharedSeams.size());  // 974 without Chart::nodeSamples
+}
+
+// A disk no conformal map holds (LSCM's border overlaps itself, and the mean-value map on a
+// circle takes over) is remeshed chart by chart too, as a closed surface would be, and the
+// better kept; a disk LSCM maps is not.
+TEST(Charts, ADiskNoConformalMapHoldsIsRemeshedChartByChartToo) {
+  const Mesh ruffled = ruffledDisk();
+  ParamOptions lscm;
+  lscm.method = ParamMethod::Lscm;
+  EXPECT_THROW(parameterize(ruffled, lscm, "ruffled"), Error);
+  RemeshOptions options;
+  options.sites.count = 300;
+  const RemeshResult r = remesh(ruffled, options, "ruffled");
+  ASSERT_TRUE(r.chartTrial.has_value());
+  EXPECT_EQ(r.chartTrial->failed, "");
+  EXPECT_GT(r.chartTrial->charts, 1);
+  EXPECT_EQ(r.charts > 0, r.chartTrial->chartsBetter());
+  EXPECT_DOUBLE_EQ(r.after.avgMinAngle, r.charts > 0 ? r.chartTrial->chartsAvgMinAngle
+                                                     : r.chartTrial->oneCutAvgMinAngle);
+  EXPECT_TRUE(analyzeTopology(r.output).isDisk());
+
+  const RemeshResult flat = remesh(test::grid(12), options, "grid");
+  EXPECT_EQ(flat.paramUsed, ParamMethod::Lscm);
+  EXPECT_FALSE(flat.chartTrial.has_value());
 }
 
 // Which of the two results remesh() keeps: the charts where they are rounder and not much
