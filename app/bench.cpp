@@ -104,10 +104,16 @@ void runBench(const BenchOptions& options) {
   if (models.empty())
     throw Error("bench: no models (give mesh files, or run ./build.sh to extract CGAL's samples)");
 
+  // Every model read (and validated) before any is run: a bad one fails in a moment, not
+  // after minutes of the others' work.
+  std::vector<Mesh> meshes;
+  for (const std::string& path : models) meshes.push_back(readMesh(path).mesh);
+
   std::vector<Row> rows;
   std::ostringstream verdicts;
-  for (const std::string& path : models) {
-    const Mesh model = readMesh(path).mesh;
+  for (size_t m = 0; m < models.size(); ++m) {
+    const std::string& path = models[m];
+    const Mesh& model = meshes[m];
     for (int size : options.sizes) {
       const Mesh input = prepare(model, size, path);
       if (!options.saveInputs.empty())

@@ -258,3 +258,15 @@ TEST(Cli, BenchNamesAMissingModel) {
             true);
   EXPECT_NE(test::readText(err).find("/nonexistent/model.off"), std::string::npos);
 }
+
+// A bad model after a good one fails before the good one is run (minutes, on real inputs).
+TEST(Cli, BenchReadsEveryModelBeforeRunningAny) {
+  const std::string bad = test::tempPath("cracked.off");
+  test::writeText(bad, "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n1 1 0\n3 0 1 2\n3 3 4 2\n");
+  const CliRun r = runCli("bench " + test::assetPath("sphere_cap.off") + " " + bad +
+                          " --sizes 300 --no-reference --csv " + test::tempPath("never.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("same position on a border"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("done"), std::string::npos) << r.err;  // no model was run
+}
