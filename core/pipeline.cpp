@@ -601,7 +601,9 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
 bool ChartTrial::chartsBetter() const {
   const bool rounder = chartsAvgMinAngle > oneCutAvgMinAngle && chartsHausdorff <= kFartherBy * oneCutHausdorff;
   const bool closer = chartsHausdorff <= kCloserBy * oneCutHausdorff && chartsAvgMinAngle >= oneCutAvgMinAngle - kRounderBy;
-  return rounder || closer;
+  // And the other way round: much rounder, and not much farther.
+  const bool muchRounder = chartsAvgMinAngle >= oneCutAvgMinAngle + kRounderBy && kCloserBy * chartsHausdorff <= oneCutHausdorff;
+  return rounder || closer || muchRounder;
 }
 
 bool usesResampling(const RemeshOptions& options) { return effective(options).resample; }

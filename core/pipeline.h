@@ -83,7 +83,8 @@ struct ChartTrial {
 
   // The charts are kept if they are rounder (a larger average smallest angle) and at most
   // kFartherBy times as far from the input (Hausdorff), or at most kCloserBy times as far and
-  // at most kRounderBy degrees less round.
+  // at most kRounderBy degrees less round, or kRounderBy degrees rounder and at most 1 /
+  // kCloserBy times as far.
   static constexpr double kFartherBy = 1.1, kCloserBy = 0.8, kRounderBy = 2.0;
   bool chartsBetter() const;
 };

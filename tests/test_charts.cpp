@@ -156,7 +156,7 @@ TEST(Charts, ADiskNoConformalMapHoldsIsRemeshedChartByChartToo) {
 }
 
 // Which of the two results remesh() keeps: the charts where they are rounder and not much
-// farther, or much closer and nearly as round (the spool: 1.60% against 2.41%, 1.1 deg less).
+// farther, or much rounder and not much farther, or much closer and nearly as round (the spool: 1.60% against 2.41%, 1.1 deg less).
 TEST(Charts, AreKeptWhereRounderOrCloser) {
   auto trial = [](double chartsAngle, double oneCutAngle, double chartsDistance, double oneCutDistance) {
     ChartTrial t;
@@ -167,7 +167,9 @@ TEST(Charts, AreKeptWhereRounderOrCloser) {
     return t.chartsBetter();
   };
   EXPECT_TRUE(trial(52.0, 48.0, 1.05, 1.0));   // rounder, a little farther
-  EXPECT_FALSE(trial(52.0, 48.0, 1.2, 1.0));   // rounder, but farther
+  EXPECT_FALSE(trial(50.0, 48.5, 1.2, 1.0));   // rounder, but farther
+  EXPECT_TRUE(trial(53.6, 49.1, 0.693, 0.617));  // Homer's clipped half: much rounder, 1.12x as far
+  EXPECT_FALSE(trial(51.1, 48.8, 1.642, 1.252)); // CGAL's dino: much rounder, but 1.31x as far
   EXPECT_TRUE(trial(53.2, 54.3, 1.60, 2.41));  // the spool: closer, nearly as round
   EXPECT_FALSE(trial(52.0, 54.5, 0.5, 1.0));   // closer, but much less round
   EXPECT_FALSE(trial(54.0, 54.0, 0.9, 1.0));   // as round and a little closer: not worth it
