@@ -726,8 +726,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   else
     ImGui::Text("Final: %d iterations, %s", replay_->iterationCount(),
                 replay_->recording().converged() ? "converged" : "not converged");
-  ImGui::Text("Hausdorff %.3f%%, RMS %.3f%% of diagonal", result_.fidelity.hausdorffPercent,
-              result_.fidelity.rmsPercent);
+  ImGui::TextWrapped("%s", distanceText(result_.fidelity).c_str());
   if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
   const std::vector<CvtSolver> others = otherSolvers(options_.lloyd.solver);
   const std::string compare =

@@ -151,6 +151,12 @@ std::string chartTrialText(const RemeshResult& r) {
          "% and " + format("%.3f", t.oneCutHausdorff) + "%";
 }
 
+std::string distanceText(const Fidelity& f) {
+  if (f.samples == 0) return "Distance to the input not measured (--no-fidelity)";
+  return "Hausdorff " + format("%.3f", f.hausdorffPercent) + "%, RMS " + format("%.3f", f.rmsPercent) +
+         "% of diagonal";
+}
+
 std::string farthestPointText(const Fidelity& f) {
   const Vec3& p = f.farthestPoint;
   return "(" + format("%.4g", p.x()) + ", " + format("%.4g", p.y()) + ", " +

@@ -25,6 +25,10 @@ std::string slitTrialText(const RemeshResult& r);
 // "Kept chart by chart (...)" or "Kept as one disk (...)"; empty without a chart trial.
 std::string chartTrialText(const RemeshResult& r);
 
+// "Hausdorff 0.335%, RMS 0.030% of diagonal", or that it was not measured (--no-fidelity):
+// no sample taken, which zeros would hide.
+std::string distanceText(const Fidelity& f);
+
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);
