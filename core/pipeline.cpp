@@ -186,6 +186,15 @@ void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, Remes
   fit.threads = o.lloyd.threads;
   done.fit = fitToSurface(result, original, fit);
 }
+
+// A result stitched back from a cut disk or from charts: its seams relaxed on `surface`, its
+// flat triangles removed, then the last steps against `original`.
+void finishStitched(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh& surface,
+                    const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
+  if (o.polish > 0) polishSeams(stitched, seamVertex, surface, o.polish);
+  removeFlatTriangles(stitched);
+  lastSteps(stitched, original, o, done);
+}
 }  // namespace
 
 Mesh RemeshSession::buildOutput(RemeshResult& result) const {
@@ -225,9 +234,7 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
   // Both copies of every seam sample are at the same place: one vertex again.
   std::vector<bool> seamVertex;
   Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
-  if (options_.polish > 0) polishSeams(stitched, seamVertex, input_, options_.polish);
-  removeFlatTriangles(stitched);
-  lastSteps(stitched, original(), options_, result);
+  finishStitched(stitched, seamVertex, input_, original(), options_, result);
   requireStitched(stitched, cut_->topology, siteCount(), name_);
   return stitched;
 }
@@ -417,9 +424,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   stage.lap();
   std::vector<bool> seamVertex;
   Mesh stitched = stitchSeams(pieces, kSeamTolerance * boundingBoxDiagonal(pieces), &seamVertex);
-  if (options.polish > 0) polishSeams(stitched, seamVertex, mesh, options.polish);
-  removeFlatTriangles(stitched);
-  lastSteps(stitched, input, options, result);
+  finishStitched(stitched, seamVertex, mesh, input, options, result);
   requireStitched(stitched, analyzeTopology(mesh), asked, name);
   result.output = std::move(stitched);
   result.ms.remesh += stage.lap();
@@ -462,22 +467,6 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
     kept.chartTrial->failed = problemOf(e, name);
     if (options.measureFidelity) measureFidelityOf(kept, input);
   }
-}
-
-bool triesCharts(const RemeshOptions& options) {
-  return options.param.method == ParamMethod::Auto && usesResampling(options);
-}
-
-// A surface that is not a disk, cut open to one, remeshed so and chart by chart (tryCharts).
-RemeshResult remeshCutSurface(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  Stopwatch wall;
-  RemeshOptions once = options;
-  once.measureFidelity = false;
-  RemeshResult kept = remeshOnce(input, once, name);
-  if (triesCharts(options)) tryCharts(kept, input, options, name);
-  else if (options.measureFidelity) measureFidelityOf(kept, input);
-  kept.ms.total = wall.lap();
-  return kept;
 }
 
 // A disk slit open (a nearly closed shape, CutOptions::slitDisksAbove) is made whole too, and
@@ -530,13 +519,17 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
 // map of it held.
 bool conformalHeld(ParamMethod used) { return used == ParamMethod::Lscm || used == ParamMethod::Given; }
 
-// A disk is remeshed as one (remeshDisk), and chart by chart too where its map is not conformal
-// (tryCharts); a surface of another topology is cut open (remeshCutSurface).
+// A disk is remeshed as one (remeshDisk), a surface of another topology cut open to one disk;
+// either is remeshed chart by chart too (tryCharts), a disk only where its map is not
+// conformal. Not with a map or first pass the user chose: the charts need the automatic map.
 RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& options, const std::string& name) {
-  if (!disk) return remeshCutSurface(input, options, name);
   Stopwatch wall;
-  RemeshResult kept = remeshDisk(input, options, name);
-  if (triesCharts(options) && !conformalHeld(kept.paramUsed)) tryCharts(kept, input, options, name);
+  RemeshOptions once = options;
+  once.measureFidelity = false;
+  RemeshResult kept = disk ? remeshDisk(input, once, name) : remeshOnce(input, once, name);
+  const bool triesCharts = options.param.method == ParamMethod::Auto && usesResampling(options) &&
+                           (!disk || !conformalHeld(kept.paramUsed));
+  if (triesCharts) tryCharts(kept, input, options, name);
   else if (options.measureFidelity) measureFidelityOf(kept, input);
   kept.ms.total = wall.lap();  // every run, side by side or one after the other
   return kept;

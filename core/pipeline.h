@@ -74,7 +74,8 @@ struct SlitTrial {
   double slit = 0, whole = 0;
 };
 
-// A surface cut to one disk, remeshed chart by chart too: what each gave.
+// A surface remeshed as one disk (cut open to one if it is not a disk) and chart by chart too:
+// what each gave.
 struct ChartTrial {
   int charts = 0;
   double oneCutAvgMinAngle = 0, chartsAvgMinAngle = 0;

@@ -15,7 +15,6 @@ namespace lloydscope {
 
 namespace {
 
-
 using EdgeKey = long long;
 
 double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -145,7 +144,6 @@ int flipToDelaunay(Mesh& mesh) { return flipEdges(mesh, notDelaunay); }
 
 namespace {
 
-// Each vertex's triangles, as offsets into one array.
 Vec3 circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, n = ab.cross(ac);
   const double n2 = n.squaredNorm();
