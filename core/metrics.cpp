@@ -1,5 +1,6 @@
 #include "metrics.h"
 
+#include "parallel.h"
 #include "projection.h"
 
 #include <algorithm>
@@ -109,10 +110,9 @@ OneSided oneSided(const Mesh& from, const Mesh& to) {
       part[t].sumSquared += d2;
     }
   };
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (std::thread& thread : pool) thread.join();
+  parallelFor(threads, threads, [&](size_t begin, size_t end) {  // one part each
+    for (size_t t = begin; t < end; ++t) work(t);
+  });
   OneSided all;
   for (const OneSided& p : part) {  // in a fixed order: the sum does not depend on timing
     if (p.maxSquared > all.maxSquared) {

@@ -1,6 +1,7 @@
 #include "projection.h"
 
 #include "cgal_types.h"
+#include "parallel.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -49,14 +50,9 @@ std::vector<Vec3> SurfaceProjection::closestPoints(const std::vector<Vec3>& poin
   const size_t threads = points.size() < 1000 ? 1
                          : threadCount > 0    ? static_cast<size_t>(threadCount)
                                               : std::max(1u, std::thread::hardware_concurrency());
-  auto work = [&](size_t t) {
-    for (size_t i = points.size() * t / threads; i < points.size() * (t + 1) / threads; ++i)
-      closest[i] = closestPoint(points[i]);
-  };
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (std::thread& thread : pool) thread.join();
+  parallelFor(points.size(), threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) closest[i] = closestPoint(points[i]);
+  });
   return closest;
 }
 

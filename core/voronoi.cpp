@@ -1,6 +1,7 @@
 #include "voronoi.h"
 
 #include "cgal_types.h"
+#include "parallel.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -158,16 +159,6 @@ Delaunay triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& orde
     near = v->face();
   }
   return dt;
-}
-
-// fn(begin, end) over [0, count) split into `threads` contiguous parts, one per thread.
-template <class Fn>
-void parallelFor(size_t count, size_t threads, const Fn& fn) {
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t)
-    pool.emplace_back(fn, count * t / threads, count * (t + 1) / threads);
-  fn(0, count / threads);
-  for (std::thread& thread : pool) thread.join();
 }
 
 void storeCircumcenters(size_t begin, size_t end,
