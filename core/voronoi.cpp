@@ -122,20 +122,28 @@ void integrateTriangle(const Vec2 (&p)[3], const double (&rho)[3], const Vec2& s
   sum.energy += area * energy;
 }
 
-// `order`: the sites in a spatial order (from a previous call), or empty; receives the order used.
-Delaunay triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& order) {
+// Four far dummy sites make every real cell bounded; their own cells are never used. Sites
+// lie in the unit square (the domain is scaled into it), so the dummies stay put from call
+// to call: the cells of the sites near them do not depend on where the others are.
+void insertDummies(Delaunay& dt, const std::vector<Vec2>& sites) {
   Vec2 lo(0, 0), hi(1, 1);
   for (const Vec2& s : sites) {
     lo = lo.cwiseMin(s);
     hi = hi.cwiseMax(s);
   }
-  // Four far dummy sites make every real cell bounded; their own cells are never used.
   const Vec2 center = 0.5 * (lo + hi);
   const double far = 10.0 * std::max((hi - lo).maxCoeff(), 1.0);
-  Delaunay dt;
   for (int dx : {-1, 1})
     for (int dy : {-1, 1})
       dt.insert(Point2(center.x() + dx * far, center.y() + dy * far))->info() = kDummy;
+}
+
+// Builds `dt`, empty, and `vertexOf`: each site's vertex (a site on top of an earlier one has
+// none: null). `order`: the sites in a spatial order (from a previous call), or empty; receives
+// the order used.
+void triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& order, Delaunay& dt,
+                      std::vector<Delaunay::Vertex_handle>& vertexOf) {
+  insertDummies(dt, sites);
   // Inserting in a spatial order, each point from the last one, is what makes this fast. Sites
   // that moved a little keep a good order: the Hilbert sort is done once, not every iteration.
   std::vector<Point2> points;
@@ -149,16 +157,89 @@ Delaunay triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& orde
     CGAL::spatial_sort(sorted.begin(), sorted.end(), Traits(CGAL::make_property_map(points)));
     order.assign(sorted.begin(), sorted.end());
   }
+  vertexOf.assign(sites.size(), Delaunay::Vertex_handle());
   Delaunay::Face_handle near;
   for (int i : order) {
     const size_t before = dt.number_of_vertices();
     const Delaunay::Vertex_handle v = dt.insert(points[i], near);
     // Sites on top of each other share one vertex: the smallest index keeps it, whatever the
     // order of insertion.
-    v->info() = dt.number_of_vertices() > before ? i : std::min(v->info(), i);
+    if (dt.number_of_vertices() > before) {
+      v->info() = i;
+      vertexOf[i] = v;
+    } else {
+      vertexOf[i] = Delaunay::Vertex_handle();
+      if (i < v->info()) {
+        vertexOf[v->info()] = Delaunay::Vertex_handle();
+        v->info() = i;
+      }
+      vertexOf[v->info()] = v;
+    }
     near = v->face();
   }
-  return dt;
+}
+
+// Moves each site's vertex of `dt` to its new place and flips edges until the triangulation
+// is Delaunay again (Lawson), with the symbolic perturbation CGAL's insertion uses: the same
+// triangulation a rebuild would make. False, with `dt` left to be rebuilt, where a site has no
+// vertex of its own or a triangle turned over (its sites moved past each other).
+bool moveSites(Delaunay& dt, const std::vector<Delaunay::Vertex_handle>& vertexOf,
+               const std::vector<Vec2>& sites) {
+  if (vertexOf.size() != sites.size()) return false;
+  for (size_t i = 0; i < sites.size(); ++i) {
+    if (vertexOf[i] == Delaunay::Vertex_handle()) return false;
+    vertexOf[i]->set_point(Point2(sites[i].x(), sites[i].y()));
+  }
+  const auto orientation = dt.geom_traits().orientation_2_object();
+  std::vector<Delaunay::Edge> check;
+  check.reserve(3 * dt.number_of_faces());
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) !=
+        CGAL::LEFT_TURN)
+      return false;
+    for (int i = 0; i < 3; ++i) check.emplace_back(f, i);
+  }
+  while (!check.empty()) {
+    const auto [f, i] = check.back();
+    check.pop_back();
+    const Delaunay::Face_handle n = f->neighbor(i);
+    if (dt.is_infinite(f) || dt.is_infinite(n)) continue;
+    if (dt.side_of_oriented_circle(n, f->vertex(i)->point(), true) != CGAL::ON_POSITIVE_SIDE)
+      continue;
+    dt.flip(f, i);
+    // The quadrilateral's four sides may have become non-Delaunay; its new diagonal is.
+    for (const Delaunay::Face_handle& g : {f, n})
+      for (int k = 0; k < 3; ++k)
+        if (g->neighbor(k) != (g == f ? n : f)) check.emplace_back(g, k);
+  }
+  return true;
+}
+
+}  // namespace
+
+struct SiteTriangulation::State {
+  Delaunay dt;
+  std::vector<Delaunay::Vertex_handle> vertexOf;  // per site
+};
+SiteTriangulation::SiteTriangulation() = default;
+SiteTriangulation::~SiteTriangulation() = default;
+SiteTriangulation::SiteTriangulation(const SiteTriangulation&) {}
+SiteTriangulation& SiteTriangulation::operator=(const SiteTriangulation&) {
+  state.reset();
+  builds = 0;
+  return *this;
+}
+
+namespace {
+
+// The Delaunay triangulation of `sites`: the last call's moved and mended, or built anew.
+Delaunay& triangulate(const std::vector<Vec2>& sites, CellHints& hints) {
+  auto& state = hints.triangulation.state;
+  if (state && moveSites(state->dt, state->vertexOf, sites)) return state->dt;
+  state = std::make_unique<SiteTriangulation::State>();
+  triangulateSites(sites, hints.order, state->dt, state->vertexOf);
+  ++hints.triangulation.builds;
+  return state->dt;
 }
 
 void storeCircumcenters(size_t begin, size_t end,
@@ -423,7 +504,7 @@ std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Ve
   CellHints local;
   if (!hints) hints = &local;
   hints->triangle.resize(sites.size(), -1);
-  Delaunay dt = triangulateSites(sites, hints->order);
+  Delaunay& dt = triangulate(sites, *hints);
   // A site that coincides with an earlier one has no vertex of its own: its cell stays empty.
   std::vector<Delaunay::Vertex_handle> vertices;
   for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
@@ -450,6 +531,7 @@ std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Ve
         do {
           if (!dt.is_infinite(n) && n->info() != kDummy) cell.neighbours.push_back(n->info());
         } while (++n != end);
+        std::sort(cell.neighbours.begin(), cell.neighbours.end());  // wherever the walk began
       }
     }
   };

@@ -4,6 +4,7 @@
 
 #include "domain.h"
 
+#include <memory>
 #include <vector>
 
 namespace lloydscope {
@@ -27,7 +28,7 @@ struct BoundedCell {
   // Filled only when asked for (CellDetail): Lloyd's and L-BFGS need just the integrals.
   std::vector<Vec2> voronoi;        // the whole Voronoi cell, counter-clockwise (not clipped)
   std::vector<CellPiece> pieces;    // its parts inside the domain, one per parameter triangle
-  std::vector<int> neighbours;      // sites whose cells share an edge with this one
+  std::vector<int> neighbours;      // sites whose cells share an edge with this one, ascending
   std::vector<EdgeMoments> edges;   // those inside the domain, by neighbour (EdgeMoments asked)
 
   double area = 0;    // of cell ∩ domain, in the parameter domain
@@ -56,11 +57,28 @@ std::vector<std::pair<Vec2, Vec2>> voronoiEdges(const Domain& domain,
 // One cell's edges with its neighbours (the same segments as voronoiEdges, both directions).
 std::vector<std::pair<Vec2, Vec2>> cellOutline(const Domain& domain, const BoundedCell& cell);
 
+// The Delaunay triangulation of the last call's sites (voronoi.cpp). A copy starts empty:
+// each owner of hints keeps its own.
+class SiteTriangulation {
+ public:
+  SiteTriangulation();
+  ~SiteTriangulation();
+  SiteTriangulation(const SiteTriangulation&);
+  SiteTriangulation& operator=(const SiteTriangulation&);
+  struct State;
+  std::unique_ptr<State> state;
+  int builds = 0;  // how many calls built it anew rather than moving the last one
+};
+
 // What one computeCells call leaves for the next one on nearby sites (Lloyd's next
-// iteration): where to start searching, and in which order to insert them.
+// iteration): where to start searching, in which order to insert them, and their
+// triangulation, which the next call moves to the new sites and mends by edge flips where no
+// triangle turned over (a few flips where the sites moved little: a rebuild costs half an
+// evaluation at a thousand sites).
 struct CellHints {
   std::vector<int> triangle;  // per site, the parameter triangle that held it (or -1)
   std::vector<int> order;     // the sites in the spatial (Hilbert) order of the last call
+  SiteTriangulation triangulation;
 };
 
 // What computeCells fills beyond each cell's area, mass, centroid and energy.

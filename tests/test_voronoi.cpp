@@ -126,6 +126,57 @@ TEST(BoundedCells, HintsDoNotChangeABit) {
     }
 }
 
+// The cells and their Delaunay neighbours, bit for bit.
+void expectSameCells(const std::vector<BoundedCell>& a, const std::vector<BoundedCell>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].mass, b[i].mass) << "cell " << i;
+    EXPECT_EQ(a[i].energy, b[i].energy) << "cell " << i;
+    EXPECT_EQ(a[i].centroid, b[i].centroid) << "cell " << i;
+    EXPECT_EQ(a[i].voronoi, b[i].voronoi) << "cell " << i;
+    EXPECT_EQ(a[i].neighbours, b[i].neighbours) << "cell " << i;
+  }
+}
+
+TEST(BoundedCells, TheLastTriangulationMovedWithTheSitesGivesTheCellsOfANewOne) {
+  const Domain domain = unitSquare({1, 2, 3, 4});
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> shake(-0.01, 0.01), nudge(-1e-3, 1e-3), jump(-0.2, 0.2);
+  std::vector<Vec2> sites;  // a shaken 20 x 20 grid: spread out, as Lloyd's sites are
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) sites.emplace_back((i + 0.5) / 20 + shake(rng), (j + 0.5) / 20 + shake(rng));
+  CellHints hints;
+  computeCells(domain, sites, CellDetail::Geometry, &hints);
+  ASSERT_EQ(hints.triangulation.builds, 1);
+  // Small moves, as Lloyd's iterations make: some edges flip, no triangle turns over.
+  for (int step = 0; step < 3; ++step) {
+    for (Vec2& s : sites) s += Vec2(nudge(rng), nudge(rng));
+    expectSameCells(computeCells(domain, sites, CellDetail::Geometry, &hints),
+                    computeCells(domain, sites, CellDetail::Geometry));
+  }
+  EXPECT_EQ(hints.triangulation.builds, 1);
+  // Sites that jump past each other turn triangles over: it is built again.
+  for (Vec2& s : sites) s = (s + Vec2(jump(rng), jump(rng))).cwiseMax(0.0).cwiseMin(1.0);
+  expectSameCells(computeCells(domain, sites, CellDetail::Geometry, &hints),
+                  computeCells(domain, sites, CellDetail::Geometry));
+  EXPECT_EQ(hints.triangulation.builds, 2);
+}
+
+TEST(BoundedCells, CocircularSitesMovedTogetherKeepTheCellsOfANewTriangulation) {
+  // A square grid: every four sites of a square are cocircular, and which diagonal each square
+  // gets is CGAL's symbolic perturbation's choice; moved as a whole it must choose the same.
+  const Domain domain = unitSquare({1, 3, 2, 5});
+  std::vector<Vec2> sites;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) sites.emplace_back((i + 1) / 16.0, (j + 1) / 16.0);
+  CellHints hints;
+  computeCells(domain, sites, CellDetail::Geometry, &hints);
+  for (Vec2& s : sites) s += Vec2(1 / 64.0, 1 / 128.0);
+  expectSameCells(computeCells(domain, sites, CellDetail::Geometry, &hints),
+                  computeCells(domain, sites, CellDetail::Geometry));
+  EXPECT_EQ(hints.triangulation.builds, 1);
+}
+
 TEST(BoundedCells, CellsTileAFineDomainExactly) {
   // Cells much larger and much smaller than the parameter triangles, over a 12 x 12 grid.
   const Domain domain = test::gridDomain(12, [](const Vec3& p) { return 1.0 + 3.0 * p.x() * p.y(); });
