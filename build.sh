@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgtest-dev
-          libcli11-dev nlohmann-json3-dev
+          libcli11-dev nlohmann-json3-dev libtbb-dev
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools libglfw3-dev
           libimgui-dev libglm-dev libstb-dev fonts-dejavu-core xvfb xauth)
 # CGAL's sample meshes used by tests and benchmarks, from libcgal-demo: five disks, and closed

@@ -2,20 +2,31 @@
 #pragma once
 
 #include <cstddef>
-#include <thread>
-#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 
 namespace lloydscope {
 
-// fn(begin, end) over [0, count) split into `threads` contiguous parts, one per thread (the
-// first on the calling thread).
+// fn(begin, end) over [0, count) split into `threads` contiguous parts, run on TBB's worker
+// threads, which live as long as the program: starting threads for each call cost as much as
+// the work itself on a thousand Voronoi cells.
 template <class Fn>
 void parallelFor(size_t count, size_t threads, const Fn& fn) {
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t)
-    pool.emplace_back(fn, count * t / threads, count * (t + 1) / threads);
-  fn(0, count / threads);
-  for (std::thread& thread : pool) thread.join();
+  if (threads <= 1 || count <= 1) {
+    fn(0, count);
+    return;
+  }
+  auto parts = [&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, (count + threads - 1) / threads),
+                      [&](const tbb::blocked_range<size_t>& r) { fn(r.begin(), r.end()); },
+                      tbb::simple_partitioner());
+  };
+  if (static_cast<int>(threads) == tbb::this_task_arena::max_concurrency()) return parts();
+  tbb::task_arena arena(static_cast<int>(threads));
+  arena.execute(parts);
 }
 
 }  // namespace lloydscope
