@@ -166,6 +166,72 @@ TEST(Polish, ValenceFlipsMakeMoreVerticesRegular) {
   EXPECT_GE(b.minAngle, std::min(30.0, a.minAngle) - 1e-9);
 }
 
+// test::grid(n) with the diagonal of square (i, j) turned the other way: two of its corners
+// lose a neighbour, two gain one.
+Mesh gridWithOneDiagonalTurned(int n, int i, int j) {
+  Mesh m = test::grid(n);
+  auto at = [n](int x, int y) { return y * (n + 1) + x; };
+  const size_t f = 2 * (j * n + i);
+  m.triangles[f] = {at(i, j), at(i + 1, j), at(i, j + 1)};
+  m.triangles[f + 1] = {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+  return m;
+}
+
+TEST(Polish, LastValenceFlipsMakeVerticesRegularWhereNoAngleFallsUnder35) {
+  const double regular = measureQuality(test::grid(6)).irregularBoundaryAware;
+  Mesh m = gridWithOneDiagonalTurned(6, 2, 3);
+  ASSERT_NO_THROW(validateMesh(m, "grid"));
+  ASSERT_GT(measureQuality(m).irregularBoundaryAware, regular);
+  EXPECT_GE(flipToRegularity(m), 1);
+  EXPECT_NO_THROW(validateMesh(m, "flipped"));
+  EXPECT_EQ(measureQuality(m).irregularBoundaryAware, regular);
+  EXPECT_GE(measureQuality(m).minAngle, 45.0 - 1e-9);
+  // Squares stretched 3:1: turning the diagonal back would leave angles of 18 degrees.
+  Mesh stretched = gridWithOneDiagonalTurned(6, 2, 3);
+  for (Vec3& p : stretched.points) p.x() *= 3;
+  EXPECT_EQ(flipToRegularity(stretched), 0);
+}
+
+// Flips edge (a, b) of m: its two triangles (a, b, c) and (b, a, d) become (c, a, d), (d, b, c).
+void flip(Mesh& m, int a, int b) {
+  std::vector<size_t> faces;
+  for (size_t f = 0; f < m.triangles.size(); ++f)
+    if (std::count(m.triangles[f].begin(), m.triangles[f].end(), a) && std::count(m.triangles[f].begin(), m.triangles[f].end(), b))
+      faces.push_back(f);
+  ASSERT_EQ(faces.size(), 2u);
+  auto third = [&](size_t f) {
+    for (int v : m.triangles[f])
+      if (v != a && v != b) return v;
+    return -1;
+  };
+  // Which of the two has the edge as a -> b decides the orientation.
+  const Triangle& t = m.triangles[faces[0]];
+  const bool forward = (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
+  const int c = third(forward ? faces[0] : faces[1]), d = third(forward ? faces[1] : faces[0]);
+  m.triangles[faces[0]] = {c, a, d};
+  m.triangles[faces[1]] = {d, b, c};
+}
+
+TEST(Polish, LastValenceFlipsLeaveNoMoreIrregularVertices) {
+  // A 7 x 7 patch of equilateral triangles with two edges flipped: the one flip left that lowers
+  // the valences' squared deviation from regular (by 2) makes one more vertex irregular.
+  Mesh m;
+  auto at = [](int i, int j) { return 7 * i + j; };
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j) m.points.emplace_back(i + 0.5 * j, j * std::sqrt(3.0) / 2, 0.0);
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      m.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  flip(m, 8, 14);
+  flip(m, 9, 15);
+  ASSERT_NO_THROW(validateMesh(m, "patch"));
+  const double before = measureQuality(m).irregularBoundaryAware;
+  EXPECT_EQ(flipToRegularity(m, /*smallestAngle=*/0.0), 0);  // (its flips make 30 degrees)
+  EXPECT_EQ(measureQuality(m).irregularBoundaryAware, before);
+}
+
 TEST(Polish, AFlatTriangleLosesAVertex) {
   // A square whose inside vertex X lies almost on the segment A C: triangle (A, C, X) is flat.
   Mesh m;
