@@ -57,14 +57,17 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
       candidates.emplace_back(turn, i);
   }
   std::sort(candidates.rbegin(), candidates.rend());
-  // A corner closer than half a spacing to a kept one would make a tiny border edge (a chamfer
-  // of a square corner is two corners of 135 degrees): only the first of them is kept.
+  // A corner closer than kCornersApart spacings to a kept one would make a short border edge (a
+  // chamfer of a square corner is two corners of 135 degrees): only the first of them is kept.
+  // The triangle on a border edge half a spacing long has an angle of 27-28 degrees at its
+  // inside corner (CGAL's bear and bunny clipped in half, at 500-2000 vertices).
+  constexpr double kCornersApart = 0.7;
   std::vector<int> corners;
   for (const auto& [score, i] : candidates) {
     bool near = false;
     for (int c : corners) {
       const double apart = std::abs(position[i] - position[c]);
-      near = near || std::min(apart, position[n] - apart) < 0.5 * spacing;
+      near = near || std::min(apart, position[n] - apart) < kCornersApart * spacing;
     }
     if (score == kSeamNode) near = false;  // both copies of a seam need it
     if (!near) corners.push_back(i);

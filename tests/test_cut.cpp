@@ -262,13 +262,14 @@ TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
 
 // CGAL's mannequin is a disk (its neck is open), but its map to a disk shrinks the far side of
 // the head by 6 10^4: it is slit open like the closed samples (CutOptions::slitDisksAbove),
-// remeshed, and stitched back into one disk; made whole too, it comes out worse, and the slit
-// one is kept. --no-slit (slitDisks = false) keeps it whole.
+// remeshed, and stitched back into one disk; made whole too, it comes out worse at 500
+// vertices, and the slit one is kept (at 1000 the whole one meets all three bars that need no
+// reference, and is kept). --no-slit (slitDisks = false) keeps it whole.
 TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   const std::string path = test::cgalSample("mannequin-devil.off");
   SKIP_UNLESS_EXTRACTED(path);
   RemeshOptions o;
-  o.simplifyTo = 1000;
+  o.simplifyTo = 500;
   const RemeshResult r = remesh(readMesh(path).mesh, o, path);
   EXPECT_GT(r.cut.extremityCuts, 0);
   EXPECT_GT(r.cut.seamEdges, 0);
@@ -278,9 +279,9 @@ TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   EXPECT_GT(r.ms.compared, 0.0);
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   EXPECT_TRUE(analyzeTopology(r.output).isDisk()) << analyzeTopology(r.output).describe();
-  EXPECT_NEAR(r.output.vertexCount(), 1000, 20);
+  EXPECT_NEAR(r.output.vertexCount(), 500, 20);
   EXPECT_GT(r.after.avgMinAngle, 53.0);
-  EXPECT_LT(r.fidelity.hausdorffPercent, 2.6);  // CGAL's isotropic remeshing: 2.57 (docs/bench.md)
+  EXPECT_LT(r.fidelity.hausdorffPercent, 3.7);  // CGAL's isotropic remeshing: 3.75 (docs/bench.md)
 
   o.slitDisks = false;
   o.measureFidelity = false;

@@ -46,6 +46,26 @@ TEST(Sites, TheBorderSpacingCanBeGiven) {
   EXPECT_EQ(sites.fixed.size() + sites.movable.size(), 500u);
 }
 
+// A notch one grid cell wide in the square's top side: four corners 0.6 spacings apart. Only
+// the first of each close pair is a sample, so that no border edge is much shorter than the
+// spacing (a triangle on a border edge half a spacing long has an angle under 30 degrees).
+TEST(Sites, CornersCloserThanTheSpacingMakeNoShortBorderEdge) {
+  Mesh notched = test::grid(20);
+  notched.triangles.erase(notched.triangles.begin() + 2 * (19 * 20 + 10), notched.triangles.begin() + 2 * (19 * 20 + 11));
+  ASSERT_TRUE(analyzeTopology(notched).isDisk());
+  const Parameterization param = parameterize(notched, {ParamMethod::Lscm, Border::Circle, {}}, "notched");
+  const Domain domain(param.uv, notched.triangles, vertexDensity(notched.triangles, std::vector<double>(notched.vertexCount(), 1.0)));
+  SiteOptions o;
+  o.count = 150;
+  o.spacing = 0.05 / 0.6;
+  const InitialSites sites = initialSites(notched, param, domain, o);
+  ASSERT_GT(sites.fixedPoints.size(), 10u);
+  for (size_t i = 0; i < sites.fixedPoints.size(); ++i) {
+    const Vec3& next = sites.fixedPoints[(i + 1) % sites.fixedPoints.size()];
+    EXPECT_GT((next - sites.fixedPoints[i]).norm(), 0.66 * o.spacing) << "sample " << i;
+  }
+}
+
 // Each border sample's point is on a border edge of the mesh itself, interpolated in 3D: where
 // the sample of a neighbouring chart on the same edge is, whatever the map does there.
 TEST(Sites, FixedPointsLieOnTheBorderEdges) {
