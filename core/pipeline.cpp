@@ -178,10 +178,10 @@ Recording RemeshSession::header() const {
 
 namespace {
 // The last steps, on the whole result (stitched where it was cut): the snaps to the tips it cut
-// off; valence flips that keep every angle at 35 degrees or more (flipToRegularity: the
-// relaxation, the repair and the snaps move vertices after the polish's own valence flips and
-// leave some to make, 9 of the 83 irregular vertices of CGAL's mushroom at 500 vertices); then
-// the fit to the input.
+// off; valence flips that leave no angle of the two new triangles under 35 degrees
+// (flipToRegularity: the relaxation, the repair and the snaps move vertices after the polish's
+// own valence flips and leave some to make, 9 of the 83 irregular vertices of CGAL's mushroom
+// at 500 vertices); then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0 && o.snapToTips) done.snappedTips = snapToTips(result, original);
   if (o.polish > 0) flipToRegularity(result);
@@ -232,7 +232,8 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
   if (!cut_) {
-    lastSteps(output.mesh, original(), options_, result);
+    // A chart's last steps are the whole surface's, once its charts are stitched (remeshCharts).
+    if (!seamed()) lastSteps(output.mesh, original(), options_, result);
     return std::move(output.mesh);
   }
   // Both copies of every seam sample are at the same place: one vertex again.
@@ -419,7 +420,6 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
     o.sites.spacing = spacing;
     o.param.fallback = chart.uv;
     o.slitDisks = false;
-    o.snapToTips = o.fit = false;  // on the whole, stitched
     o.measureFidelity = false;
     RemeshResult r = remeshOnce(chart.mesh, o, chartName);
     append(pieces, r.output);

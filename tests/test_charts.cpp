@@ -157,6 +157,30 @@ TEST(Charts, ADiskNoConformalMapHoldsIsRemeshedChartByChartToo) {
 
 // Which of the two results remesh() keeps: the charts where they are rounder and not much
 // farther, or much rounder and not much farther, or much closer and nearly as round (the spool: 1.60% against 2.41%, 1.1 deg less).
+// A chart's border is all seams with its neighbours: its last steps (the snaps to tips, the
+// valence flips on the finished surface, the fit) wait until the charts are stitched, where
+// they see the whole surface and the seams are inside it.
+TEST(Charts, AChartsLastStepsWaitForTheStitch) {
+  const Mesh disk = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  RemeshOptions whole;
+  whole.sites.count = 300;
+  whole.measureFidelity = false;
+  RemeshOptions chart = whole;
+  chart.sites.onSeam = vertexEdges(disk).onBoundary;
+  chart.sites.seamNode.assign(disk.vertexCount(), false);
+  chart.sites.spacing = 0.08;
+  ASSERT_TRUE(chart.sites.sharesSeams());
+  auto finished = [&](const RemeshOptions& o) {
+    RemeshSession session(disk, o, "bumpy");
+    while (!session.finished()) session.step();
+    return session.finish();
+  };
+  EXPECT_GT(finished(whole).fit.moved, 0);
+  const RemeshResult r = finished(chart);
+  EXPECT_EQ(r.fit.moved, 0);
+  EXPECT_EQ(r.snappedTips, 0);
+}
+
 TEST(Charts, AreKeptWhereRounderOrCloser) {
   auto trial = [](double chartsAngle, double oneCutAngle, double chartsDistance, double oneCutDistance) {
     ChartTrial t;
