@@ -122,15 +122,20 @@ void integrateTriangle(const Vec2 (&p)[3], const double (&rho)[3], const Vec2& s
   sum.energy += area * energy;
 }
 
-// Four far dummy sites make every real cell bounded; their own cells are never used. Sites
-// lie in the unit square (the domain is scaled into it), so the dummies stay put from call
-// to call: the cells of the sites near them do not depend on where the others are.
-void insertDummies(Delaunay& dt, const std::vector<Vec2>& sites) {
+// The box of the sites and the unit square: where the dummy sites go around.
+std::pair<Vec2, Vec2> dummyBox(const std::vector<Vec2>& sites) {
   Vec2 lo(0, 0), hi(1, 1);
   for (const Vec2& s : sites) {
     lo = lo.cwiseMin(s);
     hi = hi.cwiseMax(s);
   }
+  return {lo, hi};
+}
+
+// Four far dummy sites around `box` make every real cell bounded; their own cells are never
+// used.
+void insertDummies(Delaunay& dt, const std::pair<Vec2, Vec2>& box) {
+  const auto& [lo, hi] = box;
   const Vec2 center = 0.5 * (lo + hi);
   const double far = 10.0 * std::max((hi - lo).maxCoeff(), 1.0);
   for (int dx : {-1, 1})
@@ -143,7 +148,7 @@ void insertDummies(Delaunay& dt, const std::vector<Vec2>& sites) {
 // the order used.
 void triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& order, Delaunay& dt,
                       std::vector<Delaunay::Vertex_handle>& vertexOf) {
-  insertDummies(dt, sites);
+  insertDummies(dt, dummyBox(sites));
   // Inserting in a spatial order, each point from the last one, is what makes this fast. Sites
   // that moved a little keep a good order: the Hilbert sort is done once, not every iteration.
   std::vector<Point2> points;
@@ -220,9 +225,12 @@ bool moveSites(Delaunay& dt, const std::vector<Delaunay::Vertex_handle>& vertexO
 struct SiteTriangulation::State {
   Delaunay dt;
   std::vector<Delaunay::Vertex_handle> vertexOf;  // per site
+  std::pair<Vec2, Vec2> box;  // dummyBox() of the sites it was built for
 };
 SiteTriangulation::SiteTriangulation() = default;
 SiteTriangulation::~SiteTriangulation() = default;
+SiteTriangulation::SiteTriangulation(SiteTriangulation&&) noexcept = default;
+SiteTriangulation& SiteTriangulation::operator=(SiteTriangulation&&) noexcept = default;
 SiteTriangulation::SiteTriangulation(const SiteTriangulation&) {}
 SiteTriangulation& SiteTriangulation::operator=(const SiteTriangulation&) {
   state.reset();
@@ -232,11 +240,15 @@ SiteTriangulation& SiteTriangulation::operator=(const SiteTriangulation&) {
 
 namespace {
 
-// The Delaunay triangulation of `sites`: the last call's moved and mended, or built anew.
+// The Delaunay triangulation of `sites`: the last call's moved and mended, or built anew. Only
+// where the dummy sites would go to the same places (sites in the unit square, as Lloyd's
+// always are): the cells next to them are then bit for bit those of a new triangulation.
 Delaunay& triangulate(const std::vector<Vec2>& sites, CellHints& hints) {
   auto& state = hints.triangulation.state;
-  if (state && moveSites(state->dt, state->vertexOf, sites)) return state->dt;
+  const std::pair<Vec2, Vec2> box = dummyBox(sites);
+  if (state && state->box == box && moveSites(state->dt, state->vertexOf, sites)) return state->dt;
   state = std::make_unique<SiteTriangulation::State>();
+  state->box = box;
   triangulateSites(sites, hints.order, state->dt, state->vertexOf);
   ++hints.triangulation.builds;
   return state->dt;

@@ -63,6 +63,8 @@ class SiteTriangulation {
  public:
   SiteTriangulation();
   ~SiteTriangulation();
+  SiteTriangulation(SiteTriangulation&&) noexcept;
+  SiteTriangulation& operator=(SiteTriangulation&&) noexcept;
   SiteTriangulation(const SiteTriangulation&);
   SiteTriangulation& operator=(const SiteTriangulation&);
   struct State;

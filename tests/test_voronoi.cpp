@@ -162,19 +162,40 @@ TEST(BoundedCells, TheLastTriangulationMovedWithTheSitesGivesTheCellsOfANewOne) 
   EXPECT_EQ(hints.triangulation.builds, 2);
 }
 
-TEST(BoundedCells, CocircularSitesMovedTogetherKeepTheCellsOfANewTriangulation) {
+TEST(BoundedCells, SitesMovedOntoACocircularGridGetTheCellsOfANewTriangulation) {
   // A square grid: every four sites of a square are cocircular, and which diagonal each square
-  // gets is CGAL's symbolic perturbation's choice; moved as a whole it must choose the same.
+  // gets is CGAL's symbolic perturbation's choice. Shaken, each square's diagonal is the
+  // shaking's; moved onto the grid, the flips must make the perturbation's choice. (The outer
+  // rows stay shaken: three sites of a straight outer row would make a flat triangle, and a
+  // new triangulation.)
   const Domain domain = unitSquare({1, 3, 2, 5});
-  std::vector<Vec2> sites;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> shake(-1e-3, 1e-3);
+  std::vector<Vec2> grid, shaken;
   for (int i = 0; i < 12; ++i)
-    for (int j = 0; j < 12; ++j) sites.emplace_back((i + 1) / 16.0, (j + 1) / 16.0);
+    for (int j = 0; j < 12; ++j) {
+      shaken.push_back(Vec2((i + 1) / 16.0, (j + 1) / 16.0) + Vec2(shake(rng), shake(rng)));
+      const bool outer = i == 0 || j == 0 || i == 11 || j == 11;
+      grid.push_back(outer ? shaken.back() : Vec2((i + 1) / 16.0, (j + 1) / 16.0));
+    }
+  CellHints hints;
+  computeCells(domain, shaken, CellDetail::Geometry, &hints);
+  expectSameCells(computeCells(domain, grid, CellDetail::Geometry, &hints),
+                  computeCells(domain, grid, CellDetail::Geometry));
+  EXPECT_EQ(hints.triangulation.builds, 1);
+}
+
+// Sites outside the unit square put the dummy sites elsewhere: the triangulation is built anew,
+// and the cells are still those of a new one.
+TEST(BoundedCells, SitesLeavingTheUnitSquareGetANewTriangulation) {
+  const Domain domain = unitSquare();
+  std::vector<Vec2> sites = {{0.2, 0.2}, {0.8, 0.3}, {0.4, 0.7}, {0.7, 0.8}};
   CellHints hints;
   computeCells(domain, sites, CellDetail::Geometry, &hints);
-  for (Vec2& s : sites) s += Vec2(1 / 64.0, 1 / 128.0);
+  sites[1] = {1.4, 0.3};
   expectSameCells(computeCells(domain, sites, CellDetail::Geometry, &hints),
                   computeCells(domain, sites, CellDetail::Geometry));
-  EXPECT_EQ(hints.triangulation.builds, 1);
+  EXPECT_EQ(hints.triangulation.builds, 2);
 }
 
 TEST(BoundedCells, CellsTileAFineDomainExactly) {
