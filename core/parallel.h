@@ -10,9 +10,12 @@
 
 namespace lloydscope {
 
-// fn(begin, end) over [0, count) split into `threads` contiguous parts, run on TBB's worker
-// threads, which live as long as the program: starting threads for each call cost as much as
-// the work itself on a thousand Voronoi cells.
+// The arena of `threads` worker threads, made once (thread-safe; arenas are shared).
+tbb::task_arena& taskArena(int threads);
+
+// fn(begin, end) over [0, count) split into parts of at most ceil(count / threads) items, run
+// on TBB's worker threads, which live as long as the program: starting threads for each call
+// cost as much as the work itself on a thousand Voronoi cells.
 template <class Fn>
 void parallelFor(size_t count, size_t threads, const Fn& fn) {
   if (threads <= 1 || count <= 1) {
@@ -25,8 +28,7 @@ void parallelFor(size_t count, size_t threads, const Fn& fn) {
                       tbb::simple_partitioner());
   };
   if (static_cast<int>(threads) == tbb::this_task_arena::max_concurrency()) return parts();
-  tbb::task_arena arena(static_cast<int>(threads));
-  arena.execute(parts);
+  taskArena(static_cast<int>(threads)).execute(parts);
 }
 
 }  // namespace lloydscope
