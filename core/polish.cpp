@@ -47,11 +47,14 @@ bool doubledWhenStitched(const Quad& q) { return q.doubledWhenStitched; }
 bool raisesSmallestAngle(const Quad& q) { return q.smallestAfter() > q.smallestBefore() + 1e-6; }
 
 // Valence flips (as in Botsch and Kobbelt's remesher) where no angle of the pair falls under
-// kValenceFlipAngle degrees (the relaxation and the repair after them lift it again).
-constexpr double kValenceFlipAngle = 25.0;
-bool raisesRegularity(const Quad& q) {
-  return q.irregularityAfter < q.irregularityBefore && q.smallestAfter() >= kValenceFlipAngle;
+// `degrees`.
+bool raisesRegularityAbove(const Quad& q, double degrees) {
+  return q.irregularityAfter < q.irregularityBefore && q.smallestAfter() >= degrees;
 }
+// In the polish, down to kValenceFlipAngle degrees: the relaxation and the repair after them lift
+// the angles again.
+constexpr double kValenceFlipAngle = 25.0;
+bool raisesRegularity(const Quad& q) { return raisesRegularityAbove(q, kValenceFlipAngle); }
 
 // Flips interior edges where `rule` asks and the flip neither duplicates an edge nor folds the
 // surface. On a cut surface (`stitched`: seamPartners() of the mesh), nor joins two border
@@ -149,10 +152,9 @@ int flipToDelaunay(Mesh& mesh) { return flipEdges(mesh, notDelaunay); }
 int flipToRegularity(Mesh& mesh, double smallestAngle) {
   // Nothing relaxes after these flips: what they leave is what issue 5 counts, irregular
   // vertices (a flip that takes a valence 8 to 7 and a 6 to 7 lowers the squared deviation but
-  // not their number) and the smallest angle.
+  // makes one more of them) and the smallest angle.
   return flipEdges(mesh, [smallestAngle](const Quad& q) {
-    return q.irregularityAfter < q.irregularityBefore && q.irregularAfter <= q.irregularBefore &&
-           q.smallestAfter() >= smallestAngle;
+    return raisesRegularityAbove(q, smallestAngle) && q.irregularAfter <= q.irregularBefore;
   });
 }
 

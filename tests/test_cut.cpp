@@ -263,8 +263,8 @@ TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
 // CGAL's mannequin is a disk (its neck is open), but its map to a disk shrinks the far side of
 // the head by 6 10^4: it is slit open like the closed samples (CutOptions::slitDisksAbove),
 // remeshed, and stitched back into one disk; made whole too, it comes out worse at 500
-// vertices, and the slit one is kept (at 1000 the whole one meets all three bars that need no
-// reference, and is kept). --no-slit (slitDisks = false) keeps it whole.
+// vertices, and the slit one is kept (at 1000, since border corners closer than 0.7 spacings
+// are no samples, the whole one wins). --no-slit (slitDisks = false) keeps it whole.
 TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   const std::string path = test::cgalSample("mannequin-devil.off");
   SKIP_UNLESS_EXTRACTED(path);

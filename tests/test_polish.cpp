@@ -186,10 +186,11 @@ TEST(Polish, LastValenceFlipsMakeVerticesRegularWhereNoAngleFallsUnder35) {
   EXPECT_NO_THROW(validateMesh(m, "flipped"));
   EXPECT_EQ(measureQuality(m).irregularBoundaryAware, regular);
   EXPECT_GE(measureQuality(m).minAngle, 45.0 - 1e-9);
-  // Squares stretched 3:1: turning the diagonal back would leave angles of 18 degrees.
+  // Squares stretched 3:2: turning the diagonal back would leave angles of 33.7 degrees.
   Mesh stretched = gridWithOneDiagonalTurned(6, 2, 3);
-  for (Vec3& p : stretched.points) p.x() *= 3;
+  for (Vec3& p : stretched.points) p.x() *= 1.5;
   EXPECT_EQ(flipToRegularity(stretched), 0);
+  EXPECT_GE(flipToRegularity(stretched, 30.0), 1);
 }
 
 // Flips edge (a, b) of m: its two triangles (a, b, c) and (b, a, d) become (c, a, d), (d, b, c).
