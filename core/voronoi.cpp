@@ -143,12 +143,13 @@ void insertDummies(Delaunay& dt, const std::pair<Vec2, Vec2>& box) {
       dt.insert(Point2(center.x() + dx * far, center.y() + dy * far))->info() = kDummy;
 }
 
-// Builds `dt`, empty, and `vertexOf`: each site's vertex (a site on top of an earlier one has
-// none: null). `order`: the sites in a spatial order (from a previous call), or empty; receives
-// the order used.
-void triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& order, Delaunay& dt,
+// Builds `dt`, empty, with its dummy sites around `box`, and `vertexOf`: each site's vertex (a
+// site on top of an earlier one has none: null). `order`: the sites in a spatial order (from a
+// previous call), or empty; receives the order used.
+void triangulateSites(const std::vector<Vec2>& sites, const std::pair<Vec2, Vec2>& box,
+                      std::vector<int>& order, Delaunay& dt,
                       std::vector<Delaunay::Vertex_handle>& vertexOf) {
-  insertDummies(dt, dummyBox(sites));
+  insertDummies(dt, box);
   // Inserting in a spatial order, each point from the last one, is what makes this fast. Sites
   // that moved a little keep a good order: the Hilbert sort is done once, not every iteration.
   std::vector<Point2> points;
@@ -162,26 +163,18 @@ void triangulateSites(const std::vector<Vec2>& sites, std::vector<int>& order, D
     CGAL::spatial_sort(sorted.begin(), sorted.end(), Traits(CGAL::make_property_map(points)));
     order.assign(sorted.begin(), sorted.end());
   }
-  vertexOf.assign(sites.size(), Delaunay::Vertex_handle());
   Delaunay::Face_handle near;
   for (int i : order) {
     const size_t before = dt.number_of_vertices();
     const Delaunay::Vertex_handle v = dt.insert(points[i], near);
     // Sites on top of each other share one vertex: the smallest index keeps it, whatever the
     // order of insertion.
-    if (dt.number_of_vertices() > before) {
-      v->info() = i;
-      vertexOf[i] = v;
-    } else {
-      vertexOf[i] = Delaunay::Vertex_handle();
-      if (i < v->info()) {
-        vertexOf[v->info()] = Delaunay::Vertex_handle();
-        v->info() = i;
-      }
-      vertexOf[v->info()] = v;
-    }
+    v->info() = dt.number_of_vertices() > before ? i : std::min(v->info(), i);
     near = v->face();
   }
+  vertexOf.assign(sites.size(), Delaunay::Vertex_handle());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    if (v->info() != kDummy) vertexOf[v->info()] = v;
 }
 
 // Moves each site's vertex of `dt` to its new place and flips edges until the triangulation
@@ -249,7 +242,7 @@ Delaunay& triangulate(const std::vector<Vec2>& sites, CellHints& hints) {
   if (state && state->box == box && moveSites(state->dt, state->vertexOf, sites)) return state->dt;
   state = std::make_unique<SiteTriangulation::State>();
   state->box = box;
-  triangulateSites(sites, hints.order, state->dt, state->vertexOf);
+  triangulateSites(sites, box, hints.order, state->dt, state->vertexOf);
   ++hints.triangulation.builds;
   return state->dt;
 }

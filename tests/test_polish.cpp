@@ -166,33 +166,6 @@ TEST(Polish, ValenceFlipsMakeMoreVerticesRegular) {
   EXPECT_GE(b.minAngle, std::min(30.0, a.minAngle) - 1e-9);
 }
 
-// test::grid(n) with the diagonal of square (i, j) turned the other way: two of its corners
-// lose a neighbour, two gain one.
-Mesh gridWithOneDiagonalTurned(int n, int i, int j) {
-  Mesh m = test::grid(n);
-  auto at = [n](int x, int y) { return y * (n + 1) + x; };
-  const size_t f = 2 * (j * n + i);
-  m.triangles[f] = {at(i, j), at(i + 1, j), at(i, j + 1)};
-  m.triangles[f + 1] = {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
-  return m;
-}
-
-TEST(Polish, LastValenceFlipsMakeVerticesRegularWhereNoAngleFallsUnder35) {
-  const double regular = measureQuality(test::grid(6)).irregularBoundaryAware;
-  Mesh m = gridWithOneDiagonalTurned(6, 2, 3);
-  ASSERT_NO_THROW(validateMesh(m, "grid"));
-  ASSERT_GT(measureQuality(m).irregularBoundaryAware, regular);
-  EXPECT_GE(flipToRegularity(m), 1);
-  EXPECT_NO_THROW(validateMesh(m, "flipped"));
-  EXPECT_EQ(measureQuality(m).irregularBoundaryAware, regular);
-  EXPECT_GE(measureQuality(m).minAngle, 45.0 - 1e-9);
-  // Squares stretched 3:2: turning the diagonal back would leave angles of 33.7 degrees.
-  Mesh stretched = gridWithOneDiagonalTurned(6, 2, 3);
-  for (Vec3& p : stretched.points) p.x() *= 1.5;
-  EXPECT_EQ(flipToRegularity(stretched), 0);
-  EXPECT_GE(flipToRegularity(stretched, 30.0), 1);
-}
-
 // Flips edge (a, b) of m: its two triangles (a, b, c) and (b, a, d) become (c, a, d), (d, b, c).
 void flip(Mesh& m, int a, int b) {
   std::vector<size_t> faces;
@@ -211,6 +184,31 @@ void flip(Mesh& m, int a, int b) {
   const int c = third(forward ? faces[0] : faces[1]), d = third(forward ? faces[1] : faces[0]);
   m.triangles[faces[0]] = {c, a, d};
   m.triangles[faces[1]] = {d, b, c};
+}
+
+// test::grid(n) with the diagonal of square (i, j) turned the other way: two of its corners
+// lose a neighbour, two gain one.
+Mesh gridWithOneDiagonalTurned(int n, int i, int j) {
+  Mesh m = test::grid(n);
+  auto at = [n](int x, int y) { return y * (n + 1) + x; };
+  flip(m, at(i, j), at(i + 1, j + 1));
+  return m;
+}
+
+TEST(Polish, LastValenceFlipsMakeVerticesRegularWhereNoAngleFallsUnder35) {
+  const double regular = measureQuality(test::grid(6)).irregularBoundaryAware;
+  Mesh m = gridWithOneDiagonalTurned(6, 2, 3);
+  ASSERT_NO_THROW(validateMesh(m, "grid"));
+  ASSERT_GT(measureQuality(m).irregularBoundaryAware, regular);
+  EXPECT_GE(flipToRegularity(m), 1);
+  EXPECT_NO_THROW(validateMesh(m, "flipped"));
+  EXPECT_EQ(measureQuality(m).irregularBoundaryAware, regular);
+  EXPECT_GE(measureQuality(m).minAngle, 45.0 - 1e-9);
+  // Squares stretched 3:2: turning the diagonal back would leave angles of 33.7 degrees.
+  Mesh stretched = gridWithOneDiagonalTurned(6, 2, 3);
+  for (Vec3& p : stretched.points) p.x() *= 1.5;
+  EXPECT_EQ(flipToRegularity(stretched), 0);
+  EXPECT_GE(flipToRegularity(stretched, 30.0), 1);
 }
 
 TEST(Polish, LastValenceFlipsLeaveNoMoreIrregularVertices) {
