@@ -183,7 +183,9 @@ namespace {
 // own valence flips and leave some to make, 9 of the 83 irregular vertices of CGAL's mushroom
 // at 500 vertices); then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
-  if (o.polish > 0 && o.snapToTips) done.snappedTips = snapToTips(result, original);
+  std::vector<int> tips;
+  if (o.polish > 0 && o.snapToTips) tips = snapToTips(result, original);
+  done.snappedTips = static_cast<int>(tips.size());
   if (o.polish > 0) flipToRegularity(result);
   if (!o.fit) return;
   FitOptions fit;

@@ -8,7 +8,10 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <numeric>
+#include <optional>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 
 namespace lloydscope {
@@ -25,7 +28,7 @@ double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
 // What a flip rule sees of edge (a, b) between triangles (a, b, c) and (b, a, d), which the
 // flip would turn into (c, a, d) and (d, b, c).
 struct Quad {
-  const Vec3 &a, &b, &c, &d;
+  Vec3 a, b, c, d;
   // How far the four vertices' valences are from regular (6 inside, 4 on the border), summed
   // as squares, before and after the flip; and how many of them are irregular.
   int irregularityBefore, irregularityAfter;
@@ -56,6 +59,141 @@ bool raisesRegularityAbove(const Quad& q, double degrees) {
 constexpr double kValenceFlipAngle = 25.0;
 bool raisesRegularity(const Quad& q) { return raisesRegularityAbove(q, kValenceFlipAngle); }
 
+// The state edge flips need: the face of each directed edge, the valences, and on a cut surface
+// (`stitched`: seamPartners() of the mesh) how many triangle sides each edge of the stitched
+// mesh has.
+class EdgeFlips {
+ public:
+  // Edge (a, b) of faces f1 = (a, b, c) and f2 = (b, a, d), which a flip turns into (c, a, d)
+  // and (d, b, c); `quad` is what a rule sees of it.
+  struct Candidate {
+    int a, b, c, d, f1, f2;
+    Triangle before1, before2;
+    Quad quad;
+  };
+
+  EdgeFlips(Mesh& mesh, const std::vector<int>* stitched) : mesh_(mesh), stitched_(stitched) {
+    if (stitched_)
+      for (const Triangle& t : mesh_.triangles)
+        for (int k = 0; k < 3; ++k) ++stitchedEdges_[stitchedEdge(t[k], t[(k + 1) % 3])];
+    faceOf_.reserve(3 * mesh_.triangles.size());
+    facesOf_.resize(mesh_.vertexCount());
+    for (int f = 0; f < mesh_.faceCount(); ++f) {
+      addFace(f);
+      for (int v : mesh_.triangles[f]) facesOf_[v].push_back(f);
+    }
+    VertexEdges edges = vertexEdges(mesh_);
+    valence_ = std::move(edges.valence);
+    border_ = std::move(edges.onBoundary);
+  }
+
+  // The flip of (a, b), if (a, b) is an inside edge whose flip would duplicate no edge; on a
+  // cut surface, join no two border vertices and make no edge that stitching would double (an
+  // inside vertex joined to both copies of a seam sample).
+  std::optional<Candidate> candidate(int a, int b) const {
+    const auto e1 = faceOf_.find(directed(a, b)), e2 = faceOf_.find(directed(b, a));
+    if (e1 == faceOf_.end() || e2 == faceOf_.end()) return std::nullopt;  // border, or gone
+    const int f1 = e1->second, f2 = e2->second;
+    const int c = third(f1, a, b), d = third(f2, a, b);
+    if (c < 0 || d < 0 || c == d || faceOf_.count(directed(c, d)) || faceOf_.count(directed(d, c)))
+      return std::nullopt;
+    if (stitched_ && ((border_[c] && border_[d]) || stitchedEdges_.count(stitchedEdge(c, d))))
+      return std::nullopt;
+    const Quad quad{mesh_.points[a], mesh_.points[b], mesh_.points[c], mesh_.points[d],
+                    deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0),
+                    deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1),
+                    irregular(a, 0) + irregular(b, 0) + irregular(c, 0) + irregular(d, 0),
+                    irregular(a, -1) + irregular(b, -1) + irregular(c, 1) + irregular(d, 1),
+                    stitched_ && stitchedEdges_.at(stitchedEdge(a, b)) > 2};
+    return Candidate{a, b, c, d, f1, f2, mesh_.triangles[f1], mesh_.triangles[f2], quad};
+  }
+
+  // Whether the two new triangles would face away from the two old ones (or be flat).
+  bool folds(const Candidate& k) const {
+    const Vec3 before = faceNormal(mesh_, k.before1).normalized() + faceNormal(mesh_, k.before2).normalized();
+    const Vec3 m1 = faceNormal(mesh_, {k.c, k.a, k.d}), m2 = faceNormal(mesh_, {k.d, k.b, k.c});
+    return m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() < 1e-14 || m2.norm() < 1e-14;
+  }
+
+  void flip(const Candidate& k) { replace(k, {k.c, k.a, k.d}, {k.d, k.b, k.c}, -1); }
+  void undo(const Candidate& k) { replace(k, k.before1, k.before2, +1); }
+
+  // How far v's valence, changed by `change`, is from regular (6 inside, 4 on the border).
+  int deviation(int v, int change) const {
+    const int off = valence_[v] + change - (border_[v] ? 4 : 6);
+    return off * off;
+  }
+  int irregular(int v, int change) const { return deviation(v, change) > 0 ? 1 : 0; }
+
+  const std::vector<int>& facesAt(int v) const { return facesOf_[v]; }
+
+  // The inside edges of the faces at `vertices`, each once as (a, b) with a < b.
+  std::vector<std::pair<int, int>> edgesAround(std::initializer_list<int> vertices) const {
+    std::vector<std::pair<int, int>> edges;
+    for (int v : vertices)
+      for (int f : facesOf_[v])
+        for (int k = 0; k < 3; ++k) {
+          const int a = mesh_.triangles[f][k], b = mesh_.triangles[f][(k + 1) % 3];
+          if (a < b && faceOf_.count(directed(b, a))) edges.emplace_back(a, b);
+        }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+  }
+
+ private:
+  long long directed(int a, int b) const { return static_cast<long long>(a) * mesh_.vertexCount() + b; }
+  std::pair<int, int> stitchedEdge(int a, int b) const {
+    const int sa = (*stitched_)[a], sb = (*stitched_)[b];
+    return {std::min(sa, sb), std::max(sa, sb)};
+  }
+  int third(int f, int a, int b) const {
+    for (int v : mesh_.triangles[f])
+      if (v != a && v != b) return v;
+    return -1;
+  }
+  void addFace(int f) {
+    for (int k = 0; k < 3; ++k)
+      faceOf_[directed(mesh_.triangles[f][k], mesh_.triangles[f][(k + 1) % 3])] = f;
+  }
+  void removeFace(int f) {
+    for (int k = 0; k < 3; ++k)
+      faceOf_.erase(directed(mesh_.triangles[f][k], mesh_.triangles[f][(k + 1) % 3]));
+  }
+  // Sets faces f1, f2 of `k` to t1, t2; `sign` -1 for the flip, +1 for its undoing.
+  void replace(const Candidate& k, const Triangle& t1, const Triangle& t2, int sign) {
+    removeFace(k.f1);
+    removeFace(k.f2);
+    mesh_.triangles[k.f1] = t1;
+    mesh_.triangles[k.f2] = t2;
+    addFace(k.f1);
+    addFace(k.f2);
+    valence_[k.a] += sign, valence_[k.b] += sign, valence_[k.c] -= sign, valence_[k.d] -= sign;
+    // a leaves f2 and b f1 (or come back); c joins f2 and d f1 (or leave).
+    for (auto [v, from, to] : {std::tuple{k.a, k.f2, -1}, std::tuple{k.b, k.f1, -1},
+                               std::tuple{k.c, -1, k.f2}, std::tuple{k.d, -1, k.f1}}) {
+      if (sign > 0) std::swap(from, to);
+      std::vector<int>& faces = facesOf_[v];
+      if (from >= 0) faces.erase(std::find(faces.begin(), faces.end(), from));
+      if (to >= 0) faces.push_back(to);
+    }
+    if (stitched_) {  // an inside edge is the side of two triangles
+      const auto gone = sign < 0 ? stitchedEdge(k.a, k.b) : stitchedEdge(k.c, k.d);
+      const auto made = sign < 0 ? stitchedEdge(k.c, k.d) : stitchedEdge(k.a, k.b);
+      if ((stitchedEdges_[gone] -= 2) <= 0) stitchedEdges_.erase(gone);
+      stitchedEdges_[made] += 2;
+    }
+  }
+
+  Mesh& mesh_;
+  const std::vector<int>* stitched_;
+  std::map<std::pair<int, int>, int> stitchedEdges_;  // each triangle side counted once
+  std::unordered_map<EdgeKey, int> faceOf_;            // directed edge a -> b to its face
+  std::vector<std::vector<int>> facesOf_;              // each vertex's faces
+  std::vector<int> valence_;
+  std::vector<bool> border_;
+};
+
 // Flips interior edges where `rule` asks and the flip neither duplicates an edge nor folds the
 // surface. On a cut surface (`stitched`: seamPartners() of the mesh), nor joins two border
 // vertices, nor makes an edge that stitching would double (an inside vertex joined to both
@@ -63,86 +201,95 @@ bool raisesRegularity(const Quad& q) { return raisesRegularityAbove(q, kValenceF
 // of flips.
 int flipEdges(Mesh& mesh, const FlipRule& rule, const std::vector<int>* stitched = nullptr,
               const std::vector<bool>* region = nullptr) {
-  const bool borderApart = stitched != nullptr;
-  std::map<std::pair<int, int>, int> stitchedEdges;  // each triangle side counted once
-  auto stitchedEdge = [&](int a, int b) {
-    const int sa = (*stitched)[a], sb = (*stitched)[b];
-    return std::make_pair(std::min(sa, sb), std::max(sa, sb));
-  };
-  if (borderApart) {
-    for (const Triangle& t : mesh.triangles)
-      for (int k = 0; k < 3; ++k)
-        ++stitchedEdges[stitchedEdge(t[k], t[(k + 1) % 3])];
-  }
-  const long long n = mesh.vertexCount();
-  auto directed = [n](int a, int b) { return a * n + b; };
-  std::unordered_map<EdgeKey, int> faceOf;  // each directed edge a -> b to the face that has it
-  faceOf.reserve(3 * mesh.triangles.size());
+  EdgeFlips flips(mesh, stitched);
   std::vector<std::pair<int, int>> work;  // edges to check, each direction once
-  for (int f = 0; f < mesh.faceCount(); ++f)
+  for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
-      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-      faceOf[directed(a, b)] = f;
+      const int a = t[k], b = t[(k + 1) % 3];
       if (a < b && (!region || (*region)[a] || (*region)[b])) work.emplace_back(a, b);
     }
-  auto third = [&](int f, int a, int b) {
-    for (int v : mesh.triangles[f])
-      if (v != a && v != b) return v;
-    return -1;
-  };
-  VertexEdges edges = vertexEdges(mesh);
-  std::vector<int>& valence = edges.valence;
-  const std::vector<bool>& border = edges.onBoundary;
-  int flips = 0;
+  int made = 0;
   // Flipping on a surface need not terminate as in the plane: bound the work.
   for (size_t budget = 20 * mesh.triangles.size() + 100; !work.empty() && budget > 0; --budget) {
     const auto [a, b] = work.back();
     work.pop_back();
-    const auto e1 = faceOf.find(directed(a, b)), e2 = faceOf.find(directed(b, a));
-    if (e1 == faceOf.end() || e2 == faceOf.end()) continue;  // a border edge, or gone
-    const int f1 = e1->second, f2 = e2->second;  // (a, b, c) and (b, a, d)
-    const int c = third(f1, a, b), d = third(f2, a, b);
-    if (c < 0 || d < 0 || c == d || faceOf.count(directed(c, d)) || faceOf.count(directed(d, c)))
-      continue;
-    if (borderApart && ((border[c] && border[d]) || stitchedEdges.count(stitchedEdge(c, d))))
-      continue;
-    auto deviation = [&](int v, int change) {
-      const int off = valence[v] + change - (border[v] ? 4 : 6);
-      return off * off;
-    };
-    auto irregular = [&](int v, int change) { return deviation(v, change) > 0 ? 1 : 0; };
-    const Quad quad{mesh.points[a], mesh.points[b], mesh.points[c], mesh.points[d],
-                    deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0),
-                    deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1),
-                    irregular(a, 0) + irregular(b, 0) + irregular(c, 0) + irregular(d, 0),
-                    irregular(a, -1) + irregular(b, -1) + irregular(c, 1) + irregular(d, 1),
-                    borderApart && stitchedEdges[stitchedEdge(a, b)] > 2};
-    if (!rule(quad)) continue;
-    const Triangle n1{c, a, d}, n2{d, b, c};  // keep both facing the same way
-    const Vec3 before = faceNormal(mesh, mesh.triangles[f1]).normalized() +
-                        faceNormal(mesh, mesh.triangles[f2]).normalized();
-    const Vec3 m1 = faceNormal(mesh, n1), m2 = faceNormal(mesh, n2);
-    if (m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() < 1e-14 || m2.norm() < 1e-14)
-      continue;
-    for (int f : {f1, f2})
-      for (int k = 0; k < 3; ++k)
-        faceOf.erase(directed(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]));
-    mesh.triangles[f1] = n1;
-    mesh.triangles[f2] = n2;
-    for (int f : {f1, f2})
-      for (int k = 0; k < 3; ++k)
-        faceOf[directed(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])] = f;
-    for (auto [u, v] : {std::pair{a, c}, std::pair{a, d}, std::pair{b, c}, std::pair{b, d}})
+    const std::optional<EdgeFlips::Candidate> k = flips.candidate(a, b);
+    if (!k || !rule(k->quad) || flips.folds(*k)) continue;
+    flips.flip(*k);
+    for (auto [u, v] : {std::pair{a, k->c}, std::pair{a, k->d}, std::pair{b, k->c}, std::pair{b, k->d}})
       if (!region || (*region)[u] || (*region)[v]) work.emplace_back(std::min(u, v), std::max(u, v));
-    --valence[a], --valence[b], ++valence[c], ++valence[d];
-    if (borderApart) {  // an inside edge is the side of two triangles
-      auto& old = stitchedEdges[stitchedEdge(a, b)];
-      if ((old -= 2) <= 0) stitchedEdges.erase(stitchedEdge(a, b));
-      stitchedEdges[stitchedEdge(c, d)] += 2;
-    }
-    ++flips;
+    ++made;
   }
-  return flips;
+  return made;
+}
+
+// A flip, or two where the first alone makes no vertex more regular: a 5-7 pair of valences
+// moved next to another defect, and the second flip cancelling them. `edges` in the order they
+// flip, each in the mesh as the flips before it left it.
+struct ValenceMove {
+  std::vector<std::pair<int, int>> edges;
+  std::pair<int, int> gain;  // (fewer irregular vertices, less squared deviation)
+};
+
+// The valence moves that leave fewer vertices irregular (or as many, nearer regular) whose
+// flips neither fold the surface nor make an angle under `degrees`: every such flip, and for
+// every other flip the best second flip next to it, if any; best first. With `near`, only those
+// whose first edge has an end in it. The mesh is left as it was.
+std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double degrees,
+                                      const std::vector<bool>* near = nullptr) {
+  auto allowed = [&](const EdgeFlips::Candidate& k) {
+    return k.quad.smallestAfter() >= degrees && !flips.folds(k);
+  };
+  auto change = [](const EdgeFlips::Candidate& k, int v) {
+    return (v == k.c || v == k.d) - (v == k.a || v == k.b);
+  };
+  std::vector<std::pair<int, int>> edges;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < t[(k + 1) % 3] && (!near || (*near)[t[k]] || (*near)[t[(k + 1) % 3]]))
+        edges.emplace_back(t[k], t[(k + 1) % 3]);
+  std::vector<ValenceMove> moves;
+  for (const auto& [a, b] : edges) {
+    const std::optional<EdgeFlips::Candidate> first = flips.candidate(a, b);
+    if (!first) continue;
+    const std::pair<int, int> alone{first->quad.irregularBefore - first->quad.irregularAfter,
+                                    first->quad.irregularityBefore - first->quad.irregularityAfter};
+    if (alone > std::pair{0, 0}) {
+      if (allowed(*first)) moves.push_back({{{a, b}}, alone});
+      continue;
+    }
+    if (first->quad.irregularBefore == 0) continue;  // it moves no defect
+    // The second flips that would make a gain, best first; the angles are checked last (the
+    // costly part, and seldom needed).
+    flips.flip(*first);
+    std::vector<std::pair<std::pair<int, int>, EdgeFlips::Candidate>> seconds;
+    for (const auto& [x, y] : flips.edgesAround({first->a, first->b, first->c, first->d})) {
+      if (std::minmax(x, y) == std::minmax(first->c, first->d)) continue;  // the way back
+      const std::optional<EdgeFlips::Candidate> second = flips.candidate(x, y);
+      if (!second) continue;
+      std::vector<int> touched = {first->a, first->b, first->c, first->d,
+                                  second->a, second->b, second->c, second->d};
+      std::sort(touched.begin(), touched.end());
+      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+      std::pair<int, int> gain{0, 0};
+      for (int v : touched) {
+        gain.first += flips.irregular(v, -change(*first, v)) - flips.irregular(v, change(*second, v));
+        gain.second += flips.deviation(v, -change(*first, v)) - flips.deviation(v, change(*second, v));
+      }
+      if (gain > std::pair{0, 0}) seconds.emplace_back(gain, *second);
+    }
+    std::stable_sort(seconds.begin(), seconds.end(),
+                     [](const auto& p, const auto& q) { return p.first > q.first; });
+    for (const auto& [gain, second] : seconds)
+      if (allowed(second)) {
+        if (allowed(*first)) moves.push_back({{{a, b}, {second.a, second.b}}, gain});
+        break;
+      }
+    flips.undo(*first);
+  }
+  std::stable_sort(moves.begin(), moves.end(),
+                   [](const ValenceMove& p, const ValenceMove& q) { return p.gain > q.gain; });
+  return moves;
 }
 
 }  // namespace
@@ -518,39 +665,43 @@ void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceD
 
 namespace {
 
-// Passes of relaxation of the `movable` inside vertices towards their ring's centroid within
-// their tangent plane, onto `surface` by closest point, unless that folds their ring or drops
-// its smallest angle under the lesser of what it was and 30 degrees; Delaunay flips after each
-// pass, then valence flips and a last relaxation. With `local`, flips only touch edges at the
-// movable vertices, and no valence flip is made (they may lower angles to 25 degrees).
+// A relaxation pass: each movable vertex that is not `fixed` (the border, at least) towards its
+// ring's centroid within its tangent plane, onto `surface` by closest point, unless that folds
+// its ring or drops its smallest angle under the lesser of what it was and 30 degrees (then half
+// the way, or a quarter).
+void relaxOnce(Mesh& m, const std::vector<bool>& movable, const std::vector<bool>& fixed,
+               const SurfaceProjection& surface) {
+  const std::vector<double> unit(m.vertexCount(), 1.0);
+  const Rings rings(m);
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (!movable[v] || fixed[v]) continue;
+    Vec3 up;
+    const Vec3 move = relaxationMove(m, rings, unit, v, PolishTarget::Centroid, up);
+    const double floor = std::min(30.0, ringSmallestAngle(m, rings, v, m.points[v], up));
+    for (double step = 1.0; step >= 0.25; step *= 0.5) {
+      const Vec3 to = surface.closestPoint(m.points[v] + step * move);
+      if (ringSmallestAngle(m, rings, v, to, up) >= floor) {
+        m.points[v] = to;
+        break;
+      }
+    }
+  }
+}
+
+// Passes of relaxOnce() of the `movable` vertices, Delaunay flips after each, then valence flips
+// and a last relaxation. With `local`, flips only touch edges at the movable vertices, and no
+// valence flip is made (they may lower angles to 25 degrees).
 void relaxOnSurface(Mesh& m, const std::vector<bool>& movable, const SurfaceProjection& surface,
                     int passes, bool local = false) {
   const std::vector<bool>* region = local ? &movable : nullptr;
   const std::vector<bool> border = vertexEdges(m).onBoundary;
-  const std::vector<double> unit(m.vertexCount(), 1.0);
-  auto relax = [&] {
-    const Rings rings(m);
-    for (int v = 0; v < m.vertexCount(); ++v) {
-      if (!movable[v] || border[v]) continue;
-      Vec3 up;
-      const Vec3 move = relaxationMove(m, rings, unit, v, PolishTarget::Centroid, up);
-      const double floor = std::min(30.0, ringSmallestAngle(m, rings, v, m.points[v], up));
-      for (double step = 1.0; step >= 0.25; step *= 0.5) {
-        const Vec3 to = surface.closestPoint(m.points[v] + step * move);
-        if (ringSmallestAngle(m, rings, v, to, up) >= floor) {
-          m.points[v] = to;
-          break;
-        }
-      }
-    }
-  };
   for (int pass = 0; pass < passes; ++pass) {
-    relax();
+    relaxOnce(m, movable, border, surface);
     flipEdges(m, notDelaunay, nullptr, region);
   }
   if (passes > 0 && !local) {
     flipEdges(m, raisesRegularity);
-    relax();
+    relaxOnce(m, movable, border, surface);
   }
 }
 
@@ -589,8 +740,8 @@ double meanEdgeLength(const Mesh& m) {
 
 }  // namespace
 
-int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
-  if (m.triangles.empty()) return 0;
+std::vector<int> snapToTips(Mesh& m, const Mesh& surface, int rounds) {
+  if (m.triangles.empty()) return {};
   const SurfaceProjection projection(surface);
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   const double spacing = meanEdgeLength(m);
@@ -602,7 +753,7 @@ int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
   // was refused is not tried again.
   constexpr int kTriesPerRound = 32;
   std::vector<bool> snapped(m.vertexCount(), false), refused(surface.vertexCount(), false);
-  int count = 0;
+  std::vector<int> snappedVertices;
   for (int round = 0; round < rounds; ++round) {
     const SurfaceProjection result(m);
     std::vector<std::pair<double, int>> far;  // squared distance, input vertex
@@ -649,11 +800,208 @@ int snapToTips(Mesh& m, const Mesh& surface, int rounds) {
         rings = Rings(m);
         snapped[v] = true;
         refused[i] = false;
-        ++count;
+        snappedVertices.push_back(v);
       }
     }
   }
-  return count;
+  return snappedVertices;
+}
+
+namespace {
+double smallestAngleOf(const Mesh& m, const std::vector<int>& faces) {
+  double smallest = 180;
+  for (int f : faces) {
+    const Triangle& t = m.triangles[f];
+    smallest = std::min(smallest, smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
+  }
+  return smallest;
+}
+
+double meanSmallestAngleOf(const Mesh& m, const std::vector<int>& faces) {
+  double sum = 0;
+  for (int f : faces) {
+    const Triangle& t = m.triangles[f];
+    sum += smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+  }
+  return faces.empty() ? 0 : sum / faces.size();
+}
+
+// The farthest from `surface` of the centroids of `faces` and of the midpoints of `edges`:
+// where a chord strays from a curved surface.
+double farthestChordPoint(const Mesh& m, const SurfaceProjection& surface, const std::vector<int>& faces,
+                          const std::vector<std::pair<int, int>>& edges = {}) {
+  double farthest = 0;
+  for (int f : faces) {
+    const Triangle& t = m.triangles[f];
+    farthest = std::max(farthest, surface.squaredDistance((m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3));
+  }
+  for (const auto& [a, b] : edges)
+    farthest = std::max(farthest, surface.squaredDistance((m.points[a] + m.points[b]) / 2));
+  return std::sqrt(farthest);
+}
+
+// The farthest of `points` from the triangles `faces` of `m`.
+double farthestFromFaces(const Mesh& m, const std::vector<int>& faces, const std::vector<Vec3>& points) {
+  if (points.empty()) return 0;
+  Mesh part;
+  part.points = m.points;
+  for (int f : faces) part.triangles.push_back(m.triangles[f]);
+  const SurfaceProjection projection(part);
+  double farthest = 0;
+  for (const Vec3& p : points) farthest = std::max(farthest, projection.squaredDistance(p));
+  return std::sqrt(farthest);
+}
+
+// Tries valence moves on a mesh, each relaxed around it and kept only where it is better there.
+class ValenceMover {
+ public:
+  ValenceMover(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees)
+      : m_(m), surface_(surface), projection_(surface), degrees_(degrees), fixed_(vertexEdges(m).onBoundary) {
+    for (int v : pinned) fixed_[v] = true;
+    std::vector<int> all(m.faceCount());
+    std::iota(all.begin(), all.end(), 0);
+    strayAnywhere_ = 0.5 * farthestChordPoint(m, projection_, all);
+    // The input's vertices by the result's triangle nearest them; flips keep each triangle's
+    // place in the list, so the triangles of a move still have theirs.
+    const SurfaceProjection result(m);
+    inputUnder_.resize(m.faceCount());
+    for (int i = 0; i < surface.vertexCount(); ++i) {
+      double squared;
+      inputUnder_[result.closestTriangle(surface.points[i], &squared)].push_back(i);
+      uncoveredAnywhere_ = std::max(uncoveredAnywhere_, 0.5 * std::sqrt(squared));
+    }
+  }
+
+  // Tries every move; then, in each further round, those next to the moves kept in the round
+  // before (a move may make another possible), until a round keeps none.
+  int run(int rounds) {
+    EdgeFlips flips(m_, nullptr);  // relaxing moves only points: it stays true to the mesh
+    int kept = 0;
+    std::vector<bool> near;  // the vertices next to the last round's moves
+    for (int round = 0; round < rounds; ++round) {
+      std::vector<bool> moved(m_.vertexCount(), false);
+      int keptNow = 0;
+      for (const ValenceMove& move : valenceMoves(flips, m_, degrees_, round > 0 ? &near : nullptr)) {
+        if (refused_.count(move.edges)) continue;
+        if (tryMove(flips, move, moved)) ++keptNow;
+        else refused_.insert(move.edges);
+      }
+      kept += keptNow;
+      if (keptNow == 0) break;
+      near = std::move(moved);
+    }
+    return kept;
+  }
+
+ private:
+  // What a move may not make worse around it.
+  struct Quality {
+    double smallest, meanSmallest;  // of the triangles' smallest angles, degrees
+    double stray;                   // farthestChordPoint
+    double uncovered;               // the farthest input vertex under the triangles from them
+  };
+
+  Quality measure(const std::vector<int>& faces, const std::vector<std::pair<int, int>>& edges,
+                  const std::vector<Vec3>& covered) const {
+    return {smallestAngleOf(m_, faces), meanSmallestAngleOf(m_, faces),
+            farthestChordPoint(m_, projection_, faces, edges), farthestFromFaces(m_, faces, covered)};
+  }
+
+  // Flips the move's edges (each checked again: the moves kept before it may have changed
+  // them) and relaxes the two rings around them; keeps that where it leaves fewer vertices
+  // irregular (or as many, nearer regular), no angle of the triangles around under the lesser
+  // of the smallest there before and 30 degrees, their mean no lower, and the chords and the
+  // input's vertices under them no farther apart than before (or than half the farthest
+  // anywhere). Else puts everything back.
+  bool tryMove(EdgeFlips& flips, const ValenceMove& move, std::vector<bool>& moved) {
+    std::vector<EdgeFlips::Candidate> made;
+    std::map<int, int> change;  // valence change of each vertex the flips touch
+    auto undo = [&] {
+      for (auto it = made.rbegin(); it != made.rend(); ++it) flips.undo(*it);
+    };
+    for (const auto& [a, b] : move.edges) {
+      const std::optional<EdgeFlips::Candidate> k = flips.candidate(a, b);
+      if (!k || k->quad.smallestAfter() < degrees_ || flips.folds(*k)) {
+        undo();
+        return false;
+      }
+      flips.flip(*k);
+      made.push_back(*k);
+      for (int v : {k->a, k->b}) --change[v];
+      for (int v : {k->c, k->d}) ++change[v];
+    }
+    std::pair<int, int> gain{0, 0};
+    for (const auto& [v, by] : change) {
+      gain.first += flips.irregular(v, -by) - flips.irregular(v, 0);
+      gain.second += flips.deviation(v, -by) - flips.deviation(v, 0);
+    }
+    if (gain <= std::pair{0, 0}) {
+      undo();
+      return false;
+    }
+    std::vector<int> touched;
+    for (const auto& [v, by] : change) touched.push_back(v);
+    const std::vector<int> movable = grow(flips, grow(flips, touched));
+    std::vector<int> faces;  // the triangles that change: at a movable vertex
+    for (int v : movable) faces.insert(faces.end(), flips.facesAt(v).begin(), flips.facesAt(v).end());
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::vector<Vec3> covered;
+    for (int f : faces)
+      for (int i : inputUnder_[f]) covered.push_back(surface_.points[i]);
+    std::vector<std::pair<int, int>> oldEdges, newEdges;
+    for (const EdgeFlips::Candidate& k : made) {
+      oldEdges.emplace_back(k.a, k.b);
+      newEdges.emplace_back(k.c, k.d);
+    }
+    undo();
+    const Quality before = measure(faces, oldEdges, covered);
+    for (const EdgeFlips::Candidate& k : made) flips.flip(k);
+    std::vector<Vec3> was;
+    std::vector<bool> mask(m_.vertexCount(), false);
+    for (int v : movable) {
+      was.push_back(m_.points[v]);
+      mask[v] = true;
+    }
+    constexpr int kPasses = 3;
+    for (int pass = 0; pass < kPasses; ++pass) relaxOnce(m_, mask, fixed_, projection_);
+    const Quality after = measure(faces, newEdges, covered);
+    if (after.smallest >= std::min(30.0, before.smallest) && after.meanSmallest >= before.meanSmallest &&
+        (after.stray <= strayAnywhere_ || after.stray <= before.stray) &&
+        (after.uncovered <= uncoveredAnywhere_ || after.uncovered <= before.uncovered)) {
+      for (int v : movable) moved[v] = true;
+      return true;
+    }
+    for (size_t i = 0; i < movable.size(); ++i) m_.points[movable[i]] = was[i];
+    undo();
+    return false;
+  }
+
+  // `vertices` and their neighbours.
+  std::vector<int> grow(const EdgeFlips& flips, std::vector<int> vertices) const {
+    for (size_t i = 0, n = vertices.size(); i < n; ++i)
+      for (int f : flips.facesAt(vertices[i]))
+        vertices.insert(vertices.end(), m_.triangles[f].begin(), m_.triangles[f].end());
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+  }
+
+  Mesh& m_;
+  const Mesh& surface_;
+  const SurfaceProjection projection_;
+  const double degrees_;
+  std::vector<bool> fixed_;  // the border, and the pinned vertices
+  double strayAnywhere_ = 0, uncoveredAnywhere_ = 0;
+  std::vector<std::vector<int>> inputUnder_;
+  std::set<std::vector<std::pair<int, int>>> refused_;
+};
+
+}  // namespace
+
+int relaxedValenceMoves(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees) {
+  if (m.triangles.empty()) return 0;
+  return ValenceMover(m, surface, pinned, degrees).run(3);
 }
 
 const char* toString(PolishTarget target) {

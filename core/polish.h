@@ -67,9 +67,8 @@ void polishSeams(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh
 // `surface` (as polishSeams does, flipping only there). A snap is made if it turns none of the
 // vertex's triangles over, and kept if the smallest angle of the triangles around stays at the
 // lesser of the mesh's smallest angle and 30 degrees, or, whatever the angles, if the tip was
-// more than an edge length away. A refused tip is not tried again. Returns how many vertices
-// were snapped.
-int snapToTips(Mesh& result, const Mesh& surface, int rounds = 3);
+// more than an edge length away. A refused tip is not tried again. Returns the vertices snapped.
+std::vector<int> snapToTips(Mesh& result, const Mesh& surface, int rounds = 3);
 
 // Whether moving v to `to` turns one of its triangles over (its normal by more than 90
 // degrees). A spike's triangles turn steeply from the ring's normal: only this is ruled out.
@@ -90,6 +89,20 @@ int flipToDelaunay(Mesh& mesh);
 // down to 30-33.
 constexpr double kLastValenceFlipAngle = 35.0;
 int flipToRegularity(Mesh& mesh, double smallestAngle = kLastValenceFlipAngle);
+
+// Valence moves on a finished surface that flipToRegularity() cannot make: one flip, or two
+// where the first alone gains nothing (it moves a 5-7 pair of valences next to another defect,
+// the second cancels them). Each is tried with the two rings around it relaxed on `surface` (by
+// closest point; the border and the `pinned` vertices stay), its flips making angles down to
+// `degrees`. It is kept where it leaves fewer vertices irregular (or as many, nearer regular)
+// and the triangles around it end with no angle under the lesser of their smallest before and
+// 30 degrees, their smallest angles' mean no lower, and neither their chords nor the input's
+// vertices under them farther apart than before (or than half the farthest anywhere): a flip
+// across a ridge cuts the ridge off. Returns how many moves were kept.
+// 20 degrees: on 36 disks (as for kLastValenceFlipAngle) 15, 20 and 25 met as many of issue 5's
+// bars, at 1 and at 0.75 times their sizes.
+int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
+                        double degrees = 20.0);
 
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
 // triangle's shortest edge it can go (keeping the mesh manifold and unfolded); the merged

@@ -56,8 +56,9 @@ std::vector<Vec3> SurfaceProjection::closestPoints(const std::vector<Vec3>& poin
   return closest;
 }
 
-int SurfaceProjection::closestTriangle(const Vec3& p) const {
+int SurfaceProjection::closestTriangle(const Vec3& p, double* squaredDistance) const {
   const auto closest = tree_->tree.closest_point_and_primitive(point(p));
+  if (squaredDistance) *squaredDistance = CGAL::squared_distance(closest.first, point(p));
   return static_cast<int>(closest.second - tree_->triangles.cbegin());
 }
 

@@ -17,8 +17,9 @@ class SurfaceProjection {
   Vec3 closestPoint(const Vec3& p) const;
   // closestPoint of each, split over `threads` threads (0: all cores).
   std::vector<Vec3> closestPoints(const std::vector<Vec3>& points, int threads = 0) const;
-  // The index of the surface's triangle that holds closestPoint(p).
-  int closestTriangle(const Vec3& p) const;
+  // The index of the surface's triangle that holds closestPoint(p); with `squaredDistance`, also
+  // the squared distance to it.
+  int closestTriangle(const Vec3& p, double* squaredDistance = nullptr) const;
   double squaredDistance(const Vec3& p) const;  // thread-safe, as closestPoint
 
  private:
