@@ -181,12 +181,15 @@ namespace {
 // off; valence flips that leave no angle of the two new triangles under 35 degrees
 // (flipToRegularity: the relaxation, the repair and the snaps move vertices after the polish's
 // own valence flips and leave some to make, 9 of the 83 irregular vertices of CGAL's mushroom
-// at 500 vertices); then the fit to the input.
+// at 500 vertices); the valence moves that need a relaxation after them, or two flips
+// (relaxedValenceMoves: on 36 disks, mean irregularity 15.5 -> 13.8%, smallest angles and their
+// mean up too); then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
   std::vector<int> tips;
   if (o.polish > 0 && o.snapToTips) tips = snapToTips(result, original);
   done.snappedTips = static_cast<int>(tips.size());
   if (o.polish > 0) flipToRegularity(result);
+  if (o.polish > 0) relaxedValenceMoves(result, original, tips);
   if (!o.fit) return;
   FitOptions fit;
   fit.threads = o.lloyd.threads;
