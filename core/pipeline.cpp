@@ -182,7 +182,7 @@ namespace {
 // (flipToRegularity: the relaxation, the repair and the snaps move vertices after the polish's
 // own valence flips and leave some to make, 9 of the 83 irregular vertices of CGAL's mushroom
 // at 500 vertices); the valence moves that need a relaxation after them, or two flips
-// (relaxedValenceMoves: on 36 disks, mean irregularity 15.5 -> 13.8%, smallest angles and their
+// (relaxedValenceMoves: on 36 disks, mean irregularity 15.5 -> 13.3%, smallest angles and their
 // mean up too); then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
   std::vector<int> tips;

@@ -910,9 +910,12 @@ class ValenceMover {
   // Flips the move's edges (each checked again: the moves kept before it may have changed
   // them) and relaxes the two rings around them; keeps that where it leaves fewer vertices
   // irregular (or as many, nearer regular), no angle of the triangles around under the lesser
-  // of the smallest there before and 30 degrees, their mean no lower, and the chords and the
-  // input's vertices under them no farther apart than before (or than half the farthest
-  // anywhere). Else puts everything back.
+  // of the smallest there before and 30 degrees, their mean lower by kMeanDrop at most, and the
+  // chords and the input's vertices under them no farther apart than before (or than half the
+  // farthest anywhere). Else puts everything back.
+  // 0.25 degrees: on the 36 disks, 22 met all of issue 5's bars (21 with 0; 18 and 16 at 0.75
+  // times their sizes), mean irregularity 13.3% (13.8), mean smallest angle 29.6 deg (29.9).
+  static constexpr double kMeanDrop = 0.25;
   bool tryMove(EdgeFlips& flips, const ValenceMove& move, std::vector<bool>& moved) {
     std::vector<EdgeFlips::Candidate> made;
     std::map<int, int> change;  // valence change of each vertex the flips touch
@@ -966,7 +969,7 @@ class ValenceMover {
     constexpr int kPasses = 3;
     for (int pass = 0; pass < kPasses; ++pass) relaxOnce(m_, mask, fixed_, projection_);
     const Quality after = measure(faces, newEdges, covered);
-    if (after.smallest >= std::min(30.0, before.smallest) && after.meanSmallest >= before.meanSmallest &&
+    if (after.smallest >= std::min(30.0, before.smallest) && after.meanSmallest >= before.meanSmallest - kMeanDrop &&
         (after.stray <= strayAnywhere_ || after.stray <= before.stray) &&
         (after.uncovered <= uncoveredAnywhere_ || after.uncovered <= before.uncovered)) {
       for (int v : movable) moved[v] = true;

@@ -96,9 +96,9 @@ int flipToRegularity(Mesh& mesh, double smallestAngle = kLastValenceFlipAngle);
 // closest point; the border and the `pinned` vertices stay), its flips making angles down to
 // `degrees`. It is kept where it leaves fewer vertices irregular (or as many, nearer regular)
 // and the triangles around it end with no angle under the lesser of their smallest before and
-// 30 degrees, their smallest angles' mean no lower, and neither their chords nor the input's
-// vertices under them farther apart than before (or than half the farthest anywhere): a flip
-// across a ridge cuts the ridge off. Returns how many moves were kept.
+// 30 degrees, their smallest angles' mean lower by a quarter of a degree at most, and neither
+// their chords nor the input's vertices under them farther apart than before (or than half the
+// farthest anywhere): a flip across a ridge cuts the ridge off. Returns how many were kept.
 // 20 degrees: on 36 disks (as for kLastValenceFlipAngle) 15, 20 and 25 met as many of issue 5's
 // bars, at 1 and at 0.75 times their sizes.
 int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
