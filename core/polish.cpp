@@ -127,14 +127,15 @@ class EdgeFlips {
 
   const std::vector<int>& facesAt(int v) const { return facesOf_[v]; }
 
-  // The inside edges of the faces at `vertices`, each once as (a, b) with a < b.
+  // The inside edges of the faces at `vertices`, each once as (a, b) with a < b: those at the
+  // vertices and those of the rim, whose other face is not in the list.
   std::vector<std::pair<int, int>> edgesAround(std::initializer_list<int> vertices) const {
     std::vector<std::pair<int, int>> edges;
     for (int v : vertices)
       for (int f : facesOf_[v])
         for (int k = 0; k < 3; ++k) {
           const int a = mesh_.triangles[f][k], b = mesh_.triangles[f][(k + 1) % 3];
-          if (a < b && faceOf_.count(directed(b, a))) edges.emplace_back(a, b);
+          if (faceOf_.count(directed(b, a))) edges.emplace_back(std::min(a, b), std::max(a, b));
         }
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -261,7 +262,7 @@ std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double
     // A pair starts where the first flip moves a 5-7 pair of valences: its quad holds two
     // irregular vertices (starting from one as well made no difference on 36 disks, and
     // doubled the search).
-    if (first->quad.irregularBefore < 2) continue;
+    if (first->quad.irregularBefore < 2 || !allowed(*first)) continue;
     // The second flips that would make a gain, best first; the angles are checked last (the
     // costly part, and seldom needed).
     flips.flip(*first);
@@ -285,7 +286,7 @@ std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double
                      [](const auto& p, const auto& q) { return p.first > q.first; });
     for (const auto& [gain, second] : seconds)
       if (allowed(second)) {
-        if (allowed(*first)) moves.push_back({{{a, b}, {second.a, second.b}}, gain});
+        moves.push_back({{{a, b}, {second.a, second.b}}, gain});
         break;
       }
     flips.undo(*first);
@@ -859,7 +860,8 @@ double farthestFromFaces(const Mesh& m, const std::vector<int>& faces, const std
 class ValenceMover {
  public:
   ValenceMover(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees)
-      : m_(m), surface_(surface), projection_(surface), degrees_(degrees), fixed_(vertexEdges(m).onBoundary) {
+      : m_(m), surface_(surface), projection_(surface), degrees_(degrees),
+        same_(1e-12 * boundingBoxDiagonal(surface)), fixed_(vertexEdges(m).onBoundary) {
     for (int v : pinned) fixed_[v] = true;
     std::vector<int> all(m.faceCount());
     std::iota(all.begin(), all.end(), 0);
@@ -891,6 +893,13 @@ class ValenceMover {
       }
       kept += keptNow;
       if (keptNow == 0) break;
+      // A move refused next to one kept since may now do: it is tried again.
+      for (auto it = refused_.begin(); it != refused_.end();) {
+        const bool nearKept = std::any_of(it->begin(), it->end(), [&](const std::pair<int, int>& e) {
+          return moved[e.first] || moved[e.second];
+        });
+        it = nearKept ? refused_.erase(it) : std::next(it);
+      }
       near = std::move(moved);
     }
     return kept;
@@ -904,7 +913,7 @@ class ValenceMover {
   // chords and the input's vertices under them no farther apart than before (or than half the
   // farthest anywhere). Else puts everything back.
   // 0.25 degrees: on the 36 disks, 22 met all of issue 5's bars (21 with 0; 18 and 16 at 0.75
-  // times their sizes), mean irregularity 13.3% (13.8), mean smallest angle 29.6 deg (29.9).
+  // times their sizes), mean irregularity 13.3% (13.8), when it was chosen.
   static constexpr double kMeanDrop = 0.25;
   bool tryMove(EdgeFlips& flips, const ValenceMove& move, std::vector<bool>& moved) {
     std::vector<EdgeFlips::Candidate> made;
@@ -976,13 +985,13 @@ class ValenceMover {
     }
     const double stray = farthestChordPoint(m_, projection_, faces, newEdges);
     const double uncovered = farthestFromFaces(m_, faces, covered);
-    const bool strayOver = stray > strayAnywhere_, uncoveredOver = uncovered > uncoveredAnywhere_;
+    const bool strayOver = stray > strayAnywhere_ + same_, uncoveredOver = uncovered > uncoveredAnywhere_ + same_;
     if (strayOver || uncoveredOver) {
       for (int v : movable) relaxed.push_back(m_.points[v]);
       place(was);
       undo();
-      const bool worse = (strayOver && stray > farthestChordPoint(m_, projection_, faces, oldEdges)) ||
-                         (uncoveredOver && uncovered > farthestFromFaces(m_, faces, covered));
+      const bool worse = (strayOver && stray > farthestChordPoint(m_, projection_, faces, oldEdges) + same_) ||
+                         (uncoveredOver && uncovered > farthestFromFaces(m_, faces, covered) + same_);
       if (worse) return false;
       redo();
       place(relaxed);
@@ -1005,6 +1014,7 @@ class ValenceMover {
   const Mesh& surface_;
   const SurfaceProjection projection_;
   const double degrees_;
+  const double same_;        // distances closer than this are the same (rounding)
   std::vector<bool> fixed_;  // the border, and the pinned vertices
   double strayAnywhere_ = 0, uncoveredAnywhere_ = 0;
   std::vector<std::vector<int>> inputUnder_;
@@ -1014,7 +1024,7 @@ class ValenceMover {
 }  // namespace
 
 int relaxedValenceMoves(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees) {
-  if (m.triangles.empty()) return 0;
+  if (m.triangles.empty() || surface.triangles.empty()) return 0;
   return ValenceMover(m, surface, pinned, degrees).run(3);
 }
 
