@@ -185,11 +185,12 @@ namespace {
 // (relaxedValenceMoves: on 36 disks, mean irregularity 15.5 -> 13.3%, smallest angles and their
 // mean up too); then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
-  std::vector<int> tips;
-  if (o.polish > 0 && o.snapToTips) tips = snapToTips(result, original);
-  done.snappedTips = static_cast<int>(tips.size());
-  if (o.polish > 0) flipToRegularity(result);
-  if (o.polish > 0) relaxedValenceMoves(result, original, tips);
+  if (o.polish > 0) {
+    const std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
+    done.snappedTips = static_cast<int>(tips.size());
+    flipToRegularity(result);
+    relaxedValenceMoves(result, original, tips);
+  }
   if (!o.fit) return;
   FitOptions fit;
   fit.threads = o.lloyd.threads;

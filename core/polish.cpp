@@ -115,6 +115,12 @@ class EdgeFlips {
     return m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() < 1e-14 || m2.norm() < 1e-14;
   }
 
+  // Whether the flip keeps every angle of the two new triangles at `degrees` or more and does
+  // not fold the surface.
+  bool keeps(const Candidate& k, double degrees) const {
+    return k.quad.smallestAfter() >= degrees && !folds(k);
+  }
+
   void flip(const Candidate& k) { replace(k, {k.c, k.a, k.d}, {k.d, k.b, k.c}, -1); }
   void undo(const Candidate& k) { replace(k, k.before1, k.before2, +1); }
 
@@ -238,9 +244,6 @@ struct ValenceMove {
 // whose first edge has an end in it. The mesh is left as it was.
 std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double degrees,
                                       const std::vector<bool>* near = nullptr) {
-  auto allowed = [&](const EdgeFlips::Candidate& k) {
-    return k.quad.smallestAfter() >= degrees && !flips.folds(k);
-  };
   auto change = [](const EdgeFlips::Candidate& k, int v) {
     return (v == k.c || v == k.d) - (v == k.a || v == k.b);
   };
@@ -256,13 +259,13 @@ std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double
     const std::pair<int, int> alone{first->quad.irregularBefore - first->quad.irregularAfter,
                                     first->quad.irregularityBefore - first->quad.irregularityAfter};
     if (alone > std::pair{0, 0}) {
-      if (allowed(*first)) moves.push_back({{{a, b}}, alone});
+      if (flips.keeps(*first, degrees)) moves.push_back({{{a, b}}, alone});
       continue;
     }
     // A pair starts where the first flip moves a 5-7 pair of valences: its quad holds two
     // irregular vertices (starting from one as well made no difference on 36 disks, and
     // doubled the search).
-    if (first->quad.irregularBefore < 2 || !allowed(*first)) continue;
+    if (first->quad.irregularBefore < 2 || !flips.keeps(*first, degrees)) continue;
     // The second flips that would make a gain, best first; the angles are checked last (the
     // costly part, and seldom needed).
     flips.flip(*first);
@@ -285,7 +288,7 @@ std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double
     std::stable_sort(seconds.begin(), seconds.end(),
                      [](const auto& p, const auto& q) { return p.first > q.first; });
     for (const auto& [gain, second] : seconds)
-      if (allowed(second)) {
+      if (flips.keeps(second, degrees)) {
         moves.push_back({{{a, b}, {second.a, second.b}}, gain});
         break;
       }
@@ -812,22 +815,20 @@ std::vector<int> snapToTips(Mesh& m, const Mesh& surface, int rounds) {
 }
 
 namespace {
-double smallestAngleOf(const Mesh& m, const std::vector<int>& faces) {
-  double smallest = 180;
+// The smallest of the smallest angles of `faces`, and their mean, degrees.
+struct SmallestAngles {
+  double smallest = 180, mean = 0;
+};
+SmallestAngles smallestAnglesOf(const Mesh& m, const std::vector<int>& faces) {
+  SmallestAngles angles;
   for (int f : faces) {
     const Triangle& t = m.triangles[f];
-    smallest = std::min(smallest, smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
+    const double a = smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+    angles.smallest = std::min(angles.smallest, a);
+    angles.mean += a;
   }
-  return smallest;
-}
-
-double meanSmallestAngleOf(const Mesh& m, const std::vector<int>& faces) {
-  double sum = 0;
-  for (int f : faces) {
-    const Triangle& t = m.triangles[f];
-    sum += smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
-  }
-  return faces.empty() ? 0 : sum / faces.size();
+  if (!faces.empty()) angles.mean /= faces.size();
+  return angles;
 }
 
 // The farthest from `surface` of the centroids of `faces` and of the midpoints of `edges`:
@@ -926,7 +927,7 @@ class ValenceMover {
     };
     for (const auto& [a, b] : move.edges) {
       const std::optional<EdgeFlips::Candidate> k = flips.candidate(a, b);
-      if (!k || k->quad.smallestAfter() < degrees_ || flips.folds(*k)) {
+      if (!k || !flips.keeps(*k, degrees_)) {
         undo();
         return false;
       }
@@ -958,7 +959,7 @@ class ValenceMover {
     };
 
     undo();
-    const double smallestBefore = smallestAngleOf(m_, faces), meanBefore = meanSmallestAngleOf(m_, faces);
+    const SmallestAngles before = smallestAnglesOf(m_, faces);
     redo();
     std::vector<bool> mask(m_.vertexCount(), false);
     for (int v : movable) mask[v] = true;
@@ -969,8 +970,8 @@ class ValenceMover {
       undo();
       return false;
     };
-    if (smallestAngleOf(m_, faces) < std::min(30.0, smallestBefore) ||
-        meanSmallestAngleOf(m_, faces) < meanBefore - kMeanDrop)
+    const SmallestAngles after = smallestAnglesOf(m_, faces);
+    if (after.smallest < std::min(30.0, before.smallest) || after.mean < before.mean - kMeanDrop)
       return refuse();
 
     // The distances, the costly part, are measured before the move only where they went
