@@ -183,13 +183,16 @@ namespace {
 // own valence flips and leave some to make, 9 of the 83 irregular vertices of CGAL's mushroom
 // at 500 vertices); the valence moves that need a relaxation after them, or two flips
 // (relaxedValenceMoves: on 36 disks, mean irregularity 15.5 -> 13.3%, smallest angles and their
-// mean up too); then the fit to the input.
+// mean up too); the vertices of triangles under 35 degrees moved where their smallest angle is
+// largest (raiseSmallAngles: on the 36 disks, the mean smallest angle 29.6 -> 31.5 degrees);
+// then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0) {
     const std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
     done.snappedTips = static_cast<int>(tips.size());
     flipToRegularity(result);
     relaxedValenceMoves(result, original, tips);
+    raiseSmallAngles(result, original, tips);
   }
   if (!o.fit) return;
   FitOptions fit;

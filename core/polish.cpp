@@ -857,18 +857,19 @@ double farthestFromFaces(const Mesh& m, const std::vector<int>& faces, const std
   return std::sqrt(farthest);
 }
 
-// Tries valence moves on a mesh, each relaxed around it and kept only where it is better there.
-class ValenceMover {
+// Whether a local change of the result (its points moved, its edges flipped) keeps it as close
+// to the input as it was: neither the chords of the triangles it changed nor the input's
+// vertices under them farther apart than before, or than half the farthest anywhere. A flip
+// across a ridge cuts the ridge off; a vertex moved on a fold pulls a chord off it.
+class StaysClose {
  public:
-  ValenceMover(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees)
-      : m_(m), surface_(surface), projection_(surface), degrees_(degrees),
-        same_(1e-12 * boundingBoxDiagonal(surface)), fixed_(vertexEdges(m).onBoundary) {
-    for (int v : pinned) fixed_[v] = true;
+  StaysClose(const Mesh& m, const Mesh& surface)
+      : surface_(surface), projection_(surface), same_(1e-12 * boundingBoxDiagonal(surface)) {
     std::vector<int> all(m.faceCount());
     std::iota(all.begin(), all.end(), 0);
     strayAnywhere_ = 0.5 * farthestChordPoint(m, projection_, all);
-    // The input's vertices by the result's triangle nearest them; flips keep each triangle's
-    // place in the list, so the triangles of a move still have theirs.
+    // The input's vertices by the result's triangle nearest them; flips and moves keep each
+    // triangle's place in the list.
     const SurfaceProjection result(m);
     inputUnder_.resize(m.faceCount());
     for (int i = 0; i < surface.vertexCount(); ++i) {
@@ -876,6 +877,49 @@ class ValenceMover {
       inputUnder_[result.closestTriangle(surface.points[i], &squared)].push_back(i);
       uncoveredAnywhere_ = std::max(uncoveredAnywhere_, 0.5 * std::sqrt(squared));
     }
+  }
+
+  const SurfaceProjection& projection() const { return projection_; }
+
+  // `m` as changed: `faces` the triangles that changed, `newEdges` the edges flipped in and
+  // `oldEdges` out. The distances before, the costly part, are measured only where the change
+  // went over what any place may have: `show(false)` puts the mesh as it was, `show(true)` as
+  // changed again, which is how it is left.
+  bool allows(const Mesh& m, const std::vector<int>& faces, const std::vector<std::pair<int, int>>& newEdges,
+              const std::vector<std::pair<int, int>>& oldEdges, const std::function<void(bool)>& show) const {
+    std::vector<Vec3> covered;
+    for (int f : faces)
+      for (int i : inputUnder_[f]) covered.push_back(surface_.points[i]);
+    const double stray = farthestChordPoint(m, projection_, faces, newEdges);
+    const double uncovered = farthestFromFaces(m, faces, covered);
+    const bool strayOver = stray > strayAnywhere_ + same_, uncoveredOver = uncovered > uncoveredAnywhere_ + same_;
+    if (!strayOver && !uncoveredOver) return true;
+    show(false);
+    const bool worse = (strayOver && stray > farthestChordPoint(m, projection_, faces, oldEdges) + same_) ||
+                       (uncoveredOver && uncovered > farthestFromFaces(m, faces, covered) + same_);
+    show(true);
+    return !worse;
+  }
+
+ private:
+  const Mesh& surface_;
+  const SurfaceProjection projection_;
+  const double same_;  // distances closer than this are the same (rounding)
+  double strayAnywhere_ = 0, uncoveredAnywhere_ = 0;
+  std::vector<std::vector<int>> inputUnder_;
+};
+
+// How far a local change may lower the mean of the smallest angles of its triangles, degrees.
+// 0.25: on the 36 disks, 22 met all of issue 5's bars with the valence moves (21 with 0; 18
+// and 16 at 0.75 times their sizes), mean irregularity 13.3% (13.8), when it was chosen.
+constexpr double kMeanDrop = 0.25;
+
+// Tries valence moves on a mesh, each relaxed around it and kept only where it is better there.
+class ValenceMover {
+ public:
+  ValenceMover(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees)
+      : m_(m), close_(m, surface), degrees_(degrees), fixed_(vertexEdges(m).onBoundary) {
+    for (int v : pinned) fixed_[v] = true;
   }
 
   // Tries every move; then, in each further round, those next to the moves kept in the round
@@ -912,10 +956,7 @@ class ValenceMover {
   // irregular (or as many, nearer regular), no angle of the triangles around under the lesser
   // of the smallest there before and 30 degrees, their mean lower by kMeanDrop at most, and the
   // chords and the input's vertices under them no farther apart than before (or than half the
-  // farthest anywhere). Else puts everything back.
-  // 0.25 degrees: on the 36 disks, 22 met all of issue 5's bars (21 with 0; 18 and 16 at 0.75
-  // times their sizes), mean irregularity 13.3% (13.8), when it was chosen.
-  static constexpr double kMeanDrop = 0.25;
+  // farthest anywhere: StaysClose). Else puts everything back.
   bool tryMove(EdgeFlips& flips, const ValenceMove& move, std::vector<bool>& moved) {
     std::vector<EdgeFlips::Candidate> made;
     std::map<int, int> change;  // valence change of each vertex the flips touch
@@ -964,7 +1005,7 @@ class ValenceMover {
     std::vector<bool> mask(m_.vertexCount(), false);
     for (int v : movable) mask[v] = true;
     constexpr int kPasses = 3;
-    for (int pass = 0; pass < kPasses; ++pass) relaxOnce(m_, mask, fixed_, projection_);
+    for (int pass = 0; pass < kPasses; ++pass) relaxOnce(m_, mask, fixed_, close_.projection());
     const auto refuse = [&] {
       place(was);
       undo();
@@ -974,29 +1015,22 @@ class ValenceMover {
     if (after.smallest < std::min(30.0, before.smallest) || after.mean < before.mean - kMeanDrop)
       return refuse();
 
-    // The distances, the costly part, are measured before the move only where they went
-    // over what any place may have.
-    std::vector<Vec3> covered;
-    for (int f : faces)
-      for (int i : inputUnder_[f]) covered.push_back(surface_.points[i]);
     std::vector<std::pair<int, int>> oldEdges, newEdges;
     for (const EdgeFlips::Candidate& k : made) {
       oldEdges.emplace_back(k.a, k.b);
       newEdges.emplace_back(k.c, k.d);
     }
-    const double stray = farthestChordPoint(m_, projection_, faces, newEdges);
-    const double uncovered = farthestFromFaces(m_, faces, covered);
-    const bool strayOver = stray > strayAnywhere_ + same_, uncoveredOver = uncovered > uncoveredAnywhere_ + same_;
-    if (strayOver || uncoveredOver) {
-      for (int v : movable) relaxed.push_back(m_.points[v]);
-      place(was);
-      undo();
-      const bool worse = (strayOver && stray > farthestChordPoint(m_, projection_, faces, oldEdges) + same_) ||
-                         (uncoveredOver && uncovered > farthestFromFaces(m_, faces, covered) + same_);
-      if (worse) return false;
+    for (int v : movable) relaxed.push_back(m_.points[v]);
+    const auto show = [&](bool changed) {
+      if (!changed) {
+        place(was);
+        undo();
+        return;
+      }
       redo();
       place(relaxed);
-    }
+    };
+    if (!close_.allows(m_, faces, newEdges, oldEdges, show)) return refuse();
     for (int v : movable) moved[v] = true;
     return true;
   }
@@ -1012,13 +1046,9 @@ class ValenceMover {
   }
 
   Mesh& m_;
-  const Mesh& surface_;
-  const SurfaceProjection projection_;
+  const StaysClose close_;
   const double degrees_;
-  const double same_;        // distances closer than this are the same (rounding)
   std::vector<bool> fixed_;  // the border, and the pinned vertices
-  double strayAnywhere_ = 0, uncoveredAnywhere_ = 0;
-  std::vector<std::vector<int>> inputUnder_;
   std::set<std::vector<std::pair<int, int>>> refused_;
 };
 
@@ -1027,6 +1057,129 @@ class ValenceMover {
 int relaxedValenceMoves(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees) {
   if (m.triangles.empty() || surface.triangles.empty()) return 0;
   return ValenceMover(m, surface, pinned, degrees).run(3);
+}
+
+namespace {
+// Moves vertices of triangles with small angles to where their triangles' smallest angle is
+// largest, on the surface.
+class AngleRaiser {
+ public:
+  AngleRaiser(Mesh& m, const Mesh& surface, const std::vector<int>& pinned)
+      : m_(m), surface_(surface), fixed_(vertexEdges(m).onBoundary), meanFloor_(m.vertexCount(), 0.0) {
+    for (int v : pinned) fixed_[v] = true;
+    // Each vertex's triangles' mean smallest angle, less kMeanDrop: what its moves may lower
+    // it to, in all rounds together.
+    std::vector<int> count(m.vertexCount(), 0);
+    for (const Triangle& t : m.triangles) {
+      const double a = smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+      for (int v : t) {
+        meanFloor_[v] += a;
+        ++count[v];
+      }
+    }
+    for (int v = 0; v < m.vertexCount(); ++v)
+      if (count[v] > 0) meanFloor_[v] = meanFloor_[v] / count[v] - kMeanDrop;
+  }
+
+  // Rounds over the free vertices of triangles under `below` degrees, worst first, until a
+  // round moves none (a move lets a neighbour's next one do more).
+  int run(double below, int rounds) {
+    int moved = 0;
+    for (int round = 0; round < rounds; ++round) {
+      const Rings rings(m_);
+      int movedNow = 0;
+      for (int v : worstFirst(below)) movedNow += tryVertex(rings, v);
+      moved += movedNow;
+      if (movedNow == 0) break;
+    }
+    return moved;
+  }
+
+ private:
+  // The free vertices of triangles under `below` degrees, by their smallest angle, smallest first.
+  std::vector<int> worstFirst(double below) const {
+    std::vector<double> worst(m_.vertexCount(), 180.0);
+    for (const Triangle& t : m_.triangles) {
+      const double a = smallestAngle(m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]);
+      for (int v : t) worst[v] = std::min(worst[v], a);
+    }
+    std::vector<int> vertices;
+    for (int v = 0; v < m_.vertexCount(); ++v)
+      if (!fixed_[v] && worst[v] < below) vertices.push_back(v);
+    std::stable_sort(vertices.begin(), vertices.end(), [&](int a, int b) { return worst[a] < worst[b]; });
+    return vertices;
+  }
+
+  // Built for the first vertex tried (the surface's tree is most of the step's cost), before
+  // anything moved.
+  const StaysClose& close() {
+    if (!close_) close_.emplace(m_, surface_);
+    return *close_;
+  }
+
+  // A compass search in v's tangent plane, each point projected onto the surface, for the
+  // largest smallest angle of v's triangles, none folded over, their mean smallest angle at its
+  // floor or over (or no lower than now, if neighbours' moves took it under); kept where
+  // StaysClose allows it.
+  bool tryVertex(const Rings& rings, int v) {
+    const std::vector<int> faces(rings.faces.begin() + rings.offset[v], rings.faces.begin() + rings.offset[v + 1]);
+    Vec3 up = Vec3::Zero();
+    double spacing = 0;  // the mean length of v's edges
+    for (int f : faces) {
+      up += faceNormal(m_, m_.triangles[f]);
+      for (int w : m_.triangles[f]) spacing += (m_.points[w] - m_.points[v]).norm() / (2.0 * faces.size());
+    }
+    if (!(up.squaredNorm() > 0) || !(spacing > 0)) return false;
+    up.normalize();
+    const Vec3 start = m_.points[v];
+    const double floor = std::min(meanFloor_[v], smallestAnglesOf(m_, faces).mean);
+    const auto score = [&](const Vec3& to) {
+      if (!keepsRingUnfolded(m_, rings, v, to, up)) return -1.0;
+      m_.points[v] = to;
+      const SmallestAngles now = smallestAnglesOf(m_, faces);
+      m_.points[v] = start;
+      return now.mean < floor ? -1.0 : now.smallest;
+    };
+    const double before = score(start);
+    double bestScore = before;
+    Vec3 best = start;
+    const Vec3 across = up.unitOrthogonal(), along = up.cross(across);
+    for (double step = 0.25 * spacing; step > 0.01 * spacing; step *= 0.5) {
+      for (bool better = true; better;) {  // steps this long while one of 8 directions gains
+        better = false;
+        const Vec3 from = best;
+        for (int k = 0; k < 8; ++k) {
+          const double a = k * M_PI / 4;
+          const Vec3 to = close().projection().closestPoint(from + step * (std::cos(a) * across + std::sin(a) * along));
+          const double s = score(to);
+          if (s > bestScore + 1e-6) {
+            bestScore = s;
+            best = to;
+            better = true;
+          }
+        }
+      }
+    }
+    if (!(bestScore > before + 1e-6)) return false;
+    m_.points[v] = best;
+    if (close().allows(m_, faces, {}, {}, [&](bool changed) { m_.points[v] = changed ? best : start; }))
+      return true;
+    m_.points[v] = start;
+    return false;
+  }
+
+  Mesh& m_;
+  const Mesh& surface_;
+  std::optional<StaysClose> close_;
+  std::vector<bool> fixed_;  // the border, and the pinned vertices
+  std::vector<double> meanFloor_;
+};
+}  // namespace
+
+int raiseSmallAngles(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double below) {
+  if (m.triangles.empty() || surface.triangles.empty()) return 0;
+  constexpr int kRounds = 3;
+  return AngleRaiser(m, surface, pinned).run(below, kRounds);
 }
 
 const char* toString(PolishTarget target) {

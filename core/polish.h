@@ -104,6 +104,18 @@ int flipToRegularity(Mesh& mesh, double smallestAngle = kLastValenceFlipAngle);
 int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
                         double degrees = 20.0);
 
+// Where small angles are left: each free vertex (not on the border, not `pinned`) of a triangle
+// with an angle under `below` degrees, worst first, moves to the point of the surface near it
+// (a compass search in its tangent plane, by closest point) where its triangles' smallest angle
+// is largest, their mean smallest angle lower than before the step by a quarter of a degree at
+// most. A move is kept where, as for relaxedValenceMoves(), neither the chords nor the input's
+// vertices under them end farther apart than before (or than half the farthest anywhere).
+// Returns the moves kept. 35 degrees (as the polish's repair): on the 36 disks, 23 met all of
+// issue 5's bars (22 without the step) and the mean smallest angle went 29.64 -> 31.50 degrees
+// (30.76 at 30 degrees); at 0.75 times their sizes 17 (17), 30.31 -> 32.14 degrees.
+int raiseSmallAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
+                     double below = 35.0);
+
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
 // triangle's shortest edge it can go (keeping the mesh manifold and unfolded); the merged
 // vertices are left unused. Returns how many were merged.

@@ -212,12 +212,8 @@ TEST(Polish, LastValenceFlipsMakeVerticesRegularWhereNoAngleFallsUnder35) {
   EXPECT_GE(flipToRegularity(stretched, 30.0), 1);
 }
 
-// A 7 x 7 patch of equilateral triangles (vertex 7 i + j at (i + j / 2, j sqrt(3) / 2)) with
-// edges (8, 14) and (9, 15) flipped: inside, vertex 9 is left with valence 5 and 16 with 7; on
-// the border 7 with 5 and 14 with 3. The one flip left that lowers the valences' squared
-// deviation from regular (by 2) makes one more vertex irregular; flipping both back makes the
-// patch regular again.
-Mesh patchWithTwoFlips() {
+// A 7 x 7 patch of equilateral triangles: vertex 7 i + j at (i + j / 2, j sqrt(3) / 2).
+Mesh equilateralPatch() {
   Mesh m;
   auto at = [](int i, int j) { return 7 * i + j; };
   for (int i = 0; i < 7; ++i)
@@ -227,6 +223,25 @@ Mesh patchWithTwoFlips() {
       m.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
       m.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
     }
+  return m;
+}
+
+// `m` with its inside vertices moved in x and y by up to `amount` each, at random.
+Mesh jitteredInside(Mesh m, unsigned seed, double amount) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-amount, amount);
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (!border[v]) m.points[v] += Vec3(jitter(rng), jitter(rng), 0.0);
+  return m;
+}
+
+// The patch with edges (8, 14) and (9, 15) flipped: inside, vertex 9 is left with valence 5
+// and 16 with 7; on the border 7 with 5 and 14 with 3. The one flip left that lowers the
+// valences' squared deviation from regular (by 2) makes one more vertex irregular; flipping
+// both back makes the patch regular again.
+Mesh patchWithTwoFlips() {
+  Mesh m = equilateralPatch();
   flip(m, 8, 14);
   flip(m, 9, 15);
   return m;
@@ -244,12 +259,8 @@ TEST(Polish, LastValenceFlipsLeaveNoMoreIrregularVertices) {
 // jittered, relax on the surface where the flips were, but for the pinned one and the border.
 TEST(Polish, RelaxedValenceMovesFlipTwoEdgesWhereOneWouldNotDo) {
   const Mesh surface = patchWithTwoFlips();
-  Mesh m = surface;
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+  Mesh m = jitteredInside(surface, 5, 0.05);
   const std::vector<bool> border = vertexEdges(m).onBoundary;
-  for (int v = 0; v < m.vertexCount(); ++v)
-    if (!border[v]) m.points[v] += Vec3(jitter(rng), jitter(rng), 0.0);
   const Mesh jittered = m;
   const QualityMetrics before = measureQuality(m);
   const int pinned = 15;
@@ -289,6 +300,88 @@ TEST(Polish, RelaxedValenceMovesCutNoRidgeOff) {
   for (Vec3& p : surface.points) p.z() = 0;
   m = surface;
   EXPECT_EQ(relaxedValenceMoves(m, surface, all), 1);
+}
+
+// The patch's middle vertex, 24, pushed 0.6 of an edge towards vertex 31 (the input keeps it
+// there too): its triangles' smallest angle is 23 degrees.
+Mesh patchWithOneVertexPushed(double height) {
+  Mesh m = equilateralPatch();
+  m.points[24] += 0.6 * (m.points[31] - m.points[24]);
+  m.points[24].z() = height;
+  return m;
+}
+
+// On a flat surface the pushed vertex goes back to where every angle is about 60 degrees when
+// it alone may move; its neighbours move too when they may; pinned vertices and the border stay.
+TEST(Polish, RaiseSmallAnglesMovesAVertexWhereItsAnglesAreLargest) {
+  const Mesh surface = patchWithOneVertexPushed(0.0);
+  ASSERT_LT(measureQuality(surface).minAngle, 25.0);
+  std::vector<int> all(surface.vertexCount());
+  std::iota(all.begin(), all.end(), 0);
+  Mesh m = surface;
+  EXPECT_EQ(raiseSmallAngles(m, surface, all), 0);
+  EXPECT_EQ(m.points, surface.points);
+  EXPECT_GE(raiseSmallAngles(m, surface, {24}), 1);
+  EXPECT_EQ(m.points[24], surface.points[24]);
+  m = surface;
+  std::vector<int> allBut24 = all;
+  allBut24.erase(allBut24.begin() + 24);
+  EXPECT_EQ(raiseSmallAngles(m, surface, allBut24), 1);
+  EXPECT_GT(measureQuality(m).minAngle, 58.0);
+  EXPECT_LT((m.points[24] - equilateralPatch().points[24]).norm(), 0.03);
+  m = surface;
+  EXPECT_GE(raiseSmallAngles(m, surface), 1);
+  EXPECT_NO_THROW(validateMesh(m, "raised"));
+  EXPECT_GT(measureQuality(m).minAngle, 50.0);
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (border[v]) EXPECT_EQ(m.points[v], surface.points[v]);
+    EXPECT_NEAR(m.points[v].z(), 0.0, 1e-12);
+  }
+}
+
+// A vertex moved alone (the others pinned) on a jittered patch: its triangles' smallest angle
+// rises, and their mean smallest angle falls by a quarter of a degree at most, though a
+// larger smallest angle is often where the mean is lower.
+TEST(Polish, RaiseSmallAnglesKeepsTheMeanSmallestAngle) {
+  const Mesh flat = equilateralPatch();
+  const Mesh jittered = jitteredInside(flat, 3, 0.3);
+  const std::vector<bool> border = vertexEdges(flat).onBoundary;
+  const Rings rings(jittered);
+  auto anglesAround = [&](const Mesh& m, int v) {
+    double smallest = 180, mean = 0;
+    for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+      const Triangle& t = m.triangles[rings.faces[k]];
+      const auto a = cornerAnglesDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+      smallest = std::min(smallest, std::min({a[0], a[1], a[2]}));
+      mean += std::min({a[0], a[1], a[2]}) / (rings.offset[v + 1] - rings.offset[v]);
+    }
+    return std::pair{smallest, mean};
+  };
+  int moved = 0;
+  for (int v = 0; v < flat.vertexCount(); ++v) {
+    if (border[v]) continue;
+    std::vector<int> others;
+    for (int w = 0; w < flat.vertexCount(); ++w)
+      if (w != v) others.push_back(w);
+    Mesh m = jittered;
+    if (raiseSmallAngles(m, flat, others, 180.0) == 0) continue;
+    ++moved;
+    const auto [smallestBefore, meanBefore] = anglesAround(jittered, v);
+    const auto [smallestAfter, meanAfter] = anglesAround(m, v);
+    EXPECT_GT(smallestAfter, smallestBefore) << "vertex " << v;
+    EXPECT_GE(meanAfter, meanBefore - 0.25 - 1e-9) << "vertex " << v;
+  }
+  EXPECT_GT(moved, 10);
+}
+
+// The pushed vertex raised into a peak of the input: moving it down the slope, where its angles
+// are larger, would cut the peak off, so it stays.
+TEST(Polish, RaiseSmallAnglesCutsNoPeakOff) {
+  const Mesh surface = patchWithOneVertexPushed(0.2);
+  Mesh m = surface;
+  EXPECT_EQ(raiseSmallAngles(m, surface), 0);
+  EXPECT_EQ(m.points, surface.points);
 }
 
 TEST(Polish, AFlatTriangleLosesAVertex) {
