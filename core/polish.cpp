@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <numeric>
@@ -1085,8 +1086,8 @@ class AngleRaiser {
   // round moves none (a move lets a neighbour's next one do more).
   int run(double below, int rounds) {
     int moved = 0;
+    const Rings rings(m_);  // moves keep the triangles
     for (int round = 0; round < rounds; ++round) {
-      const Rings rings(m_);
       int movedNow = 0;
       for (int v : worstFirst(below)) movedNow += tryVertex(rings, v);
       moved += movedNow;
@@ -1119,8 +1120,8 @@ class AngleRaiser {
 
   // A compass search in v's tangent plane, each point projected onto the surface, for the
   // largest smallest angle of v's triangles, none folded over, their mean smallest angle at its
-  // floor or over (or no lower than now, if neighbours' moves took it under); kept where
-  // StaysClose allows it.
+  // floor or over (or no lower than now, where neighbours' moves took it under: the floor holds
+  // v's own moves only); kept where StaysClose allows it.
   bool tryVertex(const Rings& rings, int v) {
     const std::vector<int> faces(rings.faces.begin() + rings.offset[v], rings.faces.begin() + rings.offset[v + 1]);
     Vec3 up = Vec3::Zero();
@@ -1132,15 +1133,17 @@ class AngleRaiser {
     if (!(up.squaredNorm() > 0) || !(spacing > 0)) return false;
     up.normalize();
     const Vec3 start = m_.points[v];
-    const double floor = std::min(meanFloor_[v], smallestAnglesOf(m_, faces).mean);
+    const SmallestAngles now = smallestAnglesOf(m_, faces);
+    const double floor = std::min(meanFloor_[v], now.mean);
     const auto score = [&](const Vec3& to) {
       if (!keepsRingUnfolded(m_, rings, v, to, up)) return -1.0;
       m_.points[v] = to;
-      const SmallestAngles now = smallestAnglesOf(m_, faces);
+      const SmallestAngles there = smallestAnglesOf(m_, faces);
       m_.points[v] = start;
-      return now.mean < floor ? -1.0 : now.smallest;
+      return there.mean < floor ? -1.0 : there.smallest;
     };
-    const double before = score(start);
+    // Measured as it is, folded or not: a move that unfolds the ring must raise it too.
+    const double before = now.smallest;
     double bestScore = before;
     Vec3 best = start;
     const Vec3 across = up.unitOrthogonal(), along = up.cross(across);
