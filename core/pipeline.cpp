@@ -185,14 +185,21 @@ namespace {
 // (relaxedValenceMoves: on 36 disks, mean irregularity 15.5 -> 13.3%, smallest angles and their
 // mean up too); the vertices of triangles under 35 degrees moved where their smallest angle is
 // largest (raiseSmallAngles: on the 36 disks, the mean smallest angle 29.6 -> 31.5 degrees);
-// then the fit to the input.
+// where a border edge is left too short, its collapse, and those steps again
+// (collapseShortBorderEdges: on the 36 disks, 25 meet all bars instead of 23, Homer clipped in
+// half at 2000 vertices 16.4 -> 32.5 degrees, the man at 500 23.7 -> 33.1; collapsing first,
+// before the flips, left the man at 19.6 degrees); then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0) {
-    const std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
+    std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
     done.snappedTips = static_cast<int>(tips.size());
-    flipToRegularity(result);
-    relaxedValenceMoves(result, original, tips);
-    raiseSmallAngles(result, original, tips);
+    const auto regularize = [&] {
+      flipToRegularity(result);
+      relaxedValenceMoves(result, original, tips);
+      raiseSmallAngles(result, original, tips);
+    };
+    regularize();
+    if (collapseShortBorderEdges(result, original, tips) > 0) regularize();
   }
   if (!o.fit) return;
   FitOptions fit;

@@ -116,6 +116,15 @@ int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>&
 int raiseSmallAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
                      double below = 35.0);
 
+// A border edge under 0.7 of the mean edge length (two samples the border had to keep close
+// together: the seam nodes of two charts near a corner of the border) leaves a thin triangle
+// on it. Each, shortest first, loses one end, merged into the other, where that end is no
+// further than 0.3 edge lengths from the chord that replaces its two border edges,
+// the mesh stays a disk around it and unfolded, and, with the two rings around relaxed on
+// `surface`, the smallest angle there rises. `pinned` vertices stay, and are renumbered with the
+// mesh (its unused vertices dropped). Returns how many edges were collapsed.
+int collapseShortBorderEdges(Mesh& mesh, const Mesh& surface, std::vector<int>& pinned);
+
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
 // triangle's shortest edge it can go (keeping the mesh manifold and unfolded); the merged
 // vertices are left unused. Returns how many were merged.

@@ -155,6 +155,17 @@ TEST(Charts, ADiskNoConformalMapHoldsIsRemeshedChartByChartToo) {
   EXPECT_FALSE(flat.chartTrial.has_value());
 }
 
+// CGAL's lion (5 boundary loops) at 2000 vertices is remeshed chart by chart; where two charts'
+// seams meet its border close together, the border edge between them is short and the
+// triangle on it thin (17.9 degrees without collapseShortBorderEdges in the last steps).
+TEST(Charts, ShortBorderEdgesBetweenSeamsCollapse) {
+  const std::string path = test::cgalSample("lion.off");
+  SKIP_UNLESS_EXTRACTED(path);
+  const RemeshResult r = test::remeshSimplified(path, 2000);
+  EXPECT_GT(r.charts, 1);
+  EXPECT_GT(r.after.minAngle, 20.0);
+}
+
 // Which of the two results remesh() keeps: the charts where they are rounder and not much
 // farther, or much rounder and not much farther, or much closer and nearly as round (the spool: 1.60% against 2.41%, 1.1 deg less).
 // A chart's border is all seams with its neighbours: its last steps (the snaps to tips, the

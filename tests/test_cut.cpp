@@ -248,10 +248,7 @@ TEST_P(ClosedCgalSamples, KeepTheirGenus) {
 TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
   const std::string path = test::cgalSample("triceratops.off");
   SKIP_UNLESS_EXTRACTED(path);
-  RemeshOptions o;
-  o.simplifyTo = 2000;
-  o.measureFidelity = false;
-  const RemeshResult r = remesh(readMesh(path).mesh, o, path);
+  const RemeshResult r = test::remeshSimplified(path, 2000);
   EXPECT_NE(r.resampleDropped.find("not one-to-one"), std::string::npos) << r.resampleDropped;
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   const Topology t = analyzeTopology(r.output);

@@ -384,6 +384,74 @@ TEST(Polish, RaiseSmallAnglesCutsNoPeakOff) {
   EXPECT_EQ(m.points, surface.points);
 }
 
+// The patch with border vertex 1 (on its straight side from corner 0 through 1, 2, ... 6)
+// moved to `length` of an edge from vertex 2: the border edge (1, 2) that short, and the
+// triangle on it, (1, 8, 2), thin.
+Mesh patchWithAShortBorderEdge(double length) {
+  Mesh m = equilateralPatch();
+  m.points[1] = m.points[2] + length * (m.points[1] - m.points[2]);
+  return m;
+}
+
+// One end goes (merged into the other): a vertex fewer, the border's course and its other vertices
+// kept, the smallest angle up; a pinned vertex keeps its place under its new number. With both
+// ends pinned, nothing changes.
+TEST(Polish, AShortBorderEdgeLosesAnEnd) {
+  const Mesh surface = patchWithAShortBorderEdge(0.25);
+  Mesh m = surface;
+  const double before = measureQuality(m).minAngle;
+  ASSERT_LT(before, 20.0);
+  std::vector<int> pinned = {24};
+  EXPECT_EQ(collapseShortBorderEdges(m, surface, pinned), 1);
+  EXPECT_NO_THROW(validateMesh(m, "collapsed"));
+  EXPECT_TRUE(analyzeTopology(m).isDisk());
+  EXPECT_EQ(m.vertexCount(), surface.vertexCount() - 1);
+  EXPECT_GT(measureQuality(m).minAngle, before + 10);
+  ASSERT_EQ(pinned, std::vector<int>{23});
+  EXPECT_EQ(m.points[23], surface.points[24]);
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    const bool wasThere = std::count(surface.points.begin(), surface.points.end(), m.points[v]) == 1;
+    if (border[v]) EXPECT_TRUE(wasThere) << "vertex " << v;
+    EXPECT_NEAR(m.points[v].z(), 0.0, 1e-12);
+  }
+  Mesh kept = surface;
+  std::vector<int> both = {1, 2};
+  EXPECT_EQ(collapseShortBorderEdges(kept, surface, both), 0);
+  EXPECT_EQ(kept.points, surface.points);
+  EXPECT_EQ(kept.triangles, surface.triangles);
+}
+
+// The border bent at vertex 1 (pushed 0.6 of an edge outwards, across the border): merging
+// either end of the short edge into the other would cut the bend off (0.6 and 0.5 edge lengths
+// from the chord), so nothing is collapsed.
+TEST(Polish, AShortBorderEdgeAtABendStays) {
+  Mesh surface = patchWithAShortBorderEdge(0.25);
+  surface.points[1] += 0.6 * Vec3(-std::sqrt(3.0) / 2, 0.5, 0.0);
+  Mesh m = surface;
+  std::vector<int> none;
+  EXPECT_EQ(collapseShortBorderEdges(m, surface, none), 0);
+  EXPECT_EQ(m.triangles, surface.triangles);
+}
+
+// A short border edge whose triangle is nearly as round as the others (vertex 8 moved half way
+// to where (1, 8, 2) would be equilateral): with the inside pinned, either collapse lowers the
+// smallest angle there (27.7 to 18.2 or 26.9 degrees), so neither is made.
+TEST(Polish, AShortBorderEdgeStaysWhereItsCollapseLowersTheAngles) {
+  Mesh surface = patchWithAShortBorderEdge(0.45);
+  const Vec3 middle = 0.5 * (surface.points[1] + surface.points[2]);
+  const Vec3 along = surface.points[2] - surface.points[1];
+  const Vec3 apex = middle + std::sqrt(3.0) / 2 * Vec3(along.y(), -along.x(), 0.0);
+  surface.points[8] = 0.5 * (surface.points[8] + apex);
+  const std::vector<bool> border = vertexEdges(surface).onBoundary;
+  std::vector<int> inside;
+  for (int v = 0; v < surface.vertexCount(); ++v)
+    if (!border[v]) inside.push_back(v);
+  Mesh m = surface;
+  EXPECT_EQ(collapseShortBorderEdges(m, surface, inside), 0);
+  EXPECT_EQ(m.triangles, surface.triangles);
+}
+
 TEST(Polish, AFlatTriangleLosesAVertex) {
   // A square whose inside vertex X lies almost on the segment A C: triangle (A, C, X) is flat.
   Mesh m;

@@ -3,6 +3,8 @@
 
 #include "domain.h"
 #include "mesh.h"
+#include "mesh_io.h"
+#include "pipeline.h"
 
 #include <gtest/gtest.h>
 
@@ -124,6 +126,15 @@ inline std::string cgalSample(const std::string& name) {
 
 
 // CTest runs test processes in parallel: every process gets names of its own.
+// The mesh at `path` (a CGAL sample) simplified to `vertices` and remeshed with the defaults,
+// not measured against the input.
+inline RemeshResult remeshSimplified(const std::string& path, int vertices) {
+  RemeshOptions options;
+  options.simplifyTo = vertices;
+  options.measureFidelity = false;
+  return remesh(readMesh(path).mesh, options, path);
+}
+
 inline std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "lloydscope_" + std::to_string(getpid()) + "_" + name;
 }
