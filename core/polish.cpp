@@ -5,6 +5,7 @@
 #include "projection.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iterator>
@@ -1209,6 +1210,33 @@ std::set<int> neighboursOf(const Mesh& m, int v) {
   return ring;
 }
 
+// The smallest angle of the triangles of `before` that are not in `after` (by corners and
+// places), and of those of `after` that are not in `before`: what a local change took away and
+// put in their place (the flips of a relaxation included, wherever they reached).
+std::pair<double, double> smallestAnglesChanged(const Mesh& before, const Mesh& after) {
+  auto placed = [](const Mesh& m) {
+    std::set<std::array<double, 9>> triangles;
+    for (const Triangle& t : m.triangles) {
+      std::array<int, 3> corners = t;
+      std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+      std::array<double, 9> key;
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) key[3 * k + i] = m.points[corners[k]][i];
+      triangles.insert(key);
+    }
+    return triangles;
+  };
+  const auto smallestNotIn = [&](const Mesh& m, const std::set<std::array<double, 9>>& other) {
+    double smallest = 180;
+    for (const auto& key : placed(m))
+      if (!other.count(key))
+        smallest = std::min(smallest, smallestAngle(Vec3(key[0], key[1], key[2]), Vec3(key[3], key[4], key[5]),
+                                                    Vec3(key[6], key[7], key[8])));
+    return smallest;
+  };
+  return {smallestNotIn(before, placed(after)), smallestNotIn(after, placed(before))};
+}
+
 // Border vertex `from` merged into its border neighbour `to` on `m`: the triangle on their edge
 // goes, the others of `from` take `to`. Empty where that is not a disk's collapse any more
 // (they share a neighbour besides the third corner of that triangle: the link condition) or
@@ -1261,6 +1289,7 @@ int collapseShortBorderEdges(Mesh& m, const Mesh& surface, std::vector<int>& pin
     for (int v : pinned) fixed[v] = true;
     for (const auto& [length, edge] : shortEdges) {
       const auto [a, b] = edge;
+      if (next[b] == prev[a]) continue;  // a border loop of three: one triangle, no disk left
       // Either end may go, onto the other: the one nearer the chord that would replace it first.
       std::vector<std::pair<double, std::pair<int, int>>> tries;  // stray, (from, to)
       for (const auto& [from, to, other] : {std::tuple{a, b, prev[a]}, std::tuple{b, a, next[b]}}) {
@@ -1274,22 +1303,20 @@ int collapseShortBorderEdges(Mesh& m, const Mesh& surface, std::vector<int>& pin
         std::optional<Mesh> tried = mergedAlongBorder(m, from, to);
         if (!tried) continue;
         // The two rings around `to` relax on the surface; kept where the smallest angle of the
-        // triangles that change (those at a vertex of the rings, and those `from` had) rises.
-        std::vector<bool> rings(m.vertexCount(), false);
-        rings[to] = true;
-        rings = withNeighbours(*tried, withNeighbours(*tried, rings));
-        std::vector<bool> movable = rings;
+        // triangles that changed rises.
+        std::vector<bool> movable(m.vertexCount(), false);
+        movable[to] = true;
+        movable = withNeighbours(*tried, withNeighbours(*tried, movable));
         for (int v : pinned) movable[v] = false;
-        rings[from] = true;
-        const double before = smallestAngleAround(m, rings);
         if (!projection) projection.emplace(surface);
         relaxOnSurface(*tried, movable, *projection, 3, /*local=*/true);
-        if (smallestAngleAround(*tried, rings) <= before + 1e-6) continue;
+        const auto [before, after] = smallestAnglesChanged(m, *tried);
+        if (after <= before + 1e-6) continue;
         std::vector<int> kept;
         m = assemble(tried->triangles, tried->points, &kept);
-        std::vector<int> newIndex(kept.back() + 1, -1);
+        std::vector<int> newIndex(tried->points.size(), -1);
         for (size_t i = 0; i < kept.size(); ++i) newIndex[kept[i]] = static_cast<int>(i);
-        for (int& v : pinned) v = newIndex[v];
+        for (int& v : pinned) v = newIndex[v];  // never removed: a pinned vertex is no `from`
         ++collapsed;
         again = true;
         break;

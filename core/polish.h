@@ -121,8 +121,9 @@ int raiseSmallAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pi
 // on it. Each, shortest first, loses one end, merged into the other, where that end is no
 // further than 0.3 edge lengths from the chord that replaces its two border edges,
 // the mesh stays a disk around it and unfolded, and, with the two rings around relaxed on
-// `surface`, the smallest angle there rises. `pinned` vertices stay, and are renumbered with the
-// mesh (its unused vertices dropped). Returns how many edges were collapsed.
+// `surface`, the smallest angle of the triangles that changed rises. `pinned` vertices stay;
+// where an edge collapses, the mesh's unused vertices are dropped and `pinned` renumbered with
+// it. Returns how many edges were collapsed.
 int collapseShortBorderEdges(Mesh& mesh, const Mesh& surface, std::vector<int>& pinned);
 
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the

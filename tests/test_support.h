@@ -124,8 +124,6 @@ inline std::string cgalSample(const std::string& name) {
 #define SKIP_UNLESS_EXTRACTED(path) \
   if (!std::ifstream(path).good()) GTEST_SKIP() << (path) << " not extracted (run ./build.sh)"
 
-
-// CTest runs test processes in parallel: every process gets names of its own.
 // The mesh at `path` (a CGAL sample) simplified to `vertices` and remeshed with the defaults,
 // not measured against the input.
 inline RemeshResult remeshSimplified(const std::string& path, int vertices) {
@@ -135,6 +133,7 @@ inline RemeshResult remeshSimplified(const std::string& path, int vertices) {
   return remesh(readMesh(path).mesh, options, path);
 }
 
+// CTest runs test processes in parallel: every process gets names of its own.
 inline std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "lloydscope_" + std::to_string(getpid()) + "_" + name;
 }
