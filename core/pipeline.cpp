@@ -188,7 +188,9 @@ namespace {
 // where a border edge is left too short, its collapse, and those steps again
 // (collapseShortBorderEdges: on the 36 disks, 25 meet all bars instead of 23, Homer clipped in
 // half at 2000 vertices 16.4 -> 32.5 degrees, the man at 500 23.7 -> 33.1; collapsing first,
-// before the flips, left the man at 19.6 degrees); then the fit to the input.
+// before the flips, left the man at 19.6 degrees); every vertex moved where its triangles'
+// mean smallest angle is largest, their smallest angle kept (raiseMeanAngles: on the 36 disks,
+// the average smallest angle up by 0.65 degrees on average); then the fit to the input.
 void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0) {
     std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
@@ -200,6 +202,7 @@ void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, Remes
     };
     regularize();
     if (collapseShortBorderEdges(result, original, tips) > 0) regularize();
+    raiseMeanAngles(result, original, tips);
   }
   if (!o.fit) return;
   FitOptions fit;

@@ -1062,12 +1062,16 @@ int relaxedValenceMoves(Mesh& m, const Mesh& surface, const std::vector<int>& pi
 }
 
 namespace {
-// Moves vertices of triangles with small angles to where their triangles' smallest angle is
-// largest, on the surface.
+// What AngleRaiser raises around each vertex it moves: its triangles' smallest angle (their
+// mean smallest angle may fall a little), or their mean smallest angle (their smallest angle
+// may not fall).
+enum class Raise { Smallest, Mean };
+
+// Moves vertices to where the angles of their triangles are larger, on the surface.
 class AngleRaiser {
  public:
-  AngleRaiser(Mesh& m, const Mesh& surface, const std::vector<int>& pinned)
-      : m_(m), surface_(surface), fixed_(vertexEdges(m).onBoundary), meanFloor_(m.vertexCount(), 0.0) {
+  AngleRaiser(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, Raise raise)
+      : m_(m), surface_(surface), raise_(raise), fixed_(vertexEdges(m).onBoundary), meanFloor_(m.vertexCount(), 0.0) {
     for (int v : pinned) fixed_[v] = true;
     // Each vertex's triangles' mean smallest angle, less kMeanDrop: what its moves may lower
     // it to, in all rounds together.
@@ -1120,9 +1124,10 @@ class AngleRaiser {
   }
 
   // A compass search in v's tangent plane, each point projected onto the surface, for the
-  // largest smallest angle of v's triangles, none folded over, their mean smallest angle at its
-  // floor or over (or no lower than now, where neighbours' moves took it under: the floor holds
-  // v's own moves only); kept where StaysClose allows it.
+  // largest smallest angle of v's triangles, their mean smallest angle at its floor or over (or
+  // no lower than now, where neighbours' moves took it under: the floor holds v's own moves
+  // only); or for their largest mean smallest angle, their smallest angle no lower than now.
+  // None may fold over; a move is kept where StaysClose allows it.
   bool tryVertex(const Rings& rings, int v) {
     const std::vector<int> faces(rings.faces.begin() + rings.offset[v], rings.faces.begin() + rings.offset[v + 1]);
     Vec3 up = Vec3::Zero();
@@ -1141,10 +1146,11 @@ class AngleRaiser {
       m_.points[v] = to;
       const SmallestAngles there = smallestAnglesOf(m_, faces);
       m_.points[v] = start;
+      if (raise_ == Raise::Mean) return there.smallest < now.smallest ? -1.0 : there.mean;
       return there.mean < floor ? -1.0 : there.smallest;
     };
     // Measured as it is, folded or not: a move that unfolds the ring must raise it too.
-    const double before = now.smallest;
+    const double before = raise_ == Raise::Mean ? now.mean : now.smallest;
     double bestScore = before;
     Vec3 best = start;
     const Vec3 across = up.unitOrthogonal(), along = up.cross(across);
@@ -1174,6 +1180,7 @@ class AngleRaiser {
 
   Mesh& m_;
   const Mesh& surface_;
+  const Raise raise_;
   std::optional<StaysClose> close_;
   std::vector<bool> fixed_;  // the border, and the pinned vertices
   std::vector<double> meanFloor_;
@@ -1183,7 +1190,13 @@ class AngleRaiser {
 int raiseSmallAngles(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double below) {
   if (m.triangles.empty() || surface.triangles.empty()) return 0;
   constexpr int kRounds = 3;
-  return AngleRaiser(m, surface, pinned).run(below, kRounds);
+  return AngleRaiser(m, surface, pinned, Raise::Smallest).run(below, kRounds);
+}
+
+int raiseMeanAngles(Mesh& m, const Mesh& surface, const std::vector<int>& pinned) {
+  if (m.triangles.empty() || surface.triangles.empty()) return 0;
+  constexpr double kEvery = 181;  // every free vertex, those of the smallest angles first
+  return AngleRaiser(m, surface, pinned, Raise::Mean).run(kEvery, /*rounds=*/1);
 }
 
 namespace {

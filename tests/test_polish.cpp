@@ -236,6 +236,19 @@ Mesh jitteredInside(Mesh m, unsigned seed, double amount) {
   return m;
 }
 
+// The smallest angle of v's triangles (`rings` of m's triangles), and the mean of their
+// smallest angles.
+std::pair<double, double> smallestAnglesAround(const Mesh& m, const Rings& rings, int v) {
+  double smallest = 180, mean = 0;
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+    const Triangle& t = m.triangles[rings.faces[k]];
+    const auto a = cornerAnglesDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+    smallest = std::min(smallest, std::min({a[0], a[1], a[2]}));
+    mean += std::min({a[0], a[1], a[2]}) / (rings.offset[v + 1] - rings.offset[v]);
+  }
+  return {smallest, mean};
+}
+
 // The patch with edges (8, 14) and (9, 15) flipped: inside, vertex 9 is left with valence 5
 // and 16 with 7; on the border 7 with 5 and 14 with 3. The one flip left that lowers the
 // valences' squared deviation from regular (by 2) makes one more vertex irregular; flipping
@@ -348,16 +361,7 @@ TEST(Polish, RaiseSmallAnglesKeepsTheMeanSmallestAngle) {
   const Mesh jittered = jitteredInside(flat, 3, 0.3);
   const std::vector<bool> border = vertexEdges(flat).onBoundary;
   const Rings rings(jittered);
-  auto anglesAround = [&](const Mesh& m, int v) {
-    double smallest = 180, mean = 0;
-    for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
-      const Triangle& t = m.triangles[rings.faces[k]];
-      const auto a = cornerAnglesDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
-      smallest = std::min(smallest, std::min({a[0], a[1], a[2]}));
-      mean += std::min({a[0], a[1], a[2]}) / (rings.offset[v + 1] - rings.offset[v]);
-    }
-    return std::pair{smallest, mean};
-  };
+  auto anglesAround = [&](const Mesh& m, int v) { return smallestAnglesAround(m, rings, v); };
   int moved = 0;
   for (int v = 0; v < flat.vertexCount(); ++v) {
     if (border[v]) continue;
@@ -373,6 +377,44 @@ TEST(Polish, RaiseSmallAnglesKeepsTheMeanSmallestAngle) {
     EXPECT_GE(meanAfter, meanBefore - 0.25 - 1e-9) << "vertex " << v;
   }
   EXPECT_GT(moved, 10);
+}
+
+// On a jittered flat patch: each vertex moved alone (the others pinned) raises its triangles'
+// mean smallest angle and keeps their smallest; all together, the mesh's average smallest angle
+// rises and its smallest does not fall; the border stays, and nothing moves where all is pinned.
+TEST(Polish, RaiseMeanAnglesKeepsTheSmallestAngle) {
+  const Mesh flat = equilateralPatch();
+  const Mesh jittered = jitteredInside(flat, 7, 0.25);
+  const std::vector<bool> border = vertexEdges(flat).onBoundary;
+  const Rings rings(jittered);
+  auto anglesAround = [&](const Mesh& m, int v) { return smallestAnglesAround(m, rings, v); };
+  std::vector<int> all(flat.vertexCount());
+  std::iota(all.begin(), all.end(), 0);
+  int moved = 0;
+  for (int v = 0; v < flat.vertexCount(); ++v) {
+    if (border[v]) continue;
+    std::vector<int> others = all;
+    others.erase(others.begin() + v);
+    Mesh m = jittered;
+    if (raiseMeanAngles(m, flat, others) == 0) continue;
+    ++moved;
+    const auto [smallestBefore, meanBefore] = anglesAround(jittered, v);
+    const auto [smallestAfter, meanAfter] = anglesAround(m, v);
+    EXPECT_GT(meanAfter, meanBefore) << "vertex " << v;
+    EXPECT_GE(smallestAfter, smallestBefore) << "vertex " << v;
+  }
+  EXPECT_GT(moved, 15);
+  Mesh m = jittered;
+  EXPECT_EQ(raiseMeanAngles(m, flat, all), 0);
+  EXPECT_EQ(m.points, jittered.points);
+  EXPECT_GT(raiseMeanAngles(m, flat), 15);
+  const QualityMetrics before = measureQuality(jittered), after = measureQuality(m);
+  EXPECT_GT(after.avgMinAngle, before.avgMinAngle + 2);
+  EXPECT_GE(after.minAngle, before.minAngle);
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (border[v]) EXPECT_EQ(m.points[v], jittered.points[v]);
+    EXPECT_NEAR(m.points[v].z(), 0.0, 1e-12);
+  }
 }
 
 // The pushed vertex raised into a peak of the input: moving it down the slope, where its angles
