@@ -494,8 +494,9 @@ void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, const Density& surf
 // drops such vertices at the end. Returns how many were merged.
 constexpr double kCollapseBelow = 10.0;
 
-// Merges `from` into `to` if that keeps the mesh manifold (the two share exactly the two
-// neighbours across their edge) and folds none of the triangles that keep `from`.
+// Merges `from` into `to` if that keeps the mesh manifold (the two share no neighbour but the
+// third corners of the triangles on their edge: two inside, one on the border -- the link
+// condition) and folds none of the triangles that keep `from`.
 bool mergeVertex(Mesh& m, int from, int to) {
   std::vector<int> fromRing, toRing;
   std::vector<size_t> changed, removed;
@@ -513,7 +514,6 @@ bool mergeVertex(Mesh& m, int from, int to) {
   std::vector<int> shared;
   std::set_intersection(fromRing.begin(), fromRing.end(), toRing.begin(), toRing.end(),
                         std::back_inserter(shared));
-  if (shared.size() != 2) return false;
   for (size_t g = 0; g < m.triangles.size(); ++g) {
     const Triangle& tri = m.triangles[g];
     if (std::find(tri.begin(), tri.end(), from) == tri.end()) continue;
@@ -527,7 +527,7 @@ bool mergeVertex(Mesh& m, int from, int to) {
     if (!(n1.dot(n0) > 0.1 * n0.norm() * n1.norm())) return false;
     changed.push_back(g);
   }
-  if (removed.size() != 2) return false;
+  if (removed.empty() || shared.size() != removed.size()) return false;
   for (size_t g : changed) std::replace(m.triangles[g].begin(), m.triangles[g].end(), from, to);
   // Removed triangles become markers, erased by the caller (indices stay valid meanwhile).
   for (size_t g : removed) m.triangles[g] = {to, to, to};
@@ -535,6 +535,13 @@ bool mergeVertex(Mesh& m, int from, int to) {
 }
 
 }  // namespace
+
+// Erases the markers mergeVertex() leaves where triangles went.
+void eraseMergedTriangles(Mesh& m) {
+  m.triangles.erase(std::remove_if(m.triangles.begin(), m.triangles.end(),
+                                   [](const Triangle& t) { return t[0] == t[1]; }),
+                    m.triangles.end());
+}
 
 int collapseFlatTriangles(Mesh& m) {
   const std::vector<bool> border = vertexEdges(m).onBoundary;
@@ -553,9 +560,7 @@ int collapseFlatTriangles(Mesh& m) {
         if (!done && !border[from]) done = mergeVertex(m, from, to);
     merged += done;
   }
-  m.triangles.erase(std::remove_if(m.triangles.begin(), m.triangles.end(),
-                                   [](const Triangle& t) { return t[0] == t[1]; }),
-                    m.triangles.end());
+  eraseMergedTriangles(m);
   return merged;
 }
 
@@ -1213,16 +1218,6 @@ double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return (p - (a + t * ab)).norm();
 }
 
-// The vertices that share an edge with v.
-std::set<int> neighboursOf(const Mesh& m, int v) {
-  std::set<int> ring;
-  for (const Triangle& t : m.triangles)
-    if (std::find(t.begin(), t.end(), v) != t.end())
-      for (int w : t)
-        if (w != v) ring.insert(w);
-  return ring;
-}
-
 // The smallest angle of the triangles of `before` that are not in `after` (by corners and
 // places), and of those of `after` that are not in `before`: what a local change took away and
 // put in their place (the flips of a relaxation included, wherever they reached).
@@ -1250,32 +1245,6 @@ std::pair<double, double> smallestAnglesChanged(const Mesh& before, const Mesh& 
   return {smallestNotIn(before, placed(after)), smallestNotIn(after, placed(before))};
 }
 
-// Border vertex `from` merged into its border neighbour `to` on `m`: the triangle on their edge
-// goes, the others of `from` take `to`. Empty where that is not a disk's collapse any more
-// (they share a neighbour besides the third corner of that triangle: the link condition) or
-// turns one of the triangles over.
-std::optional<Mesh> mergedAlongBorder(const Mesh& m, int from, int to) {
-  std::optional<Mesh> merged = Mesh{m.points, {}};
-  std::vector<int> third;
-  for (const Triangle& t : m.triangles) {
-    const bool hasFrom = std::find(t.begin(), t.end(), from) != t.end();
-    if (hasFrom && std::find(t.begin(), t.end(), to) != t.end()) {
-      for (int w : t)
-        if (w != from && w != to) third.push_back(w);
-      continue;
-    }
-    Triangle after = t;
-    std::replace(after.begin(), after.end(), from, to);
-    if (hasFrom && !(faceNormal(m, after).dot(faceNormal(m, t)) > 0.1 * faceNormal(m, after).norm() * faceNormal(m, t).norm()))
-      return std::nullopt;
-    merged->triangles.push_back(after);
-  }
-  std::set<int> shared;
-  const std::set<int> a = neighboursOf(m, from), b = neighboursOf(m, to);
-  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::inserter(shared, shared.end()));
-  if (third.size() != 1 || shared != std::set<int>{third[0]}) return std::nullopt;
-  return merged;
-}
 }  // namespace
 
 int collapseShortBorderEdges(Mesh& m, const Mesh& surface, std::vector<int>& pinned) {
@@ -1313,21 +1282,23 @@ int collapseShortBorderEdges(Mesh& m, const Mesh& surface, std::vector<int>& pin
       std::sort(tries.begin(), tries.end());
       for (const auto& [stray, ends] : tries) {
         const auto [from, to] = ends;
-        std::optional<Mesh> tried = mergedAlongBorder(m, from, to);
-        if (!tried) continue;
+        // `from` merged into `to`: the triangle on their edge goes, the others of `from` take `to`.
+        Mesh tried = m;
+        if (!mergeVertex(tried, from, to)) continue;
+        eraseMergedTriangles(tried);
         // The two rings around `to` relax on the surface; kept where the smallest angle of the
         // triangles that changed rises.
         std::vector<bool> movable(m.vertexCount(), false);
         movable[to] = true;
-        movable = withNeighbours(*tried, withNeighbours(*tried, movable));
+        movable = withNeighbours(tried, withNeighbours(tried, movable));
         for (int v : pinned) movable[v] = false;
         if (!projection) projection.emplace(surface);
-        relaxOnSurface(*tried, movable, *projection, 3, /*local=*/true);
-        const auto [before, after] = smallestAnglesChanged(m, *tried);
+        relaxOnSurface(tried, movable, *projection, 3, /*local=*/true);
+        const auto [before, after] = smallestAnglesChanged(m, tried);
         if (after <= before + 1e-6) continue;
         std::vector<int> kept;
-        m = assemble(tried->triangles, tried->points, &kept);
-        std::vector<int> newIndex(tried->points.size(), -1);
+        m = assemble(tried.triangles, tried.points, &kept);
+        std::vector<int> newIndex(tried.points.size(), -1);
         for (size_t i = 0; i < kept.size(); ++i) newIndex[kept[i]] = static_cast<int>(i);
         for (int& v : pinned) v = newIndex[v];  // never removed: a pinned vertex is no `from`
         ++collapsed;

@@ -108,8 +108,9 @@ int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>&
 // with an angle under `below` degrees, worst first, moves to the point of the surface near it
 // (a compass search in its tangent plane, by closest point) where its triangles' smallest angle
 // is largest, and their mean smallest angle no more than a quarter of a degree under what it
-// was before the step (the vertex's own moves; a neighbour's may lower it too). A move is kept where, as for relaxedValenceMoves(), neither the chords nor the input's
-// vertices under them end farther apart than before (or than half the farthest anywhere).
+// was before the step (the vertex's own moves; a neighbour's may lower it too). A move is kept
+// where, as for relaxedValenceMoves(), neither the chords nor the input's vertices under them
+// end farther apart than before (or than half the farthest anywhere).
 // Returns the moves kept. 35 degrees (as the polish's repair): on the 36 disks, 23 met all of
 // issue 5's bars (22 without the step) and the mean smallest angle went 29.64 -> 31.50 degrees
 // (30.76 at 30 degrees); at 0.75 times their sizes 17 (17), 30.31 -> 32.14 degrees.
@@ -122,9 +123,9 @@ int raiseSmallAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pi
 // the chords and the input's vertices under them end no farther apart than before (or than half
 // the farthest anywhere). Returns the moves kept. On the 36 disks of issue 5's sweep: the mean
 // of the average smallest angles 54.19 -> 54.84 degrees, all bars met on 26 instead of 25 (at
-// 0.75 of their sizes 54.06 -> 54.67 degrees, 19 instead of 18); a
-// second pass added 0.17 degrees on nefertiti at 1000 for 60 ms more; letting the smallest angle
-// fall to 35 degrees (where it was over that) added 0.2 more and took the minima down to 35.
+// 0.75 of their sizes 54.06 -> 54.67 degrees, 19 instead of 18); a second pass added 0.17
+// degrees on nefertiti at 1000 for 60 ms more; letting the smallest angle fall to 35 degrees
+// (where it was over that) added 0.2 more and took the minima down to 35.
 int raiseMeanAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {});
 
 // A border edge under 0.7 of the mean edge length (two samples the border had to keep close
@@ -135,7 +136,6 @@ int raiseMeanAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pin
 // `surface`, the smallest angle of the triangles that changed rises. `pinned` vertices stay;
 // where an edge collapses, the mesh's unused vertices are dropped and `pinned` renumbered with
 // it. Returns how many edges were collapsed.
-int raiseMeanAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned, int rounds);
 int collapseShortBorderEdges(Mesh& mesh, const Mesh& surface, std::vector<int>& pinned);
 
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
