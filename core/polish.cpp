@@ -232,68 +232,127 @@ int flipEdges(Mesh& mesh, const FlipRule& rule, const std::vector<int>* stitched
   return made;
 }
 
-// A flip, or two where the first alone makes no vertex more regular: a 5-7 pair of valences
-// moved next to another defect, and the second flip cancelling them. `edges` in the order they
-// flip, each in the mesh as the flips before it left it.
+// A flip, or a sequence of up to kMaxMoveFlips where the first alone makes no vertex more
+// regular: a 5-7 pair of valences moved (glided) next to another defect, the last flip
+// cancelling them. `edges` in the order they flip, each in the mesh as the flips before it
+// left it.
 struct ValenceMove {
   std::vector<std::pair<int, int>> edges;
   std::pair<int, int> gain;  // (fewer irregular vertices, less squared deviation)
 };
 
+constexpr int kMaxMoveFlips = 4;  // (see relaxedValenceMoves())
+
+// Whether a move's gain (fewer irregular vertices, less squared deviation) makes the valences
+// better: fewer vertices irregular, or as many nearer regular.
+bool improves(const std::pair<int, int>& gain) { return gain > std::pair{0, 0}; }
+
+// The gainful continuations of one first flip, searched depth first with the flips made.
+class MoveSearch {
+ public:
+  MoveSearch(EdgeFlips& flips, double degrees) : flips_(flips), degrees_(degrees) {}
+
+  // The best sequence starting with `first` (made by the caller) that leaves fewer vertices
+  // irregular (or as many, nearer regular), each of its flips keeping its angles; none if none.
+  std::optional<ValenceMove> bestAfter(const EdgeFlips::Candidate& first) {
+    made_ = {first};
+    change_.clear();
+    count(first, +1);
+    best_.reset();
+    extend(kMaxMoveFlips - 1);
+    return best_;
+  }
+
+ private:
+  static int changeOf(const EdgeFlips::Candidate& k, int v) {
+    return (v == k.c || v == k.d) - (v == k.a || v == k.b);
+  }
+  void count(const EdgeFlips::Candidate& k, int sign) {
+    for (int v : {k.a, k.b, k.c, k.d}) {
+      auto it = std::find_if(change_.begin(), change_.end(), [v](const auto& p) { return p.first == v; });
+      if (it == change_.end()) it = change_.insert(change_.end(), {v, 0});
+      it->second += sign * changeOf(k, v);
+    }
+  }
+  // What the flips made, and `next` after them, gain over the mesh before the first. (The
+  // valences now are those before the first plus change_.)
+  std::pair<int, int> gainWith(const EdgeFlips::Candidate& next) const {
+    std::pair<int, int> gain{0, 0};
+    const auto add = [&](int v, int now, int more) {
+      gain.first += flips_.irregular(v, -now) - flips_.irregular(v, more);
+      gain.second += flips_.deviation(v, -now) - flips_.deviation(v, more);
+    };
+    for (const auto& [v, now] : change_) add(v, now, changeOf(next, v));
+    for (int v : {next.a, next.b, next.c, next.d})
+      if (std::none_of(change_.begin(), change_.end(), [v](const auto& p) { return p.first == v; }))
+        add(v, 0, changeOf(next, v));
+    return gain;
+  }
+  // Next flips next to the last one: a gainful one ends a sequence; one that loses no
+  // irregular vertex goes on while flips are left. The angles are checked last (the costly
+  // part, and seldom needed).
+  void extend(int flipsLeft) {
+    const EdgeFlips::Candidate& last = made_.back();
+    for (const auto& [x, y] : flips_.edgesAround({last.a, last.b, last.c, last.d})) {
+      if (std::minmax(x, y) == std::minmax(last.c, last.d)) continue;  // the way back
+      const std::optional<EdgeFlips::Candidate> next = flips_.candidate(x, y);
+      if (!next) continue;
+      const std::pair<int, int> gain = gainWith(*next);
+      if (improves(gain)) {
+        const bool better = !best_ || gain > best_->gain ||
+                            (gain == best_->gain && made_.size() + 1 < best_->edges.size());
+        if (better && flips_.keeps(*next, degrees_)) {
+          best_ = ValenceMove{{}, gain};
+          for (const EdgeFlips::Candidate& k : made_) best_->edges.emplace_back(k.a, k.b);
+          best_->edges.emplace_back(x, y);
+        }
+      } else if (flipsLeft > 1 && gain.first >= 0 && flips_.keeps(*next, degrees_)) {
+        flips_.flip(*next);
+        made_.push_back(*next);
+        count(*next, +1);
+        extend(flipsLeft - 1);
+        count(*next, -1);
+        made_.pop_back();
+        flips_.undo(*next);
+      }
+    }
+  }
+
+  EdgeFlips& flips_;
+  const double degrees_;
+  std::vector<EdgeFlips::Candidate> made_;
+  std::vector<std::pair<int, int>> change_;  // valence change of each vertex the flips touch
+  std::optional<ValenceMove> best_;
+};
+
 // The valence moves that leave fewer vertices irregular (or as many, nearer regular) whose
 // flips neither fold the surface nor make an angle under `degrees`: every such flip, and for
-// every other flip the best second flip next to it, if any; best first. With `near`, only those
+// every other flip the best sequence it starts, if any; best first. With `near`, only those
 // whose first edge has an end in it. The mesh is left as it was.
 std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double degrees,
                                       const std::vector<bool>* near = nullptr) {
-  auto change = [](const EdgeFlips::Candidate& k, int v) {
-    return (v == k.c || v == k.d) - (v == k.a || v == k.b);
-  };
   std::vector<std::pair<int, int>> edges;
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k)
       if (t[k] < t[(k + 1) % 3] && (!near || (*near)[t[k]] || (*near)[t[(k + 1) % 3]]))
         edges.emplace_back(t[k], t[(k + 1) % 3]);
   std::vector<ValenceMove> moves;
+  MoveSearch search(flips, degrees);
   for (const auto& [a, b] : edges) {
     const std::optional<EdgeFlips::Candidate> first = flips.candidate(a, b);
     if (!first) continue;
     const std::pair<int, int> alone{first->quad.irregularBefore - first->quad.irregularAfter,
                                     first->quad.irregularityBefore - first->quad.irregularityAfter};
-    if (alone > std::pair{0, 0}) {
+    if (improves(alone)) {
       if (flips.keeps(*first, degrees)) moves.push_back({{{a, b}}, alone});
       continue;
     }
-    // A pair starts where the first flip moves a 5-7 pair of valences: its quad holds two
+    // A sequence starts where the first flip moves a 5-7 pair of valences: its quad holds two
     // irregular vertices (starting from one as well made no difference on 36 disks, and
     // doubled the search).
     if (first->quad.irregularBefore < 2 || !flips.keeps(*first, degrees)) continue;
-    // The second flips that would make a gain, best first; the angles are checked last (the
-    // costly part, and seldom needed).
     flips.flip(*first);
-    std::vector<std::pair<std::pair<int, int>, EdgeFlips::Candidate>> seconds;
-    for (const auto& [x, y] : flips.edgesAround({first->a, first->b, first->c, first->d})) {
-      if (std::minmax(x, y) == std::minmax(first->c, first->d)) continue;  // the way back
-      const std::optional<EdgeFlips::Candidate> second = flips.candidate(x, y);
-      if (!second) continue;
-      const int touched[8] = {first->a, first->b, first->c, first->d,
-                              second->a, second->b, second->c, second->d};
-      std::pair<int, int> gain{0, 0};
-      for (int i = 0; i < 8; ++i) {
-        const int v = touched[i];
-        if (std::find(touched, touched + i, v) != touched + i) continue;  // counted already
-        gain.first += flips.irregular(v, -change(*first, v)) - flips.irregular(v, change(*second, v));
-        gain.second += flips.deviation(v, -change(*first, v)) - flips.deviation(v, change(*second, v));
-      }
-      if (gain > std::pair{0, 0}) seconds.emplace_back(gain, *second);
-    }
-    std::stable_sort(seconds.begin(), seconds.end(),
-                     [](const auto& p, const auto& q) { return p.first > q.first; });
-    for (const auto& [gain, second] : seconds)
-      if (flips.keeps(second, degrees)) {
-        moves.push_back({{{a, b}, {second.a, second.b}}, gain});
-        break;
-      }
+    if (std::optional<ValenceMove> move = search.bestAfter(*first)) moves.push_back(std::move(*move));
     flips.undo(*first);
   }
   std::stable_sort(moves.begin(), moves.end(),
@@ -985,11 +1044,13 @@ class ValenceMover {
       for (int v : {k->c, k->d}) ++change[v];
     }
     std::pair<int, int> gain{0, 0};
+    bool tooFar = false;  // a vertex pushed more than two neighbours off regular
     for (const auto& [v, by] : change) {
       gain.first += flips.irregular(v, -by) - flips.irregular(v, 0);
       gain.second += flips.deviation(v, -by) - flips.deviation(v, 0);
+      tooFar |= flips.deviation(v, 0) > std::max(4, flips.deviation(v, -by));
     }
-    if (gain <= std::pair{0, 0}) {
+    if (!improves(gain) || tooFar) {
       undo();
       return false;
     }

@@ -319,6 +319,26 @@ TEST(Polish, RelaxedValenceMovesFlipTwoEdgesWhereOneWouldNotDo) {
   EXPECT_GT(moved, 4);
 }
 
+// The patch with four edges of a row flipped, (9, 15), (10, 16), (11, 17) and (12, 18): two
+// 5-7 pairs of valences inside, which no flip, nor any two or three together, makes more
+// regular. The four flipped back, one after the other, make the patch regular again: the
+// first three move a 5-7 pair along, the last cancels it.
+TEST(Polish, RelaxedValenceMovesFlipFourEdgesWhereFewerWouldNotDo) {
+  Mesh surface = equilateralPatch();
+  for (auto [a, b] : {std::pair{9, 15}, std::pair{10, 16}, std::pair{11, 17}, std::pair{12, 18}}) flip(surface, a, b);
+  ASSERT_NO_THROW(validateMesh(surface, "patch"));
+  Mesh m = jitteredInside(surface, 5, 0.05);
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  const QualityMetrics before = measureQuality(m);
+  EXPECT_GE(relaxedValenceMoves(m, surface), 1);
+  EXPECT_NO_THROW(validateMesh(m, "moved"));
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (!border[v]) EXPECT_EQ(vertexEdges(m).valence[v], 6) << "vertex " << v;
+  const QualityMetrics after = measureQuality(m);
+  EXPECT_LT(after.irregularBoundaryAware, before.irregularBoundaryAware);
+  EXPECT_GE(after.minAngle, std::min(30.0, before.minAngle));
+}
+
 // The same patch folded along its two flipped edges (their ends raised): flipping them back
 // would cut the two ridges off, so nothing is moved, whether the vertices around may relax
 // (then they are put back) or are all pinned (then only the distance check refuses). Flat,
