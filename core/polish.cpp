@@ -1019,7 +1019,8 @@ class ValenceMover {
  private:
   // Flips the move's edges (each checked again: the moves kept before it may have changed
   // them) and relaxes the two rings around them; keeps that where it leaves fewer vertices
-  // irregular (or as many, nearer regular), no angle of the triangles around under the lesser
+  // irregular (or as many, nearer regular), none more than two neighbours off regular that was
+  // not that far before, no angle of the triangles around under the lesser
   // of the smallest there before and 30 degrees, their mean lower by kMeanDrop at most, and the
   // chords and the input's vertices under them no farther apart than before (or than half the
   // farthest anywhere: StaysClose). Else puts everything back.

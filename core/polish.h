@@ -104,8 +104,9 @@ int flipToRegularity(Mesh& mesh, double smallestAngle = kLastValenceFlipAngle);
 // bars, at 1 and at 0.75 times their sizes. Up to four flips instead of two: all bars met on 28
 // of the 36 instead of 26 (23 instead of 19 at 0.75 times their sizes), mean irregularity
 // 13.0 -> 11.5% (up to three: 12.1%; up to five: 11.25%, no more bars met). No move may push a
-// vertex more than two neighbours off regular (an 8 to a 9 for two vertices made regular):
-// where the angles around were small already, that left them so (CGAL's lion in charts, 14 deg).
+// vertex more than two neighbours off regular, farther than it was (an 8 to a 9 for two
+// vertices made regular): where the angles around were small already, that left them so
+// (CGAL's lion in charts, 14 deg).
 int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
                         double degrees = 20.0);
 
