@@ -403,11 +403,12 @@ void measureFidelityOf(RemeshResult& result, const Mesh& input) {
   result.ms.total += ms;
 }
 
-// The surface split into charts (core/charts), each a disk remeshed on its own, with its share
-// of the vertices by area and half its seam samples more (each is also another chart's), its
-// border sampled at the whole surface's spacing so that both sides of a seam get the same
-// samples; its projection is the map tried where LSCM folds. Then stitched, the seams relaxed
-// (polishSeams), snapped to tips.
+}  // namespace
+
+// Each chart gets its share of the vertices by area and half its seam samples more (each is
+// also another chart's), its border sampled at the whole surface's spacing so that both sides
+// of a seam get the same samples; its projection is the map tried where LSCM folds. The
+// stitched seams are relaxed (polishSeams) and snapped to tips.
 RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   Stopwatch wall, stage;
   RemeshResult result;
@@ -457,6 +458,8 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   result.ms.total = wall.lap();
   return result;
 }
+
+namespace {
 
 // The surface remeshed chart by chart too (remeshCharts), and the charts kept in `kept`'s place
 // if ChartTrial::chartsBetter(); both are measured against the input to tell. Where no

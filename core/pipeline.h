@@ -132,6 +132,11 @@ void requireStitched(const Mesh& stitched, const Topology& want, int verticesWan
 // connected components are remeshed each on its own, with shares of the vertices asked for
 // (options.simplifyTo, options.sites.count) by area.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
+// The surface split into charts (core/charts), each a disk remeshed on its own, then
+// stitched: what remesh() tries beside the one cut where the surface is not a disk or no
+// conformal map of it holds, and keeps where it is better (ChartTrial). Throws Error where
+// there is one chart only, a chart fails or the seams do not stitch.
+RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name);
 bool usesResampling(const RemeshOptions& options);  // false with relocate or the input's vertices
 RemeshOptions withoutResampling(RemeshOptions options);
 // The problem an Error states, without the "<name>: " it starts with and any "; try ..." advice.

@@ -106,7 +106,9 @@ int flipToRegularity(Mesh& mesh, double smallestAngle = kLastValenceFlipAngle);
 // 13.0 -> 11.5% (up to three: 12.1%; up to five: 11.25%, no more bars met). No move may push a
 // vertex more than two neighbours off regular, farther than it was (an 8 to a 9 for two
 // vertices made regular): where the angles around were small already, that left them so
-// (CGAL's lion in charts, 14 deg).
+// (CGAL's lion in charts, 14 deg); the search goes on past such a sequence, as past one that
+// gains nothing. Of the sequences a first flip starts, the best two are tried (the best may be
+// refused where the next would do): all bars met on 30 of the 36 instead of 28.
 int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
                         double degrees = 20.0);
 

@@ -319,14 +319,32 @@ TEST(Polish, RelaxedValenceMovesFlipTwoEdgesWhereOneWouldNotDo) {
   EXPECT_GT(moved, 4);
 }
 
+// The patch with `edges` flipped, one after the other.
+Mesh patchWithFlips(std::initializer_list<std::pair<int, int>> edges) {
+  Mesh m = equilateralPatch();
+  for (auto [a, b] : edges) flip(m, a, b);
+  EXPECT_NO_THROW(validateMesh(m, "patch"));
+  return m;
+}
+
+// relaxedValenceMoves() on `m`, its own surface, makes every inside vertex regular, with no
+// angle under 30 degrees.
+void expectMovesMakeItRegular(Mesh m) {
+  const Mesh surface = m;
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  EXPECT_GE(relaxedValenceMoves(m, surface), 1);
+  EXPECT_NO_THROW(validateMesh(m, "moved"));
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (!border[v]) EXPECT_EQ(vertexEdges(m).valence[v], 6) << "vertex " << v;
+  EXPECT_GE(measureQuality(m).minAngle, 30.0);
+}
+
 // The patch with four edges of a row flipped, (9, 15), (10, 16), (11, 17) and (12, 18): two
 // 5-7 pairs of valences inside, which no flip, nor any two or three together, makes more
 // regular. The four flipped back, one after the other, make the patch regular again: the
 // first three move a 5-7 pair along, the last cancels it.
 TEST(Polish, RelaxedValenceMovesFlipFourEdgesWhereFewerWouldNotDo) {
-  Mesh surface = equilateralPatch();
-  for (auto [a, b] : {std::pair{9, 15}, std::pair{10, 16}, std::pair{11, 17}, std::pair{12, 18}}) flip(surface, a, b);
-  ASSERT_NO_THROW(validateMesh(surface, "patch"));
+  const Mesh surface = patchWithFlips({{9, 15}, {10, 16}, {11, 17}, {12, 18}});
   Mesh m = jitteredInside(surface, 5, 0.05);
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   const QualityMetrics before = measureQuality(m);
@@ -337,6 +355,23 @@ TEST(Polish, RelaxedValenceMovesFlipFourEdgesWhereFewerWouldNotDo) {
   const QualityMetrics after = measureQuality(m);
   EXPECT_LT(after.irregularBoundaryAware, before.irregularBoundaryAware);
   EXPECT_GE(after.minAngle, std::min(30.0, before.minAngle));
+}
+
+// The patch with four edges flipped, (38, 37), (32, 38), (33, 40) and (24, 31). The move that
+// makes it regular again flips (38, 45), (31, 44), (25, 30) and (31, 39): after its second flip
+// it leaves fewer vertices irregular already, but vertex 39 with valence 9, which no move may
+// leave; the search has to go on past such a sequence to the fourth flip, which takes 39 back
+// to 8, not end it there (and have it refused).
+TEST(Polish, RelaxedValenceMovesSearchPastSequencesThatPushAVertexTooFar) {
+  expectMovesMakeItRegular(patchWithFlips({{38, 37}, {32, 38}, {33, 40}, {24, 31}}));
+}
+
+// The patch with three edges flipped, (35, 36), (37, 31) and (28, 29). The sequence that
+// starts by flipping (21, 22) and gains most ends by flipping (29, 30), which lowers the mean
+// of the smallest angles around by 1.8 degrees and is refused; the next best from the same
+// first flip ends by flipping (29, 42) instead, and is kept: with it the patch is regular again.
+TEST(Polish, RelaxedValenceMovesTryTheNextSequenceWhereTheBestIsRefused) {
+  expectMovesMakeItRegular(patchWithFlips({{35, 36}, {37, 31}, {28, 29}}));
 }
 
 // The same patch folded along its two flipped edges (their ends raised): flipping them back
