@@ -93,6 +93,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                         {"charts_avg_min_angle_deg", r.chartTrial->chartsAvgMinAngle},
                                                         {"one_cut_hausdorff_percent", r.chartTrial->oneCutHausdorff},
                                                         {"charts_hausdorff_percent", r.chartTrial->chartsHausdorff},
+                                                        {"one_cut_bars_met", r.chartTrial->oneCutBars},
+                                                        {"charts_bars_met", r.chartTrial->chartsBars},
                                                         {"kept", r.charts > 0 ? "charts" : "one-cut"},
                                                         {"failed", r.chartTrial->failed}}
                                        : nlohmann::json()},
@@ -148,7 +150,8 @@ std::string chartTrialText(const RemeshResult& r) {
          " (remeshed both ways, as one disk and chart by chart): average smallest angle " +
          format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +
          format("%.1f", t.oneCutAvgMinAngle) + " deg one disk; Hausdorff " + format("%.3f", t.chartsHausdorff) +
-         "% and " + format("%.3f", t.oneCutHausdorff) + "%";
+         "% and " + format("%.3f", t.oneCutHausdorff) + "%; bars met (irregular, smallest angle, average) " +
+         std::to_string(t.chartsBars) + " and " + std::to_string(t.oneCutBars);
 }
 
 std::string distanceText(const Fidelity& f) {

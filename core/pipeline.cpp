@@ -481,6 +481,8 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
     trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
     trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
+    trial.oneCutBars = barsMet(kept.after);
+    trial.chartsBars = barsMet(charted.after);
     const bool better = trial.chartsBetter();
     RemeshResult& other = better ? kept : charted;
     const double otherMs = other.ms.total - other.ms.metrics, checks = other.ms.metrics;
@@ -618,6 +620,9 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
 }
 
 bool ChartTrial::chartsBetter() const {
+  // More bars met decides where that one is at most 1 / kCloserBy times as far as the other.
+  if (chartsBars > oneCutBars && kCloserBy * chartsHausdorff <= oneCutHausdorff) return true;
+  if (oneCutBars > chartsBars && kCloserBy * oneCutHausdorff <= chartsHausdorff) return false;
   const bool rounder = chartsAvgMinAngle > oneCutAvgMinAngle && chartsHausdorff <= kFartherBy * oneCutHausdorff;
   const bool closer = chartsHausdorff <= kCloserBy * oneCutHausdorff && chartsAvgMinAngle >= oneCutAvgMinAngle - kRounderBy;
   // And the other way round: much rounder, and not much farther.

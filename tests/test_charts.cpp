@@ -211,9 +211,12 @@ TEST(Charts, AChartsLastStepsWaitForTheStitch) {
   EXPECT_EQ(r.snappedTips, 0);
 }
 
-TEST(Charts, AreKeptWhereRounderOrCloser) {
-  auto trial = [](double chartsAngle, double oneCutAngle, double chartsDistance, double oneCutDistance) {
+TEST(Charts, AreKeptWhereTheyMeetMoreBarsOrAreRounderOrCloser) {
+  auto trial = [](double chartsAngle, double oneCutAngle, double chartsDistance, double oneCutDistance,
+                  int chartsBars = 0, int oneCutBars = 0) {
     ChartTrial t;
+    t.chartsBars = chartsBars;
+    t.oneCutBars = oneCutBars;
     t.chartsAvgMinAngle = chartsAngle;
     t.oneCutAvgMinAngle = oneCutAngle;
     t.chartsHausdorff = chartsDistance;
@@ -227,4 +230,10 @@ TEST(Charts, AreKeptWhereRounderOrCloser) {
   EXPECT_TRUE(trial(53.2, 54.3, 1.60, 2.41));  // the spool: closer, nearly as round
   EXPECT_FALSE(trial(52.0, 54.5, 0.5, 1.0));   // closer, but much less round
   EXPECT_FALSE(trial(54.0, 54.0, 0.9, 1.0));   // as round and a little closer: not worth it
+  // More of issue 5's bars met decides first: CGAL's anchor, its one cut 1.2 deg at worst.
+  EXPECT_TRUE(trial(53.6, 51.9, 1.243, 1.124, 2, 1));
+  EXPECT_FALSE(trial(53.6, 51.9, 1.243, 1.124, 1, 2));
+  EXPECT_FALSE(trial(53.6, 51.9, 1.243, 1.124, 2, 2));  // as many: 1.7 deg rounder, 1.11x as far
+  EXPECT_FALSE(trial(53.4, 51.7, 1.645, 1.207, 2, 1));  // CGAL's dino: more bars, but 1.36x as far
+  EXPECT_TRUE(trial(53.2, 54.3, 1.60, 2.41, 1, 2));     // the spool: fewer bars, but far closer
 }
