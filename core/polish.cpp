@@ -1067,8 +1067,7 @@ class ValenceMover {
       }
       flips.flip(*k);
       made.push_back(*k);
-      for (int v : {k->a, k->b}) --change[v];
-      for (int v : {k->c, k->d}) ++change[v];
+      for (int v : {k->a, k->b, k->c, k->d}) change[v] += changeOf(*k, v);
     }
     ValenceGain gain;
     for (const auto& [v, by] : change) gain.add(flips, v, -by, 0);
