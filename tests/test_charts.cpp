@@ -158,13 +158,13 @@ TEST(Charts, ADiskNoConformalMapHoldsIsRemeshedChartByChartToo) {
 
 // The smallest angle of the triangles with an edge on m's border.
 double smallestAngleOnTheBorder(const Mesh& m) {
-  std::map<std::pair<int, int>, int> sides;  // edge (a < b) -> triangles
-  for (const Triangle& t : m.triangles)
-    for (int k = 0; k < 3; ++k) ++sides[std::minmax(t[k], t[(k + 1) % 3])];
+  std::set<std::pair<int, int>> border;  // (a < b)
+  for (const std::vector<int>& loop : analyzeTopology(m).boundaryLoops)
+    for (size_t i = 0; i < loop.size(); ++i) border.insert(std::minmax(loop[i], loop[(i + 1) % loop.size()]));
   double smallest = 180;
   for (const Triangle& t : m.triangles)
     for (int k = 0; k < 3; ++k)
-      if (sides[std::minmax(t[k], t[(k + 1) % 3])] == 1) {
+      if (border.count(std::minmax(t[k], t[(k + 1) % 3]))) {
         const auto angles = cornerAnglesDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
         smallest = std::min(smallest, std::min({angles[0], angles[1], angles[2]}));
       }
