@@ -98,6 +98,12 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                         {"kept", r.charts > 0 ? "charts" : "one-cut"},
                                                         {"failed", r.chartTrial->failed}}
                                        : nlohmann::json()},
+          {"first_pass_trial", r.firstPassTrial ? nlohmann::json{{"with_bars_met", r.firstPassTrial->withBars},
+                                                                 {"without_bars_met", r.firstPassTrial->withoutBars},
+                                                                 {"with_hausdorff_percent", r.firstPassTrial->withHausdorff},
+                                                                 {"without_hausdorff_percent", r.firstPassTrial->withoutHausdorff},
+                                                                 {"kept", r.firstPassTrial->keptWithout ? "without" : "with"}}
+                                               : nlohmann::json()},
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
@@ -152,6 +158,15 @@ std::string chartTrialText(const RemeshResult& r) {
          format("%.1f", t.oneCutAvgMinAngle) + " deg one disk; Hausdorff " + format("%.3f", t.chartsHausdorff) +
          "% and " + format("%.3f", t.oneCutHausdorff) + "%; bars met (irregular, smallest angle, average) " +
          std::to_string(t.chartsBars) + " and " + std::to_string(t.oneCutBars);
+}
+
+std::string firstPassTrialText(const RemeshResult& r) {
+  if (!r.firstPassTrial) return "";
+  const FirstPassTrial& t = *r.firstPassTrial;
+  return std::string(r.firstPassTrial->keptWithout ? "Kept without the first resampling" : "Kept with the first resampling") +
+         " (a bar was missed with it: remeshed without it too): bars met (irregular, smallest angle, average) " +
+         std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without; Hausdorff " +
+         format("%.3f", t.withHausdorff) + "% and " + format("%.3f", t.withoutHausdorff) + "%";
 }
 
 std::string distanceText(const Fidelity& f) {
@@ -210,6 +225,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << (r.cut.extremityCuts == 1 ? " slit" : " slits") << " through extremities), conformal area spread " << format("%.3g", r.cut.areaSpread)
         << "\n";
   if (r.slitTrial) out << slitTrialText(r) << "\n";
+  if (r.firstPassTrial) out << firstPassTrialText(r) << "\n";
   if (r.chartTrial) out << chartTrialText(r) << "\n";
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips

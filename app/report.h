@@ -22,6 +22,9 @@ std::string withoutResamplingText(const std::string& problem);
 // "Kept slit open (remeshed both slit open and whole: ...): ..." (RemeshResult::slitTrial), or
 // "" when the disk was not tried both ways.
 std::string slitTrialText(const RemeshResult& r);
+// "Kept without the first resampling (...): bars met ... with, ... without; Hausdorff ..."
+// (RemeshResult::firstPassTrial), or "" if there was no such trial.
+std::string firstPassTrialText(const RemeshResult& r);
 // "Kept chart by chart (...)" or "Kept as one disk (...)"; empty without a chart trial.
 std::string chartTrialText(const RemeshResult& r);
 

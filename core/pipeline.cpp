@@ -395,7 +395,9 @@ bool addPart(RemeshResult& whole, RemeshResult& part, const std::string& label, 
   return true;
 }
 
+// Once: a result a trial measured already keeps its distances.
 void measureFidelityOf(RemeshResult& result, const Mesh& input) {
+  if (result.fidelity.samples > 0) return;
   Stopwatch stage;
   result.fidelity = measureFidelity(result.output, input);
   const double ms = stage.lap();
@@ -543,13 +545,33 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
   return kept;
 }
 
+// The disk remeshed without the first pass too where its result misses a bar, and that kept if
+// FirstPassTrial::withoutBetter(); both are measured against the input to tell.
+void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  if (!usesResampling(options) || !kept.resampleDropped.empty() || barsMet(kept.after) == 3) return;
+  RemeshResult other = remeshDisk(input, withoutResampling(options), name);
+  measureFidelityOf(kept, input);
+  measureFidelityOf(other, input);
+  FirstPassTrial trial;
+  trial.withBars = barsMet(kept.after);
+  trial.withoutBars = barsMet(other.after);
+  trial.withHausdorff = kept.fidelity.hausdorffPercent;
+  trial.withoutHausdorff = other.fidelity.hausdorffPercent;
+  trial.keptWithout = trial.withoutBetter();
+  if (trial.keptWithout) std::swap(kept, other);
+  kept.firstPassTrial = trial;
+  kept.ms.compared += other.ms.total - other.ms.metrics;
+  kept.ms.metrics += other.ms.metrics;
+}
+
 // A map with a fixed border (mean value, Tutte) is what the one disk got where no conformal
 // map of it held.
 bool conformalHeld(ParamMethod used) { return used == ParamMethod::Lscm || used == ParamMethod::Given; }
 
 // A disk is remeshed as one (remeshDisk), a surface of another topology cut open to one disk;
 // either is remeshed chart by chart too (tryCharts), a disk only where its map is not
-// conformal. Not with a map or first pass the user chose: the charts need the automatic map.
+// conformal (not with a map or first pass the user chose: the charts need the automatic map);
+// a disk whose result still misses a bar without the first pass too (tryWithoutFirstPass).
 RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& options, const std::string& name) {
   Stopwatch wall;
   RemeshOptions once = options;
@@ -558,7 +580,9 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   const bool triesCharts = options.param.method == ParamMethod::Auto && usesResampling(options) &&
                            (!disk || !conformalHeld(kept.paramUsed));
   if (triesCharts) tryCharts(kept, input, options, name);
-  else if (options.measureFidelity) measureFidelityOf(kept, input);
+  if (disk) tryWithoutFirstPass(kept, input, once, name);
+  if (options.measureFidelity) measureFidelityOf(kept, input);
+  else kept.fidelity = Fidelity{};  // a trial measured it to choose; the user asked for none
   kept.ms.total = wall.lap();  // every run, side by side or one after the other
   return kept;
 }
@@ -619,15 +643,22 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
   return result;
 }
 
+bool meetsMoreBars(int bars, double hausdorff, int otherBars, double otherHausdorff) {
+  return bars > otherBars && hausdorff <= 1.25 * otherHausdorff;
+}
+
 bool ChartTrial::chartsBetter() const {
-  // More bars met decides where that one is at most 1 / kCloserBy times as far as the other.
-  if (chartsBars > oneCutBars && kCloserBy * chartsHausdorff <= oneCutHausdorff) return true;
-  if (oneCutBars > chartsBars && kCloserBy * oneCutHausdorff <= chartsHausdorff) return false;
+  if (meetsMoreBars(chartsBars, chartsHausdorff, oneCutBars, oneCutHausdorff)) return true;
+  if (meetsMoreBars(oneCutBars, oneCutHausdorff, chartsBars, chartsHausdorff)) return false;
   const bool rounder = chartsAvgMinAngle > oneCutAvgMinAngle && chartsHausdorff <= kFartherBy * oneCutHausdorff;
   const bool closer = chartsHausdorff <= kCloserBy * oneCutHausdorff && chartsAvgMinAngle >= oneCutAvgMinAngle - kRounderBy;
   // And the other way round: much rounder, and not much farther.
   const bool muchRounder = chartsAvgMinAngle >= oneCutAvgMinAngle + kRounderBy && kCloserBy * chartsHausdorff <= oneCutHausdorff;
   return rounder || closer || muchRounder;
+}
+
+bool FirstPassTrial::withoutBetter() const {
+  return meetsMoreBars(withoutBars, withoutHausdorff, withBars, withHausdorff);
 }
 
 bool usesResampling(const RemeshOptions& options) { return effective(options).resample; }

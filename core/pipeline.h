@@ -74,6 +74,15 @@ struct SlitTrial {
   double slit = 0, whole = 0;
 };
 
+// Both trials' first rule: a result that meets more of issue 5's bars that need no reference
+// (irregular at most 15%, no angle under 30 degrees, an average smallest angle of 53 or more)
+// than another, and is at most 1.25 times as far from the input (Hausdorff), is the better.
+// (Without the bars, CGAL's anchor at 2000 vertices kept a one cut with a 1.2 degree triangle
+// over charts with 35.3, 1.7 degrees rounder on average but 1.11 times as far; without the
+// bound on the distance, CGAL's dino would take its charts, 1.36 times as far, for the bar of
+// the average smallest angle.)
+bool meetsMoreBars(int bars, double hausdorff, int otherBars, double otherHausdorff);
+
 // A surface remeshed as one disk (cut open to one if it is not a disk) and chart by chart too:
 // what each gave.
 struct ChartTrial {
@@ -85,16 +94,30 @@ struct ChartTrial {
   int oneCutBars = 0, chartsBars = 0;
   std::string failed;  // not empty: the chart by chart run failed (why), the one cut stands
 
-  // Where one of the two meets more of the bars and is at most 1 / kCloserBy times as far from
-  // the input (Hausdorff) as the other, it is kept. Else the charts are kept if they are
-  // rounder (a larger average smallest angle) and at most kFartherBy times as far, or at most
-  // kCloserBy times as far and at most kRounderBy degrees less round, or kRounderBy degrees
-  // rounder and at most 1 / kCloserBy times as far. (Without the bars, CGAL's anchor at 2000
-  // vertices kept a one cut with a 1.2 degree triangle over charts with 35.3, 1.7 degrees
-  // rounder on average but 1.11 times as far; without the bound on the distance, CGAL's dino
-  // would take its charts, 1.36 times as far, for the bar of the average smallest angle.)
+  // Where one of the two meets more of the bars (meetsMoreBars()), it is kept. Else the charts
+  // are kept if they are rounder (a larger average smallest angle) and at most kFartherBy
+  // times as far, or at most kCloserBy times as far and at most kRounderBy degrees less round,
+  // or kRounderBy degrees rounder and at most 1 / kCloserBy times as far.
   static constexpr double kFartherBy = 1.1, kCloserBy = 0.8, kRounderBy = 2.0;
   bool chartsBetter() const;
+};
+
+// A disk whose result misses one of issue 5's bars that need no reference is remeshed without
+// the first pass too (RemeshOptions::resample): where the first pass's chords bridge a fold
+// narrower than its edges (the lips of a camel's mouth), the cells of its map crowd into the
+// fold. What each run gave.
+struct FirstPassTrial {
+  int withBars = 0, withoutBars = 0;  // bars met, as ChartTrial counts them
+  double withHausdorff = 0, withoutHausdorff = 0;  // % of the diagonal
+  bool keptWithout = false;
+
+  // The run without is kept where it meets more bars (meetsMoreBars()). On the 36 disks of
+  // issue 5's sweep it was kept on the camel head at 1000 vertices (12.3 -> 31.4 degrees,
+  // Hausdorff 2.34 -> 1.27%), then meeting all bars; at 0.75 of their sizes on the camel head
+  // and CGAL's lion head (25.6 -> 32.2 degrees, 2.48 -> 1.23%). Twice as far would have kept
+  // CGAL's man clipped in half at 2000 too (24.2 -> 33.7 degrees, 0.80 -> 1.47%, CGAL's 2.02%),
+  // and a spike's result that no longer reaches the spike (6.0 -> 8.3%).
+  bool withoutBetter() const;
 };
 
 // The fewest vertices remesh() remeshes a connected component to. One whose share of the
@@ -126,6 +149,7 @@ struct RemeshResult {
   int charts = 0;
   Mesh largestChart;  // with charts > 0: the chart the recording is of
   std::optional<ChartTrial> chartTrial;
+  std::optional<FirstPassTrial> firstPassTrial;
   StageTimes ms;
 };
 

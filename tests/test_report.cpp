@@ -20,3 +20,24 @@ TEST(Report, TheDistanceToTheInputIsShownOnlyWhereMeasured) {
   EXPECT_NE(measured.find("%, RMS "), std::string::npos) << measured;
   EXPECT_NE(measured.find("% of diagonal"), std::string::npos) << measured;
 }
+
+// The first pass trial's line says which run was kept, the bars each met and their distances;
+// a run without the trial has none.
+TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
+  RemeshResult r;
+  EXPECT_EQ(firstPassTrialText(r), "");
+  r.firstPassTrial = FirstPassTrial{};
+  r.firstPassTrial->withBars = 2;
+  r.firstPassTrial->withoutBars = 3;
+  r.firstPassTrial->withHausdorff = 2.344;
+  r.firstPassTrial->withoutHausdorff = 1.268;
+  r.firstPassTrial->keptWithout = true;
+  const std::string text = firstPassTrialText(r);
+  EXPECT_EQ(text.rfind("Kept without the first resampling", 0), 0u) << text;
+  EXPECT_NE(text.find("2 with, 3 without; Hausdorff 2.344% and 1.268%"), std::string::npos) << text;
+  r.firstPassTrial->keptWithout = false;
+  EXPECT_EQ(firstPassTrialText(r).rfind("Kept with the first resampling", 0), 0u);
+  const nlohmann::json json = toJson(r, RemeshOptions{});
+  EXPECT_EQ(json["first_pass_trial"]["kept"], "with");
+  EXPECT_EQ(json["first_pass_trial"]["without_bars_met"], 3);
+}
