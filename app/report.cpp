@@ -102,7 +102,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                                  {"without_bars_met", r.firstPassTrial->withoutBars},
                                                                  {"with_hausdorff_percent", r.firstPassTrial->withHausdorff},
                                                                  {"without_hausdorff_percent", r.firstPassTrial->withoutHausdorff},
-                                                                 {"kept", r.firstPassTrial->keptWithout ? "without" : "with"}}
+                                                                 {"kept", r.firstPassTrial->keptWithout ? "without" : "with"},
+                                                                 {"failed", r.firstPassTrial->failed}}
                                                : nlohmann::json()},
           {"iterations", r.iterations},
           {"converged", r.converged},
@@ -163,6 +164,9 @@ std::string chartTrialText(const RemeshResult& r) {
 std::string firstPassTrialText(const RemeshResult& r) {
   if (!r.firstPassTrial) return "";
   const FirstPassTrial& t = *r.firstPassTrial;
+  if (!t.failed.empty())
+    return "Kept with the first resampling (a bar was missed with it: remeshed without it too, which failed: " +
+           t.failed + ")";
   return std::string(r.firstPassTrial->keptWithout ? "Kept without the first resampling" : "Kept with the first resampling") +
          " (a bar was missed with it: remeshed without it too): bars met (irregular, smallest angle, average) " +
          std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without; Hausdorff " +

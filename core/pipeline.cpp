@@ -549,7 +549,14 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
 // FirstPassTrial::withoutBetter(); both are measured against the input to tell.
 void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name) {
   if (!usesResampling(options) || !kept.resampleDropped.empty() || barsMet(kept.after) == 3) return;
-  RemeshResult other = remeshDisk(input, withoutResampling(options), name);
+  RemeshResult other;
+  try {
+    other = remeshDisk(input, withoutResampling(options), name);
+  } catch (const Error& e) {
+    kept.firstPassTrial = FirstPassTrial{};
+    kept.firstPassTrial->failed = problemOf(e, name);
+    return;
+  }
   measureFidelityOf(kept, input);
   measureFidelityOf(other, input);
   FirstPassTrial trial;

@@ -110,6 +110,8 @@ struct FirstPassTrial {
   int withBars = 0, withoutBars = 0;  // bars met, as ChartTrial counts them
   double withHausdorff = 0, withoutHausdorff = 0;  // % of the diagonal
   bool keptWithout = false;
+  std::string failed;  // not empty: the run without failed (why; with --param lscm its map may
+                       // fold on the input's slivers), the first stands
 
   // The run without is kept where it meets more bars (meetsMoreBars()). On the 36 disks of
   // issue 5's sweep it was kept on the camel head at 1000 vertices (12.3 -> 31.4 degrees,

@@ -40,4 +40,8 @@ TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
   const nlohmann::json json = toJson(r, RemeshOptions{});
   EXPECT_EQ(json["first_pass_trial"]["kept"], "with");
   EXPECT_EQ(json["first_pass_trial"]["without_bars_met"], 3);
+  r.firstPassTrial = FirstPassTrial{};
+  r.firstPassTrial->failed = "m.off: the parameterization is not one-to-one";
+  EXPECT_EQ(firstPassTrialText(r), "Kept with the first resampling (a bar was missed with it: remeshed without it "
+                                   "too, which failed: m.off: the parameterization is not one-to-one)");
 }
