@@ -548,7 +548,9 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
 // The disk remeshed without the first pass too where its result misses a bar, and that kept if
 // FirstPassTrial::withoutBetter(); both are measured against the input to tell.
 void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  if (!usesResampling(options) || !kept.resampleDropped.empty() || barsMet(kept.after) == 3) return;
+  // Without the polish the bars are not what a run aims at (`--polish -1` shows what it buys).
+  if (!usesResampling(options) || options.polish <= 0 || !kept.resampleDropped.empty() || barsMet(kept.after) == 3)
+    return;
   RemeshResult other;
   try {
     other = remeshDisk(input, withoutResampling(options), name);

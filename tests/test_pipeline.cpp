@@ -182,6 +182,20 @@ TEST(Pipeline, TheFirstPassStandsWhereTheRunWithoutFails) {
   EXPECT_NEAR(r.output.vertexCount(), 1500, 30);
 }
 
+// Without the polish (--polish -1, the bench's row that shows what it buys) a run that misses
+// the bars is left as it is.
+TEST(Pipeline, OnlyAPolishedRunIsTriedWithoutTheFirstPass) {
+  RemeshOptions o;
+  o.sites.count = 60;
+  o.measureFidelity = false;
+  const Mesh grid = test::grid(8);
+  EXPECT_TRUE(remesh(grid, o, "grid").firstPassTrial.has_value());  // a bar missed
+  o.polish = -1;
+  const RemeshResult raw = remesh(grid, o, "grid");
+  EXPECT_TRUE(raw.after.irregularBoundaryAware > 15.0 || raw.after.minAngle < 30.0 || raw.after.avgMinAngle < 53.0);
+  EXPECT_FALSE(raw.firstPassTrial.has_value());
+}
+
 TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFarther) {
   auto keptWithout = [](int withBars, int withoutBars, double withDistance, double withoutDistance) {
     FirstPassTrial t;
