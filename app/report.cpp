@@ -167,7 +167,7 @@ std::string firstPassTrialText(const RemeshResult& r) {
   if (!t.failed.empty())
     return "Kept with the first resampling (a bar was missed with it: remeshed without it too, which failed: " +
            t.failed + ")";
-  return std::string(r.firstPassTrial->keptWithout ? "Kept without the first resampling" : "Kept with the first resampling") +
+  return std::string(t.keptWithout ? "Kept without the first resampling" : "Kept with the first resampling") +
          " (a bar was missed with it: remeshed without it too): bars met (irregular, smallest angle, average) " +
          std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without; Hausdorff " +
          format("%.3f", t.withHausdorff) + "% and " + format("%.3f", t.withoutHausdorff) + "%";

@@ -104,9 +104,8 @@ struct ChartTrial {
 
 // A disk whose result misses one of issue 5's bars that need no reference is remeshed without
 // the first pass too (RemeshOptions::resample; not without the polish, whose runs the bars are
-// not for): where the first pass's chords bridge a fold
-// narrower than its edges (the lips of a camel's mouth), the cells of its map crowd into the
-// fold. What each run gave.
+// not for): where the first pass's chords bridge a fold narrower than its edges (the lips of a
+// camel's mouth), the cells of its map crowd into the fold. What each run gave.
 struct FirstPassTrial {
   int withBars = 0, withoutBars = 0;  // bars met, as ChartTrial counts them
   double withHausdorff = 0, withoutHausdorff = 0;  // % of the diagonal
