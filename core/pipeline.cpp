@@ -556,6 +556,7 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
     other = remeshDisk(input, withoutResampling(options), name);
   } catch (const Error& e) {
     kept.firstPassTrial = FirstPassTrial{};
+    kept.firstPassTrial->withBars = barsMet(kept.after);
     kept.firstPassTrial->failed = problemOf(e, name);
     return;
   }

@@ -164,8 +164,9 @@ TEST(Pipeline, ADiskThatMissesABarIsRemeshedWithoutTheFirstPassToo) {
 }
 
 // Where the run without the first pass fails, the first stands: CGAL's mannequin as the bench
-// prepares it at 2000 vertices, remeshed to 1500 with LSCM asked for, misses the smallest
-// angle's bar, and LSCM of the input itself folds a triangle (remesh failed on it, before).
+// prepares it at 2000 vertices, remeshed to 1500 with LSCM asked for and one polish pass,
+// misses the smallest angle's bar, and LSCM of the input itself folds a triangle (remesh
+// failed on it, before).
 TEST(Pipeline, TheFirstPassStandsWhereTheRunWithoutFails) {
   const std::string path = test::cgalSample("mannequin-devil.off");
   SKIP_UNLESS_EXTRACTED(path);
@@ -173,12 +174,14 @@ TEST(Pipeline, TheFirstPassStandsWhereTheRunWithoutFails) {
   RemeshOptions o;
   o.sites.count = 1500;
   o.param.method = ParamMethod::Lscm;
+  o.polish = 1;
   o.measureFidelity = false;
   RemeshResult r;
   ASSERT_NO_THROW(r = remesh(input, o, path));
   ASSERT_TRUE(r.firstPassTrial.has_value());
   EXPECT_NE(r.firstPassTrial->failed.find("not one-to-one"), std::string::npos) << r.firstPassTrial->failed;
   EXPECT_FALSE(r.firstPassTrial->keptWithout);
+  EXPECT_LT(r.firstPassTrial->withBars, 3);
   EXPECT_NEAR(r.output.vertexCount(), 1500, 30);
 }
 
@@ -211,6 +214,22 @@ TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFa
   EXPECT_FALSE(keptWithout(0, 1, 6.05, 8.26));  // a spike no longer reached
   EXPECT_FALSE(keptWithout(2, 2, 2.34, 1.27));  // as many bars: the first pass stands
   EXPECT_FALSE(keptWithout(2, 1, 2.34, 1.27));
+}
+
+// A local change of the last steps (a valence move, a vertex moved for its angles) may take a
+// chord up to three quarters of the farthest anywhere from the input (half before): CGAL's
+// nefertiti as the bench prepares it at 500 vertices went 9.8 -> 8.0% irregular.
+TEST(Pipeline, LastStepsMayStrayThreeQuartersOfTheFarthestAnywhere) {
+  const std::string path = test::cgalSample("nefertiti.off");
+  SKIP_UNLESS_EXTRACTED(path);
+  const Mesh input = simplify(subdivideTo(readMesh(path).mesh, 1000), {500}, path).mesh;
+  RemeshOptions o;
+  o.sites.count = 500;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(input, o, path);
+  EXPECT_LE(r.after.irregularBoundaryAware, 9.0);
+  EXPECT_GE(r.after.minAngle, 30.0);
+  EXPECT_GE(r.after.avgMinAngle, 53.0);
 }
 
 TEST(Session, SteppingByHandGivesTheSameRunAsRemesh) {
