@@ -28,11 +28,6 @@ struct Row {
   StageTimes stages;        // Lloydscope's rows only
 };
 
-// The bench's input: the model subdivided (if small) and quadric-simplified to `size`.
-Mesh prepare(const Mesh& model, int size, const std::string& name) {
-  return simplify(subdivideTo(model, 2 * size), {size}, name).mesh;
-}
-
 Row lloydscopeRow(const std::string& model, int size, const std::string& method,
                   const Mesh& input, const RemeshOptions& options) {
   RemeshResult r;
@@ -115,7 +110,7 @@ void runBench(const BenchOptions& options) {
     const std::string& path = models[m];
     const Mesh& model = meshes[m];
     for (int size : options.sizes) {
-      const Mesh input = prepare(model, size, path);
+      const Mesh input = benchInput(model, size, path);
       if (!options.saveInputs.empty())
         writeMesh(input, options.saveInputs + "/" + name(path) + "_" + std::to_string(size) + ".off");
       const Row peer = isotropicRow(name(path), size, input);

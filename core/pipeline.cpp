@@ -395,6 +395,13 @@ bool addPart(RemeshResult& whole, RemeshResult& part, const std::string& label, 
   return true;
 }
 
+// The run a trial did not keep counts in the kept one's times: its own work as `compared`, its
+// measuring as metrics.
+void countTheOtherRun(RemeshResult& kept, const RemeshResult& other) {
+  kept.ms.compared += other.ms.total - other.ms.metrics;
+  kept.ms.metrics += other.ms.metrics;
+}
+
 // Once: a result a trial measured already keeps its distances.
 void measureFidelityOf(RemeshResult& result, const Mesh& input) {
   if (result.fidelity.samples > 0) return;
@@ -485,17 +492,12 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
     trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
     trial.oneCutBars = barsMet(kept.after);
     trial.chartsBars = barsMet(charted.after);
-    const bool better = trial.chartsBetter();
-    RemeshResult& other = better ? kept : charted;
-    const double otherMs = other.ms.total - other.ms.metrics, checks = other.ms.metrics;
-    if (better) kept = std::move(charted);
+    if (trial.chartsBetter()) std::swap(kept, charted);
     kept.chartTrial = trial;
-    kept.ms.compared += otherMs;
-    kept.ms.metrics += checks;
+    countTheOtherRun(kept, charted);
   } catch (const Error& e) {  // a chart failed, or its seams did not stitch: the one cut stands
     kept.chartTrial = ChartTrial{};
     kept.chartTrial->failed = problemOf(e, name);
-    if (options.measureFidelity) measureFidelityOf(kept, input);
   }
 }
 
@@ -536,8 +538,7 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
       const SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle};
       if (betterThan(other.after, kept.after)) std::swap(kept, other);
       kept.slitTrial = trial;
-      kept.ms.compared = other.ms.total - other.ms.metrics;
-      kept.ms.metrics += other.ms.metrics;
+      countTheOtherRun(kept, other);
     } catch (const Error&) {
       // the slit one stands alone
     }
@@ -570,8 +571,7 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
   trial.keptWithout = trial.withoutBetter();
   if (trial.keptWithout) std::swap(kept, other);
   kept.firstPassTrial = trial;
-  kept.ms.compared += other.ms.total - other.ms.metrics;
-  kept.ms.metrics += other.ms.metrics;
+  countTheOtherRun(kept, other);
 }
 
 // A map with a fixed border (mean value, Tutte) is what the one disk got where no conformal

@@ -94,4 +94,8 @@ Mesh subdivideTo(const Mesh& input, int vertices) {
   return fromSurfaceMesh(sm);
 }
 
+Mesh benchInput(const Mesh& model, int size, const std::string& name) {
+  return simplify(subdivideTo(model, 2 * size), {size}, name).mesh;
+}
+
 }  // namespace lloydscope

@@ -31,4 +31,8 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
 // Loop subdivision rounds until the mesh has at least `vertices` vertices.
 Mesh subdivideTo(const Mesh& input, int vertices);
 
+// A model brought to `size` vertices as issue 5's bench prepares its inputs: Loop-subdivided
+// to twice that if it is smaller, then quadric-simplified (simplify()).
+Mesh benchInput(const Mesh& model, int size, const std::string& name);
+
 }  // namespace lloydscope

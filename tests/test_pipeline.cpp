@@ -147,7 +147,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, CgalSamples,
 TEST(Pipeline, ADiskThatMissesABarIsRemeshedWithoutTheFirstPassToo) {
   const std::string path = test::cgalSample("lion-head.off");
   SKIP_UNLESS_EXTRACTED(path);
-  const Mesh input = simplify(subdivideTo(readMesh(path).mesh, 4000), {2000}, path).mesh;
+  const Mesh input = benchInput(readMesh(path).mesh, 2000, path);
   RemeshOptions o;
   o.sites.count = 1500;
   const RemeshResult r = remesh(input, o, path);
@@ -170,7 +170,7 @@ TEST(Pipeline, ADiskThatMissesABarIsRemeshedWithoutTheFirstPassToo) {
 TEST(Pipeline, TheFirstPassStandsWhereTheRunWithoutFails) {
   const std::string path = test::cgalSample("mannequin-devil.off");
   SKIP_UNLESS_EXTRACTED(path);
-  const Mesh input = simplify(subdivideTo(readMesh(path).mesh, 4000), {2000}, path).mesh;
+  const Mesh input = benchInput(readMesh(path).mesh, 2000, path);
   RemeshOptions o;
   o.sites.count = 1500;
   o.param.method = ParamMethod::Lscm;
@@ -222,7 +222,7 @@ TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFa
 TEST(Pipeline, LastStepsMayStrayThreeQuartersOfTheFarthestAnywhere) {
   const std::string path = test::cgalSample("nefertiti.off");
   SKIP_UNLESS_EXTRACTED(path);
-  const Mesh input = simplify(subdivideTo(readMesh(path).mesh, 1000), {500}, path).mesh;
+  const Mesh input = benchInput(readMesh(path).mesh, 500, path);
   RemeshOptions o;
   o.sites.count = 500;
   o.measureFidelity = false;
