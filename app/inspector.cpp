@@ -151,6 +151,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   // Likewise a disk kept as remeshed without the first resampling.
   if (result_.firstPassTrial && result_.firstPassTrial->keptWithout) options_.resample = false;
   if (result_.firstPassTrial) message_ = firstPassTrialText(result_) + (message_.empty() ? "" : ". " + message_);
+  if (result_.coarseInput > 0) message_ = coarseInputText(result_) + (message_.empty() ? "" : ". " + message_);
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
     message_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "

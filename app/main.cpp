@@ -24,7 +24,8 @@ struct RemeshArgs {
   int sites = 0, simplify = 0, polish = 3;
   int maxIterations = 0;
   double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1, floor = 0.1;
-  bool json = false, noFidelity = false, noResample = false, noSnap = false, noFit = false, noSlit = false;
+  bool json = false, noFidelity = false, noResample = false, noSnap = false, noFit = false, noSlit = false,
+       fullInput = false;
 };
 
 // The preset first, then whatever the user named explicitly on top of it.
@@ -60,6 +61,7 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   if (a.noSnap) o.snapToTips = false;
   if (a.noFit) o.fit = false;
   if (a.noSlit) o.slitDisks = false;
+  if (a.fullInput) o.coarsenInput = false;
   if (cmd.count("--polish-target")) o.polishTarget = parsePolishTarget(a.polishTarget);
   return o;
 }
@@ -131,6 +133,10 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_flag("--no-slit", r.noSlit,
                "Keep a nearly closed disk whole (by default it is also remeshed slit open, and the "
                "result meeting more of the quality bars kept, then the larger average smallest angle)");
+  cmd.add_flag("--full-input", r.fullInput,
+               "Remesh a large input as it is (by default, one with more than 10 vertices per vertex "
+               "asked, 5 over 10,000, is simplified to that many first; the last steps and the distances "
+               "are against the input itself either way)");
   cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
 }
 

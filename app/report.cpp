@@ -105,6 +105,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                                  {"kept", r.firstPassTrial->keptWithout ? "without" : "with"},
                                                                  {"failed", r.firstPassTrial->failed}}
                                                : nlohmann::json()},
+          {"coarse_input_vertices", r.coarseInput},
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
@@ -173,6 +174,14 @@ std::string firstPassTrialText(const RemeshResult& r) {
          format("%.3f", t.withHausdorff) + "% and " + format("%.3f", t.withoutHausdorff) + "%";
 }
 
+std::string coarseInputText(const RemeshResult& r) {
+  if (r.coarseInput <= 0) return "";
+  return "Simplified to " + std::to_string(r.coarseInput) + " vertices first (the input has " +
+         std::to_string(r.before.vertices) + ": more than " + std::to_string(r.coarseInput) +
+         " for the vertices asked; --full-input to keep it); the snaps, the fit and the distances are "
+         "against the input itself";
+}
+
 std::string distanceText(const Fidelity& f) {
   if (f.samples == 0) return "Distance to the input not measured (--no-fidelity)";
   return "Hausdorff " + format("%.3f", f.hausdorffPercent) + "%, RMS " + format("%.3f", f.rmsPercent) +
@@ -230,6 +239,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << "\n";
   if (r.slitTrial) out << slitTrialText(r) << "\n";
   if (r.firstPassTrial) out << firstPassTrialText(r) << "\n";
+  if (r.coarseInput > 0) out << coarseInputText(r) << "\n";
   if (r.chartTrial) out << chartTrialText(r) << "\n";
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips

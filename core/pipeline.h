@@ -23,6 +23,11 @@ struct RemeshOptions {
   // > 0: quadric edge collapse to this many vertices first, and as many in the result (without
   // sites.count): a coarser input is remeshed finer, to that size too.
   int simplifyTo = 0;
+  // Without simplifyTo, an input with more vertices than coarseInputSize(sites.count) is
+  // quadric-simplified to that many first: its cut, maps and Lloyd's domain are that size, while
+  // the last steps (snaps, fit) and the distances stay against the input itself. false: the
+  // input as it is, however large.
+  bool coarsenInput = true;
   // Parameterize a rough first remeshing of the input instead of the input (core/resample):
   // its conformal map holds where the input's slivers fold it. Not with relocate, nor with
   // the input's vertices as sites.
@@ -127,6 +132,10 @@ struct FirstPassTrial {
 // triangle), is kept as it is; a larger one is remeshed to this many.
 constexpr int kSmallestRemeshedShare = 20;
 
+// How many vertices a large input is simplified to before a run asked for `vertices`
+// (RemeshOptions::coarsenInput): ten per vertex asked, or five where ten would be over 10,000.
+int coarseInputSize(int vertices);
+
 struct RemeshResult {
   Mesh output;
   Recording recording;
@@ -152,6 +161,7 @@ struct RemeshResult {
   Mesh largestChart;  // with charts > 0: the chart the recording is of
   std::optional<ChartTrial> chartTrial;
   std::optional<FirstPassTrial> firstPassTrial;
+  int coarseInput = 0;  // > 0: the input was simplified to this many vertices first (coarsenInput)
   StageTimes ms;
 };
 
@@ -217,6 +227,7 @@ class RemeshSession {
   const Mesh& original() const { return original_; }
 
   RemeshOptions options_;
+  bool coarsened_;    // options_.simplifyTo is RemeshOptions::coarsenInput's, not the caller's
   std::string name_;  // of the input, for error messages
   StageTimes ms_;  // before the members whose initializers time themselves into it
   Mesh original_;                 // the user's mesh (input_ may be its simplification or cut)

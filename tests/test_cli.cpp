@@ -90,6 +90,15 @@ TEST(Cli, NoFitLeavesTheVerticesOnTheInput) {
             unfitted["output"]["fidelity"]["rms_percent_diagonal"].get<double>());
 }
 
+// An input with more than 10 vertices per vertex asked is simplified first; --full-input keeps it.
+TEST(Cli, FullInputKeepsALargeInputAsItIs) {
+  for (const std::string extra : {"", " --full-input"}) {
+    const CliRun r = runCli("remesh " + test::assetPath("bumpy_disk.off") + " --sites 60 --no-fidelity --json" + extra);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["coarse_input_vertices"], extra.empty() ? 600 : 0) << extra;
+  }
+}
+
 TEST(Cli, TheCurvatureDensitysFloorIsAnOption) {
   const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") +
                           " --density curvature --floor 4 --max-iterations 2 --no-fidelity --json");

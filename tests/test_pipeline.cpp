@@ -199,6 +199,34 @@ TEST(Pipeline, OnlyAPolishedRunIsTriedWithoutTheFirstPass) {
   EXPECT_FALSE(raw.firstPassTrial.has_value());
 }
 
+// An input far finer than the result asked for is simplified first: its cut, maps and Lloyd's
+// domain are then that size, while the result is measured against the input itself.
+TEST(Pipeline, ALargeInputIsSimplifiedToTenVerticesPerVertexAskedFirst) {
+  EXPECT_EQ(coarseInputSize(500), 5000);
+  EXPECT_EQ(coarseInputSize(1000), 10000);
+  EXPECT_EQ(coarseInputSize(2000), 10000);  // five per vertex over 10,000
+  EXPECT_EQ(coarseInputSize(4000), 20000);
+  const Mesh grid = test::grid(24);  // 625 vertices
+  RemeshOptions o;
+  o.sites.count = 40;
+  o.resample = false;  // Lloyd's domain is then the (simplified) input's map itself
+  o.measureFidelity = false;
+  const RemeshResult coarse = remesh(grid, o, "grid");
+  EXPECT_EQ(coarse.coarseInput, 400);
+  EXPECT_EQ(coarse.recording.input.vertexCount(), 400);
+  EXPECT_EQ(coarse.before.vertices, 625);  // measured against the input itself
+  o.coarsenInput = false;
+  const RemeshResult full = remesh(grid, o, "grid");
+  EXPECT_EQ(full.coarseInput, 0);
+  EXPECT_EQ(full.recording.input.vertexCount(), 625);
+  o.coarsenInput = true;
+  o.sites.count = 70;  // 700 > 625: as it is
+  EXPECT_EQ(remesh(grid, o, "grid").coarseInput, 0);
+  o.sites.count = 40;
+  o.simplifyTo = 500;  // the caller's simplification stands
+  EXPECT_EQ(remesh(grid, o, "grid").recording.input.vertexCount(), 500);
+}
+
 TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFarther) {
   auto keptWithout = [](int withBars, int withoutBars, double withDistance, double withoutDistance) {
     FirstPassTrial t;

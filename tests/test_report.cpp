@@ -23,6 +23,18 @@ TEST(Report, TheDistanceToTheInputIsShownOnlyWhereMeasured) {
 
 // The first pass trial's line says which run was kept, the bars each met and their distances;
 // a run without the trial has none.
+TEST(Report, ASimplifiedInputIsSaid) {
+  RemeshResult r;
+  EXPECT_EQ(coarseInputText(r), "");
+  r.coarseInput = 10000;
+  r.before.vertices = 45465;
+  EXPECT_EQ(coarseInputText(r), "Simplified to 10000 vertices first (the input has 45465: more than 10000 for the "
+                                "vertices asked; --full-input to keep it); the snaps, the fit and the distances "
+                                "are against the input itself");
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("Simplified to 10000 vertices first"), std::string::npos);
+  EXPECT_EQ(toJson(r, RemeshOptions{})["coarse_input_vertices"], 10000);
+}
+
 TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
   RemeshResult r;
   EXPECT_EQ(firstPassTrialText(r), "");
