@@ -10,11 +10,22 @@
 
 namespace lloydscope {
 
+namespace {
+double angleDeg(const Vec3& at, const Vec3& p, const Vec3& q) {  // at `at`, between p and q
+  return std::atan2((p - at).cross(q - at).norm(), (p - at).dot(q - at)) * 180.0 / M_PI;
+}
+}  // namespace
+
 std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& c) {
-  auto angle = [](const Vec3& at, const Vec3& p, const Vec3& q) {
-    return std::atan2((p - at).cross(q - at).norm(), (p - at).dot(q - at)) * 180.0 / M_PI;
-  };
-  return {angle(a, b, c), angle(b, c, a), angle(c, a, b)};
+  return {angleDeg(a, b, c), angleDeg(b, c, a), angleDeg(c, a, b)};
+}
+
+double smallestAngleDeg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  // Opposite the shortest edge.
+  const double ab = (b - a).squaredNorm(), bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm();
+  if (bc <= ab && bc <= ca) return angleDeg(a, b, c);
+  if (ca <= ab) return angleDeg(b, c, a);
+  return angleDeg(c, a, b);
 }
 
 QualityMetrics measureQuality(const Mesh& mesh) {

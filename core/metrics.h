@@ -37,5 +37,8 @@ Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference);
 
 // The three corner angles of a triangle, in degrees.
 std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& c);
+// The smallest of them, with one arctangent instead of three: the last steps' searches measure
+// millions of triangles (10-15% of their time at 1000 vertices).
+double smallestAngleDeg(const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace lloydscope

@@ -22,11 +22,6 @@ namespace {
 
 using EdgeKey = long long;
 
-double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const auto angles = cornerAnglesDeg(a, b, c);
-  return std::min({angles[0], angles[1], angles[2]});
-}
-
 // What a flip rule sees of edge (a, b) between triangles (a, b, c) and (b, a, d), which the
 // flip would turn into (c, a, d) and (d, b, c).
 struct Quad {
@@ -38,8 +33,8 @@ struct Quad {
   // On a cut surface: edge (a, b) and another become one edge of the stitched mesh (an inside
   // vertex joined to both copies of a seam sample), which would have 4 triangles.
   bool doubledWhenStitched;
-  double smallestBefore() const { return std::min(smallestAngle(a, b, c), smallestAngle(b, a, d)); }
-  double smallestAfter() const { return std::min(smallestAngle(c, a, d), smallestAngle(d, b, c)); }
+  double smallestBefore() const { return std::min(smallestAngleDeg(a, b, c), smallestAngleDeg(b, a, d)); }
+  double smallestAfter() const { return std::min(smallestAngleDeg(c, a, d), smallestAngleDeg(d, b, c)); }
 };
 using FlipRule = std::function<bool(const Quad& q)>;
 
@@ -547,7 +542,7 @@ void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, const Density& surf
   const Rings rings(m);
   std::vector<bool> bad(m.vertexCount(), false);
   for (const Triangle& t : m.triangles)
-    if (smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]) < kRepairBelow)
+    if (smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]) < kRepairBelow)
       for (int v : t) bad[v] = !border[v];
   for (int v = 0; v < m.vertexCount(); ++v) {
     if (!bad[v]) continue;
@@ -633,7 +628,7 @@ int collapseFlatTriangles(Mesh& m) {
   int merged = 0;
   for (size_t f = 0; f < m.triangles.size(); ++f) {
     const Triangle t = m.triangles[f];
-    if (t[0] == t[1] || smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]) >= kCollapseBelow)
+    if (t[0] == t[1] || smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]) >= kCollapseBelow)
       continue;
     // Its edges, shortest first; each end that is not on the border may go.
     std::array<int, 3> edges = {0, 1, 2};
@@ -826,7 +821,7 @@ double smallestAngleAround(const Mesh& m, const std::vector<bool>& marked) {
   double smallest = 180;
   for (const Triangle& t : m.triangles)
     if (marked[t[0]] || marked[t[1]] || marked[t[2]])
-      smallest = std::min(smallest, smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
+      smallest = std::min(smallest, smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
   return smallest;
 }
 
@@ -915,7 +910,7 @@ SmallestAngles smallestAnglesOf(const Mesh& m, const std::vector<int>& faces) {
   SmallestAngles angles;
   for (int f : faces) {
     const Triangle& t = m.triangles[f];
-    const double a = smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+    const double a = smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
     angles.smallest = std::min(angles.smallest, a);
     angles.mean += a;
   }
@@ -1174,7 +1169,7 @@ class AngleRaiser {
     // it to, in all rounds together.
     std::vector<int> count(m.vertexCount(), 0);
     for (const Triangle& t : m.triangles) {
-      const double a = smallestAngle(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+      const double a = smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
       for (int v : t) {
         meanFloor_[v] += a;
         ++count[v];
@@ -1203,7 +1198,7 @@ class AngleRaiser {
   std::vector<int> worstFirst(double below) const {
     std::vector<double> worst(m_.vertexCount(), 180.0);
     for (const Triangle& t : m_.triangles) {
-      const double a = smallestAngle(m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]);
+      const double a = smallestAngleDeg(m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]);
       for (int v : t) worst[v] = std::min(worst[v], a);
     }
     std::vector<int> vertices;
@@ -1330,7 +1325,7 @@ std::pair<double, double> smallestAnglesChanged(const Mesh& before, const Mesh& 
     double smallest = 180;
     for (const auto& key : placed(m))
       if (!other.count(key))
-        smallest = std::min(smallest, smallestAngle(Vec3(key[0], key[1], key[2]), Vec3(key[3], key[4], key[5]),
+        smallest = std::min(smallest, smallestAngleDeg(Vec3(key[0], key[1], key[2]), Vec3(key[3], key[4], key[5]),
                                                     Vec3(key[6], key[7], key[8])));
     return smallest;
   };
@@ -1432,7 +1427,7 @@ double smallestAngleOfRing(const Mesh& m, const Rings& rings, int v, const Vec3&
   for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
     const Triangle& t = m.triangles[rings.faces[k]];
     auto at = [&](int i) -> const Vec3& { return t[i] == v ? to : m.points[t[i]]; };
-    smallest = std::min(smallest, smallestAngle(at(0), at(1), at(2)));
+    smallest = std::min(smallest, smallestAngleDeg(at(0), at(1), at(2)));
   }
   return smallest;
 }

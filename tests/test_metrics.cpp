@@ -1,7 +1,9 @@
 #include "metrics.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <map>
+#include <random>
 
 using namespace lloydscope;
 
@@ -51,6 +53,27 @@ TEST(Quality, RightIsoscelesGrid) {
   EXPECT_NEAR(q.maxAngle, 90.0, 1e-9);
   EXPECT_NEAR(q.avgMinAngle, 45.0, 1e-9);
   EXPECT_EQ(q.percentUnder30, 0.0);
+}
+
+// The smallest corner angle, measured only where it is (opposite the shortest edge), is the
+// smallest of the three: on random triangles, slivers, caps, isosceles ones and a degenerate one.
+TEST(Quality, TheSmallestAngleIsOppositeTheShortestEdge) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<std::array<Vec3, 3>> triangles = {
+      {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1e-7, 0)},   // a cap
+      {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1e-6, 1e-7, 0)},  // a needle
+      {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 3, 0)},        // isosceles
+      {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, std::sqrt(0.75), 0)},
+      {Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(1, 0, 0)}};       // two corners at one point
+  for (int i = 0; i < 1000; ++i)
+    triangles.push_back({Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng))});
+  for (const auto& [a, b, c] : triangles) {
+    const auto angles = cornerAnglesDeg(a, b, c);
+    const double smallest = std::min({angles[0], angles[1], angles[2]});
+    for (const auto& [p, q, r] : {std::array<Vec3, 3>{a, b, c}, {b, c, a}, {c, a, b}, {b, a, c}})
+      EXPECT_NEAR(smallestAngleDeg(p, q, r), smallest, 1e-12) << a.transpose() << " / " << b.transpose() << " / " << c.transpose();
+  }
 }
 
 TEST(Fidelity, IdenticalSurfacesAreAtDistanceZero) {
