@@ -828,7 +828,7 @@ void Inspector::settingsControls() {
   };
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("simplify to (0: no)", &options_.simplifyTo, 100, 1000);
-  options_.simplifyTo = std::max(0, options_.simplifyTo);
+  options_.simplifyTo = options_.simplifyTo > 0 ? std::max(kSmallestRemeshedShare, options_.simplifyTo) : 0;
   int param = static_cast<int>(options_.param.method);
   if (combo("parameterization", param, "auto\0authalic\0conformal\0mean-value\0tutte\0lscm\0"))
     options_.param.method = static_cast<ParamMethod>(param);
@@ -855,7 +855,7 @@ void Inspector::settingsControls() {
   if (!own) {
     ImGui::SetNextItemWidth(130);
     ImGui::InputInt("sites (0: as input)", &options_.sites.count, 100, 1000);
-    options_.sites.count = std::max(0, options_.sites.count);
+    options_.sites.count = options_.sites.count > 0 ? std::max(kSmallestRemeshedShare, options_.sites.count) : 0;
   }
   ImGui::SetNextItemWidth(130);
   ImGui::InputDouble("distance thr.", &options_.lloyd.distanceThreshold, 0, 0, "%.1e");

@@ -248,7 +248,7 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
   // through a map nearly flat at the border may miss (onto an inside edge): they are put on
   // the border's edges themselves (the one disk of a cut gives both copies the same lift).
   const bool sharedSeams = options_.sites.sharesSeams();
-  LiftedMesh output = retriangulate(surface(), domain_, solver_->fixedSites(), movable,
+  LiftedMesh output = retriangulate(surface(), domain_, solver_->fixedSites(), movable, name_,
                                     sharedSeams ? sites_.fixedPoints : std::vector<Vec3>{});
   SurfaceMap map{surface(), domain_};
   if (resampled_) {  // from the resampled surface's chords onto the input surface itself
@@ -665,6 +665,10 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
 }  // namespace
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  const int asked = verticesAsked(options);
+  if (asked > 0 && asked < kSmallestRemeshedShare)
+    throw Error(name + ": " + std::to_string(asked) + " vertices asked; a surface is remeshed to " +
+                std::to_string(kSmallestRemeshedShare) + " at least");
   const Topology topology = analyzeTopology(input);
   if (topology.components <= 1) return remeshSurface(input, topology.isDisk(), options, name);
   Stopwatch total;

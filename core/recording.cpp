@@ -144,6 +144,8 @@ Recording decodePayload(Reader& in, const std::string& path) {
   for (auto& corners : r.density)
     for (double& d : corners) d = in.get<double>();
   r.fixedSites = in.getPoints();
+  if (r.fixedSites.size() < 3)  // a disk's border: the replay triangulates inside it
+    throw Error(path + ": damaged recording (fewer than 3 border sites)");
   r.movableVertex.resize(in.getCount(4));
   for (int& v : r.movableVertex) v = in.get<int>();
   r.sharedSeams.resize(in.getCount(8));

@@ -67,6 +67,11 @@ Mesh relocate(const Mesh& input, const std::vector<int>& movableVertex,
 
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
                                        const std::vector<Vec2>& movableSites) {
+  // A constraint from a sample to itself crashes CGAL's triangulation (a border of one sample,
+  // from a handful of sites asked for).
+  if (border.size() < 3)
+    throw Error("the border of the parameter domain has " + std::to_string(border.size()) +
+                (border.size() == 1 ? " sample" : " samples") + " (3 at least)");
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> borderVertex;
   for (size_t i = 0; i < border.size(); ++i) {
@@ -115,14 +120,20 @@ Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& p
 
 LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
                          const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites,
-                         const std::vector<Vec3>& borderPoints) {
+                         const std::string& name, const std::vector<Vec3>& borderPoints) {
   const std::vector<Vec2> sites = allSites(border, movableSites);
   std::vector<Vec3> points;
   for (size_t i = 0; i < sites.size(); ++i)
     points.push_back(i < borderPoints.size() ? borderPoints[i] : lift(input, domain, sites[i]));
   LiftedMesh result;
   std::vector<int> kept;
-  result.mesh = assemble(triangulateSites(border, movableSites), points, &kept);
+  std::vector<Triangle> triangles;
+  try {
+    triangles = triangulateSites(border, movableSites);
+  } catch (const Error& e) {
+    throw Error(name + ": " + e.what());
+  }
+  result.mesh = assemble(triangles, points, &kept);
   for (int i : kept) result.uv.push_back(sites[i]);
   return result;
 }

@@ -3,6 +3,7 @@
 
 #include "domain.h"
 
+#include <string>
 #include <vector>
 
 namespace lloydscope {
@@ -30,12 +31,14 @@ struct LiftedMesh {
 // border samples (in order, counter-clockwise, joined by constraint edges) and the movable
 // sites, restricted to the domain and lifted to 3D. Vertices: border samples, then sites.
 // `borderPoints`, if not empty, are the border samples' points (InitialSites::fixedPoints),
-// taken as they are.
+// taken as they are. Throws Error("<name>: ...") where the border crosses itself or has fewer
+// than 3 samples.
 LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
                          const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites,
-                         const std::vector<Vec3>& borderPoints = {});
+                         const std::string& name, const std::vector<Vec3>& borderPoints = {});
 
-// The 2D triangles of retriangulate(), before lifting (same vertex order).
+// The 2D triangles of retriangulate(), before lifting (same vertex order); throws Error where
+// the border crosses itself or has fewer than 3 samples.
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
                                        const std::vector<Vec2>& movableSites);
 

@@ -25,7 +25,7 @@ Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
   lloyd.maxIterations = options.iterations;
   LloydSolver solver(domain, sites.fixed, sites.movable, lloyd);
   solver.run();
-  LiftedMesh mesh = retriangulate(input, domain, solver.fixedSites(), solver.movableSites(),
+  LiftedMesh mesh = retriangulate(input, domain, solver.fixedSites(), solver.movableSites(), name,
                                   siteOptions.sharesSeams() ? sites.fixedPoints : std::vector<Vec3>{});
   PolishOptions polishOptions;
   polishOptions.iterations = options.polish;

@@ -99,6 +99,20 @@ TEST(Cli, FullInputKeepsALargeInputAsItIs) {
   }
 }
 
+// Fewer than 20 vertices asked is a one-line error naming the file (a handful of border
+// samples crashed the triangulation, or left an empty result).
+TEST(Cli, TooFewVerticesAskedIsAnError) {
+  const std::string path = test::assetPath("bumpy_disk.off");
+  for (const std::string asked : {"--sites 2", "--sites 19", "--simplify 5"}) {
+    const CliRun r = runCli("remesh " + path + " " + asked + " -o " + test::tempPath("never.off"));
+    EXPECT_EQ(r.code, 1) << asked << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(path + ": "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("a surface is remeshed to 20 at least"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(runCli("remesh " + path + " --sites 20 --no-fidelity -o " + test::tempPath("twenty.off")).code, 0);
+}
+
 TEST(Cli, TheCurvatureDensitysFloorIsAnOption) {
   const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") +
                           " --density curvature --floor 4 --max-iterations 2 --no-fidelity --json");

@@ -86,7 +86,7 @@ RoughMesh roughMesh() {
   Parameterization param = parameterize(input, {}, "bumpy");
   Domain domain(param.uv, input.triangles, areaDensity(input, param.uv));
   const InitialSites sites = initialSites(input, param, domain, {});
-  LiftedMesh lifted = retriangulate(input, domain, sites.fixed, sites.movable);
+  LiftedMesh lifted = retriangulate(input, domain, sites.fixed, sites.movable, "test");
   return {std::move(input), std::move(param), std::move(domain), std::move(lifted)};
 }
 

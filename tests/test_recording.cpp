@@ -65,6 +65,15 @@ TEST(Recording, SharedSeamsRoundTrip) {
   expectError(path, "seam vertex is out of range");
 }
 
+// A border of fewer than 3 sites cannot be triangulated inside (it crashed the replay).
+TEST(Recording, ABorderOfFewerThanThreeSitesIsRefused) {
+  Recording r = sphereCapRun().recording;
+  r.fixedSites.resize(2);
+  const std::string path = test::tempPath("two_border_sites.lsrec");
+  saveRecording(r, path);
+  expectError(path, "fewer than 3 border sites");
+}
+
 TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {
   const Recording& r = sphereCapRun().recording;
   const Domain domain = r.domain();

@@ -108,7 +108,7 @@ TEST(Retriangulate, GivesAValidDiskWithAllSitesUsed) {
   for (int v : w.p.boundaryLoop) border.push_back(w.p.uv[v]);
   for (int i = 0; i < 40; ++i)
     sites.push_back(Vec2(0.5, 0.5) + 0.3 * (i / 40.0) * Vec2(std::cos(i * 2.4), std::sin(i * 2.4)));
-  const Mesh out = retriangulate(w.mesh, w.domain, border, sites).mesh;
+  const Mesh out = retriangulate(w.mesh, w.domain, border, sites, "test").mesh;
   EXPECT_EQ(out.vertexCount(), static_cast<int>(border.size() + sites.size()));
   EXPECT_NO_THROW(validateMesh(out, "out"));
   EXPECT_TRUE(analyzeTopology(out).isDisk());
@@ -126,9 +126,9 @@ TEST(Retriangulate, TakesTheBorderPointsGiven) {
     border.push_back(w.p.uv[v]);
     points.push_back(w.mesh.points[v] + Vec3(0, 0, 1));  // not where the map lifts it
   }
-  const Mesh out = retriangulate(w.mesh, w.domain, border, {Vec2(0.5, 0.5)}, points).mesh;
+  const Mesh out = retriangulate(w.mesh, w.domain, border, {Vec2(0.5, 0.5)}, "test", points).mesh;
   for (size_t i = 0; i < border.size(); ++i) EXPECT_EQ(out.points[i], points[i]);
-  const Mesh lifted = retriangulate(w.mesh, w.domain, border, {Vec2(0.5, 0.5)}).mesh;
+  const Mesh lifted = retriangulate(w.mesh, w.domain, border, {Vec2(0.5, 0.5)}, "test").mesh;
   EXPECT_NEAR((lifted.points[0] - points[0]).norm(), 1.0, 1e-9);
 }
 
@@ -145,4 +145,23 @@ TEST(Retriangulate, RespectsANonConvexBorder) {
 TEST(Retriangulate, ABorderThatCrossesItselfIsAnErrorNotACrash) {
   const std::vector<Vec2> bowtie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
   EXPECT_THROW(triangulateSites(bowtie, {{0.5, 0.2}}), Error);
+}
+
+// A border of fewer than 3 samples (a handful of sites asked for) crashed CGAL's triangulation;
+// retriangulate()'s errors name the input.
+TEST(Retriangulate, ABorderOfFewerThanThreeSamplesIsAnError) {
+  const WavyMap w(8);
+  const auto problem = [&](const std::vector<Vec2>& border) -> std::string {
+    try {
+      retriangulate(w.mesh, w.domain, border, {Vec2(0.5, 0.3)}, "m.off");
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(problem({Vec2(0.7, 0.05)}), "m.off: the border of the parameter domain has 1 sample (3 at least)");
+  EXPECT_EQ(problem({Vec2(0.7, 0.05), Vec2(0.2, 0.9)}),
+            "m.off: the border of the parameter domain has 2 samples (3 at least)");
+  EXPECT_EQ(problem({Vec2(0.1, 0.1), Vec2(0.9, 0.9), Vec2(0.9, 0.1), Vec2(0.1, 0.9)}),
+            "m.off: the border of the parameter domain crosses itself");
 }
