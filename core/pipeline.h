@@ -128,10 +128,10 @@ struct FirstPassTrial {
 };
 
 // The fewest vertices remesh() remeshes a surface or a connected component to. Fewer asked for
-// a whole surface is an error (its border alone is sampled more finely; a border of a few
-// samples may cross itself in the plane). A component whose share of the vertices asked for
-// is smaller, and which has no more vertices than this (debris, a loose triangle), is kept as
-// it is; a larger one is remeshed to this many.
+// a whole surface is an error: a handful leave its border a sample or two, nothing to
+// triangulate (the camel head at 10 came out empty). A component whose share of the vertices
+// asked for is smaller, and which has no more vertices than this (debris, a loose triangle),
+// is kept as it is; a larger one is remeshed to this many.
 constexpr int kSmallestRemeshedShare = 20;
 
 // How many vertices a large input is simplified to before a run asked for `vertices`
