@@ -192,7 +192,10 @@ std::string problemOf(const Error& e, const std::string& name);
 // lifts, measures and hands over the recording.
 class RemeshSession {
  public:
-  RemeshSession(const Mesh& input, const RemeshOptions& options, const std::string& name);
+  // `simplified`, if given, is `input` simplified as the options ask (simplifyTo, or
+  // coarsenInput): remesh() simplifies once for all its runs.
+  RemeshSession(const Mesh& input, const RemeshOptions& options, const std::string& name,
+                const Mesh* simplified = nullptr);
   RemeshSession(const RemeshSession&) = delete;
   RemeshSession& operator=(const RemeshSession&) = delete;
 

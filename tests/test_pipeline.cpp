@@ -227,6 +227,19 @@ TEST(Pipeline, ALargeInputIsSimplifiedToTenVerticesPerVertexAskedFirst) {
   EXPECT_EQ(remesh(grid, o, "grid").recording.input.vertexCount(), 500);
 }
 
+// remesh() simplifies a large input once for all its runs and hands the result to each session,
+// which takes it rather than simplifying again.
+TEST(Pipeline, ASessionTakesTheSimplifiedInputItIsGiven) {
+  const Mesh grid = test::grid(24);  // 625 vertices: simplified to 400 for 40 sites
+  RemeshOptions o;
+  o.sites.count = 40;
+  o.resample = false;  // the session then relaxes on the (simplified) input's own map
+  const Mesh given = test::grid(12);  // 169 vertices: not what simplify() would give
+  RemeshSession session(grid, o, "grid", &given);
+  EXPECT_EQ(session.header().input.vertexCount(), 169);
+  EXPECT_EQ(RemeshSession(grid, o, "grid").header().input.vertexCount(), 400);
+}
+
 TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFarther) {
   auto keptWithout = [](int withBars, int withoutBars, double withDistance, double withoutDistance) {
     FirstPassTrial t;
