@@ -13,6 +13,9 @@ struct BenchOptions {
   std::string csv = "bench.csv";
   std::string saveInputs;  // a folder: write the prepared inputs there, to try other settings on
   bool reference = true;  // also the report's preset (plain Lloyd: slow)
+  // The models as they come, not prepared: each remeshed to each size (--sites), with the
+  // defaults and --full-input, beside CGAL's remesher on the same model.
+  bool asIs = false;
   int stepSites = 0;      // > 0: time Lloyd iterations at this many sites instead
 };
 

@@ -239,6 +239,9 @@ int main(int argc, char** argv) {
   peerBenchCmd->add_option("--save-inputs", benchOptions.saveInputs,
                            "Also write each prepared input to DIR/<model>_<size>.off");
   peerBenchCmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
+  peerBenchCmd->add_flag("--as-is", benchOptions.asIs,
+                         "Use the models as they come, not prepared: each remeshed to each size "
+                         "(--sites), with the defaults and --full-input, beside CGAL's remesher on it");
   peerBenchCmd->add_option("--lloyd-step", benchOptions.stepSites,
                            "Instead: time one Lloyd iteration at N sites (one core and all)");
 

@@ -263,6 +263,21 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
   EXPECT_EQ(rows.rfind("model,size,method,vertices", 0), 0u);
 }
 
+// --as-is: the model as it comes, remeshed to the size, the defaults and --full-input beside CGAL.
+TEST(Cli, BenchAsIsRemeshesTheModelsAsTheyCome) {
+  const std::string csv = test::tempPath("bench_as_is.csv"), out = test::tempPath("bench_as_is.md");
+  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench " + test::assetPath("bumpy_disk.off") +
+                         " --as-is --sizes 60 --csv " + csv + " > " + out + " 2> /dev/null")
+                            .c_str()),
+            0);
+  const std::string table = test::readText(out), rows = test::readText(csv);
+  EXPECT_NE(table.find("| bumpy_disk | 60 | lloydscope | 6"), std::string::npos) << table;  // ~60 vertices
+  EXPECT_NE(table.find("| bumpy_disk | 60 | lloydscope --full-input |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| bumpy_disk | 60 | cgal isotropic |"), std::string::npos) << table;
+  EXPECT_EQ(table.find("--polish -1"), std::string::npos) << table;
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 4) << rows;  // header and three rows
+}
+
 TEST(Cli, BenchTimesLloydIterations) {
   const std::string out = test::tempPath("step.md");
   ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench --lloyd-step 1500 --csv " +
