@@ -174,10 +174,10 @@ std::string firstPassTrialText(const RemeshResult& r) {
          format("%.3f", t.withHausdorff) + "% and " + format("%.3f", t.withoutHausdorff) + "%";
 }
 
-std::string coarseInputText(const RemeshResult& r) {
-  if (r.coarseInput <= 0) return "";
-  return "Simplified to " + std::to_string(r.coarseInput) + " vertices first (the input has " +
-         std::to_string(r.before.vertices) + ": more than " + std::to_string(r.coarseInput) +
+std::string coarseInputText(int coarse, int inputVertices) {
+  if (coarse <= 0) return "";
+  return "Simplified to " + std::to_string(coarse) + " vertices first (the input has " +
+         std::to_string(inputVertices) + ": more than " + std::to_string(coarse) +
          " for the vertices asked; --full-input to keep it); the snaps, the fit and the distances are "
          "against the input itself";
 }
@@ -239,7 +239,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << "\n";
   if (r.slitTrial) out << slitTrialText(r) << "\n";
   if (r.firstPassTrial) out << firstPassTrialText(r) << "\n";
-  if (r.coarseInput > 0) out << coarseInputText(r) << "\n";
+  if (r.coarseInput > 0) out << coarseInputText(r.coarseInput, r.before.vertices) << "\n";
   if (r.chartTrial) out << chartTrialText(r) << "\n";
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips

@@ -25,8 +25,9 @@ std::string slitTrialText(const RemeshResult& r);
 // "Kept without the first resampling (...): bars met ... with, ... without; Hausdorff ..."
 // (RemeshResult::firstPassTrial), or "" if there was no such trial.
 std::string firstPassTrialText(const RemeshResult& r);
-// "Simplified to N vertices first ..." where RemeshOptions::coarsenInput did; "" elsewhere.
-std::string coarseInputText(const RemeshResult& r);
+// "Simplified to N vertices first ..." where RemeshOptions::coarsenInput simplified an input of
+// `inputVertices` to `coarse` (> 0); "" elsewhere.
+std::string coarseInputText(int coarse, int inputVertices);
 // "Kept chart by chart (...)" or "Kept as one disk (...)"; empty without a chart trial.
 std::string chartTrialText(const RemeshResult& r);
 

@@ -345,7 +345,7 @@ RemeshResult RemeshSession::finish() {
   result.ms = ms_;
   result.iterations = iterationCount();
   result.converged = converged();
-  if (coarsened_) result.coarseInput = options_.simplifyTo;
+  result.coarseInput = coarseInput();
   Stopwatch stage;
   result.output = buildOutput(result);
   result.ms.remesh = stage.lap();

@@ -211,6 +211,8 @@ class RemeshSession {
   RemeshResult finish();
   // Whether the input was cut (or a nearly closed disk slit) open, to be stitched at the end.
   bool isCut() const { return cut_.has_value(); }
+  // > 0: the input was simplified to this many vertices first (RemeshOptions::coarsenInput).
+  int coarseInput() const { return coarsened_ ? options_.simplifyTo : 0; }
   // For the cells of the steps to come (LloydOptions::threads; the results do not depend on it).
   void setThreads(int threads) {  // for the cells, and the fit's closest points
     options_.lloyd.threads = threads;

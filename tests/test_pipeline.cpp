@@ -237,7 +237,11 @@ TEST(Pipeline, ASessionTakesTheSimplifiedInputItIsGiven) {
   const Mesh given = test::grid(12);  // 169 vertices: not what simplify() would give
   RemeshSession session(grid, o, "grid", &given);
   EXPECT_EQ(session.header().input.vertexCount(), 169);
-  EXPECT_EQ(RemeshSession(grid, o, "grid").header().input.vertexCount(), 400);
+  const RemeshSession own(grid, o, "grid");
+  EXPECT_EQ(own.header().input.vertexCount(), 400);
+  EXPECT_EQ(own.coarseInput(), 400);  // what the inspector says after a Restart
+  o.coarsenInput = false;
+  EXPECT_EQ(RemeshSession(grid, o, "grid").coarseInput(), 0);
 }
 
 TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFarther) {

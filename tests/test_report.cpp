@@ -25,10 +25,10 @@ TEST(Report, TheDistanceToTheInputIsShownOnlyWhereMeasured) {
 // a run without the trial has none.
 TEST(Report, ASimplifiedInputIsSaid) {
   RemeshResult r;
-  EXPECT_EQ(coarseInputText(r), "");
+  EXPECT_EQ(coarseInputText(r.coarseInput, 45465), "");
   r.coarseInput = 10000;
   r.before.vertices = 45465;
-  EXPECT_EQ(coarseInputText(r), "Simplified to 10000 vertices first (the input has 45465: more than 10000 for the "
+  EXPECT_EQ(coarseInputText(10000, 45465), "Simplified to 10000 vertices first (the input has 45465: more than 10000 for the "
                                 "vertices asked; --full-input to keep it); the snaps, the fit and the distances "
                                 "are against the input itself");
   EXPECT_NE(remeshReport(r, RemeshOptions{}).find("Simplified to 10000 vertices first"), std::string::npos);
