@@ -77,6 +77,19 @@ RemeshOptions withCoarseInput(RemeshOptions options, const Mesh& input) {
   return options;
 }
 
+// How many vertices `input` is simplified to before a run with `options`: the caller's
+// simplifyTo, else coarsenInput's; 0: none.
+int simplifyTarget(const RemeshOptions& options, const Mesh& input) {
+  return options.simplifyTo > 0 ? options.simplifyTo : coarseTarget(options, input);
+}
+
+// `input` simplified to `target` vertices (0: as it is), or `simplified` where the caller made
+// that already.
+Mesh simplifiedTo(const Mesh& input, int target, const Mesh* simplified, const std::string& name) {
+  if (target <= 0) return input;
+  return simplified ? *simplified : simplify(input, {target}, name).mesh;
+}
+
 }  // namespace
 
 RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
@@ -87,9 +100,7 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
       original_(input),
       input_([&] {
         Stopwatch stage;
-        Mesh mesh = options_.simplifyTo <= 0 ? input
-                    : simplified             ? *simplified
-                                             : simplify(input, {options_.simplifyTo}, name).mesh;
+        Mesh mesh = simplifiedTo(input, options_.simplifyTo, simplified, name);
         ms_.simplify = stage.lap();
         const Topology topology = analyzeTopology(mesh);
         if (topology.components > 1)
@@ -440,12 +451,12 @@ void measureFidelityOf(RemeshResult& result, const Mesh& input) {
 // also another chart's), its border sampled at the whole surface's spacing so that both sides
 // of a seam get the same samples; its projection is the map tried where LSCM folds. The
 // stitched seams are relaxed (polishSeams) and snapped to tips.
-RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name,
+                          const Mesh* simplified) {
   Stopwatch wall, stage;
   RemeshResult result;
   result.coarseInput = coarseTarget(options, input);
-  const int simplifyTo = options.simplifyTo > 0 ? options.simplifyTo : result.coarseInput;
-  const Mesh mesh = simplifyTo > 0 ? simplify(input, {simplifyTo}, name).mesh : input;
+  const Mesh mesh = simplifiedTo(input, simplifyTarget(options, input), simplified, name);
   result.ms.simplify = stage.lap();
   const int asked = verticesAsked(options) > 0 ? verticesAsked(options) : mesh.vertexCount();
   const Charts charts = splitIntoCharts(mesh, asked);
@@ -501,11 +512,12 @@ namespace {
 // half of a body whose arms curl over it), its cells come out stretched, and the charts are
 // rounder; on a CAD part with sharp edges (CGAL's spool, rotor, lion) the charts' seams follow
 // the edges, and the charts are closer.
-void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name) {
+void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name,
+               const Mesh* simplified) {
   RemeshOptions once = options;
   once.measureFidelity = false;
   try {
-    RemeshResult charted = remeshCharts(input, once, name);
+    RemeshResult charted = remeshCharts(input, once, name, simplified);
     measureFidelityOf(kept, input);
     measureFidelityOf(charted, input);
     ChartTrial trial;
@@ -612,9 +624,9 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   Stopwatch wall;
   RemeshOptions once = options;
   once.measureFidelity = false;
-  // Simplified once for all the runs (each would otherwise simplify it again: 0.35 s a run on a
-  // face of 26,000 vertices).
-  const int simplifyTo = options.simplifyTo > 0 ? options.simplifyTo : coarseTarget(options, input);
+  // Simplified once for all the runs, charts too (each would otherwise simplify it again: 0.35 s
+  // a run on a face of 26,000 vertices).
+  const int simplifyTo = simplifyTarget(options, input);
   std::optional<Mesh> simplified;
   if (simplifyTo > 0) simplified = simplify(input, {simplifyTo}, name).mesh;
   const double simplifyMs = wall.lap();
@@ -622,7 +634,7 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   RemeshResult kept = disk ? remeshDisk(input, once, name, coarse) : remeshOnce(input, once, name, {}, coarse);
   const bool triesCharts = options.param.method == ParamMethod::Auto && usesResampling(options) &&
                            (!disk || !conformalHeld(kept.paramUsed));
-  if (triesCharts) tryCharts(kept, input, options, name);
+  if (triesCharts) tryCharts(kept, input, options, name, coarse);
   if (disk) tryWithoutFirstPass(kept, input, once, name, coarse);
   kept.ms.simplify += simplifyMs;
   if (options.measureFidelity) measureFidelityOf(kept, input);

@@ -181,7 +181,8 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
 // stitched: what remesh() tries beside the one cut where the surface is not a disk or no
 // conformal map of it holds, and keeps where it is better (ChartTrial). Throws Error where
 // there is one chart only, a chart fails or the seams do not stitch.
-RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name);
+RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name,
+                          const Mesh* simplified = nullptr);  // as RemeshSession takes it
 bool usesResampling(const RemeshOptions& options);  // false with relocate or the input's vertices
 RemeshOptions withoutResampling(RemeshOptions options);
 // The problem an Error states, without the "<name>: " it starts with and any "; try ..." advice.
