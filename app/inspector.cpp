@@ -147,12 +147,11 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
     message_ = withoutResamplingText(result_.resampleDropped);
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
-  if (result_.slitTrial) message_ = slitTrialText(result_) + (message_.empty() ? "" : ". " + message_);
+  noteFirst(slitTrialText(result_));
   // Likewise a disk kept as remeshed without the first resampling.
   if (result_.firstPassTrial && result_.firstPassTrial->keptWithout) options_.resample = false;
-  if (result_.firstPassTrial) message_ = firstPassTrialText(result_) + (message_.empty() ? "" : ". " + message_);
-  if (result_.coarseInput > 0)
-    message_ = coarseInputText(result_.coarseInput, result_.before.vertices) + (message_.empty() ? "" : ". " + message_);
+  noteFirst(firstPassTrialText(result_));
+  noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
     message_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
@@ -175,6 +174,10 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
 }
 
 Inspector::~Inspector() { stopRun(); }
+
+void Inspector::noteFirst(const std::string& text) {
+  if (!text.empty()) message_ = text + (message_.empty() ? "" : ". " + message_);
+}
 
 namespace {
 std::vector<CvtSolver> otherSolvers(CvtSolver solver) {
@@ -228,9 +231,8 @@ void Inspector::startSession() {
       session_ = std::make_unique<RemeshSession>(*input_, withoutResampling(options_), meshName_);
       message_ = withoutResamplingText(problemOf(e, meshName_));
     }
-    if (session_->coarseInput() > 0)  // the 2D pane shows the simplified input's map
-      message_ = coarseInputText(session_->coarseInput(), input_->vertexCount()) +
-                 (message_.empty() ? "" : ". " + message_);
+    // The 2D pane shows the simplified input's map.
+    noteFirst(coarseInputText(session_->coarseInput(), input_->vertexCount()));
     session_->step();  // the panes need one iteration to show
     Recording header = session_->header();
     header.iterations.push_back(session_->iterationRecord(0));

@@ -139,6 +139,8 @@ class Inspector {
   void fileControls();
   // Live runs: a session steps on a worker thread; its iterations reach the replay here.
   void startSession();
+  // Puts `text` (if any) before the message shown so far.
+  void noteFirst(const std::string& text);
   void startRun();
   void stopRun();
   void collectIterations();
