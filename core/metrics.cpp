@@ -107,23 +107,20 @@ struct OneSided {
 };
 
 OneSided oneSided(const Mesh& from, const Mesh& to) {
-  const SurfaceProjection surface(to);
   const std::vector<Vec3> samples = samplePoints(from, 10000 + 10 * from.faceCount());
+  const std::vector<double> squared = SurfaceProjection(to).squaredDistances(samples);
+  // Summed in parts, as when each thread summed its own: the figures stay as they were.
   const size_t threads = std::max(1u, std::thread::hardware_concurrency());
   std::vector<OneSided> part(threads);
-  auto work = [&](size_t t) {
+  for (size_t t = 0; t < threads; ++t) {
     for (size_t i = samples.size() * t / threads; i < samples.size() * (t + 1) / threads; ++i) {
-      const double d2 = surface.squaredDistance(samples[i]);
-      if (d2 > part[t].maxSquared) {
-        part[t].maxSquared = d2;
+      if (squared[i] > part[t].maxSquared) {
+        part[t].maxSquared = squared[i];
         part[t].farthest = samples[i];
       }
-      part[t].sumSquared += d2;
+      part[t].sumSquared += squared[i];
     }
-  };
-  parallelFor(threads, threads, [&](size_t begin, size_t end) {  // one part each
-    for (size_t t = begin; t < end; ++t) work(t);
-  });
+  }
   OneSided all;
   for (const OneSided& p : part) {  // in a fixed order: the sum does not depend on timing
     if (p.maxSquared > all.maxSquared) {

@@ -851,10 +851,9 @@ std::vector<int> snapToTips(Mesh& m, const Mesh& surface, int rounds) {
   for (int round = 0; round < rounds; ++round) {
     const SurfaceProjection result(m);
     std::vector<std::pair<double, int>> far;  // squared distance, input vertex
-    for (int i = 0; i < surface.vertexCount(); ++i) {
-      const double d2 = result.squaredDistance(surface.points[i]);
-      if (d2 > 0.25 * spacing * spacing && !refused[i]) far.emplace_back(d2, i);
-    }
+    const std::vector<double> squared = result.squaredDistances(surface.points);
+    for (int i = 0; i < surface.vertexCount(); ++i)
+      if (squared[i] > 0.25 * spacing * spacing && !refused[i]) far.emplace_back(squared[i], i);
     if (far.empty()) break;
     std::sort(far.rbegin(), far.rend());
     std::vector<Vec3> tips;  // this round's, two edge lengths apart
@@ -922,14 +921,14 @@ SmallestAngles smallestAnglesOf(const Mesh& m, const std::vector<int>& faces) {
 // where a chord strays from a curved surface.
 double farthestChordPoint(const Mesh& m, const SurfaceProjection& surface, const std::vector<int>& faces,
                           const std::vector<std::pair<int, int>>& edges = {}) {
-  double farthest = 0;
+  std::vector<Vec3> points;
   for (int f : faces) {
     const Triangle& t = m.triangles[f];
-    farthest = std::max(farthest, surface.squaredDistance((m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3));
+    points.push_back((m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3);
   }
-  for (const auto& [a, b] : edges)
-    farthest = std::max(farthest, surface.squaredDistance((m.points[a] + m.points[b]) / 2));
-  return std::sqrt(farthest);
+  for (const auto& [a, b] : edges) points.push_back((m.points[a] + m.points[b]) / 2);
+  const std::vector<double> squared = surface.squaredDistances(points);
+  return std::sqrt(squared.empty() ? 0.0 : *std::max_element(squared.begin(), squared.end()));
 }
 
 // The farthest of `points` from the triangles `faces` of `m`.
@@ -939,9 +938,8 @@ double farthestFromFaces(const Mesh& m, const std::vector<int>& faces, const std
   part.points = m.points;
   for (int f : faces) part.triangles.push_back(m.triangles[f]);
   const SurfaceProjection projection(part);
-  double farthest = 0;
-  for (const Vec3& p : points) farthest = std::max(farthest, projection.squaredDistance(p));
-  return std::sqrt(farthest);
+  const std::vector<double> squared = projection.squaredDistances(points);
+  return std::sqrt(*std::max_element(squared.begin(), squared.end()));
 }
 
 // How far, as a fraction of the farthest anywhere in the result, a local change may take a

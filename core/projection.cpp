@@ -8,6 +8,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <thread>
 #include <vector>
 
@@ -20,6 +21,34 @@ using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::
 using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 Point3 point(const Vec3& p) { return Point3(p.x(), p.y(), p.z()); }
+
+// The 10 bits of x spread to every third bit.
+uint64_t spreadBits(uint64_t x) {
+  x = (x | (x << 16)) & 0x030000FF;
+  x = (x | (x << 8)) & 0x0300F00F;
+  x = (x | (x << 4)) & 0x030C30C3;
+  return (x | (x << 2)) & 0x09249249;
+}
+
+// The points' indices in Morton (Z) order on a 1024^3 grid over their bounding box: near in
+// the order, near in space, for a few sorts of 64-bit keys (CGAL's Hilbert sort took as long as
+// the queries it ordered).
+std::vector<size_t> mortonOrder(const std::vector<Vec3>& points) {
+  Vec3 lo = points.front(), hi = lo;
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double scale = 1023.0 / std::max((hi - lo).maxCoeff(), 1e-300);
+  std::vector<uint64_t> keys(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Vec3 g = (points[i] - lo) * scale;
+    const uint64_t cell = spreadBits(static_cast<uint64_t>(g.x())) | spreadBits(static_cast<uint64_t>(g.y())) << 1 |
+                          spreadBits(static_cast<uint64_t>(g.z())) << 2;
+    keys[i] = cell << 32 | i;  // ties in index order
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<size_t> order(points.size());
+  for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i] & 0xFFFFFFFFu;
+  return order;
+}
 
 }  // namespace
 
@@ -45,17 +74,6 @@ Vec3 SurfaceProjection::closestPoint(const Vec3& p) const {
   return Vec3(c.x(), c.y(), c.z());
 }
 
-std::vector<Vec3> SurfaceProjection::closestPoints(const std::vector<Vec3>& points, int threadCount) const {
-  std::vector<Vec3> closest(points.size());
-  const size_t threads = points.size() < 1000 ? 1
-                         : threadCount > 0    ? static_cast<size_t>(threadCount)
-                                              : std::max(1u, std::thread::hardware_concurrency());
-  parallelFor(points.size(), threads, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) closest[i] = closestPoint(points[i]);
-  });
-  return closest;
-}
-
 int SurfaceProjection::closestTriangle(const Vec3& p, double* squaredDistance) const {
   const auto closest = tree_->tree.closest_point_and_primitive(point(p));
   if (squaredDistance) *squaredDistance = CGAL::squared_distance(closest.first, point(p));
@@ -64,6 +82,35 @@ int SurfaceProjection::closestTriangle(const Vec3& p, double* squaredDistance) c
 
 double SurfaceProjection::squaredDistance(const Vec3& p) const {
   return tree_->tree.squared_distance(point(p));
+}
+
+std::vector<Vec3> SurfaceProjection::closestPoints(const std::vector<Vec3>& points, int threads) const {
+  std::vector<Vec3> closest(points.size());
+  inSpatialOrder(points, threads, [&](size_t i, const Point3& c) { closest[i] = Vec3(c.x(), c.y(), c.z()); });
+  return closest;
+}
+
+std::vector<double> SurfaceProjection::squaredDistances(const std::vector<Vec3>& points) const {
+  std::vector<double> squared(points.size());
+  inSpatialOrder(points, 0, [&](size_t i, const Point3& c) { squared[i] = CGAL::squared_distance(point(points[i]), c); });
+  return squared;
+}
+
+template <class Fn>
+void SurfaceProjection::inSpatialOrder(const std::vector<Vec3>& points, int threadCount, const Fn& fn) const {
+  if (points.empty()) return;
+  const std::vector<size_t> order = mortonOrder(points);
+  const size_t threads = points.size() < 1000 ? 1
+                         : threadCount > 0    ? static_cast<size_t>(threadCount)
+                                              : std::max(1u, std::thread::hardware_concurrency());
+  parallelFor(order.size(), threads, [&](size_t begin, size_t end) {
+    // The search is exact whatever the hint: only its speed depends on it.
+    Point3 hint = tree_->tree.closest_point(point(points[order[begin]]));
+    for (size_t i = begin; i < end; ++i) {
+      hint = tree_->tree.closest_point(point(points[order[i]]), hint);
+      fn(order[i], hint);
+    }
+  });
 }
 
 }  // namespace lloydscope

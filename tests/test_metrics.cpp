@@ -1,4 +1,5 @@
 #include "metrics.h"
+#include "projection.h"
 #include "test_support.h"
 
 #include <algorithm>
@@ -116,4 +117,24 @@ TEST(Fidelity, SaysWhereTheResultStraysFarthest) {
   EXPECT_FALSE(f.farthestOnReference);
   EXPECT_NEAR((f.farthestPoint - Vec3(0.5, 0.5, 0.2)).norm(), 0.0, 1e-12);
   EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.2 / std::sqrt(2.0), 1e-9);
+}
+
+// The batch queries take the points in a spatial order, each search started from the one
+// before: each answer must still be the one asked for, at the same index, exactly.
+TEST(Projection, BatchQueriesAnswerEachPointAsASingleQueryDoes) {
+  const Mesh surface = test::torus();
+  const SurfaceProjection projection(surface);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+  std::vector<Vec3> points(5000);  // over a thousand: split over the threads
+  for (Vec3& p : points) p = Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+  const std::vector<double> squared = projection.squaredDistances(points);
+  const std::vector<Vec3> closest = projection.closestPoints(points);
+  ASSERT_EQ(squared.size(), points.size());
+  ASSERT_EQ(closest.size(), points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    ASSERT_EQ(squared[i], projection.squaredDistance(points[i])) << i;
+    ASSERT_EQ(closest[i], projection.closestPoint(points[i])) << i;
+  }
+  EXPECT_TRUE(projection.squaredDistances({}).empty());
 }
