@@ -653,6 +653,8 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
   result.components = static_cast<int>(parts.size());
   result.converged = true;
   double largest = -1;
+  int relaxedOn = 0;  // vertices of the surfaces remeshed: a component's simplified input, or itself
+  bool simplifiedAny = false;
   for (size_t i = 0; i < parts.size(); ++i) {
     const double area = surfaceArea(parts[i]);
     auto share = [&](int count) { return static_cast<int>(std::lround(count * area / totalArea)); };
@@ -660,6 +662,7 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
     if (asked > 0 && share(asked) < kSmallestRemeshedShare && parts[i].vertexCount() <= kSmallestRemeshedShare) {
       append(result.output, parts[i]);
       ++result.componentsKept;
+      relaxedOn += parts[i].vertexCount();
       continue;
     }
     RemeshOptions o = options;
@@ -670,6 +673,8 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
         name + " (component " + std::to_string(i + 1) + " of " + std::to_string(parts.size()) + ")";
     RemeshResult r = remeshSurface(parts[i], analyzeTopology(parts[i]).isDisk(), o, partName);
     append(result.output, r.output);
+    relaxedOn += r.coarseInput > 0 ? r.coarseInput : parts[i].vertexCount();
+    simplifiedAny = simplifiedAny || r.coarseInput > 0;
     result.snappedTips += r.snappedTips;
     result.fit += r.fit.scaled(boundingBoxDiagonal(parts[i]) / boundingBoxDiagonal(input));
     const CutSummary cut = r.cut;
@@ -680,6 +685,7 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
       result.slitTrial = slitTrial;
     }
   }
+  if (simplifiedAny) result.coarseInput = relaxedOn;
   Stopwatch stage;
   result.before = measureQuality(input);
   result.after = measureQuality(result.output);

@@ -163,7 +163,9 @@ struct RemeshResult {
   Mesh largestChart;  // with charts > 0: the chart the recording is of
   std::optional<ChartTrial> chartTrial;
   std::optional<FirstPassTrial> firstPassTrial;
-  int coarseInput = 0;  // > 0: the input was simplified to this many vertices first (coarsenInput)
+  // > 0: the input was simplified to this many vertices first (coarsenInput); with several
+  // components, the vertices of all the surfaces remeshed, where one or more was simplified.
+  int coarseInput = 0;
   StageTimes ms;
 };
 

@@ -227,6 +227,25 @@ TEST(Pipeline, ALargeInputIsSimplifiedToTenVerticesPerVertexAskedFirst) {
   EXPECT_EQ(remesh(grid, o, "grid").recording.input.vertexCount(), 500);
 }
 
+// Each component is simplified on its own rule, and the result says so: two 625-vertex grids
+// at 40 vertices each are relaxed on 400 each.
+TEST(Pipeline, ComponentsSaySimplifiedTooWhenTheyAre) {
+  Mesh two = test::grid(24);
+  const Mesh other = test::moved(test::grid(24), 1.0, Vec3(3, 0, 0));
+  const int offset = two.vertexCount();
+  two.points.insert(two.points.end(), other.points.begin(), other.points.end());
+  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  RemeshOptions o;
+  o.sites.count = 80;
+  o.resample = false;
+  o.measureFidelity = false;
+  const RemeshResult coarse = remesh(two, o, "grids");
+  EXPECT_EQ(coarse.components, 2);
+  EXPECT_EQ(coarse.coarseInput, 800);
+  o.coarsenInput = false;
+  EXPECT_EQ(remesh(two, o, "grids").coarseInput, 0);
+}
+
 // remesh() simplifies a large input once for all its runs and hands the result to each session,
 // which takes it rather than simplifying again.
 TEST(Pipeline, ASessionTakesTheSimplifiedInputItIsGiven) {
