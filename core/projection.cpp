@@ -98,7 +98,10 @@ std::vector<double> SurfaceProjection::squaredDistances(const std::vector<Vec3>&
 
 template <class Fn>
 void SurfaceProjection::inSpatialOrder(const std::vector<Vec3>& points, int threadCount, const Fn& fn) const {
-  if (points.empty()) return;
+  if (points.size() < 16) {  // a handful (a local check in the polish): ordering them costs more than it saves
+    for (size_t i = 0; i < points.size(); ++i) fn(i, tree_->tree.closest_point(point(points[i])));
+    return;
+  }
   const std::vector<size_t> order = mortonOrder(points);
   const size_t threads = points.size() < 1000 ? 1
                          : threadCount > 0    ? static_cast<size_t>(threadCount)

@@ -137,4 +137,7 @@ TEST(Projection, BatchQueriesAnswerEachPointAsASingleQueryDoes) {
     ASSERT_EQ(closest[i], projection.closestPoint(points[i])) << i;
   }
   EXPECT_TRUE(projection.squaredDistances({}).empty());
+  const std::vector<Vec3> few(points.begin(), points.begin() + 10);  // taken one by one
+  const std::vector<double> fewSquared = projection.squaredDistances(few);
+  for (size_t i = 0; i < few.size(); ++i) ASSERT_EQ(fewSquared[i], squared[i]) << i;
 }
