@@ -1244,13 +1244,15 @@ class AngleRaiser {
     double bestScore = before;
     Vec3 best = start;
     const Vec3 across = up.unitOrthogonal(), along = up.cross(across);
+    const SurfaceProjection& surface = close().projection();
+    Vec3 near = surface.closestPoint(start);  // the searches start from the last point found
     for (double step = 0.25 * spacing; step > 0.01 * spacing; step *= 0.5) {
       for (bool better = true; better;) {  // steps this long while one of 8 directions gains
         better = false;
         const Vec3 from = best;
         for (int k = 0; k < 8; ++k) {
           const double a = k * M_PI / 4;
-          const Vec3 to = close().projection().closestPoint(from + step * (std::cos(a) * across + std::sin(a) * along));
+          const Vec3 to = near = surface.closestPoint(from + step * (std::cos(a) * across + std::sin(a) * along), near);
           const double s = score(to);
           if (s > bestScore + 1e-6) {
             bestScore = s;

@@ -84,6 +84,11 @@ double SurfaceProjection::squaredDistance(const Vec3& p) const {
   return tree_->tree.squared_distance(point(p));
 }
 
+Vec3 SurfaceProjection::closestPoint(const Vec3& p, const Vec3& onSurface) const {
+  const Point3 c = tree_->tree.closest_point(point(p), point(onSurface));
+  return Vec3(c.x(), c.y(), c.z());
+}
+
 std::vector<Vec3> SurfaceProjection::closestPoints(const std::vector<Vec3>& points, int threads) const {
   std::vector<Vec3> closest(points.size());
   inSpatialOrder(points, threads, [&](size_t i, const Point3& c) { closest[i] = Vec3(c.x(), c.y(), c.z()); });

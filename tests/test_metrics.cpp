@@ -120,8 +120,9 @@ TEST(Fidelity, SaysWhereTheResultStraysFarthest) {
 }
 
 // The batch queries take the points in a spatial order, each search started from the one
-// before: each answer must still be the one asked for, at the same index, exactly.
-TEST(Projection, BatchQueriesAnswerEachPointAsASingleQueryDoes) {
+// before, as a single query may start from a point found before: each answer must still be the
+// one asked for, at the same index, exactly.
+TEST(Projection, BatchAndStartedQueriesAnswerEachPointAsASingleQueryDoes) {
   const Mesh surface = test::torus();
   const SurfaceProjection projection(surface);
   std::mt19937 rng(7);
@@ -135,6 +136,7 @@ TEST(Projection, BatchQueriesAnswerEachPointAsASingleQueryDoes) {
   for (size_t i = 0; i < points.size(); ++i) {
     ASSERT_EQ(squared[i], projection.squaredDistance(points[i])) << i;
     ASSERT_EQ(closest[i], projection.closestPoint(points[i])) << i;
+    if (i > 0) ASSERT_EQ(projection.closestPoint(points[i], closest[i - 1]), closest[i]) << i;  // from another's
   }
   EXPECT_TRUE(projection.squaredDistances({}).empty());
   const std::vector<Vec3> few(points.begin(), points.begin() + 10);  // taken one by one
