@@ -1,6 +1,5 @@
 #include "metrics.h"
 
-#include "parallel.h"
 #include "projection.h"
 
 #include <algorithm>
