@@ -244,12 +244,11 @@ TEST(Cli, UnknownOptionValues) {
 }
 
 TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
-  const std::string csv = test::tempPath("bench.csv"), out = test::tempPath("bench.md");
-  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench " + test::assetPath("sphere_cap.off") +
-                         " --sizes 300 --no-reference --csv " + csv + " > " + out + " 2> /dev/null")
-                            .c_str()),
-            0);
-  const std::string table = test::readText(out), rows = test::readText(csv);
+  const std::string csv = test::tempPath("bench.csv");
+  const CliRun r = runCli("bench " + test::assetPath("sphere_cap.off") + " --sizes 300 --no-reference --csv " + csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string& table = r.out;
+  const std::string rows = test::readText(csv);
   EXPECT_NE(table.find("| sphere_cap | 300 | lloydscope |"), std::string::npos) << table;
   EXPECT_NE(table.find("| sphere_cap | 300 | cgal isotropic |"), std::string::npos) << table;
   EXPECT_NE(table.find("time ratio"), std::string::npos);
@@ -265,12 +264,11 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
 
 // --as-is: the model as it comes, remeshed to the size, the defaults and --full-input beside CGAL.
 TEST(Cli, BenchAsIsRemeshesTheModelsAsTheyCome) {
-  const std::string csv = test::tempPath("bench_as_is.csv"), out = test::tempPath("bench_as_is.md");
-  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench " + test::assetPath("bumpy_disk.off") +
-                         " --as-is --sizes 60 --csv " + csv + " > " + out + " 2> /dev/null")
-                            .c_str()),
-            0);
-  const std::string table = test::readText(out), rows = test::readText(csv);
+  const std::string csv = test::tempPath("bench_as_is.csv");
+  const CliRun r = runCli("bench " + test::assetPath("bumpy_disk.off") + " --as-is --sizes 60 --csv " + csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string& table = r.out;
+  const std::string rows = test::readText(csv);
   EXPECT_NE(table.find("| bumpy_disk | 60 | lloydscope | 6"), std::string::npos) << table;  // ~60 vertices
   EXPECT_NE(table.find("| bumpy_disk | 60 | lloydscope --full-input |"), std::string::npos) << table;
   EXPECT_NE(table.find("| bumpy_disk | 60 | cgal isotropic |"), std::string::npos) << table;
@@ -279,22 +277,18 @@ TEST(Cli, BenchAsIsRemeshesTheModelsAsTheyCome) {
 }
 
 TEST(Cli, BenchTimesLloydIterations) {
-  const std::string out = test::tempPath("step.md");
-  ASSERT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench --lloyd-step 1500 --csv " +
-                         test::tempPath("step.csv") + " > " + out).c_str()),
-            0);
-  const std::string table = test::readText(out);
+  const CliRun r = runCli("bench --lloyd-step 1500 --csv " + test::tempPath("step.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string& table = r.out;
   for (const char* row : {"| 1500 | uniform | 1 |", "| 1500 | uniform | all |", "| 1500 | area | 1 |",
                           "| 1500 | area | all |", "| 11 iterations of 1500 sites | 7."})
     EXPECT_NE(table.find(row), std::string::npos) << table;  // under 8 bytes a site
 }
 
 TEST(Cli, BenchNamesAMissingModel) {
-  const std::string err = test::tempPath("bench.err");
-  EXPECT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " bench /nonexistent/model.off --csv " +
-                         test::tempPath("never.csv") + " > /dev/null 2> " + err).c_str()) != 0,
-            true);
-  EXPECT_NE(test::readText(err).find("/nonexistent/model.off"), std::string::npos);
+  const CliRun r = runCli("bench /nonexistent/model.off --csv " + test::tempPath("never.csv"));
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("/nonexistent/model.off"), std::string::npos) << r.err;
 }
 
 // A bad model after a good one fails before the good one is run (minutes, on real inputs).
