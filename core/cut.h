@@ -48,6 +48,10 @@ struct CutOptions {
   // too and keeps the better result (the slits through a terrain's peaks cost).
   double slitDisksAbove = 1e3;
   double keepDiskSlitsUnder = 1e4;
+  // Unless the whole disk's spread is above this: its map then has triangles too small for
+  // doubles (the fold test's 1e-14 of the total area, core/parameterization), and any slits are
+  // better than none (CGAL's camel clipped in half, four legs: 8 10^22 whole, 3 10^4 slit twice).
+  double keepDiskSlitsOver = 1e10;
 };
 
 // The cut, in two parts. Topological: the border loops joined one by one to the nearest by
