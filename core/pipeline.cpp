@@ -272,6 +272,15 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
     const int exact = sharedSeams ? static_cast<int>(sites_.fixed.size()) : 0;
     for (int v = exact; v < output.mesh.vertexCount(); ++v)
       output.mesh.points[v] = map.at(domain_.locate(output.uv[v]));
+    // The border onto the input's own border (a seam's two copies must land alike: as lifted).
+    if (!seamed()) {
+      const std::vector<bool> onBorder = vertexEdges(output.mesh).onBoundary;
+      for (int v = 0; v < output.mesh.vertexCount(); ++v) {
+        if (!onBorder[v]) continue;
+        const Location l = domain_.locate(output.uv[v]);
+        if (const std::optional<Vec3> p = resampled_->borderToInput(input_, l.triangle, l.weights)) output.mesh.points[v] = *p;
+      }
+    }
   }
   if (options_.polish >= 0) {
     PolishOptions o;

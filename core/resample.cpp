@@ -4,6 +4,10 @@
 #include "polish.h"
 #include "sites.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace lloydscope {
 
 Vec3 Resampling::toInput(const Mesh& input, int triangle, const Eigen::Vector3d& weights) const {
@@ -11,6 +15,62 @@ Vec3 Resampling::toInput(const Mesh& input, int triangle, const Eigen::Vector3d&
   const Vec2 uv = weights[0] * mesh.uv[t[0]] + weights[1] * mesh.uv[t[1]] + weights[2] * mesh.uv[t[2]];
   return lift(input, domain, uv);
 }
+
+std::optional<Vec3> Resampling::borderToInput(const Mesh& input, int triangle, const Eigen::Vector3d& weights) const {
+  const Triangle& t = mesh.mesh.triangles[triangle];
+  int off = 0;  // the corner the point is not beside
+  for (int k = 1; k < 3; ++k)
+    if (weights[k] < weights[off]) off = k;
+  const int a = t[(off + 1) % 3], b = t[(off + 2) % 3];
+  const double wa = weights[(off + 1) % 3], wb = weights[(off + 2) % 3];
+  if (weights[off] > 1e-9 || std::isnan(borderPosition[a]) || std::isnan(borderPosition[b])) return std::nullopt;
+  const double whole = inputBorderLength.back();
+  double along = borderPosition[b] - borderPosition[a];  // the short way round
+  if (along > 0.5 * whole) along -= whole;
+  if (along < -0.5 * whole) along += whole;
+  double at = borderPosition[a] + along * wb / (wa + wb);
+  at -= whole * std::floor(at / whole);
+  const std::vector<int>& loop = param.boundaryLoop;
+  const int n = static_cast<int>(loop.size());
+  const int i = std::clamp(static_cast<int>(std::upper_bound(inputBorderLength.begin(), inputBorderLength.end(), at) -
+                                            inputBorderLength.begin()) - 1, 0, n - 1);
+  const double span = inputBorderLength[i + 1] - inputBorderLength[i];
+  const double f = span > 0 ? std::clamp((at - inputBorderLength[i]) / span, 0.0, 1.0) : 0.0;
+  return (1 - f) * input.points[loop[i]] + f * input.points[loop[(i + 1) % n]];
+}
+
+namespace {
+
+// Where each border vertex of `resampled` is along the input's border (Resampling::borderPosition):
+// its parameter point lies on an edge of the input's border in the plane (the polish leaves the
+// border where the samples put it).
+void locateOnInputBorder(const Mesh& input, Resampling& r) {
+  const std::vector<int>& loop = r.param.boundaryLoop;
+  const int n = static_cast<int>(loop.size());
+  r.inputBorderLength.assign(1, 0.0);
+  for (int i = 0; i < n; ++i)
+    r.inputBorderLength.push_back(r.inputBorderLength.back() +
+                                  (input.points[loop[(i + 1) % n]] - input.points[loop[i]]).norm());
+  const std::vector<bool> onBorder = vertexEdges(r.mesh.mesh).onBoundary;
+  r.borderPosition.assign(r.mesh.mesh.vertexCount(), std::numeric_limits<double>::quiet_NaN());
+  for (int v = 0; v < r.mesh.mesh.vertexCount(); ++v) {
+    if (!onBorder[v]) continue;
+    const Vec2& p = r.mesh.uv[v];
+    double nearest = INFINITY;
+    for (int i = 0; i < n; ++i) {
+      const Vec2 &from = r.param.uv[loop[i]], &to = r.param.uv[loop[(i + 1) % n]];
+      const Vec2 edge = to - from;
+      const double f = edge.squaredNorm() > 0 ? std::clamp((p - from).dot(edge) / edge.squaredNorm(), 0.0, 1.0) : 0.0;
+      const double distance = (from + f * edge - p).squaredNorm();
+      if (distance < nearest) {
+        nearest = distance;
+        r.borderPosition[v] = r.inputBorderLength[i] + f * (r.inputBorderLength[i + 1] - r.inputBorderLength[i]);
+      }
+    }
+  }
+}
+
+}  // namespace
 
 Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
                     const DensityOptions& density, const ResampleOptions& options,
@@ -32,7 +92,9 @@ Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
   polishOptions.target = PolishTarget::Centroid;
   polishOptions.seams = !siteOptions.onSeam.empty();
   polish(mesh, {input, domain}, surfaceDensity(input, param.uv, rho), polishOptions);
-  return {std::move(param), std::move(domain), std::move(mesh)};
+  Resampling r{std::move(param), std::move(domain), std::move(mesh), {}, {}};
+  locateOnInputBorder(input, r);
+  return r;
 }
 
 }  // namespace lloydscope

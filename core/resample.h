@@ -12,6 +12,7 @@
 #include "remesh.h"
 #include "sites.h"
 
+#include <optional>
 #include <string>
 
 namespace lloydscope {
@@ -27,9 +28,20 @@ struct Resampling {
   Domain domain;           // the input's parameter domain
   LiftedMesh mesh;         // the resampled surface; mesh.uv in the input's parameter domain
 
+  // Per vertex of `mesh` on its border, where it is along the input's border: the 3D arc
+  // length from the first vertex of param.boundaryLoop (NaN elsewhere); and that loop's
+  // arc length at each of its vertices, then its whole length.
+  std::vector<double> borderPosition, inputBorderLength;
+
   // The point of the input surface under the point of resampled triangle `triangle` with
   // barycentric `weights` (`input`: the mesh given to resample()).
   Vec3 toInput(const Mesh& input, int triangle, const Eigen::Vector3d& weights) const;
+  // The same for a point on a border edge of the resampled surface, onto the input's own border
+  // (toInput() would put it on the chord between its two ends' points: inside the input's
+  // corners, where the input's border is as coarse as the resampled one); the input border's
+  // stretch between the edge's two ends, at the same fraction of its arc length. Empty where the
+  // point is on no border edge.
+  std::optional<Vec3> borderToInput(const Mesh& input, int triangle, const Eigen::Vector3d& weights) const;
 };
 
 // The rough pass's sites as `sites` asks (their count, the seams of a cut surface), placed by

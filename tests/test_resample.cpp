@@ -67,3 +67,43 @@ TEST(Sites, AChamferedCornerGivesOneBorderSampleNotTwo) {
                                              << a.transpose() << " / " << b.transpose();
   }
 }
+
+// A flat 24-gon of 49 vertices remeshed to 400: the first pass has 49 sites (no more than the
+// input's vertices), so its border is as coarse as the input's and, where the input's turns by
+// less than a corner (15 degrees against 20: sites.cpp), cuts inside; the result's 50 or so
+// border vertices were lifted onto those chords (Hausdorff distance 0.63% of the diagonal, at
+// the input's border). They go onto the input's own border now (Resampling::borderToInput;
+// 0.22%, where the result's border edges cut the input's corners).
+TEST(Resample, TheBorderOfACoarseInputRefinedStaysOnItsBorder) {
+  Mesh polygon;
+  polygon.points.push_back(Vec3::Zero());
+  constexpr int kSides = 24;
+  for (double radius : {0.5, 1.0})
+    for (int i = 0; i < kSides; ++i)
+      polygon.points.push_back(radius * Vec3(std::cos(2 * M_PI * i / kSides), std::sin(2 * M_PI * i / kSides), 0));
+  for (int i = 0; i < kSides; ++i) {
+    const int inner = 1 + i, next = 1 + (i + 1) % kSides;  // outer ones: kSides more
+    polygon.triangles.push_back({0, inner, next});
+    polygon.triangles.push_back({inner, inner + kSides, next + kSides});
+    polygon.triangles.push_back({inner, next + kSides, next});
+  }
+  ASSERT_TRUE(analyzeTopology(polygon).isDisk());
+  RemeshOptions o;
+  o.sites.count = 400;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(polygon, o, "24-gon");
+  const VertexEdges edges = vertexEdges(r.output);
+  int onBorder = 0;
+  for (int v = 0; v < r.output.vertexCount(); ++v) {
+    if (!edges.onBoundary[v]) continue;
+    ++onBorder;
+    double nearest = INFINITY;  // to the polygon's sides
+    for (int i = 0; i < kSides; ++i) {
+      const Vec3 &a = polygon.points[1 + kSides + i], &b = polygon.points[1 + kSides + (i + 1) % kSides];
+      const double t = std::clamp((r.output.points[v] - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      nearest = std::min(nearest, (r.output.points[v] - (a + t * (b - a))).norm());
+    }
+    EXPECT_LT(nearest, 1e-9) << "border vertex " << v << " at " << r.output.points[v].transpose();
+  }
+  EXPECT_GT(onBorder, 30);
+}
