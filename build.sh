@@ -17,7 +17,7 @@ PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgt
 # point; the triceratops, whose first resampling no map holds) for cutting and stitching, and
 # the lion (5 boundary loops), whose charts' seams meet its border close together.
 CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil eight elephant femur cow
-              triceratops lion camel)
+              triceratops lion camel bull)
 
 install_missing() {
   local missing=()

@@ -96,7 +96,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                         {"one_cut_bars_met", r.chartTrial->oneCutBars},
                                                         {"charts_bars_met", r.chartTrial->chartsBars},
                                                         {"kept", r.charts > 0 ? "charts" : "one-cut"},
-                                                        {"failed", r.chartTrial->failed}}
+                                                        {"failed", r.chartTrial->failed},
+                                                        {"one_cut_failed", r.chartTrial->oneCutFailed}}
                                        : nlohmann::json()},
           {"first_pass_trial", r.firstPassTrial ? nlohmann::json{{"with_bars_met", r.firstPassTrial->withBars},
                                                                  {"without_bars_met", r.firstPassTrial->withoutBars},
@@ -154,6 +155,9 @@ std::string chartTrialText(const RemeshResult& r) {
   const ChartTrial& t = *r.chartTrial;
   if (!t.failed.empty())
     return "Kept as one disk (remeshed chart by chart too, which failed: " + t.failed + ")";
+  if (!t.oneCutFailed.empty())
+    return "Remeshed chart by chart, in " + std::to_string(t.charts) + " charts (as one disk it failed: " +
+           t.oneCutFailed + ")";
   return std::string(r.charts > 0 ? "Kept chart by chart" : "Kept as one disk") +
          " (remeshed both ways, as one disk and chart by chart): average smallest angle " +
          format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +

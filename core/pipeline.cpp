@@ -546,6 +546,25 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
   }
 }
 
+// Where the one cut fails (every map of it folds or collapses: a badly shaped input whose
+// protrusions the slits do not all reach, as CGAL's bull clipped lengthwise, 3 of 98 clipped
+// halves of CGAL's samples), the surface chart by chart: each chart is nearly flat, and its own
+// projection holds. If that fails too, the one cut's error stands.
+RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, const std::string& name,
+                           const Mesh* simplified, const Error& oneCut) {
+  try {
+    RemeshResult charted = remeshCharts(input, options, name, simplified);
+    charted.chartTrial = ChartTrial{};
+    charted.chartTrial->charts = charted.charts;
+    charted.chartTrial->chartsAvgMinAngle = charted.after.avgMinAngle;
+    charted.chartTrial->chartsBars = barsMet(charted.after);
+    charted.chartTrial->oneCutFailed = problemOf(oneCut, name);
+    return charted;
+  } catch (const Error&) {
+    throw oneCut;
+  }
+}
+
 // A disk slit open (a nearly closed shape, CutOptions::slitDisksAbove) is made whole too, and
 // the better result kept (betterThan): slits through a shape's far side (CGAL's mannequin, a
 // camel head, the lion head at 1000 vertices) pay, through the peaks of a terrain (CGAL's three
@@ -640,10 +659,16 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   if (simplifyTo > 0) simplified = simplify(input, {simplifyTo}, name).mesh;
   const double simplifyMs = wall.lap();
   const Mesh* coarse = simplified ? &*simplified : nullptr;
-  RemeshResult kept = disk ? remeshDisk(input, once, name, coarse) : remeshOnce(input, once, name, {}, coarse);
-  const bool triesCharts = options.param.method == ParamMethod::Auto && usesResampling(options) &&
-                           (!disk || !conformalHeld(kept.paramUsed));
-  if (triesCharts) tryCharts(kept, input, options, name, coarse);
+  const bool chartsAllowed = options.param.method == ParamMethod::Auto && usesResampling(options);
+  RemeshResult kept;
+  try {
+    kept = disk ? remeshDisk(input, once, name, coarse) : remeshOnce(input, once, name, {}, coarse);
+  } catch (const Error& e) {
+    if (!chartsAllowed) throw;
+    kept = chartsInstead(input, once, name, coarse, e);
+  }
+  if (chartsAllowed && kept.charts == 0 && (!disk || !conformalHeld(kept.paramUsed)))
+    tryCharts(kept, input, options, name, coarse);
   if (disk) tryWithoutFirstPass(kept, input, once, name, coarse);
   kept.ms.simplify += simplifyMs;
   if (options.measureFidelity) measureFidelityOf(kept, input);

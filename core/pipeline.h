@@ -98,6 +98,9 @@ struct ChartTrial {
   // angle under 30 degrees, an average smallest angle of 53 or more), as the slit trial counts.
   int oneCutBars = 0, chartsBars = 0;
   std::string failed;  // not empty: the chart by chart run failed (why), the one cut stands
+  // Not empty: the one cut failed (why: every map of it folded or collapsed), and the charts
+  // stand alone; the one cut's figures and both distances are then 0 (the result's own are measured).
+  std::string oneCutFailed;
 
   // Where one of the two meets more of the bars (meetsMoreBars()), it is kept. Else the charts
   // are kept if they are rounder (a larger average smallest angle) and at most kFartherBy

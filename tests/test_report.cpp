@@ -57,3 +57,18 @@ TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
   EXPECT_EQ(firstPassTrialText(r), "Kept with the first resampling (a bar was missed with it: remeshed without it "
                                    "too, which failed: m.off: the parameterization is not one-to-one)");
 }
+
+// Where the one disk failed and the charts stand alone, the line says so and why, not a
+// comparison with a run that gave nothing; the JSON has the reason.
+TEST(Report, ChartsThatStandInForAFailedDiskSaySo) {
+  RemeshResult r;
+  r.charts = 18;
+  r.chartTrial = ChartTrial{};
+  r.chartTrial->charts = 18;
+  r.chartTrial->oneCutFailed = "the parameterization is not one-to-one (0 flipped and 27 collapsed of 5078 triangles)";
+  EXPECT_EQ(chartTrialText(r),
+            "Remeshed chart by chart, in 18 charts (as one disk it failed: the parameterization is not one-to-one "
+            "(0 flipped and 27 collapsed of 5078 triangles))");
+  EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["one_cut_failed"], r.chartTrial->oneCutFailed);
+  EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["kept"], "charts");
+}
