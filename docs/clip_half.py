@@ -2,9 +2,9 @@
 """Clips a closed triangle mesh (OFF) in half, for disks that are in neither of the bench's
 sets (docs/bench.md, "Disks from outside the bench").
 
-    python3 docs/clip_half.py IN.off OUT.off
+    python3 docs/clip_half.py IN.off OUT.off [AXIS]
 
-The plane is z = the middle of the mesh's z range. Triangles that cross it are split along it
+The plane is z = the middle of the mesh's z range (AXIS 0 or 1: x or y instead). Triangles that cross it are split along it
 (vertices within a fifth of the mean edge length of it are first moved onto it, so that no
 sliver is made), the part below is kept, and of that its largest edge-connected piece. Exits
 with 1, writing nothing, unless that piece is a disk (one border loop, Euler characteristic 1).
@@ -125,11 +125,12 @@ def disk_problem(faces):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4) or (len(sys.argv) == 4 and sys.argv[3] not in ("0", "1", "2")):
         sys.exit(__doc__)
     source, target = sys.argv[1], sys.argv[2]
+    axis = int(sys.argv[3]) if len(sys.argv) == 4 else 2
     points, faces = read_off(source)
-    points, faces = clip_below(points, faces)
+    points, faces = clip_below(points, faces, axis)
     faces = largest_piece(faces)
     problem = disk_problem(faces)
     if problem:
