@@ -30,6 +30,72 @@ std::vector<double> angleSums(const Mesh& mesh) {
   return sum;
 }
 
+// A corner closer than kCornersApart spacings to a kept one would make a short border edge (a
+// chamfer of a square corner is two corners of 135 degrees). The triangle on a border edge half
+// a spacing long has an angle of 27-28 degrees at its inside corner (CGAL's bear and bunny
+// clipped in half, at 500-2000 vertices).
+constexpr double kCornersApart = 0.7;
+
+// The border's point at 3D arc length `at` (`position`: each loop vertex's, the whole loop's last).
+Vec3 borderPointAt(const Mesh& mesh, const std::vector<int>& loop, const std::vector<double>& position, double at) {
+  const int n = static_cast<int>(loop.size());
+  at -= position[n] * std::floor(at / position[n]);
+  const int i = std::clamp(static_cast<int>(std::upper_bound(position.begin(), position.end(), at) - position.begin()) - 1, 0, n - 1);
+  const double span = position[i + 1] - position[i];
+  const double t = span > 0 ? std::clamp((at - position[i]) / span, 0.0, 1.0) : 0.0;
+  return (1 - t) * mesh.points[loop[i]] + t * mesh.points[loop[(i + 1) % n]];
+}
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+// A bump of the border narrower than the spacing (the tip of a clipped surface's border) falls
+// between two samples, and the border edge between them cuts it off: that is the Hausdorff
+// distance. A border vertex farther than kBumpStray spacings from the edge between the samples
+// around it (the stretches sampled evenly, as below) becomes a corner too, the farthest first,
+// and the stretches are sampled again, until none is. A corner of the map alone (`yields`: not
+// of the surface) within kCornersApart spacings of it gives way to it (on CGAL's blobby clipped
+// in half, one 0.007 from the bump's tip); any other corner there keeps it out.
+constexpr double kBumpStray = 0.1;
+void keepBumps(const Mesh& mesh, const std::vector<int>& loop, const std::vector<double>& position,
+               double spacing, std::vector<bool> yields, std::vector<int>& corners) {
+  const int n = static_cast<int>(loop.size());
+  const double whole = position[n];
+  auto apart = [&](int i, int j) {
+    const double d = std::abs(position[i] - position[j]);
+    return std::min(d, whole - d);
+  };
+  for (;;) {
+    int bump = -1;
+    double farthest = kBumpStray * spacing;
+    for (size_t c = 0; c < corners.size(); ++c) {
+      const int begin = corners[c], end = c + 1 < corners.size() ? corners[c + 1] : corners[0] + n;
+      const double from = position[begin], to = end < n ? position[end] : whole + position[end - n];
+      const int pieces = std::max(1, static_cast<int>(std::lround((to - from) / spacing)));
+      for (int i = begin + 1; i < end; ++i) {
+        const double here = i < n ? position[i] : whole + position[i - n];
+        const int piece = std::min(pieces - 1, static_cast<int>((here - from) / (to - from) * pieces));
+        const double stray = distanceToSegment(mesh.points[loop[i % n]],
+                                               borderPointAt(mesh, loop, position, from + (to - from) * piece / pieces),
+                                               borderPointAt(mesh, loop, position, from + (to - from) * (piece + 1) / pieces));
+        if (stray <= farthest) continue;
+        bool blocked = false;
+        for (int k : corners) blocked = blocked || (!yields[k] && apart(i % n, k) < kCornersApart * spacing);
+        if (!blocked) farthest = stray, bump = i % n;
+      }
+    }
+    if (bump < 0) return;
+    corners.erase(std::remove_if(corners.begin(), corners.end(),
+                                 [&](int k) { return yields[k] && apart(bump, k) < kCornersApart * spacing; }),
+                  corners.end());
+    yields[bump] = false;  // it stays
+    corners.insert(std::upper_bound(corners.begin(), corners.end(), bump), bump);
+  }
+}
+
 // Samples along the border at 3D arc-length spacing close to `spacing`, corners kept: those of
 // the surface (a border vertex where the surface's angles sum to far from 180 degrees) and
 // those of the parameter domain. Their points on the surface go to `points`.
@@ -57,11 +123,8 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
       candidates.emplace_back(turn, i);
   }
   std::sort(candidates.rbegin(), candidates.rend());
-  // A corner closer than kCornersApart spacings to a kept one would make a short border edge (a
-  // chamfer of a square corner is two corners of 135 degrees): only the first of them is kept.
-  // The triangle on a border edge half a spacing long has an angle of 27-28 degrees at its
-  // inside corner (CGAL's bear and bunny clipped in half, at 500-2000 vertices).
-  constexpr double kCornersApart = 0.7;
+  // A corner closer than kCornersApart spacings to a kept one would make a short border edge:
+  // only the first of them is kept.
   std::vector<int> corners;
   for (const auto& [score, i] : candidates) {
     bool near = false;
@@ -74,6 +137,11 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
   }
   std::sort(corners.begin(), corners.end());
   if (corners.empty()) corners.push_back(0);
+  if (options.onSeam.empty()) {  // (a seam's two copies must be sampled alike)
+    std::vector<bool> yields(n, false);  // corners of the map only, not of the surface
+    for (const auto& [score, i] : candidates) yields[i] = score >= 1000.0 && score <= 1040.0;
+    keepBumps(mesh, loop, position, spacing, yields, corners);
+  }
 
   std::vector<Vec2> samples;
   for (size_t c = 0; c < corners.size(); ++c) {

@@ -107,3 +107,57 @@ TEST(Resample, TheBorderOfACoarseInputRefinedStaysOnItsBorder) {
   }
   EXPECT_GT(onBorder, 30);
 }
+
+// A rectangle whose bottom border has a narrow bump (0.006 deep, a Gaussian 0.015 wide; no
+// vertex of it turns by more than 16 degrees, so none is a corner), remeshed to 300 vertices
+// (0.04 apart): the border edge between the samples around the bump cut it off (Hausdorff
+// distance 0.46% of the diagonal, there). Its tip is a sample now (keepBumps in sites.cpp;
+// 0.20%).
+TEST(Sites, ANarrowBumpOfTheBorderIsKept) {
+  constexpr int kColumns = 200, kRows = 20;
+  Mesh m = test::grid(kColumns);  // (kColumns + 1)^2 points; the first kRows + 1 rows used
+  m.points.resize((kColumns + 1) * (kRows + 1));
+  m.triangles.resize(2 * kColumns * kRows);
+  const auto bump = [](double x) { return -0.006 * std::exp(-std::pow((x - 0.5) / 0.015, 2)); };
+  for (Vec3& p : m.points) {
+    const double row = p.y() * kColumns / kRows;  // 0 at the bottom, 1 at the top
+    p.y() = 0.5 * row + (1 - row) * bump(p.x());
+  }
+  RemeshOptions o;
+  o.sites.count = 300;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(m, o, "bump");
+  const Vec3 tip(0.5, bump(0.5), 0);
+  double nearest = INFINITY;
+  for (const Vec3& p : r.output.points) nearest = std::min(nearest, (p - tip).norm());
+  EXPECT_LT(nearest, 1e-9);
+}
+
+// As above, but the map turns by 30 degrees at a border vertex 0.02 from the bump's tip (the
+// surface does not): a corner of the map alone, kept as a sample, was closer than 0.7 spacings
+// to the tip and kept it out (CGAL's blobby clipped in half: Hausdorff 0.309 against CGAL's
+// 0.251% at 2000). It gives way to the tip now.
+TEST(Sites, ACornerOfTheMapAloneGivesWayToABumpOfTheBorder) {
+  constexpr int kColumns = 200, kRows = 20;
+  Mesh m = test::grid(kColumns);
+  m.points.resize((kColumns + 1) * (kRows + 1));
+  m.triangles.resize(2 * kColumns * kRows);
+  const auto bump = [](double x) { return -0.006 * std::exp(-std::pow((x - 0.5) / 0.015, 2)); };
+  for (Vec3& p : m.points) {
+    const double row = p.y() * kColumns / kRows;
+    p.y() = 0.5 * row + (1 - row) * bump(p.x());
+  }
+  Parameterization p = parameterize(m, {ParamMethod::Lscm, Border::Circle}, "bump");
+  const int kink = 104;  // the border vertex at x = 0.52, on the bottom row
+  ASSERT_TRUE(p.onBoundary[kink]);
+  const Vec2 along = (p.uv[kink + 1] - p.uv[kink - 1]).normalized();
+  p.uv[kink] += 0.6 * (p.uv[kink + 1] - p.uv[kink]).norm() * Vec2(along.y(), -along.x());  // outwards
+  const Domain domain(p.uv, m.triangles, {});
+  SiteOptions o;
+  o.count = 300;
+  const InitialSites sites = initialSites(m, p, domain, o);
+  const Vec3 tip(0.5, bump(0.5), 0);
+  double nearest = INFINITY;
+  for (const Vec3& q : sites.fixedPoints) nearest = std::min(nearest, (q - tip).norm());
+  EXPECT_LT(nearest, 1e-9);
+}
