@@ -1299,12 +1299,6 @@ namespace {
 // took the bear at 1000 from 0.59 to 0.74% Hausdorff, cutting its border's bends.
 constexpr double kShortBorderEdge = 0.7, kBorderStray = 0.3;
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
-
 // The smallest angle of the triangles of `before` that are not in `after` (by corners and
 // places), and of those of `after` that are not in `before`: what a local change took away and
 // put in their place (the flips of a relaxation included, wherever they reached).

@@ -46,12 +46,6 @@ Vec3 borderPointAt(const Mesh& mesh, const std::vector<int>& loop, const std::ve
   return (1 - t) * mesh.points[loop[i]] + t * mesh.points[loop[(i + 1) % n]];
 }
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
-
 // A bump of the border narrower than the spacing (the tip of a clipped surface's border) falls
 // between two samples, and the border edge between them cuts it off: that is the Hausdorff
 // distance. A border vertex farther than kBumpStray spacings from the edge between the samples
