@@ -30,6 +30,11 @@ std::vector<double> angleSums(const Mesh& mesh) {
   return sum;
 }
 
+// A border vertex is a corner of the surface where its angles sum to more than kSurfaceTurn
+// degrees from 180; a corner of the map where the border turns in the plane (isCorner); the
+// map's corners come first, scored kMapCorner plus the surface's turn.
+constexpr double kSurfaceTurn = 40.0, kMapCorner = 1000.0;
+
 // A corner closer than kCornersApart spacings to a kept one would make a short border edge (a
 // chamfer of a square corner is two corners of 135 degrees). The triangle on a border edge half
 // a spacing long has an angle of 27-28 degrees at its inside corner (CGAL's bear and bunny
@@ -68,6 +73,7 @@ void keepBumps(const Mesh& mesh, const std::vector<int>& loop, const std::vector
     for (size_t c = 0; c < corners.size(); ++c) {
       const int begin = corners[c], end = c + 1 < corners.size() ? corners[c + 1] : corners[0] + n;
       const double from = position[begin], to = end < n ? position[end] : whole + position[end - n];
+      if (!(to > from)) continue;
       const int pieces = std::max(1, static_cast<int>(std::lround((to - from) / spacing)));
       for (int i = begin + 1; i < end; ++i) {
         const double here = i < n ? position[i] : whole + position[i - n];
@@ -112,8 +118,8 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     else if (flag(options.onSeam, loop[i]))
       continue;
     else if (isCorner(param.uv[loop[(i + n - 1) % n]], param.uv[loop[i]], param.uv[loop[(i + 1) % n]]))
-      candidates.emplace_back(1000.0 + turn, i);
-    else if (turn > 40.0)
+      candidates.emplace_back(kMapCorner + turn, i);
+    else if (turn > kSurfaceTurn)
       candidates.emplace_back(turn, i);
   }
   std::sort(candidates.rbegin(), candidates.rend());
@@ -133,7 +139,7 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
   if (corners.empty()) corners.push_back(0);
   if (options.onSeam.empty()) {  // (a seam's two copies must be sampled alike)
     std::vector<bool> yields(n, false);  // corners of the map only, not of the surface
-    for (const auto& [score, i] : candidates) yields[i] = score >= 1000.0 && score <= 1040.0;
+    for (const auto& [score, i] : candidates) yields[i] = score >= kMapCorner && score <= kMapCorner + kSurfaceTurn;
     keepBumps(mesh, loop, position, spacing, yields, corners);
   }
 
