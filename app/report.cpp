@@ -85,6 +85,10 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"components_kept", r.componentsKept},
           {"slit_trial", r.slitTrial ? nlohmann::json{{"slit_avg_min_angle_deg", r.slitTrial->slit},
                                                       {"whole_avg_min_angle_deg", r.slitTrial->whole},
+                                                      {"slit_bars_met", r.slitTrial->slitBars},
+                                                      {"whole_bars_met", r.slitTrial->wholeBars},
+                                                      {"slit_hausdorff_percent", r.slitTrial->slitHausdorff},
+                                                      {"whole_hausdorff_percent", r.slitTrial->wholeHausdorff},
                                                       {"kept", r.cut.seamEdges > 0 ? "slit" : "whole"}}
                                      : nlohmann::json()},
           {"charts", r.charts},
@@ -146,8 +150,11 @@ std::string slitTrialText(const RemeshResult& r) {
   return std::string(r.cut.seamEdges > 0 ? "Kept slit open" : "Kept whole") +
          " (remeshed both slit open and whole: its map to a disk shrinks part of it over " +
          std::to_string(static_cast<long>(CutOptions{}.slitDisksAbove)) + " times): average smallest angle " +
-         format("%.1f", r.slitTrial->slit) + " deg slit, " + format("%.1f", r.slitTrial->whole) +
-         " deg whole";
+         format("%.1f", r.slitTrial->slit) + " deg slit, " + format("%.1f", r.slitTrial->whole) + " deg whole" +
+         (r.slitTrial->bothMeetTheBars() ? "; both meet the three bars, the closer kept: Hausdorff " +
+                                               format("%.3f", r.slitTrial->slitHausdorff) + "% slit, " +
+                                               format("%.3f", r.slitTrial->wholeHausdorff) + "% whole"
+                                         : "");
 }
 
 std::string chartTrialText(const RemeshResult& r) {

@@ -415,11 +415,6 @@ int barsMet(const QualityMetrics& q) {
   return (q.irregularBoundaryAware <= 15.0) + (q.minAngle >= 30.0) + (q.avgMinAngle >= 53.0);
 }
 
-// More bars met, or as many and a larger average smallest angle.
-bool betterThan(const QualityMetrics& a, const QualityMetrics& b) {
-  return barsMet(a) != barsMet(b) ? barsMet(a) > barsMet(b) : a.avgMinAngle > b.avgMinAngle;
-}
-
 // A part of the surface remeshed on its own (a chart, a component) added to the whole's counts
 // and times; the largest by area (`largest` so far) gives its recording and map. Returns
 // whether it was that.
@@ -566,10 +561,11 @@ RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, cons
 }
 
 // A disk slit open (a nearly closed shape, CutOptions::slitDisksAbove) is made whole too, and
-// the better result kept (betterThan): slits through a shape's far side (CGAL's mannequin, a
+// the better result kept (SlitTrial::wholeBetter): slits through a shape's far side (CGAL's mannequin, a
 // camel head, the lion head at 1000 vertices) pay, through the peaks of a terrain (CGAL's three
 // peaks) they cost. The other run's time counts. If the slit run fails (its seams do not
-// stitch), the whole one stands alone. Neither is measured against the input here.
+// stitch), the whole one stands alone. Both are measured against the input only where both
+// meet the three bars (the distance then decides).
 RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const std::string& name,
                         const Mesh* simplified) {
   RemeshOptions slitOptions = options, wholeOptions = options;
@@ -600,8 +596,14 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
   if (kept.cut.seamEdges > 0 && whole.valid()) {
     try {
       RemeshResult other = whole.get();
-      const SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle};
-      if (betterThan(other.after, kept.after)) std::swap(kept, other);
+      SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle, barsMet(kept.after), barsMet(other.after)};
+      if (trial.bothMeetTheBars()) {
+        measureFidelityOf(kept, input);
+        measureFidelityOf(other, input);
+        trial.slitHausdorff = kept.fidelity.hausdorffPercent;
+        trial.wholeHausdorff = other.fidelity.hausdorffPercent;
+      }
+      if (trial.wholeBetter()) std::swap(kept, other);
       kept.slitTrial = trial;
       countTheOtherRun(kept, other);
     } catch (const Error&) {
@@ -767,6 +769,12 @@ bool ChartTrial::chartsBetter() const {
   // And the other way round: much rounder, and not much farther.
   const bool muchRounder = chartsAvgMinAngle >= oneCutAvgMinAngle + kRounderBy && kCloserBy * chartsHausdorff <= oneCutHausdorff;
   return rounder || closer || muchRounder;
+}
+
+bool SlitTrial::wholeBetter() const {
+  if (wholeBars != slitBars) return wholeBars > slitBars;
+  if (bothMeetTheBars()) return wholeHausdorff < slitHausdorff;
+  return whole > slit;
 }
 
 bool FirstPassTrial::withoutBetter() const {

@@ -1231,8 +1231,11 @@ class AngleRaiser {
     const Vec3 start = m_.points[v];
     const SmallestAngles now = smallestAnglesOf(m_, faces);
     const double floor = std::min(meanFloor_[v], now.mean);
+    // A ring whose faces already spread wider than keepsRingUnfolded() allows (a vertex on a
+    // tip or a sharp ridge) is held only to none of them turning over.
+    const bool wide = !keepsRingUnfolded(m_, rings, v, start, up);
     const auto score = [&](const Vec3& to) {
-      if (!keepsRingUnfolded(m_, rings, v, to, up)) return -1.0;
+      if (wide ? turnsOver(m_, rings, v, to) : !keepsRingUnfolded(m_, rings, v, to, up)) return -1.0;
       m_.points[v] = to;
       const SmallestAngles there = smallestAnglesOf(m_, faces);
       m_.points[v] = start;

@@ -485,6 +485,39 @@ TEST(Polish, RaiseSmallAnglesCutsNoPeakOff) {
   EXPECT_EQ(m.points, surface.points);
 }
 
+// The patch folded along its middle row (vertices 3, 10, ... 45) into a fin 8 degrees thin:
+// the faces around a vertex of the fold's edge face more than 84 degrees away from their mean
+// normal, as around a vertex snapped onto a horn. Vertex 24, on the edge, slid 0.7 along it.
+Mesh finWithAVertexSlid() {
+  Mesh m = equilateralPatch();
+  const double edgeY = m.points[24].y(), opening = 8.0 * M_PI / 180;
+  for (Vec3& p : m.points) {
+    const double t = p.y() - edgeY;  // across the fold, in the flat patch
+    if (t > 0) p = Vec3(p.x(), edgeY - t * std::cos(opening), t * std::sin(opening));
+  }
+  m.points[24].x() += 0.7;
+  return m;
+}
+
+// The vertex slid along the fin's edge goes back, close to the edge, though its ring is wider
+// than a fold test against its mean normal lets any point pass (none would move it, before).
+// The result is a little off the fin elsewhere (its corner 0 raised 0.05), as a remeshed surface
+// is off its input: a move may take the chords that far from it.
+TEST(Polish, RaiseSmallAnglesMovesAVertexOnTheEdgeOfAThinFin) {
+  const Mesh fin = finWithAVertexSlid();
+  const double before = measureQuality(fin).minAngle;
+  ASSERT_LT(before, 25.0);
+  std::vector<int> allBut24(fin.vertexCount());
+  std::iota(allBut24.begin(), allBut24.end(), 0);
+  allBut24.erase(allBut24.begin() + 24);
+  Mesh m = fin;
+  m.points[0].z() += 0.05;
+  EXPECT_EQ(raiseSmallAngles(m, fin, allBut24), 1);
+  EXPECT_GT(measureQuality(m).minAngle, before + 15);
+  EXPECT_LT((m.points[24] - fin.points[24]).norm(), 0.7);
+  EXPECT_LT(std::abs(m.points[24].y() - fin.points[24].y()) + std::abs(m.points[24].z()), 0.05);  // by the edge
+}
+
 // The patch with border vertex 1 (on its straight side from corner 0 through 1, 2, ... 6)
 // moved to `length` of an edge from vertex 2: the border edge (1, 2) that short, and the
 // triangle on it, (1, 8, 2), thin.

@@ -58,6 +58,29 @@ TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
                                    "too, which failed: m.off: the parameterization is not one-to-one)");
 }
 
+// The slit trial's line gives the distances where they decided (both runs met the three bars).
+TEST(Report, TheSlitTrialSaysWhereTheDistanceDecided) {
+  RemeshResult r;
+  EXPECT_EQ(slitTrialText(r), "");
+  r.cut.seamEdges = 40;
+  r.slitTrial = SlitTrial{53.87, 53.99, 3, 2};
+  std::string text = slitTrialText(r);
+  EXPECT_EQ(text.rfind("Kept slit open", 0), 0u) << text;
+  EXPECT_EQ(text.find("Hausdorff"), std::string::npos) << text;
+  r.slitTrial->wholeBars = 3;
+  r.slitTrial->slitHausdorff = 2.985;
+  r.slitTrial->wholeHausdorff = 3.676;
+  text = slitTrialText(r);
+  EXPECT_NE(text.find("53.9 deg slit, 54.0 deg whole; both meet the three bars, the closer kept: Hausdorff 2.985% slit, "
+                      "3.676% whole"),
+            std::string::npos)
+      << text;
+  const nlohmann::json json = toJson(r, RemeshOptions{});
+  EXPECT_EQ(json["slit_trial"]["kept"], "slit");
+  EXPECT_EQ(json["slit_trial"]["whole_bars_met"], 3);
+  EXPECT_EQ(json["slit_trial"]["slit_hausdorff_percent"], 2.985);
+}
+
 // Where the one disk failed and the charts stand alone, the line says so and why, not a
 // comparison with a run that gave nothing; the JSON has the reason.
 TEST(Report, ChartsThatStandInForAFailedDiskSaySo) {

@@ -5,9 +5,11 @@
 #include "mesh.h"
 #include "mesh_io.h"
 #include "pipeline.h"
+#include "topology.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -123,6 +125,21 @@ inline std::string cgalSample(const std::string& name) {
 // Skips the test where ./build.sh has not extracted `path` (a CGAL sample).
 #define SKIP_UNLESS_EXTRACTED(path) \
   if (!std::ifstream(path).good()) GTEST_SKIP() << (path) << " not extracted (run ./build.sh)"
+
+// The lower half of a mesh along `axis` (triangles wholly below the middle of its range), its
+// largest piece.
+inline Mesh lowerHalf(const Mesh& mesh, int axis = 2) {
+  double low = INFINITY, high = -INFINITY;
+  for (const Vec3& p : mesh.points) low = std::min(low, p[axis]), high = std::max(high, p[axis]);
+  Mesh half;
+  half.points = mesh.points;
+  for (const Triangle& t : mesh.triangles)
+    if (std::max({mesh.points[t[0]][axis], mesh.points[t[1]][axis], mesh.points[t[2]][axis]}) < 0.5 * (low + high))
+      half.triangles.push_back(t);
+  std::vector<Mesh> pieces = splitComponents(half);
+  return *std::max_element(pieces.begin(), pieces.end(),
+                           [](const Mesh& a, const Mesh& b) { return a.faceCount() < b.faceCount(); });
+}
 
 // The mesh at `path` (a CGAL sample) simplified to `vertices` and remeshed with the defaults,
 // not measured against the input.
