@@ -134,7 +134,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                "angles kept)");
   cmd.add_flag("--no-slit", r.noSlit,
                "Keep a nearly closed disk whole (by default it is also remeshed slit open, and the "
-               "result meeting more of the quality bars kept, then the larger average smallest angle)");
+               "result meeting more of the quality bars kept; where both meet them, the closer to the "
+               "input; else the larger average smallest angle)");
   cmd.add_flag("--full-input", r.fullInput,
                "Remesh a large input as it is (by default, one with more than 10 vertices per vertex "
                "asked, 5 over 10,000, is simplified to that many first; the last steps and the distances "
