@@ -111,8 +111,9 @@ FitResult FitResult::scaled(double factor) const {
   return r;
 }
 
-FitResult fitToSurface(Mesh& mesh, const Mesh& surface, const FitOptions& options) {
-  const SurfaceProjection projection(surface);
+FitResult fitToSurface(Mesh& mesh, const SearchableSurface& input, const FitOptions& options) {
+  const Mesh& surface = input.mesh;
+  const SurfaceProjection& projection = input.projection;
   const std::vector<Sample> samples = samplesOf(mesh);
   // The border stays on the input's border, and a vertex on an input vertex (a tip snapped
   // there, core/polish) stays on it.

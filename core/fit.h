@@ -6,6 +6,7 @@
 #pragma once
 
 #include "mesh.h"
+#include "projection.h"
 
 namespace lloydscope {
 
@@ -32,6 +33,6 @@ struct FitResult {
 // their normals by the moves that minimize the samples' weighted squared distances to those
 // points, measured along each sample's normal (one Gauss-Newton step, the closest points held:
 // a sparse linear system). A vertex on a vertex of `surface` (a tip snapped to) stays.
-FitResult fitToSurface(Mesh& mesh, const Mesh& surface, const FitOptions& options = {});
+FitResult fitToSurface(Mesh& mesh, const SearchableSurface& surface, const FitOptions& options = {});
 
 }  // namespace lloydscope

@@ -221,7 +221,9 @@ namespace {
 // before the flips, left the man at 19.6 degrees); every vertex moved where its triangles'
 // mean smallest angle is largest, their smallest angle kept (raiseMeanAngles: on the 36 disks,
 // the average smallest angle up by 0.65 degrees on average); then the fit to the input.
-void lastSteps(Mesh& result, const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
+void lastSteps(Mesh& result, const Mesh& originalMesh, const RemeshOptions& o, RemeshResult& done) {
+  if (o.polish <= 0 && !o.fit) return;
+  const SearchableSurface original(originalMesh);  // searched by every step below
   if (o.polish > 0) {
     std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
     done.snappedTips = static_cast<int>(tips.size());

@@ -834,9 +834,10 @@ double meanEdgeLength(const Mesh& m) {
 
 }  // namespace
 
-std::vector<int> snapToTips(Mesh& m, const Mesh& surface, int rounds) {
+std::vector<int> snapToTips(Mesh& m, const SearchableSurface& input, int rounds) {
   if (m.triangles.empty()) return {};
-  const SurfaceProjection projection(surface);
+  const Mesh& surface = input.mesh;
+  const SurfaceProjection& projection = input.projection;
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   const double spacing = meanEdgeLength(m);
   // The mesh's smallest angle may not fall under the lesser of what it was and 30 degrees,
@@ -958,8 +959,9 @@ constexpr double kStrayAnywhere = 0.75;
 // off it.
 class StaysClose {
  public:
-  StaysClose(const Mesh& m, const Mesh& surface)
-      : surface_(surface), projection_(surface), same_(1e-12 * boundingBoxDiagonal(surface)) {
+  StaysClose(const Mesh& m, const SearchableSurface& input)
+      : surface_(input.mesh), projection_(input.projection), same_(1e-12 * boundingBoxDiagonal(input.mesh)) {
+    const Mesh& surface = surface_;
     std::vector<int> all(m.faceCount());
     std::iota(all.begin(), all.end(), 0);
     strayAnywhere_ = kStrayAnywhere * farthestChordPoint(m, projection_, all);
@@ -998,7 +1000,7 @@ class StaysClose {
 
  private:
   const Mesh& surface_;
-  const SurfaceProjection projection_;
+  const SurfaceProjection& projection_;
   const double same_;  // distances closer than this are the same (rounding)
   double strayAnywhere_ = 0, uncoveredAnywhere_ = 0;
   std::vector<std::vector<int>> inputUnder_;
@@ -1012,7 +1014,7 @@ constexpr double kMeanDrop = 0.25;
 // Tries valence moves on a mesh, each relaxed around it and kept only where it is better there.
 class ValenceMover {
  public:
-  ValenceMover(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees)
+  ValenceMover(Mesh& m, const SearchableSurface& surface, const std::vector<int>& pinned, double degrees)
       : m_(m), close_(m, surface), degrees_(degrees), fixed_(vertexEdges(m).onBoundary) {
     for (int v : pinned) fixed_[v] = true;
   }
@@ -1146,8 +1148,8 @@ class ValenceMover {
 
 }  // namespace
 
-int relaxedValenceMoves(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double degrees) {
-  if (m.triangles.empty() || surface.triangles.empty()) return 0;
+int relaxedValenceMoves(Mesh& m, const SearchableSurface& surface, const std::vector<int>& pinned, double degrees) {
+  if (m.triangles.empty() || surface.mesh.triangles.empty()) return 0;
   return ValenceMover(m, surface, pinned, degrees).run(3);
 }
 
@@ -1160,7 +1162,7 @@ enum class Raise { Smallest, Mean };
 // Moves vertices to where the angles of their triangles are larger, on the surface.
 class AngleRaiser {
  public:
-  AngleRaiser(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, Raise raise)
+  AngleRaiser(Mesh& m, const SearchableSurface& surface, const std::vector<int>& pinned, Raise raise)
       : m_(m), surface_(surface), raise_(raise), fixed_(vertexEdges(m).onBoundary), meanFloor_(m.vertexCount(), 0.0) {
     for (int v : pinned) fixed_[v] = true;
     // Each vertex's triangles' mean smallest angle, less kMeanDrop: what its moves may lower
@@ -1206,8 +1208,8 @@ class AngleRaiser {
     return vertices;
   }
 
-  // Built for the first vertex tried (the surface's tree is most of the step's cost), before
-  // anything moved.
+  // Built for the first vertex tried (it searches the whole result and the input's vertices),
+  // before anything moved.
   const StaysClose& close() {
     if (!close_) close_.emplace(m_, surface_);
     return *close_;
@@ -1274,7 +1276,7 @@ class AngleRaiser {
   }
 
   Mesh& m_;
-  const Mesh& surface_;
+  const SearchableSurface& surface_;
   const Raise raise_;
   std::optional<StaysClose> close_;
   std::vector<bool> fixed_;  // the border, and the pinned vertices
@@ -1282,14 +1284,14 @@ class AngleRaiser {
 };
 }  // namespace
 
-int raiseSmallAngles(Mesh& m, const Mesh& surface, const std::vector<int>& pinned, double below) {
-  if (m.triangles.empty() || surface.triangles.empty()) return 0;
+int raiseSmallAngles(Mesh& m, const SearchableSurface& surface, const std::vector<int>& pinned, double below) {
+  if (m.triangles.empty() || surface.mesh.triangles.empty()) return 0;
   constexpr int kRounds = 3;
   return AngleRaiser(m, surface, pinned, Raise::Smallest).run(below, kRounds);
 }
 
-int raiseMeanAngles(Mesh& m, const Mesh& surface, const std::vector<int>& pinned) {
-  if (m.triangles.empty() || surface.triangles.empty()) return 0;
+int raiseMeanAngles(Mesh& m, const SearchableSurface& surface, const std::vector<int>& pinned) {
+  if (m.triangles.empty() || surface.mesh.triangles.empty()) return 0;
   constexpr double kEvery = 181;  // every free vertex, those of the smallest angles first
   return AngleRaiser(m, surface, pinned, Raise::Mean).run(kEvery, /*rounds=*/1);
 }
@@ -1331,10 +1333,9 @@ std::pair<double, double> smallestAnglesChanged(const Mesh& before, const Mesh& 
 
 }  // namespace
 
-int collapseShortBorderEdges(Mesh& m, const Mesh& surface, std::vector<int>& pinned) {
-  if (m.triangles.empty() || surface.triangles.empty()) return 0;
+int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vector<int>& pinned) {
+  if (m.triangles.empty() || surface.mesh.triangles.empty()) return 0;
   const double spacing = meanEdgeLength(m);
-  std::optional<SurfaceProjection> projection;  // built for the first collapse tried
   int collapsed = 0;
   for (bool again = true; again;) {
     again = false;
@@ -1376,8 +1377,7 @@ int collapseShortBorderEdges(Mesh& m, const Mesh& surface, std::vector<int>& pin
         movable[to] = true;
         movable = withNeighbours(tried, withNeighbours(tried, movable));
         for (int v : pinned) movable[v] = false;
-        if (!projection) projection.emplace(surface);
-        relaxOnSurface(tried, movable, *projection, 3, /*local=*/true);
+        relaxOnSurface(tried, movable, surface.projection, 3, /*local=*/true);
         const auto [before, after] = smallestAnglesChanged(m, tried);
         if (after <= before + 1e-6) continue;
         std::vector<int> kept;

@@ -5,6 +5,7 @@
 // input surface through its parameter point (so it never leaves the surface), then flips again.
 #pragma once
 
+#include "projection.h"
 #include "remesh.h"
 
 #include <functional>
@@ -68,7 +69,7 @@ void polishSeams(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh
 // vertex's triangles over, and kept if the smallest angle of the triangles around stays at the
 // lesser of the mesh's smallest angle and 30 degrees, or, whatever the angles, if the tip was
 // more than an edge length away. A refused tip is not tried again. Returns the vertices snapped.
-std::vector<int> snapToTips(Mesh& result, const Mesh& surface, int rounds = 3);
+std::vector<int> snapToTips(Mesh& result, const SearchableSurface& surface, int rounds = 3);
 
 // Whether moving v to `to` turns one of its triangles over (its normal by more than 90
 // degrees). A spike's triangles turn steeply from the ring's normal: only this is ruled out.
@@ -109,7 +110,7 @@ int flipToRegularity(Mesh& mesh, double smallestAngle = kLastValenceFlipAngle);
 // (CGAL's lion in charts, 14 deg); the search goes on past such a sequence, as past one that
 // gains nothing. Of the sequences a first flip starts, the best two are tried (the best may be
 // refused where the next would do): all bars met on 30 of the 36 instead of 28.
-int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
+int relaxedValenceMoves(Mesh& mesh, const SearchableSurface& surface, const std::vector<int>& pinned = {},
                         double degrees = 20.0);
 
 // Where small angles are left: each free vertex (not on the border, not `pinned`) of a triangle
@@ -123,7 +124,7 @@ int relaxedValenceMoves(Mesh& mesh, const Mesh& surface, const std::vector<int>&
 // than three quarters of the farthest anywhere). Returns the moves kept. 35 degrees (as the polish's repair): on the 36 disks, 23 met all of
 // issue 5's bars (22 without the step) and the mean smallest angle went 29.64 -> 31.50 degrees
 // (30.76 at 30 degrees); at 0.75 times their sizes 17 (17), 30.31 -> 32.14 degrees.
-int raiseSmallAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {},
+int raiseSmallAngles(Mesh& mesh, const SearchableSurface& surface, const std::vector<int>& pinned = {},
                      double below = 35.0);
 
 // Each free vertex (not on the border, not `pinned`), those of the smallest angles first,
@@ -135,7 +136,7 @@ int raiseSmallAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pi
 // 0.75 of their sizes 54.06 -> 54.67 degrees, 19 instead of 18); a second pass added 0.17
 // degrees on nefertiti at 1000 for 60 ms more; letting the smallest angle fall to 35 degrees
 // (where it was over that) added 0.2 more and took the minima down to 35.
-int raiseMeanAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pinned = {});
+int raiseMeanAngles(Mesh& mesh, const SearchableSurface& surface, const std::vector<int>& pinned = {});
 
 // A border edge under 0.7 of the mean edge length (two samples the border had to keep close
 // together: the seam nodes of two charts near a corner of the border) leaves a thin triangle
@@ -145,7 +146,7 @@ int raiseMeanAngles(Mesh& mesh, const Mesh& surface, const std::vector<int>& pin
 // `surface`, the smallest angle of the triangles that changed rises. `pinned` vertices stay;
 // where an edge collapses, the mesh's unused vertices are dropped and `pinned` renumbered with
 // it. Returns how many edges were collapsed.
-int collapseShortBorderEdges(Mesh& mesh, const Mesh& surface, std::vector<int>& pinned);
+int collapseShortBorderEdges(Mesh& mesh, const SearchableSurface& surface, std::vector<int>& pinned);
 
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the
 // triangle's shortest edge it can go (keeping the mesh manifold and unfolded); the merged

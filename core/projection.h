@@ -39,4 +39,13 @@ class SurfaceProjection {
   std::unique_ptr<Tree> tree_;
 };
 
+// A surface and its closest-point search, built once for the steps that each search it (the
+// last steps of core/polish and core/fit against the input: on a scan of 52,000 triangles each
+// search took 50 ms to build). Any mesh will do where one is asked for, its search built then.
+struct SearchableSurface {
+  SearchableSurface(const Mesh& surface) : mesh(surface), projection(surface) {}  // NOLINT: implicit
+  const Mesh& mesh;
+  const SurfaceProjection projection;
+};
+
 }  // namespace lloydscope
