@@ -565,9 +565,9 @@ RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, cons
 // A disk slit open (a nearly closed shape, CutOptions::slitDisksAbove) is made whole too, and
 // the better result kept (SlitTrial::wholeBetter): slits through a shape's far side (CGAL's
 // mannequin, a camel head, the lion head at 1000 vertices) pay, through the peaks of a terrain
-// (CGAL's three peaks) they cost. The other run's time counts. If the slit run fails (its seams do not
-// stitch), the whole one stands alone. Both are measured against the input only where both
-// meet the three bars (the distance then decides).
+// (CGAL's three peaks) they cost. The other run's time counts. If the slit run fails (its seams
+// do not stitch), the whole one stands alone. Both are measured against the input only where
+// both meet the three bars (the distance then decides).
 RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const std::string& name,
                         const Mesh* simplified) {
   RemeshOptions slitOptions = options, wholeOptions = options;

@@ -121,9 +121,10 @@ int relaxedValenceMoves(Mesh& mesh, const SearchableSurface& surface, const std:
 // angle no more than a quarter of a degree under what it was before the step (the vertex's own
 // moves; a neighbour's may lower it too). A move is kept where, as for relaxedValenceMoves(),
 // neither the chords nor the input's vertices under them end farther apart than before (or
-// than three quarters of the farthest anywhere). Returns the moves kept. 35 degrees (as the polish's repair): on the 36 disks, 23 met all of
-// issue 5's bars (22 without the step) and the mean smallest angle went 29.64 -> 31.50 degrees
-// (30.76 at 30 degrees); at 0.75 times their sizes 17 (17), 30.31 -> 32.14 degrees.
+// than three quarters of the farthest anywhere). Returns the moves kept. 35 degrees (as the
+// polish's repair): on the 36 disks, 23 met all of issue 5's bars (22 without the step) and the
+// mean smallest angle went 29.64 -> 31.50 degrees (30.76 at 30 degrees); at 0.75 times their
+// sizes 17 (17), 30.31 -> 32.14 degrees.
 int raiseSmallAngles(Mesh& mesh, const SearchableSurface& surface, const std::vector<int>& pinned = {},
                      double below = 35.0);
 
