@@ -6,6 +6,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -44,7 +45,7 @@ std::vector<size_t> mortonOrder(const std::vector<Vec3>& points) {
                           spreadBits(static_cast<uint64_t>(g.z())) << 2;
     keys[i] = cell << 32 | i;  // ties in index order
   }
-  std::sort(keys.begin(), keys.end());
+  tbb::parallel_sort(keys.begin(), keys.end());  // the keys differ: one order, whatever the threads
   std::vector<size_t> order(points.size());
   for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i] & 0xFFFFFFFFu;
   return order;
