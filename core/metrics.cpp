@@ -114,9 +114,9 @@ struct OneSided {
   int count = 0;
 };
 
-OneSided oneSided(const Mesh& from, const Mesh& to) {
+OneSided oneSided(const Mesh& from, const SurfaceProjection& to) {
   const std::vector<Vec3> samples = samplePoints(from, 10000 + 10 * from.faceCount());
-  const std::vector<double> squared = SurfaceProjection(to).squaredDistances(samples);
+  const std::vector<double> squared = to.squaredDistances(samples);
   // Summed in parts, as when each thread summed its own: the figures stay as they were.
   const size_t threads = std::max(1u, std::thread::hardware_concurrency());
   std::vector<OneSided> part(threads);
@@ -144,10 +144,16 @@ OneSided oneSided(const Mesh& from, const Mesh& to) {
 }  // namespace
 
 Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference) {
+  if (mesh.triangles.empty() || reference.triangles.empty()) return Fidelity{};
+  return measureFidelity(mesh, SearchableSurface(reference));
+}
+
+Fidelity measureFidelity(const Mesh& mesh, const SearchableSurface& reference) {
   Fidelity f;
-  if (mesh.triangles.empty() || reference.triangles.empty()) return f;
-  const OneSided fromMesh = oneSided(mesh, reference), fromReference = oneSided(reference, mesh);
-  const double diagonal = boundingBoxDiagonal(reference);
+  if (mesh.triangles.empty() || reference.mesh.triangles.empty()) return f;
+  const OneSided fromMesh = oneSided(mesh, reference.projection),
+                 fromReference = oneSided(reference.mesh, SurfaceProjection(mesh));
+  const double diagonal = boundingBoxDiagonal(reference.mesh);
   f.samples = fromMesh.count + fromReference.count;
   f.farthestOnReference = fromReference.maxSquared > fromMesh.maxSquared;
   const OneSided& worst = f.farthestOnReference ? fromReference : fromMesh;

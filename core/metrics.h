@@ -8,6 +8,8 @@
 
 namespace lloydscope {
 
+struct SearchableSurface;
+
 struct QualityMetrics {
   int vertices = 0, faces = 0, boundaryVertices = 0;
   double irregularPercent = 0;       // vertices of valence != 6, all of them (the reference)
@@ -34,6 +36,9 @@ struct Fidelity {
 // Samples each surface (vertices, edge midpoints and area-weighted random points, fixed seed)
 // and measures the distance to the other with an AABB tree, in both directions.
 Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference);
+// The same against a reference whose search is built already (several meshes measured
+// against one: the trials of a run).
+Fidelity measureFidelity(const Mesh& mesh, const SearchableSurface& reference);
 
 // The three corner angles of a triangle, in degrees.
 std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& c);

@@ -83,24 +83,25 @@ int simplifyTarget(const RemeshOptions& options, const Mesh& input) {
   return options.simplifyTo > 0 ? options.simplifyTo : coarseTarget(options, input);
 }
 
-// `input` simplified to `target` vertices (0: as it is), or `simplified` where the caller made
-// that already.
-Mesh simplifiedTo(const Mesh& input, int target, const Mesh* simplified, const std::string& name) {
+// `input` simplified to `target` vertices (0: as it is), or as `prepared` holds it where the
+// caller made that already.
+Mesh simplifiedTo(const Mesh& input, int target, const PreparedInput* prepared, const std::string& name) {
   if (target <= 0) return input;
-  return simplified ? *simplified : simplify(input, {target}, name).mesh;
+  return prepared && prepared->simplified() ? *prepared->simplified() : simplify(input, {target}, name).mesh;
 }
 
 }  // namespace
 
 RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
-                             const std::string& name, const Mesh* simplified)
+                             const std::string& name, const PreparedInput* prepared)
     : options_(withCoarseInput(effective(options), input)),
       coarsened_(options_.simplifyTo != options.simplifyTo),
       name_(name),
       original_(input),
+      prepared_(prepared),
       input_([&] {
         Stopwatch stage;
-        Mesh mesh = simplifiedTo(input, options_.simplifyTo, simplified, name);
+        Mesh mesh = simplifiedTo(input, options_.simplifyTo, prepared, name);
         ms_.simplify = stage.lap();
         const Topology topology = analyzeTopology(mesh);
         if (topology.components > 1)
@@ -221,9 +222,9 @@ namespace {
 // before the flips, left the man at 19.6 degrees); every vertex moved where its triangles'
 // mean smallest angle is largest, their smallest angle kept (raiseMeanAngles: on the 36 disks,
 // the average smallest angle up by 0.65 degrees on average); then the fit to the input.
-void lastSteps(Mesh& result, const Mesh& originalMesh, const RemeshOptions& o, RemeshResult& done) {
+void lastSteps(Mesh& result, const PreparedInput& input, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish <= 0 && !o.fit) return;
-  const SearchableSurface original(originalMesh);  // searched by every step below
+  const SearchableSurface& original = input.search();  // searched by every step below
   if (o.polish > 0) {
     std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
     done.snappedTips = static_cast<int>(tips.size());
@@ -245,7 +246,7 @@ void lastSteps(Mesh& result, const Mesh& originalMesh, const RemeshOptions& o, R
 // A result stitched back from a cut disk or from charts: its seams relaxed on `surface`, its
 // flat triangles removed, then the last steps against `original`.
 void finishStitched(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh& surface,
-                    const Mesh& original, const RemeshOptions& o, RemeshResult& done) {
+                    const PreparedInput& original, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0) polishSeams(stitched, seamVertex, surface, o.polish);
   removeFlatTriangles(stitched);
   lastSteps(stitched, original, o, done);
@@ -291,15 +292,17 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
     o.seams = seamed();
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
+  const PreparedInput own(original(), std::nullopt);
+  const PreparedInput& prepared = prepared_ ? *prepared_ : own;
   if (!cut_) {
     // A chart's last steps are the whole surface's, once its charts are stitched (remeshCharts).
-    if (!seamed()) lastSteps(output.mesh, original(), options_, result);
+    if (!seamed()) lastSteps(output.mesh, prepared, options_, result);
     return std::move(output.mesh);
   }
   // Both copies of every seam sample are at the same place: one vertex again.
   std::vector<bool> seamVertex;
   Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
-  finishStitched(stitched, seamVertex, input_, original(), options_, result);
+  finishStitched(stitched, seamVertex, input_, prepared, options_, result);
   requireStitched(stitched, cut_->topology, siteCount(), name_);
   return stitched;
 }
@@ -373,7 +376,8 @@ RemeshResult RemeshSession::finish() {
   result.ms.remesh = stage.lap();
   result.before = measureQuality(original());
   result.after = measureQuality(result.output);
-  if (options_.measureFidelity) result.fidelity = measureFidelity(result.output, original());
+  if (options_.measureFidelity)
+    result.fidelity = prepared_ ? measureFidelity(result.output, prepared_->search()) : measureFidelity(result.output, original());
   result.ms.metrics = stage.lap();
   result.ms.total = result.ms.simplify + result.ms.cut + result.ms.resample + result.ms.parameterize + result.ms.density + result.ms.sites +
                     result.ms.lloyd + result.ms.remesh + result.ms.metrics;
@@ -385,13 +389,13 @@ RemeshResult RemeshSession::finish() {
 namespace {
 
 // `started`, if given, is called with each session as soon as it is built (and its cut known).
-// `simplified`: as RemeshSession takes it.
+// `prepared`: as RemeshSession takes it.
 RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const std::string& name,
                         const std::function<void(RemeshSession&)>& started = {},
-                        const Mesh* simplified = nullptr) {
+                        const PreparedInput* prepared = nullptr) {
   auto run = [&](const RemeshOptions& o) {
     Stopwatch total;
-    RemeshSession session(input, o, name, simplified);
+    RemeshSession session(input, o, name, prepared);
     if (started) started(session);
     while (!session.finished()) session.step();
     RemeshResult result = session.finish();
@@ -442,10 +446,10 @@ void countTheOtherRun(RemeshResult& kept, const RemeshResult& other) {
 }
 
 // Once: a result a trial measured already keeps its distances.
-void measureFidelityOf(RemeshResult& result, const Mesh& input) {
+void measureFidelityOf(RemeshResult& result, const PreparedInput& input) {
   if (result.fidelity.samples > 0) return;
   Stopwatch stage;
-  result.fidelity = measureFidelity(result.output, input);
+  result.fidelity = measureFidelity(result.output, input.search());
   const double ms = stage.lap();
   result.ms.metrics += ms;
   result.ms.total += ms;
@@ -458,11 +462,11 @@ void measureFidelityOf(RemeshResult& result, const Mesh& input) {
 // of a seam get the same samples; its projection is the map tried where LSCM folds. The
 // stitched seams are relaxed (polishSeams) and snapped to tips.
 RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name,
-                          const Mesh* simplified) {
+                          const PreparedInput* prepared) {
   Stopwatch wall, stage;
   RemeshResult result;
   result.coarseInput = coarseTarget(options, input);
-  const Mesh mesh = simplifiedTo(input, simplifyTarget(options, input), simplified, name);
+  const Mesh mesh = simplifiedTo(input, simplifyTarget(options, input), prepared, name);
   result.ms.simplify = stage.lap();
   const int asked = verticesAsked(options) > 0 ? verticesAsked(options) : mesh.vertexCount();
   const Charts charts = splitIntoCharts(mesh, asked);
@@ -498,7 +502,8 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   stage.lap();
   std::vector<bool> seamVertex;
   Mesh stitched = stitchSeams(pieces, kSeamTolerance * boundingBoxDiagonal(pieces), &seamVertex);
-  finishStitched(stitched, seamVertex, mesh, input, options, result);
+  const PreparedInput own(input, std::nullopt);
+  finishStitched(stitched, seamVertex, mesh, prepared ? *prepared : own, options, result);
   requireStitched(stitched, analyzeTopology(mesh), asked, name);
   result.output = std::move(stitched);
   result.ms.remesh += stage.lap();
@@ -519,13 +524,13 @@ namespace {
 // rounder; on a CAD part with sharp edges (CGAL's spool, rotor, lion) the charts' seams follow
 // the edges, and the charts are closer.
 void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name,
-               const Mesh* simplified) {
+               const PreparedInput& prepared) {
   RemeshOptions once = options;
   once.measureFidelity = false;
   try {
-    RemeshResult charted = remeshCharts(input, once, name, simplified);
-    measureFidelityOf(kept, input);
-    measureFidelityOf(charted, input);
+    RemeshResult charted = remeshCharts(input, once, name, &prepared);
+    measureFidelityOf(kept, prepared);
+    measureFidelityOf(charted, prepared);
     ChartTrial trial;
     trial.charts = charted.charts;
     trial.oneCutAvgMinAngle = kept.after.avgMinAngle;
@@ -548,9 +553,9 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
 // halves of CGAL's samples), the surface chart by chart: each chart is nearly flat, and its own
 // projection holds. If that fails too, the one cut's error stands.
 RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, const std::string& name,
-                           const Mesh* simplified, const Error& oneCut) {
+                           const PreparedInput& prepared, const Error& oneCut) {
   try {
-    RemeshResult charted = remeshCharts(input, options, name, simplified);
+    RemeshResult charted = remeshCharts(input, options, name, &prepared);
     charted.chartTrial = ChartTrial{};
     charted.chartTrial->charts = charted.charts;
     charted.chartTrial->chartsAvgMinAngle = charted.after.avgMinAngle;
@@ -569,10 +574,10 @@ RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, cons
 // do not stitch), the whole one stands alone. Both are measured against the input only where
 // both meet the three bars (the distance then decides).
 RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const std::string& name,
-                        const Mesh* simplified) {
+                        const PreparedInput& prepared) {
   RemeshOptions slitOptions = options, wholeOptions = options;
   slitOptions.measureFidelity = wholeOptions.measureFidelity = false;
-  if (!options.slitDisks) return remeshOnce(input, wholeOptions, name, {}, simplified);
+  if (!options.slitDisks) return remeshOnce(input, wholeOptions, name, {}, &prepared);
   wholeOptions.slitDisks = false;
   // Once the slit run is known to slit, the whole run goes on beside it on another thread, each
   // with half the cores for its cells (a core each on two: 1.4-1.6x faster than one after the
@@ -586,22 +591,22 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
     session.setThreads(shared);  // also a retry without the first pass, beside the whole run
     if (whole.valid()) return;
     wholeOptions.lloyd.threads = shared;
-    whole = std::async(std::launch::async, [&] { return remeshOnce(input, wholeOptions, name, {}, simplified); });
+    whole = std::async(std::launch::async, [&] { return remeshOnce(input, wholeOptions, name, {}, &prepared); });
   };
   RemeshResult kept;
   try {
-    kept = remeshOnce(input, slitOptions, name, startWhole, simplified);
+    kept = remeshOnce(input, slitOptions, name, startWhole, &prepared);
   } catch (const Error&) {
     // As it would have been without slits.
-    kept = whole.valid() ? whole.get() : remeshOnce(input, wholeOptions, name, {}, simplified);
+    kept = whole.valid() ? whole.get() : remeshOnce(input, wholeOptions, name, {}, &prepared);
   }
   if (kept.cut.seamEdges > 0 && whole.valid()) {
     try {
       RemeshResult other = whole.get();
       SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle, barsMet(kept.after), barsMet(other.after)};
       if (trial.bothMeetTheBars()) {
-        measureFidelityOf(kept, input);
-        measureFidelityOf(other, input);
+        measureFidelityOf(kept, prepared);
+        measureFidelityOf(other, prepared);
         trial.slitHausdorff = kept.fidelity.hausdorffPercent;
         trial.wholeHausdorff = other.fidelity.hausdorffPercent;
       }
@@ -618,21 +623,21 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
 // The disk remeshed without the first pass too where its result misses a bar, and that kept if
 // FirstPassTrial::withoutBetter(); both are measured against the input to tell.
 void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name,
-                         const Mesh* simplified) {
+                         const PreparedInput& prepared) {
   // Without the polish the bars are not what a run aims at (`--polish -1` shows what it buys).
   if (!usesResampling(options) || options.polish <= 0 || !kept.resampleDropped.empty() || barsMet(kept.after) == 3)
     return;
   RemeshResult other;
   try {
-    other = remeshDisk(input, withoutResampling(options), name, simplified);
+    other = remeshDisk(input, withoutResampling(options), name, prepared);
   } catch (const Error& e) {
     kept.firstPassTrial = FirstPassTrial{};
     kept.firstPassTrial->withBars = barsMet(kept.after);
     kept.firstPassTrial->failed = problemOf(e, name);
     return;
   }
-  measureFidelityOf(kept, input);
-  measureFidelityOf(other, input);
+  measureFidelityOf(kept, prepared);
+  measureFidelityOf(other, prepared);
   FirstPassTrial trial;
   trial.withBars = barsMet(kept.after);
   trial.withoutBars = barsMet(other.after);
@@ -657,25 +662,25 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   RemeshOptions once = options;
   once.measureFidelity = false;
   // Simplified once for all the runs, charts too (each would otherwise simplify it again: 0.35 s
-  // a run on a face of 26,000 vertices).
+  // a run on a face of 26,000 vertices); the input's search built once for them all.
   const int simplifyTo = simplifyTarget(options, input);
   std::optional<Mesh> simplified;
   if (simplifyTo > 0) simplified = simplify(input, {simplifyTo}, name).mesh;
+  const PreparedInput prepared(input, std::move(simplified));
   const double simplifyMs = wall.lap();
-  const Mesh* coarse = simplified ? &*simplified : nullptr;
   const bool chartsAllowed = options.param.method == ParamMethod::Auto && usesResampling(options);
   RemeshResult kept;
   try {
-    kept = disk ? remeshDisk(input, once, name, coarse) : remeshOnce(input, once, name, {}, coarse);
+    kept = disk ? remeshDisk(input, once, name, prepared) : remeshOnce(input, once, name, {}, &prepared);
   } catch (const Error& e) {
     if (!chartsAllowed) throw;
-    kept = chartsInstead(input, once, name, coarse, e);
+    kept = chartsInstead(input, once, name, prepared, e);
   }
   if (chartsAllowed && kept.charts == 0 && (!disk || !conformalHeld(kept.paramUsed)))
-    tryCharts(kept, input, options, name, coarse);
-  if (disk) tryWithoutFirstPass(kept, input, once, name, coarse);
+    tryCharts(kept, input, options, name, prepared);
+  if (disk) tryWithoutFirstPass(kept, input, once, name, prepared);
   kept.ms.simplify += simplifyMs;
-  if (options.measureFidelity) measureFidelityOf(kept, input);
+  if (options.measureFidelity) measureFidelityOf(kept, prepared);
   else kept.fidelity = Fidelity{};  // a trial measured it to choose; the user asked for none
   kept.ms.total = simplifyMs + wall.lap();  // every run, side by side or one after the other
   return kept;

@@ -255,7 +255,7 @@ TEST(Pipeline, ASessionTakesTheSimplifiedInputItIsGiven) {
   RemeshOptions o;
   o.sites.count = 40;
   o.resample = false;  // the session then relaxes on the (simplified) input's own map
-  const Mesh given = test::grid(12);  // 169 vertices: not what simplify() would give
+  const PreparedInput given(grid, test::grid(12));  // 169 vertices: not what simplify() would give
   RemeshSession session(grid, o, "grid", &given);
   EXPECT_EQ(session.header().input.vertexCount(), 169);
   const RemeshSession own(grid, o, "grid");
@@ -263,6 +263,28 @@ TEST(Pipeline, ASessionTakesTheSimplifiedInputItIsGiven) {
   EXPECT_EQ(own.coarseInput(), 400);  // what the inspector says after a Restart
   o.coarsenInput = false;
   EXPECT_EQ(RemeshSession(grid, o, "grid").coarseInput(), 0);
+}
+
+// remesh() also builds the input's search once for all its runs; a session given it measures
+// (and takes its last steps) against it, and builds none of its own. Here it is given another
+// surface's, half a unit above the grid, to tell which one it measured against.
+TEST(Pipeline, ASessionMeasuresAgainstTheSearchItIsGiven) {
+  const Mesh grid = test::grid(12);
+  Mesh above = grid;
+  for (Vec3& p : above.points) p.z() += 0.5;
+  RemeshOptions o;
+  o.sites.count = 60;
+  o.polish = 0;  // no last steps: they would move the result towards the surface given
+  o.fit = false;
+  const auto measured = [&](const PreparedInput* prepared) {
+    RemeshSession session(grid, o, "grid", prepared);
+    while (!session.finished()) session.step();
+    return session.finish().fidelity.hausdorffPercent;
+  };
+  const PreparedInput elsewhere(above, std::nullopt);
+  EXPECT_LT(measured(nullptr), 0.01);
+  EXPECT_GT(measured(&elsewhere), 10.0);
+  EXPECT_EQ(&elsewhere.search(), &elsewhere.search());  // built once
 }
 
 TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFarther) {
