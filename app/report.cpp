@@ -111,6 +111,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                                  {"failed", r.firstPassTrial->failed}}
                                                : nlohmann::json()},
           {"coarse_input_vertices", r.coarseInput},
+          {"runs", r.runs},
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
@@ -266,7 +267,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
       << format("%.1f", r.ms.density) << ", sites " << format("%.1f", r.ms.sites) << ", lloyd "
       << format("%.1f", r.ms.lloyd) << ", remesh " << format("%.1f", r.ms.remesh)
       << (r.ms.compared > 0 ? std::string(r.slitTrial ? ", the other way (alongside) " : ", the other way ") + format("%.1f", r.ms.compared) : "") << ", metrics "
-      << format("%.1f", r.ms.metrics) << ", total " << format("%.1f", r.ms.total) << "\n";
+      << format("%.1f", r.ms.metrics) << ", total " << format("%.1f", r.ms.total)
+      << (r.runs > 1 ? " (" + std::to_string(r.runs) + " runs)" : "") << "\n";
   return out.str();
 }
 

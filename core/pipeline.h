@@ -179,6 +179,9 @@ struct RemeshResult {
   // > 0: the input was simplified to this many vertices first (coarsenInput); with several
   // components, the vertices of all the surfaces remeshed, where one or more was simplified.
   int coarseInput = 0;
+  // Remeshings made: the trials' other runs too (slit open and whole, without the first pass,
+  // chart by chart); with several components, all of theirs.
+  int runs = 1;
   StageTimes ms;
 };
 

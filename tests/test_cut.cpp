@@ -278,6 +278,7 @@ TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   EXPECT_EQ(r.slitTrial->slitHausdorff, r.fidelity.hausdorffPercent);
   EXPECT_EQ(r.slitTrial->slit, r.after.avgMinAngle);
   EXPECT_GT(r.ms.compared, 0.0);
+  EXPECT_EQ(r.runs, 2);  // slit open and whole
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   EXPECT_TRUE(analyzeTopology(r.output).isDisk()) << analyzeTopology(r.output).describe();
   EXPECT_NEAR(r.output.vertexCount(), 700, 28);
@@ -289,6 +290,7 @@ TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   const RemeshResult whole = remesh(readMesh(path).mesh, o, path);
   EXPECT_EQ(whole.cut.seamEdges, 0);
   EXPECT_FALSE(whole.slitTrial.has_value());
+  EXPECT_EQ(whole.runs, 1);
   EXPECT_EQ(whole.after.avgMinAngle, r.slitTrial->whole);
 }
 

@@ -165,6 +165,22 @@ TEST(Pipeline, ADiskThatMissesABarIsRemeshedWithoutTheFirstPassToo) {
   EXPECT_GT(r.ms.compared, 0.0);  // the other run's time counts
 }
 
+// CGAL's lion head as it comes (8356 vertices, simplified to 4000 first) at 400 vertices: a
+// nearly closed disk, remeshed slit open and whole, the slit kept; it misses a bar, and is
+// remeshed without the first pass both ways again: four runs, which the result counts.
+TEST(Pipeline, ANearlyClosedDiskThatMissesABarCountsFourRuns) {
+  const std::string path = test::cgalSample("lion-head.off");
+  SKIP_UNLESS_EXTRACTED(path);
+  RemeshOptions o;
+  o.sites.count = 400;
+  const RemeshResult r = remesh(readMesh(path).mesh, o, path);
+  ASSERT_TRUE(r.slitTrial.has_value());
+  ASSERT_TRUE(r.firstPassTrial.has_value());
+  EXPECT_TRUE(r.firstPassTrial->failed.empty()) << r.firstPassTrial->failed;
+  EXPECT_GT(r.cut.seamEdges, 0);  // slit open, whichever pass was kept
+  EXPECT_EQ(r.runs, 4);
+}
+
 // Where the run without the first pass fails, the first stands: CGAL's armadillo clipped in half
 // across x, remeshed to 500 with LSCM asked for and one polish pass, misses a bar, and LSCM of
 // the input itself folds (6 triangles flipped).

@@ -95,3 +95,14 @@ TEST(Report, ChartsThatStandInForAFailedDiskSaySo) {
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["one_cut_failed"], r.chartTrial->oneCutFailed);
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["kept"], "charts");
 }
+
+// How many times the surface was remeshed (the trials' runs) ends the time line, where more
+// than once: what a long run's time went on.
+TEST(Report, TheTimeLineCountsTheRuns) {
+  RemeshResult r;
+  EXPECT_EQ(remeshReport(r, RemeshOptions{}).find(" runs)"), std::string::npos);
+  EXPECT_EQ(toJson(r, RemeshOptions{})["runs"], 1);
+  r.runs = 4;
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find(" (4 runs)\n"), std::string::npos) << remeshReport(r, RemeshOptions{});
+  EXPECT_EQ(toJson(r, RemeshOptions{})["runs"], 4);
+}
