@@ -376,8 +376,10 @@ RemeshResult RemeshSession::finish() {
   result.ms.remesh = stage.lap();
   result.before = measureQuality(original());
   result.after = measureQuality(result.output);
-  if (options_.measureFidelity)
-    result.fidelity = prepared_ ? measureFidelity(result.output, prepared_->search()) : measureFidelity(result.output, original());
+  if (options_.measureFidelity) {
+    const PreparedInput own(original(), std::nullopt);
+    result.fidelity = measureFidelity(result.output, (prepared_ ? *prepared_ : own).search());
+  }
   result.ms.metrics = stage.lap();
   result.ms.total = result.ms.simplify + result.ms.cut + result.ms.resample + result.ms.parameterize + result.ms.density + result.ms.sites +
                     result.ms.lloyd + result.ms.remesh + result.ms.metrics;

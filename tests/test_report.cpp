@@ -103,6 +103,7 @@ TEST(Report, TheTimeLineCountsTheRuns) {
   EXPECT_EQ(remeshReport(r, RemeshOptions{}).find(" runs)"), std::string::npos);
   EXPECT_EQ(toJson(r, RemeshOptions{})["runs"], 1);
   r.runs = 4;
-  EXPECT_NE(remeshReport(r, RemeshOptions{}).find(" (4 runs)\n"), std::string::npos) << remeshReport(r, RemeshOptions{});
+  const std::string report = remeshReport(r, RemeshOptions{});
+  EXPECT_NE(report.find(" (4 runs)\n"), std::string::npos) << report;
   EXPECT_EQ(toJson(r, RemeshOptions{})["runs"], 4);
 }
