@@ -98,7 +98,8 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
       coarsened_(options_.simplifyTo != options.simplifyTo),
       name_(name),
       original_(input),
-      prepared_(prepared),
+      ownPrepared_(prepared ? nullptr : std::make_unique<const PreparedInput>(original_, std::nullopt)),
+      prepared_(prepared ? prepared : ownPrepared_.get()),
       input_([&] {
         Stopwatch stage;
         Mesh mesh = simplifiedTo(input, options_.simplifyTo, prepared, name);
@@ -292,17 +293,15 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
     o.seams = seamed();
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
   }
-  const PreparedInput own(original(), std::nullopt);
-  const PreparedInput& prepared = prepared_ ? *prepared_ : own;
   if (!cut_) {
     // A chart's last steps are the whole surface's, once its charts are stitched (remeshCharts).
-    if (!seamed()) lastSteps(output.mesh, prepared, options_, result);
+    if (!seamed()) lastSteps(output.mesh, *prepared_, options_, result);
     return std::move(output.mesh);
   }
   // Both copies of every seam sample are at the same place: one vertex again.
   std::vector<bool> seamVertex;
   Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
-  finishStitched(stitched, seamVertex, input_, prepared, options_, result);
+  finishStitched(stitched, seamVertex, input_, *prepared_, options_, result);
   requireStitched(stitched, cut_->topology, siteCount(), name_);
   return stitched;
 }
@@ -376,10 +375,7 @@ RemeshResult RemeshSession::finish() {
   result.ms.remesh = stage.lap();
   result.before = measureQuality(original());
   result.after = measureQuality(result.output);
-  if (options_.measureFidelity) {
-    const PreparedInput own(original(), std::nullopt);
-    result.fidelity = measureFidelity(result.output, (prepared_ ? *prepared_ : own).search());
-  }
+  if (options_.measureFidelity) result.fidelity = measureFidelity(result.output, prepared_->search());
   result.ms.metrics = stage.lap();
   result.ms.total = result.ms.simplify + result.ms.cut + result.ms.resample + result.ms.parameterize + result.ms.density + result.ms.sites +
                     result.ms.lloyd + result.ms.remesh + result.ms.metrics;

@@ -277,7 +277,10 @@ class RemeshSession {
   std::string name_;  // of the input, for error messages
   StageTimes ms_;  // before the members whose initializers time themselves into it
   Mesh original_;                 // the user's mesh (input_ may be its simplification or cut)
-  const PreparedInput* prepared_;  // of original_, by the caller; or none
+  // original_'s search, made by the caller, or else the session's own (built where first used,
+  // by the last steps or the measuring, and then used by both).
+  std::unique_ptr<const PreparedInput> ownPrepared_;
+  const PreparedInput* prepared_;
   std::optional<CutResult> cut_;  // how input_ was cut open, if it was
   Mesh input_;                    // the disk to remesh
   std::optional<Resampling> resampled_;
