@@ -128,7 +128,11 @@ void runBench(const BenchOptions& options) {
   // Every model read (and validated) before any is run: a bad one fails in a moment, not
   // after minutes of the others' work.
   std::vector<Mesh> meshes;
-  for (const std::string& path : models) meshes.push_back(readMesh(path).mesh);
+  for (const std::string& path : models) {
+    ReadResult read = readMesh(path, ReadOptions{options.repair});
+    for (const std::string& note : read.notes) std::cerr << "note: " << note << "\n";
+    meshes.push_back(std::move(read.mesh));
+  }
 
   std::vector<Row> rows;
   std::ostringstream verdicts;

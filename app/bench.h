@@ -16,6 +16,7 @@ struct BenchOptions {
   // The models as they come, not prepared: each remeshed to each size (--sites), with the
   // defaults and --full-input, beside CGAL's remesher on the same model.
   bool asIs = false;
+  bool repair = false;    // read the models with the repair (core/repair), each change a note
   int stepSites = 0;      // > 0: time Lloyd iterations at this many sites instead
 };
 

@@ -27,7 +27,7 @@ struct RemeshArgs {
   int maxIterations = 0;
   double distanceThreshold = 0, percentThreshold = 0, alpha = 1, beta = 1, floor = 0.1;
   bool json = false, noFidelity = false, noResample = false, noSnap = false, noFit = false, noSlit = false,
-       fullInput = false;
+       fullInput = false, repair = false;
 };
 
 // The preset first, then whatever the user named explicitly on top of it.
@@ -68,15 +68,15 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   return o;
 }
 
-Mesh load(const std::string& path) {
-  ReadResult read = readMesh(path);
+Mesh load(const std::string& path, bool repair) {
+  ReadResult read = readMesh(path, ReadOptions{repair});
   for (const std::string& note : read.notes) std::cerr << "note: " << note << "\n";
   return std::move(read.mesh);
 }
 
 int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   const RemeshOptions options = remeshOptions(a, cmd);
-  const Mesh input = load(a.input);
+  const Mesh input = load(a.input, a.repair);
   const RemeshResult result = remesh(input, options, a.input);
   if (!a.output.empty()) writeMesh(result.output, a.output);
   if (!a.record.empty()) saveRecording(result.recording, a.record);
@@ -88,6 +88,13 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
 }
 
 }  // namespace
+
+void addRepairFlag(CLI::App& cmd, bool& repair) {
+  cmd.add_flag("--repair", repair,
+               "Weld vertices at the same position (an unwelded seam), remove faces of zero area, "
+               "turn faces that face the other way; a note says what changed (by default such an "
+               "input is refused)");
+}
 
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--polish", r.polish,
@@ -141,6 +148,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                "asked, 5 over 10,000, is simplified to that many first; the last steps and the distances "
                "are against the input itself either way)");
   cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
+  addRepairFlag(cmd, r.repair);
 }
 
 // "1280x800" -> width, height.
@@ -164,7 +172,7 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
     result.paramUsed = options.param.method;
     return result;
   }
-  Mesh mesh = load(in);
+  Mesh mesh = load(in, a.repair);
   RemeshResult result = remesh(mesh, options, in);
   if (input) *input = std::move(mesh);
   return result;
@@ -256,6 +264,7 @@ int main(int argc, char** argv) {
   peerBenchCmd->add_flag("--as-is", benchOptions.asIs,
                          "Use the models as they come, not prepared: each remeshed to each size "
                          "(--sites), with the defaults and --full-input, beside CGAL's remesher on it");
+  addRepairFlag(*peerBenchCmd, benchOptions.repair);
   peerBenchCmd->add_option("--lloyd-step", benchOptions.stepSites,
                            "Instead: time one Lloyd iteration at N sites (one core and all)");
 
@@ -270,12 +279,16 @@ int main(int argc, char** argv) {
   target->add_option("--faces", simplifyTarget.faces, "Target number of faces");
   target->add_option("--ratio", simplifyTarget.ratio, "Target fraction of the vertices, in (0, 1]");
   target->require_option(1);
+  bool simplifyRepair = false;
+  addRepairFlag(*simplifyCmd, simplifyRepair);
 
   CLI::App* metricsCmd = app.add_subcommand("metrics", "Measure a mesh's quality");
   metricsCmd->add_option("mesh", metricsMesh, "Mesh to measure")->required();
   metricsCmd->add_option("--reference", metricsReference,
                          "Also measure Hausdorff and RMS distance to this mesh");
   metricsCmd->add_flag("--json", metricsJson, "Print JSON");
+  bool metricsRepair = false;
+  addRepairFlag(*metricsCmd, metricsRepair);
 
   std::string recordingPath;
   bool infoJson = false;
@@ -308,7 +321,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (simplifyCmd->parsed()) {
-      const Mesh input = load(simplifyIn);
+      const Mesh input = load(simplifyIn, simplifyRepair);
       const SimplifyResult s = simplify(input, simplifyTarget, simplifyIn);
       writeMesh(s.mesh, simplifyOut);
       std::cout << simplifyIn << ": " << input.vertexCount() << " vertices, " << input.faceCount()
@@ -364,11 +377,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (metricsCmd->parsed()) {
-      const Mesh mesh = load(metricsMesh);
+      const Mesh mesh = load(metricsMesh, metricsRepair);
       const QualityMetrics quality = measureQuality(mesh);
       Fidelity fidelity;
       const bool withReference = !metricsReference.empty();
-      if (withReference) fidelity = measureFidelity(mesh, load(metricsReference));
+      if (withReference) fidelity = measureFidelity(mesh, load(metricsReference, metricsRepair));
       if (metricsJson) {
         nlohmann::json j = toJson(quality);
         if (withReference) j["fidelity"] = toJson(fidelity);

@@ -10,6 +10,8 @@
 
 #include "mesh_io.h"
 
+#include "repair.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -862,6 +864,45 @@ std::vector<std::pair<int, int>> checkSurface(const Mesh& mesh, const std::strin
   return coincident;
 }
 
+// ------------------------------------------------------------------------------------- repair
+
+// Repairs result.mesh, notes what changed, and numbers from 0 what it renumbered.
+void repairInto(ReadResult& result, const std::string& path, Numbering& numbering) {
+  RepairResult repaired = repairMesh(result.mesh);
+  if (!repaired.changed()) return;
+  std::vector<std::string> changes;
+  const int welded = repaired.weldedVertices;
+  if (welded > 0) changes.push_back(plural(welded, "vertex", "vertices") + " welded to another at the same position");
+  if (welded < 0) changes.push_back(plural(-welded, "vertex", "vertices") + " split where fans of faces only touched");
+  if (repaired.droppedFaces > 0)
+    changes.push_back(plural(repaired.droppedFaces, "face", "faces") + " with a corner or a face repeated dropped");
+  if (repaired.degenerateFaces > 0)
+    changes.push_back(plural(repaired.degenerateFaces, "face", "faces") + " of zero area collapsed or flipped away");
+  if (repaired.turnedFaces > 0)
+    changes.push_back(plural(repaired.turnedFaces, "face", "faces") + " turned to match their neighbours");
+  std::string note = path + ": repaired: ";
+  for (size_t i = 0; i < changes.size(); ++i) note += (i > 0 ? "; " : "") + changes[i];
+  result.notes.push_back(note);
+  result.mesh = std::move(repaired.mesh);
+  numbering = Numbering{};  // the file's numbers no longer apply
+}
+
+// checkSurface(), whose message says so when the repair would have fixed the problem.
+std::vector<std::pair<int, int>> checkSurfaceOrSayRepairable(const Mesh& mesh, const std::string& path,
+                                                             const Numbering& numbering, bool repaired) {
+  try {
+    return checkSurface(mesh, path, numbering);
+  } catch (const Error& e) {
+    if (repaired) throw Error(std::string(e.what()) + " (left after the repair)");
+    try {
+      checkSurface(repairMesh(mesh).mesh, path, Numbering{});
+    } catch (const Error&) {
+      throw e;
+    }
+    throw Error(std::string(e.what()) + " (--repair fixes this)");
+  }
+}
+
 // ------------------------------------------------------------------------------ triangulation
 
 // Splits polygon v[0..n) into a fan from the corner that makes its smallest triangle largest
@@ -979,7 +1020,7 @@ void validateMesh(const Mesh& mesh, const std::string& name) {
   checkSurface(mesh, name, Numbering{});
 }
 
-ReadResult readMesh(const std::string& path) {
+ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = lowercaseExtension(path);
   if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, unknownExtension(path));
   const std::string text = loadFile(path);
@@ -999,8 +1040,9 @@ ReadResult readMesh(const std::string& path) {
     triangulatePolygon(v, n, raw.points, result.mesh.triangles);
     faceOfTriangle.resize(result.mesh.triangles.size(), f);
   }
-  const Numbering numbering{raw.base, &faceOfTriangle};
-  const auto coincident = checkSurface(result.mesh, path, numbering);
+  Numbering numbering{raw.base, &faceOfTriangle};
+  if (options.repair) repairInto(result, path, numbering);
+  const auto coincident = checkSurfaceOrSayRepairable(result.mesh, path, numbering, options.repair);
 
   if (polygons > 0) {
     result.notes.push_back(path + ": " + plural(polygons, "polygon", "polygons") + " with more than 3 vertices " +

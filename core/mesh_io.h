@@ -16,8 +16,14 @@ struct ReadResult {
   std::vector<std::string> notes;
 };
 
+struct ReadOptions {
+  // Weld, collapse and turn what the checks would refuse (core/repair), and say so in the notes.
+  bool repair = false;
+};
+
 // Reads by extension (.off, .obj, .ply; case-insensitive) and validates with validateMesh().
-ReadResult readMesh(const std::string& path);
+// A problem that the repair would fix says so ("... (--repair fixes this)").
+ReadResult readMesh(const std::string& path, const ReadOptions& options = {});
 
 // Checks what every later stage relies on and throws Error("<name>: <problem>") otherwise:
 // finite coordinates, indices in range, no zero-area faces, no vertex used by no face, manifold

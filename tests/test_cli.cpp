@@ -177,6 +177,39 @@ TEST(Cli, IndexOutOfRange) {
 TEST(Cli, Degenerate) {
   expectCleanFailure("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n", "zero area");
 }
+// A gently curved 9 x 9 grid whose right half has its own copies of the middle column: a seam
+// left unwelded. Refused, with the way out named; read with --repair, and remeshed.
+TEST(Cli, RepairWeldsAnUnweldedSeamAndSaysSo) {
+  const int n = 9;
+  std::string off = "OFF\n" + std::to_string(n * n + n) + " " + std::to_string(2 * (n - 1) * (n - 1)) + " 0\n";
+  const auto point = [&](int i, int j) {
+    const double x = i / double(n - 1), y = j / double(n - 1);
+    return std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(0.2 * x * y) + "\n";
+  };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) off += point(i, j);
+  for (int j = 0; j < n; ++j) off += point(n / 2, j);  // the copies, n * n + j
+  const auto index = [&](int i, int j, bool right) { return (right && i == n / 2) ? n * n + j : j * n + i; };
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const bool right = i >= n / 2;
+      const int a = index(i, j, right), b = index(i + 1, j, right), c = index(i + 1, j + 1, right),
+                d = index(i, j + 1, right);
+      off += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n3 " +
+             std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+    }
+  const std::string path = test::tempPath("seam.off");
+  test::writeText(path, off);
+  const CliRun refused = runCli("remesh " + path + " --sites 60 --no-fidelity");
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_NE(refused.err.find("on a border (an unwelded seam or a crack) (--repair fixes this)"), std::string::npos) << refused.err;
+  const CliRun repaired = runCli("remesh " + path + " --sites 60 --no-fidelity --repair");
+  ASSERT_EQ(repaired.code, 0) << repaired.err;
+  EXPECT_NE(repaired.err.find("note: " + path + ": repaired: 9 vertices welded to another at the same position"),
+            std::string::npos) << repaired.err;
+  EXPECT_NE(repaired.out.find("|         81 |         60 |"), std::string::npos) << repaired.out;
+}
+
 TEST(Cli, DuplicateVertices) {
   expectCleanFailure("dup.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 1 3 2\n",
                      "same position");

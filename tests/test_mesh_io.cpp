@@ -489,6 +489,44 @@ TEST(MeshIo, InsideVerticesAtTheSamePositionWithTheirOwnFacesAreKept) {
                                     "own faces inside the surface: it touches itself there");
 }
 
+// What the repair would fix says so; what it would not (two triangles meeting at a corner
+// through two copies of it: welded, a bow tie, split again) does not.
+TEST(MeshIoErrors, AProblemTheRepairFixesSaysSo) {
+  expectFileError("needle.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n3 0 1 2\n3 1 3 2\n",
+                  "are at the same position (--repair fixes this)");
+  const std::string corner = writeFile(
+      "pinch.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 3 4 5\n");
+  EXPECT_EQ(readError(corner).find("--repair"), std::string::npos) << readError(corner);
+}
+
+TEST(MeshIo, TheRepairReadsWhatTheChecksRefuseAndSaysWhatItChanged) {
+  const std::string path = writeFile(
+      "repairable.off", "OFF\n6 3 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n1 1 0\n0 1 0\n"
+                        "3 0 1 2\n3 1 3 2\n3 3 4 5\n");
+  const ReadResult r = readMesh(path, ReadOptions{true});
+  EXPECT_EQ(r.mesh.vertexCount(), 4);
+  EXPECT_EQ(r.mesh.faceCount(), 2);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_EQ(r.notes[0], path + ": repaired: 2 vertices welded to another at the same position; "
+                               "1 face with a corner or a face repeated dropped");
+  // A sound file reads the same with the repair as without, and without a note.
+  const std::string sound = writeFile("sound.off", kSquareOff);
+  EXPECT_TRUE(readMesh(sound, ReadOptions{true}).notes.empty());
+  EXPECT_EQ(readMesh(sound, ReadOptions{true}).mesh.triangles, readMesh(sound).mesh.triangles);
+}
+
+TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
+  const std::string corner = writeFile(
+      "pinch_repaired.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 3 4 5\n");
+  try {
+    readMesh(corner, ReadOptions{true});
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("same position on a border (an unwelded seam or a crack) (left after the repair)"),
+              std::string::npos) << e.what();
+  }
+}
+
 TEST(MeshIoErrors, NonManifoldEdge) {
   expectFileError("fin.off",
                   "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
