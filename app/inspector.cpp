@@ -422,6 +422,7 @@ void OpeningView::applyTo(Inspector& inspector) const {
   inspector.setPresentation(presentation);
   inspector.showStage(stage);
   if (compareSolvers) inspector.compareSolvers();
+  inspector.setRepairOnOpen(repair);
 }
 
 // The mesh the 3D pane fits: the final result where it is shown (with several components, all
@@ -891,18 +892,28 @@ void Inspector::fileControls() {
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Open mesh")) {
+  const bool open = ImGui::Button("Open mesh");
+  ImGui::Checkbox("repair the mesh as it is opened", &repairOnOpen_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Weld vertices at one position, drop zero-area faces, turn faces\n"
+                      "against their neighbours (--repair); a note says what changed");
+  if (open) {
     try {
       stopRun();
-      input_ = readMesh(meshPath_).mesh;
+      ReadResult read = readMesh(meshPath_, ReadOptions{repairOnOpen_});
+      input_ = std::move(read.mesh);
       options_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
       meshName_ = meshPath_;
       meshName_ = meshName_.substr(meshName_.find_last_of('/') + 1);
       result_.before = measureQuality(*input_);
       startSession();
+      for (const std::string& note : read.notes) noteFirst(note);
       startRun();
     } catch (const Error& e) {
       message_ = e.what();
+      const std::string flag = "(--repair fixes this)";  // the command line's way, not this pane's
+      if (message_.size() > flag.size() && message_.compare(message_.size() - flag.size(), flag.size(), flag) == 0)
+        message_.replace(message_.size() - flag.size(), flag.size(), "(ticking \"repair\" fixes this)");
     }
   }
   ImGui::SetNextItemWidth(-1);

@@ -63,6 +63,7 @@ struct OpeningView {
   std::optional<Stage> stage;         // show this stage of the lesson, with its caption
   bool compareSolvers = false;        // also the other solvers' curves (Inspector::compareSolvers)
   bool final = false;                 // the 3D pane shows the final result (showFinal)
+  bool repair = false;                // "Open mesh" repairs what it reads (--repair)
   void applyTo(Inspector& inspector) const;
 };
 
@@ -77,6 +78,8 @@ class Inspector {
   // The fonts: ImGui's own, and a large one with Greek and maths for presentations. Call once
   // after ImGui::CreateContext(), before the font texture is uploaded.
   static void addFonts();
+  // "Open mesh" reads with the repair (core/repair), its notes shown in the message line.
+  void setRepairOnOpen(bool on) { repairOnOpen_ = on; }
   // Classroom mode: large fonts, thick lines and marks, high contrast, no controls pane.
   void setPresentation(bool on) { presentation_ = on; }
   // Shows one stage of the lesson (its layers and caption); none: everything, no caption.
@@ -160,6 +163,7 @@ class Inspector {
   MeshRenderer renderer_;
   std::string meshName_;
   RemeshOptions options_;
+  bool repairOnOpen_ = false;
   bool slitDisksAsked_;  // options_.slitDisks as given (remesh()'s choice may override it)
   RemeshResult result_;
   std::unique_ptr<Replay> replay_;

@@ -337,6 +337,7 @@ int main(int argc, char** argv) {
       shot.timings = !noTimings;
       shot.picture.pane = parsePane(pane);
       if (!stage.empty()) shot.view.stage = parseStage(stage);
+      shot.view.repair = ir.repair;
       if (!iterations.empty()) {
         char rest;
         if (std::sscanf(iterations.c_str(), "%d:%d%c", &shot.picture.first, &shot.picture.last,

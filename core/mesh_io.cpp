@@ -879,7 +879,8 @@ void repairInto(ReadResult& result, const std::string& path, Numbering& numberin
   if (repaired.degenerateFaces > 0)
     changes.push_back(plural(repaired.degenerateFaces, "face", "faces") + " of zero area collapsed or flipped away");
   if (repaired.turnedFaces > 0)
-    changes.push_back(plural(repaired.turnedFaces, "face", "faces") + " turned to match their neighbours");
+    changes.push_back(plural(repaired.turnedFaces, "face", "faces") + " turned to match " +
+                      (repaired.turnedFaces == 1 ? "its" : "their") + " neighbours");
   std::string note = path + ": repaired: ";
   for (size_t i = 0; i < changes.size(); ++i) note += (i > 0 ? "; " : "") + changes[i];
   result.notes.push_back(note);

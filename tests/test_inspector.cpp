@@ -186,6 +186,18 @@ TEST(Inspector, OpensASimplifiedMesh) {
   EXPECT_EQ(readPng(out).width, 640);
 }
 
+// A face turned against its neighbours: refused, opened with --repair.
+TEST(Inspector, OpensWithTheRepair) {
+  Mesh disk = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  std::swap(disk.triangles[0][0], disk.triangles[0][1]);
+  const std::string mesh = test::tempPath("turned_face.off"), png = test::tempPath("turned_face.png");
+  writeMesh(disk, mesh);
+  const std::string args = "inspect " + mesh + " --sites 200 --max-iterations 5 --size 640x400 --screenshot " + png;
+  EXPECT_EQ(run(args), 1);
+  ASSERT_EQ(run(args + " --repair"), 0);
+  EXPECT_EQ(readPng(png).width, 640);
+}
+
 // Issue 6: where a torus was cut open, the seam is drawn in purple in both views.
 TEST(Inspector, DrawsTheSeamsOfACutSurface) {
   const std::string mesh = test::tempPath("seam_torus.off"), png = test::tempPath("seam_torus.png");

@@ -58,6 +58,17 @@ TEST(Repair, TurnsAFaceAgainstItsNeighbour) {
   EXPECT_NO_THROW(validateMesh(r.mesh, "flipped"));
 }
 
+// The first face of a fan is the odd one out: it turns, not the three others (CGAL's
+// orient_polygon_soup alone keeps the first face and turns the rest).
+TEST(Repair, TurnsTheFewerFaces) {
+  const Mesh fan = meshOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0.1}},
+                          {{1, 0, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
+  const RepairResult r = repairMesh(fan);
+  EXPECT_EQ(r.turnedFaces, 1);
+  ASSERT_EQ(r.mesh.faceCount(), 4);
+  for (const Triangle& t : r.mesh.triangles) EXPECT_GT(faceNormal(r.mesh, t).z(), 0);
+}
+
 // A sound mesh, and a closed one touching itself at a point (two tetrahedra sharing a corner's
 // position, each with its own copy): nothing to do, the very same mesh back.
 TEST(Repair, LeavesASoundMeshAsItIs) {
