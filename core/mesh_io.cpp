@@ -888,15 +888,23 @@ void repairInto(ReadResult& result, const std::string& path, Numbering& numberin
   numbering = Numbering{};  // the file's numbers no longer apply
 }
 
-// checkSurface(), whose message says so when the repair would have fixed the problem.
-std::vector<std::pair<int, int>> checkSurfaceOrSayRepairable(const Mesh& mesh, const std::string& path,
-                                                             const Numbering& numbering, bool repaired) {
+// checkSurface() on what was read. What it refuses is repaired if `repair` asks, checked again
+// and refused only if still wrong; else the message says whether the repair would fix it.
+std::vector<std::pair<int, int>> checkOrRepair(ReadResult& result, const std::string& path, Numbering& numbering,
+                                               bool repair) {
   try {
-    return checkSurface(mesh, path, numbering);
+    return checkSurface(result.mesh, path, numbering);
   } catch (const Error& e) {
-    if (repaired) throw Error(std::string(e.what()) + " (left after the repair)");
+    if (repair) {
+      repairInto(result, path, numbering);
+      try {
+        return checkSurface(result.mesh, path, numbering);
+      } catch (const Error& left) {
+        throw Error(std::string(left.what()) + " (left after the repair)");
+      }
+    }
     try {
-      checkSurface(repairMesh(mesh).mesh, path, Numbering{});
+      checkSurface(repairMesh(result.mesh).mesh, path, Numbering{});
     } catch (const Error&) {
       throw e;
     }
@@ -1042,8 +1050,7 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
     faceOfTriangle.resize(result.mesh.triangles.size(), f);
   }
   Numbering numbering{raw.base, &faceOfTriangle};
-  if (options.repair) repairInto(result, path, numbering);
-  const auto coincident = checkSurfaceOrSayRepairable(result.mesh, path, numbering, options.repair);
+  const auto coincident = checkOrRepair(result, path, numbering, options.repair);
 
   if (polygons > 0) {
     result.notes.push_back(path + ": " + plural(polygons, "polygon", "polygons") + " with more than 3 vertices " +

@@ -17,7 +17,8 @@ struct ReadResult {
 };
 
 struct ReadOptions {
-  // Weld, collapse and turn what the checks would refuse (core/repair), and say so in the notes.
+  // Weld, collapse and turn what the checks refuse (core/repair), and say so in the notes; a
+  // mesh the checks accept is not touched.
   bool repair = false;
 };
 
