@@ -137,8 +137,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                "input the result would cut off");
   cmd.add_flag("--no-fit", r.noFit,
                "Leave every vertex of the result on the input (by default retriangulate's last step "
-               "moves them along their normals so that the result lies closer to the input, border and "
-               "angles kept)");
+               "moves them along their normals, and the border's across the border, so that the result "
+               "lies closer to the input, angles kept)");
   cmd.add_flag("--no-slit", r.noSlit,
                "Keep a nearly closed disk whole (by default it is also remeshed slit open, and the "
                "result meeting more of the quality bars kept; where both meet them, the closer to the "

@@ -116,6 +116,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
           {"fit", {{"vertices_moved", r.fit.moved},
+                   {"border_vertices_moved", r.fit.borderMoved},
                    {"mean_percent_diagonal", r.fit.meanPercent},
                    {"max_percent_diagonal", r.fit.maxPercent}}},
           {"resample_dropped", r.resampleDropped.empty() ? nlohmann::json() : nlohmann::json(r.resampleDropped)},
@@ -257,8 +258,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips
         << (r.snappedTips == 1 ? " vertex\n" : " vertices\n");
   if (r.fit.moved > 0)
-    out << "Fitted to the input: " << r.fit.moved << " vertices moved along their normals, "
-        << format("%.3f", r.fit.meanPercent) << "% of the diagonal on average, at most " << format("%.3f", r.fit.maxPercent)
+    out << "Fitted to the input: " << r.fit.moved - r.fit.borderMoved << " vertices moved along their normals, "
+        << r.fit.borderMoved << " on the border across it, " << format("%.3f", r.fit.meanPercent) << "% of the diagonal on average, at most " << format("%.3f", r.fit.maxPercent)
         << "%\n";
   out << "Time (ms): " << (r.ms.simplify > 0 ? "simplify " + format("%.1f", r.ms.simplify) + ", " : "")
       << (r.ms.cut > 0 ? "cut " + format("%.1f", r.ms.cut) + ", " : "")

@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <cmath>
 
 using namespace lloydscope;
 
@@ -55,9 +56,9 @@ TEST(Fit, AGridAboveAPlaneComesBackOntoIt) {
   EXPECT_EQ(unmoved.points, flat.points);
 }
 
-// The border stays on the input's border, a vertex on an input vertex (a snapped tip) stays on
-// it, and no move leaves a smaller angle than the guard's.
-TEST(Fit, KeepsTheBorderSnappedVerticesAndAngles) {
+// A vertex on an input vertex (a snapped tip) stays on it, no move leaves a smaller angle than
+// the guard's, and the border's vertices move only across the border, by little.
+TEST(Fit, KeepsSnappedVerticesAndAnglesAndMovesTheBorderOnlyAcrossIt) {
   const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
   RemeshOptions o;
   o.sites.count = 300;
@@ -74,12 +75,60 @@ TEST(Fit, KeepsTheBorderSnappedVerticesAndAngles) {
   const std::vector<Vec3> before = result.points;
   const FitResult r = fitToSurface(result, input);
   EXPECT_GT(r.moved, result.vertexCount() / 2);
+  EXPECT_GT(r.borderMoved, 0);
   EXPECT_EQ(result.points[tip], before[tip]);
-  for (int v = 0; v < result.vertexCount(); ++v)
-    if (border[v]) EXPECT_EQ(result.points[v], before[v]) << v;
+  // The bumpy disk's border is a circle in the plane z = 0 around the z axis: its vertices
+  // move along their radius (across the border), by a small part of an edge.
+  for (int v = 0; v < result.vertexCount(); ++v) {
+    if (!border[v]) continue;
+    const Vec3 move = result.points[v] - before[v], radial = Vec3(before[v].x(), before[v].y(), 0).normalized();
+    EXPECT_LT((move - move.dot(radial) * radial).norm(), 1e-3 * before[v].norm()) << v;
+    EXPECT_LT(move.norm(), 0.01 * before[v].norm()) << v;
+  }
   // The snap may have sharpened a triangle: the guard holds against the smaller of the two.
   EXPECT_GE(smallestAngle(result), std::min({anglesBefore, smallestAngle(Mesh{before, result.triangles}),
                                              FitOptions{}.keepAngle}) - 1e-9);
+}
+
+// A flat disk: `sectors` vertices on each of `rings` circles around its centre, the last of
+// radius 1, the first at angle `phase`.
+Mesh polarDisk(int sectors, int rings, double phase = 0) {
+  Mesh m;
+  m.points.push_back(Vec3::Zero());
+  for (int k = 1; k <= rings; ++k)
+    for (int i = 0; i < sectors; ++i) {
+      const double a = phase + 2 * M_PI * i / sectors, r = double(k) / rings;
+      m.points.emplace_back(r * std::cos(a), r * std::sin(a), 0);
+    }
+  const auto at = [&](int k, int i) { return 1 + (k - 1) * sectors + (i % sectors); };
+  for (int i = 0; i < sectors; ++i) m.triangles.push_back({0, at(1, i), at(1, i + 1)});
+  for (int k = 1; k < rings; ++k)
+    for (int i = 0; i < sectors; ++i) {
+      m.triangles.push_back({at(k, i), at(k + 1, i), at(k + 1, i + 1)});
+      m.triangles.push_back({at(k, i), at(k + 1, i + 1), at(k, i + 1)});
+    }
+  return m;
+}
+
+// A hexagon of six equilateral triangles whose corners are on a fine disk's circle (not on its
+// vertices, which would hold them): each border edge cuts
+// inside the circle by its sagitta, the Hausdorff distance. Fitted, the border moves out
+// across itself, its chords crossing the circle, and the distance falls by a third; without
+// FitOptions::border it stays where it was.
+TEST(Fit, TheBorderComesNearerToACurvedInputBorder) {
+  const Mesh fine = polarDisk(240, 20);
+  const Mesh coarse = polarDisk(6, 1, M_PI / 240);  // between the fine one's vertices
+  const double before = measureFidelity(coarse, fine).hausdorffPercent;
+  Mesh fitted = coarse;
+  const FitResult r = fitToSurface(fitted, fine);
+  EXPECT_EQ(r.borderMoved, 6);
+  for (int v = 1; v <= 6; ++v) EXPECT_GT(fitted.points[v].norm(), 1.0) << v;
+  EXPECT_LT(measureFidelity(fitted, fine).hausdorffPercent, 0.75 * before);
+  Mesh unfitted = coarse;
+  FitOptions noBorder;
+  noBorder.border = false;
+  EXPECT_EQ(fitToSurface(unfitted, fine, noBorder).borderMoved, 0);
+  EXPECT_EQ(unfitted.points, coarse.points);
 }
 
 // remesh() fits by default: the same triangles, closer to the input, no rounder or less round
