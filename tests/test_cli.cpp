@@ -85,7 +85,14 @@ TEST(Cli, NoFitLeavesTheVerticesOnTheInput) {
   EXPECT_TRUE(fitted["settings"]["fit"].get<bool>());
   EXPECT_FALSE(unfitted["settings"]["fit"].get<bool>());
   EXPECT_GT(fitted["fit"]["vertices_moved"].get<int>(), 100);
+  EXPECT_GT(fitted["fit"]["border_vertices_moved"].get<int>(), 10);  // the bumpy disk's circle
   EXPECT_EQ(unfitted["fit"]["vertices_moved"].get<int>(), 0);
+  EXPECT_EQ(unfitted["fit"]["border_vertices_moved"].get<int>(), 0);
+  const CliRun text = runCli("remesh " + test::assetPath("bumpy_disk.off") + " --sites 300 --no-fidelity");
+  const int border = fitted["fit"]["border_vertices_moved"].get<int>();
+  EXPECT_NE(text.out.find("Fitted to the input: " + std::to_string(fitted["fit"]["vertices_moved"].get<int>() - border) +
+                          " vertices moved along their normals, " + std::to_string(border) + " on the border across it"),
+            std::string::npos) << text.out;
   EXPECT_LT(fitted["output"]["fidelity"]["rms_percent_diagonal"].get<double>(),
             unfitted["output"]["fidelity"]["rms_percent_diagonal"].get<double>());
 }
