@@ -145,22 +145,79 @@ std::vector<Vec3> outwardDirections(const Mesh& mesh, const std::vector<BorderEd
   return outward;
 }
 
-// The nearest point of the input's border (its edges with one face) to each point: a brute
-// force search, as the borders are short beside the surfaces.
-std::vector<Vec3> closestBorderPoints(const Mesh& input, const std::vector<Vec3>& points) {
-  std::vector<std::pair<Vec3, Vec3>> segments;
-  for (const BorderEdge& e : borderEdgesOf(input)) segments.emplace_back(input.points[e.from], input.points[e.to]);
-  std::vector<Vec3> closest(points.size(), Vec3::Zero());
-  for (size_t i = 0; i < points.size(); ++i) {
-    double best = INFINITY;
-    for (const auto& [a, b] : segments) {
-      const Vec3 ab = b - a;
-      const double length2 = ab.squaredNorm();
-      const double t = length2 > 0 ? std::clamp((points[i] - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-      const Vec3 q = a + t * ab;
-      const double d = (q - points[i]).squaredNorm();
-      if (d < best) best = d, closest[i] = q;
+Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  return a + (length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0) * ab;
+}
+
+// The input's border as loops of points in order, segment k of a loop from its point k to the
+// next. Searched by brute force: borders are short beside surfaces.
+class InputBorder {
+ public:
+  explicit InputBorder(const Mesh& input) {
+    std::map<int, int> next;
+    for (const BorderEdge& e : borderEdgesOf(input)) next[e.from] = e.to;
+    while (!next.empty()) {
+      std::vector<Vec3> loop;
+      for (int v = next.begin()->first; next.count(v);) {
+        loop.push_back(input.points[v]);
+        const int w = next[v];
+        next.erase(v);
+        v = w;
+      }
+      loops_.push_back(std::move(loop));
     }
+  }
+
+  struct Place {
+    int loop = -1, segment = 0;
+  };
+  // The segment nearest to p.
+  Place nearest(const Vec3& p) const {
+    Place best;
+    double bestDistance = INFINITY;
+    for (size_t l = 0; l < loops_.size(); ++l)
+      for (size_t k = 0; k < loops_[l].size(); ++k) {
+        const double d = (closestOnSegment(p, point(l, k), point(l, k + 1)) - p).squaredNorm();
+        if (d < bestDistance) bestDistance = d, best = {static_cast<int>(l), static_cast<int>(k)};
+      }
+    return best;
+  }
+  // The point nearest to p of the arc from one place to the other, the shorter way round.
+  Vec3 closestOnArc(const Vec3& p, Place from, Place to) const {
+    const int n = static_cast<int>(loops_[from.loop].size());
+    int forward = (to.segment - from.segment + n) % n;
+    if (forward > n - forward) std::swap(from, to), forward = n - forward;
+    Vec3 best = p;
+    double bestDistance = INFINITY;
+    for (int i = 0; i <= forward; ++i) {
+      const int k = (from.segment + i) % n;
+      const Vec3 q = closestOnSegment(p, point(from.loop, k), point(from.loop, k + 1));
+      if ((q - p).squaredNorm() < bestDistance) bestDistance = (q - p).squaredNorm(), best = q;
+    }
+    return best;
+  }
+  bool empty() const { return loops_.empty(); }
+
+ private:
+  const Vec3& point(size_t loop, size_t k) const { return loops_[loop][k % loops_[loop].size()]; }
+  std::vector<std::vector<Vec3>> loops_;
+};
+
+// Each sample's closest point on the input's border, searched only along the arc between the
+// places nearest to the sample's corners (the shorter way round): elsewhere the border may
+// pass nearer, across a narrow gap (between lips), but that is another part of it.
+std::vector<Vec3> closestBorderPoints(const Mesh& mesh, const std::vector<Sample>& samples,
+                                      const std::vector<Vec3>& at, const InputBorder& border) {
+  std::map<int, InputBorder::Place> place;
+  for (const Sample& s : samples)
+    for (int v : s.corners)
+      if (!place.count(v)) place[v] = border.nearest(mesh.points[v]);
+  std::vector<Vec3> closest(samples.size());
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const InputBorder::Place from = place[samples[i].corners.front()], to = place[samples[i].corners.back()];
+    closest[i] = from.loop == to.loop ? border.closestOnArc(at[i], from, to) : at[i];
   }
   return closest;
 }
@@ -193,7 +250,10 @@ Eigen::VectorXd borderMoves(const Mesh& mesh, const Mesh& input, const std::vect
   // (On a single arc, three quarters of the move would put the chord halfway, where the
   // farthest on either side is least; on the 93 clipped halves of docs/bench.md at 1000
   // vertices the whole move came nearer on 10 and farther on 2.)
-  return leastSquaresMoves(mesh.vertexCount(), samples, at, across, closestBorderPoints(input, at), outward, fixed);
+  const InputBorder border(input);
+  if (border.empty()) return Eigen::VectorXd::Zero(mesh.vertexCount());
+  const std::vector<Vec3> targets = closestBorderPoints(mesh, samples, at, border);
+  return leastSquaresMoves(mesh.vertexCount(), samples, at, across, targets, outward, fixed);
 }
 
 // Accepts each vertex's move along its direction, whole, else half or a quarter of it, where it

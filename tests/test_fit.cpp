@@ -131,6 +131,19 @@ TEST(Fit, TheBorderComesNearerToACurvedInputBorder) {
   EXPECT_EQ(unfitted.points, coarse.points);
 }
 
+// The hexagon again, and a speck of the input just inside one of its chords (another part of
+// the input's border, nearer than the circle): each border vertex still moves out towards its
+// own arc of the circle, as far as the others.
+TEST(Fit, TheBorderFollowsItsOwnArcOfTheInputsBorder) {
+  Mesh fine = polarDisk(240, 20);
+  const Vec3 speck(0.88, 0.011, 0);
+  append(fine, Mesh{{speck, speck + Vec3(0.01, 0, 0), speck + Vec3(0, 0.01, 0)}, {{0, 1, 2}}});
+  Mesh hexagon = polarDisk(6, 1, M_PI / 6 + M_PI / 240);  // vertices 6 and 1 span the speck
+  fitToSurface(hexagon, fine);
+  for (int v : {1, 6}) EXPECT_NEAR(hexagon.points[v].norm(), hexagon.points[3].norm(), 0.005) << v;
+  EXPECT_GT(hexagon.points[3].norm(), 1.05);
+}
+
 // remesh() fits by default: the same triangles, closer to the input, no rounder or less round
 // by more than a tenth of a degree on average.
 TEST(Fit, RemeshFitsTheResultByDefault) {
