@@ -671,10 +671,12 @@ void checkFinite(const std::vector<Vec3>& points, const std::string& name, int b
   }
 }
 
-// Size, index range and repeated vertices of one face, before any geometry is looked at.
+// Size, index range and repeated vertices of one face, before any geometry is looked at. With
+// `repeatsAllowed` (the repair drops such a face), a repeated vertex is returned, not refused;
+// `fromFile`: the refusal says that the repair would drop it.
 template <class Index>
-void checkFaceIndices(const Index* v, size_t n, long long face, size_t vertexCount, int base,
-                      const std::string& name) {
+bool checkFaceIndices(const Index* v, size_t n, long long face, size_t vertexCount, int base,
+                      const std::string& name, bool repeatsAllowed = false, bool fromFile = false) {
   const std::string faceName = "face " + str(face + base);
   if (n < 3) fail(name, faceName + " has " + plural(n, "vertex", "vertices") + " (at least 3 are needed)");
   for (size_t i = 0; i < n; ++i) {
@@ -683,19 +685,22 @@ void checkFaceIndices(const Index* v, size_t n, long long face, size_t vertexCou
                      plural(vertexCount, "vertex", "vertices"));
     }
   }
-  const auto repeatedVertex = [&](long long v) { fail(name, faceName + " uses vertex " + str(v + base) + " twice"); };
+  const auto repeatedVertex = [&](long long v) {
+    if (repeatsAllowed) return true;
+    fail(name, faceName + " uses vertex " + str(v + base) + " twice" + (fromFile ? " (--repair drops such faces)" : ""));
+  };
   if (n <= 8) {  // the usual case, without allocating
     for (size_t i = 0; i < n; ++i) {
       for (size_t j = i + 1; j < n; ++j) {
-        if (v[i] == v[j]) repeatedVertex(v[i]);
+        if (v[i] == v[j]) return repeatedVertex(v[i]);
       }
     }
-    return;
+    return false;
   }
   std::vector<long long> sorted(v, v + n);
   std::sort(sorted.begin(), sorted.end());
   const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
-  if (repeated != sorted.end()) repeatedVertex(*repeated);
+  return repeated != sorted.end() && repeatedVertex(*repeated);
 }
 
 // Zero area up to rounding: the sine of the angle at a is negligible. Exact comparison with 0
@@ -1040,15 +1045,21 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   ReadResult result;
   result.mesh.points = raw.points;
   std::vector<long long> faceOfTriangle;
-  int polygons = 0;
+  int polygons = 0, repeating = 0;
   for (long long f = 0; f < raw.polygonCount(); ++f) {
     const long long* v = raw.indices.data() + raw.polygonStart[f];
     const size_t n = raw.polygonStart[f + 1] - raw.polygonStart[f];
-    checkFaceIndices(v, n, f, raw.points.size(), raw.base, path);
+    if (checkFaceIndices(v, n, f, raw.points.size(), raw.base, path, options.repair, /*fromFile=*/true)) {
+      ++repeating;
+      continue;
+    }
     if (n > 3) ++polygons;
     triangulatePolygon(v, n, raw.points, result.mesh.triangles);
     faceOfTriangle.resize(result.mesh.triangles.size(), f);
   }
+  if (repeating > 0)
+    result.notes.push_back(path + ": repaired: " + plural(repeating, "face", "faces") + " using a vertex twice dropped");
+  checkHasFaces(result.mesh.faceCount(), path);
   Numbering numbering{raw.base, &faceOfTriangle};
   const auto coincident = checkOrRepair(result, path, numbering, options.repair);
 

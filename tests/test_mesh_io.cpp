@@ -447,7 +447,21 @@ TEST(MeshIoErrors, FaceWithTooFewVertices) {
 }
 
 TEST(MeshIoErrors, RepeatedVertexInAFace) {
-  expectFileError("repeat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", "face 0 uses vertex 1 twice");
+  expectFileError("repeat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n",
+                  "face 0 uses vertex 1 twice (--repair drops such faces)");
+}
+
+// The repair drops a face that uses a vertex twice (here the square's third face), and says so;
+// a file of nothing else still has no faces.
+TEST(MeshIo, TheRepairDropsAFaceUsingAVertexTwice) {
+  const std::string path = writeFile("repeat_repaired.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+                                                            "3 0 1 2\n3 0 2 3\n3 0 1 1\n");
+  const ReadResult r = readMesh(path, ReadOptions{true});
+  EXPECT_EQ(r.mesh.faceCount(), 2);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_EQ(r.notes[0], path + ": repaired: 1 face using a vertex twice dropped");
+  const std::string only = writeFile("repeat_only.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n");
+  EXPECT_THROW(readMesh(only, ReadOptions{true}), Error);
 }
 
 TEST(MeshIoErrors, ZeroAreaFace) {
