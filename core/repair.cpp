@@ -37,8 +37,8 @@ std::vector<bool> turnedFaces(const std::vector<Point3>& points, const Soup& bef
 
 // orient_polygon_soup keeps the first face of each piece as it was and turns its neighbours to
 // match: where that face was the odd one out, the whole piece is turned back, so that most faces
-// keep the side the file gave them. `sm` is the soup as a mesh, face i its face i. Returns
-// whether it turned any piece back (`faces` and `turned` follow; `sm` does not).
+// keep the side the file gave them. `sm` is the soup as a mesh, face i its face i (all added).
+// Returns whether it turned any piece back (`faces` and `turned` follow; `sm` does not).
 bool turnMostBack(SurfaceMesh& sm, Soup& faces, std::vector<bool>& turned) {
   auto piece = sm.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:piece", 0).first;
   std::vector<long> balance(PMP::connected_components(sm, piece), 0);  // turned less the others
@@ -86,7 +86,7 @@ RepairResult repairMesh(const Mesh& mesh) {
   std::vector<bool> turned = turnedFaces(points, welded, faces);
   SurfaceMesh sm;
   PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
-  if (turnMostBack(sm, faces, turned)) {
+  if (sm.number_of_faces() == faces.size() && turnMostBack(sm, faces, turned)) {
     sm.clear();
     PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
   }
