@@ -24,22 +24,7 @@ Charts unmergedTorusCharts() {
 // A disk whose rim waves up and down (z = r^3 sin 5t): its border is longer than a flat disk's
 // would be, so a conformal map with a free border overlaps itself, as a lettuce leaf laid flat.
 Mesh ruffledDisk() {
-  constexpr int rings = 12, spokes = 72;
-  Mesh m;
-  m.points.emplace_back(0, 0, 0);
-  for (int i = 1; i <= rings; ++i)
-    for (int j = 0; j < spokes; ++j) {
-      const double r = double(i) / rings, t = 2 * M_PI * j / spokes;
-      m.points.emplace_back(r * std::cos(t), r * std::sin(t), r * r * r * std::sin(5 * t));
-    }
-  auto at = [](int i, int j) { return i == 0 ? 0 : 1 + (i - 1) * spokes + j % spokes; };
-  for (int j = 0; j < spokes; ++j) m.triangles.push_back({0, at(1, j), at(1, j + 1)});
-  for (int i = 1; i < rings; ++i)
-    for (int j = 0; j < spokes; ++j) {
-      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
+  return test::polarDisk(72, 12, 0, [](double r, double t) { return r * r * r * std::sin(5 * t); });
 }
 
 }  // namespace

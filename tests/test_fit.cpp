@@ -90,34 +90,14 @@ TEST(Fit, KeepsSnappedVerticesAndAnglesAndMovesTheBorderOnlyAcrossIt) {
                                              FitOptions{}.keepAngle}) - 1e-9);
 }
 
-// A flat disk: `sectors` vertices on each of `rings` circles around its centre, the last of
-// radius 1, the first at angle `phase`.
-Mesh polarDisk(int sectors, int rings, double phase = 0) {
-  Mesh m;
-  m.points.push_back(Vec3::Zero());
-  for (int k = 1; k <= rings; ++k)
-    for (int i = 0; i < sectors; ++i) {
-      const double a = phase + 2 * M_PI * i / sectors, r = double(k) / rings;
-      m.points.emplace_back(r * std::cos(a), r * std::sin(a), 0);
-    }
-  const auto at = [&](int k, int i) { return 1 + (k - 1) * sectors + (i % sectors); };
-  for (int i = 0; i < sectors; ++i) m.triangles.push_back({0, at(1, i), at(1, i + 1)});
-  for (int k = 1; k < rings; ++k)
-    for (int i = 0; i < sectors; ++i) {
-      m.triangles.push_back({at(k, i), at(k + 1, i), at(k + 1, i + 1)});
-      m.triangles.push_back({at(k, i), at(k + 1, i + 1), at(k, i + 1)});
-    }
-  return m;
-}
-
 // A hexagon of six equilateral triangles whose corners are on a fine disk's circle (not on its
 // vertices, which would hold them): each border edge cuts
 // inside the circle by its sagitta, the Hausdorff distance. Fitted, the border moves out
 // across itself, its chords crossing the circle, and the distance falls by a third; without
 // FitOptions::border it stays where it was.
 TEST(Fit, TheBorderComesNearerToACurvedInputBorder) {
-  const Mesh fine = polarDisk(240, 20);
-  const Mesh coarse = polarDisk(6, 1, M_PI / 240);  // between the fine one's vertices
+  const Mesh fine = test::polarDisk(240, 20);
+  const Mesh coarse = test::polarDisk(6, 1, M_PI / 240);  // between the fine one's vertices
   const double before = measureFidelity(coarse, fine).hausdorffPercent;
   Mesh fitted = coarse;
   const FitResult r = fitToSurface(fitted, fine);
@@ -135,10 +115,10 @@ TEST(Fit, TheBorderComesNearerToACurvedInputBorder) {
 // the input's border, nearer than the circle): each border vertex still moves out towards its
 // own arc of the circle, as far as the others.
 TEST(Fit, TheBorderFollowsItsOwnArcOfTheInputsBorder) {
-  Mesh fine = polarDisk(240, 20);
+  Mesh fine = test::polarDisk(240, 20);
   const Vec3 speck(0.88, 0.011, 0);
   append(fine, Mesh{{speck, speck + Vec3(0.01, 0, 0), speck + Vec3(0, 0.01, 0)}, {{0, 1, 2}}});
-  Mesh hexagon = polarDisk(6, 1, M_PI / 6 + M_PI / 240);  // vertices 6 and 1 span the speck
+  Mesh hexagon = test::polarDisk(6, 1, M_PI / 6 + M_PI / 240);  // vertices 6 and 1 span the speck
   fitToSurface(hexagon, fine);
   for (int v : {1, 6}) EXPECT_NEAR(hexagon.points[v].norm(), hexagon.points[3].norm(), 0.005) << v;
   EXPECT_GT(hexagon.points[3].norm(), 1.05);

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include <unistd.h>
@@ -148,6 +149,27 @@ inline RemeshResult remeshSimplified(const std::string& path, int vertices) {
   options.simplifyTo = vertices;
   options.measureFidelity = false;
   return remesh(readMesh(path).mesh, options, path);
+}
+
+// A disk: `sectors` vertices on each of `rings` circles around its centre, the last of radius
+// 1, the first at angle `phase`, lifted to z = height(r, angle) (flat without one).
+inline Mesh polarDisk(int sectors, int rings, double phase = 0,
+                      const std::function<double(double, double)>& height = {}) {
+  Mesh m;
+  m.points.emplace_back(0, 0, height ? height(0, 0) : 0);
+  for (int k = 1; k <= rings; ++k)
+    for (int i = 0; i < sectors; ++i) {
+      const double a = phase + 2 * M_PI * i / sectors, r = double(k) / rings;
+      m.points.emplace_back(r * std::cos(a), r * std::sin(a), height ? height(r, a) : 0);
+    }
+  const auto at = [&](int k, int i) { return 1 + (k - 1) * sectors + (i % sectors); };
+  for (int i = 0; i < sectors; ++i) m.triangles.push_back({0, at(1, i), at(1, i + 1)});
+  for (int k = 1; k < rings; ++k)
+    for (int i = 0; i < sectors; ++i) {
+      m.triangles.push_back({at(k, i), at(k + 1, i), at(k + 1, i + 1)});
+      m.triangles.push_back({at(k, i), at(k + 1, i + 1), at(k, i + 1)});
+    }
+  return m;
 }
 
 // CTest runs test processes in parallel: every process gets names of its own.
