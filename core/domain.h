@@ -37,6 +37,10 @@ class Domain {
   // hint, as a site is to where it was in the previous iteration).
   Location locate(const Vec2& p, int hint) const;
   Vec2 pointAt(const Location& l) const;
+  // Whether a location lies on an edge of the domain's border (its weight off that edge at
+  // most kOnBorderEdge).
+  static constexpr double kOnBorderEdge = 1e-9;
+  bool onBorder(const Location& l) const;
   Eigen::Vector3d barycentric(int triangle, const Vec2& p) const;
   // The density at p, linear inside `triangle` (p may be outside it: the plane is extended).
   double densityAt(int triangle, const Vec2& p) const {

@@ -268,23 +268,19 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
   LiftedMesh output = retriangulate(surface(), domain_, solver_->fixedSites(), movable, name_,
                                     sharedSeams ? sites_.fixedPoints : std::vector<Vec3>{});
   SurfaceMap map{surface(), domain_};
-  if (resampled_) {  // from the resampled surface's chords onto the input surface itself
+  if (resampled_) {
+    // From the resampled surface's chords onto the input surface itself; its border onto the
+    // input's own border (also where the polish slides a border vertex along it), but where it
+    // holds seams, whose two copies must land alike: as lifted.
     map.lift = [this](const Location& l) {
+      if (!seamed() && domain_.onBorder(l))
+        if (const std::optional<Vec3> p = resampled_->borderToInput(input_, l.triangle, l.weights)) return *p;
       return resampled_->toInput(input_, l.triangle, l.weights);
     };
     // A chart's border samples are the resampled chart's own border vertices, already there.
     const int exact = sharedSeams ? static_cast<int>(sites_.fixed.size()) : 0;
     for (int v = exact; v < output.mesh.vertexCount(); ++v)
       output.mesh.points[v] = map.at(domain_.locate(output.uv[v]));
-    // The border onto the input's own border (a seam's two copies must land alike: as lifted).
-    if (!seamed()) {
-      const std::vector<bool> onBorder = vertexEdges(output.mesh).onBoundary;
-      for (int v = 0; v < output.mesh.vertexCount(); ++v) {
-        if (!onBorder[v]) continue;
-        const Location l = domain_.locate(output.uv[v]);
-        if (const std::optional<Vec3> p = resampled_->borderToInput(input_, l.triangle, l.weights)) output.mesh.points[v] = *p;
-      }
-    }
   }
   if (options_.polish >= 0) {
     PolishOptions o;

@@ -30,6 +30,10 @@ struct PolishOptions {
   // Then passes over the triangles with small angles only: vertex moves and edge flips that
   // raise the smallest angle around them.
   int repairPasses = 3;
+  // In those passes the border's vertices may slide along the border (not on a cut surface,
+  // nor off a corner): across a sharp corner the border is sampled evenly into a wedge, whose
+  // strip of triangles has a smaller angle than the corner's.
+  bool slideBorder = true;
   // The border holds seams that will be stitched (core/cut): no flip may join two border
   // vertices or double an edge of the stitched mesh, and no flat triangle loses a vertex.
   bool seams = false;
@@ -44,10 +48,11 @@ struct SurfaceMap {
   Vec3 at(const Location& l) const;
 };
 
-// The border stays as it is (its vertices do not move, its edges do not flip). A flat
-// triangle (under 10 degrees) that nothing else fixes loses an edge: a vertex fewer. `surfaceDensity`
-// (of the domain's triangles; empty: uniform) weights the centres so that a density that asked
-// for smaller cells keeps them. Vertices keep their order (but for merged ones, and on a cut surface a few
+// The border stays where it is: its edges do not flip, and its vertices only slide along it
+// where that raises a small angle (PolishOptions::slideBorder). A flat triangle (under 10
+// degrees) that nothing else fixes loses an edge: a vertex fewer. `surfaceDensity` (of the
+// domain's triangles; empty: uniform) weights the centres so that a density that asked for
+// smaller cells keeps them. Vertices keep their order (but for merged ones, and on a cut surface a few
 // added at the end where an edge that stitching would double is split); mesh.uv follows.
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options);

@@ -91,6 +91,7 @@ Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
   polishOptions.iterations = options.polish;
   polishOptions.target = PolishTarget::Centroid;
   polishOptions.seams = !siteOptions.onSeam.empty();
+  polishOptions.slideBorder = false;  // its angles are not the result's: its border stays sampled evenly
   polish(mesh, {input, domain}, surfaceDensity(input, param.uv, rho), polishOptions);
   Resampling r{std::move(param), std::move(domain), std::move(mesh), {}, {}};
   locateOnInputBorder(input, r);

@@ -412,3 +412,26 @@ TEST(Cli, SimplifyWritesTheTargetSize) {
             0);
   EXPECT_EQ(readMesh(out).mesh.vertexCount(), 300);
 }
+
+// A 34-degree sector, bent, remeshed to 100 vertices: the border, sampled evenly into its
+// sharp corner, leaves a strip of triangles with a small angle, until the polish slides a border
+// vertex along the border. The slid vertex lands on the input's own border, not on a chord of
+// the resampled surface's (its sides are bent).
+TEST(Pipeline, TheBorderSlidOutOfASharpCornerStaysOnTheInputsBorder) {
+  const Mesh input = test::sector(34, [](double x, double) { return 0.5 * x * x; });
+  RemeshOptions o;
+  o.sites.count = 100;
+  o.fit = false;  // (the fit would move the border across it)
+  const RemeshResult r = remesh(input, o, "sector");
+  EXPECT_GE(r.after.minAngle, 30.0);
+  const Topology topology = analyzeTopology(r.output);
+  ASSERT_TRUE(topology.isDisk());
+  const std::vector<int> border = analyzeTopology(input).boundaryLoops[0];
+  for (int v : topology.boundaryLoops[0]) {
+    double nearest = 1;
+    for (size_t i = 0; i < border.size(); ++i)
+      nearest = std::min(nearest, distanceToSegment(r.output.points[v], input.points[border[i]],
+                                                    input.points[border[(i + 1) % border.size()]]));
+    EXPECT_LT(nearest, 1e-9) << v;
+  }
+}

@@ -1,3 +1,4 @@
+#include "lloyd.h"
 #include "metrics.h"
 #include "pipeline.h"
 #include "parameterization.h"
@@ -100,7 +101,22 @@ TEST(Polish, KeepsTheBorderAndTheSurfaceAndRaisesTheAngles) {
   EXPECT_NO_THROW(validateMesh(after, "polished"));
   const Topology topology = analyzeTopology(after);
   ASSERT_TRUE(topology.isDisk());
-  for (int v : topology.boundaryLoops[0]) EXPECT_EQ(after.points[v], before.points[v]);
+  // The border's vertices stay on the domain's border: where they were, or slid along it.
+  std::vector<std::pair<Vec2, Vec2>> domainBorder;
+  for (size_t t = 0; t < r.domain.triangles().size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (r.domain.neighbours()[t][k] < 0)
+        domainBorder.emplace_back(r.domain.uv()[r.domain.triangles()[t][(k + 1) % 3]],
+                                  r.domain.uv()[r.domain.triangles()[t][(k + 2) % 3]]);
+  for (int v : topology.boundaryLoops[0]) {
+    double nearest = 1;
+    for (const auto& [a, b] : domainBorder) {
+      const Vec2 ab = b - a;
+      const double t = std::clamp((polished.uv[v] - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+      nearest = std::min(nearest, (a + t * ab - polished.uv[v]).norm());
+    }
+    EXPECT_LT(nearest, 1e-9) << v;
+  }
   // Every vertex is still the lift of its parameter point: on the input surface.
   for (int v = 0; v < after.vertexCount(); ++v)
     EXPECT_LT((after.points[v] - lift(r.input, r.domain, polished.uv[v])).norm(), 1e-9);
@@ -669,4 +685,42 @@ TEST(Polish, NothingIsSnappedWhereTheResultFollowsTheInput) {
   EXPECT_TRUE(snapToTips(result, input).empty());
   EXPECT_EQ(result.points, input.points);
   EXPECT_EQ(result.triangles, input.triangles);
+}
+
+TEST(Polish, BorderVerticesSlideAlongTheBorderOutOfASharpCornersStrip) {
+  // Sampled evenly into a 34-degree corner, the border makes a strip of triangles across the
+  // wedge with a 25-degree angle next to the corner's ear: a border vertex slid towards the
+  // corner makes it 34.
+  const Mesh input = test::sector(34);
+  const Parameterization param = parameterize(input, {}, "sector");
+  const Domain domain(param.uv, input.triangles, {});
+  SiteOptions sites;
+  sites.count = 100;
+  const InitialSites start = initialSites(input, param, domain, sites);
+  LloydSolver solver(domain, start.fixed, start.movable, {});
+  solver.run();
+  const LiftedMesh relaxed = retriangulate(input, domain, start.fixed, solver.movableSites(), "sector");
+  PolishOptions fixedBorder;
+  fixedBorder.slideBorder = false;
+  LiftedMesh slid = relaxed, kept = relaxed;
+  polish(slid, {input, domain}, {}, {});
+  polish(kept, {input, domain}, {}, fixedBorder);
+  EXPECT_LT(measureQuality(kept.mesh).minAngle, 27);
+  EXPECT_GT(measureQuality(slid.mesh).minAngle, 33.9);
+  // The border's vertices are still on the sector's border, its corners where they were.
+  const Topology topology = analyzeTopology(slid.mesh);
+  ASSERT_TRUE(topology.isDisk());
+  int moved = 0;
+  for (int v : topology.boundaryLoops[0]) {
+    const Vec3& p = slid.mesh.points[v];
+    const double angle = std::atan2(p.y(), p.x()) * 180 / M_PI;
+    const bool onSide = std::abs(angle) < 1e-6 || std::abs(angle - 34) < 1e-6 || p.norm() < 1e-12;
+    const bool onArc = std::abs(p.norm() - 1) < 1e-3;  // the arc is a polygon of 12 sides
+    EXPECT_TRUE(onSide || onArc) << v;
+    moved += p != relaxed.mesh.points[v];
+  }
+  EXPECT_GT(moved, 0);
+  for (const Vec3& corner : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(std::cos(34 * M_PI / 180), std::sin(34 * M_PI / 180), 0)})
+    EXPECT_TRUE(std::any_of(slid.mesh.points.begin(), slid.mesh.points.end(),
+                            [&](const Vec3& p) { return (p - corner).norm() < 1e-12; }));
 }

@@ -172,6 +172,28 @@ inline Mesh polarDisk(int sectors, int rings, double phase = 0,
   return m;
 }
 
+// A sector of `degrees` and radius 1, finely triangulated: the apex, then rings of a polar grid
+// between its two straight sides; flat, or at `height`(x, y).
+inline Mesh sector(double degrees, const std::function<double(double, double)>& height = {}, int sectors = 12,
+                   int rings = 30) {
+  Mesh m;
+  m.points.emplace_back(0, 0, 0);
+  for (int k = 1; k <= rings; ++k)
+    for (int i = 0; i <= sectors; ++i) {
+      const double a = degrees * M_PI / 180 * i / sectors, r = double(k) / rings;
+      const double x = r * std::cos(a), y = r * std::sin(a);
+      m.points.emplace_back(x, y, height ? height(x, y) : 0);
+    }
+  const auto at = [&](int k, int i) { return 1 + (k - 1) * (sectors + 1) + i; };
+  for (int i = 0; i < sectors; ++i) m.triangles.push_back({0, at(1, i), at(1, i + 1)});
+  for (int k = 1; k < rings; ++k)
+    for (int i = 0; i < sectors; ++i) {
+      m.triangles.push_back({at(k, i), at(k + 1, i), at(k + 1, i + 1)});
+      m.triangles.push_back({at(k, i), at(k + 1, i + 1), at(k, i + 1)});
+    }
+  return m;
+}
+
 // CTest runs test processes in parallel: every process gets names of its own.
 inline std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "lloydscope_" + std::to_string(getpid()) + "_" + name;
