@@ -313,7 +313,7 @@ class MoveSearch {
   // irregular vertex goes on while flips are left. The angles are checked last (the costly
   // part, and seldom needed).
   void extend(int flipsLeft) {
-    const EdgeFlips::Candidate& last = made_.back();
+    const EdgeFlips::Candidate last = made_.back();  // a copy: made_ grows below
     for (const auto& [x, y] : flips_.edgesAround({last.a, last.b, last.c, last.d})) {
       if (std::minmax(x, y) == std::minmax(last.c, last.d)) continue;  // the way back
       const std::optional<EdgeFlips::Candidate> next = flips_.candidate(x, y);
