@@ -1523,18 +1523,13 @@ int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vec
   int collapsed = 0;
   for (bool again = true; again;) {
     again = false;
-    std::set<std::pair<int, int>> directed;
-    for (const Triangle& t : m.triangles)
-      for (int k = 0; k < 3; ++k) directed.emplace(t[k], t[(k + 1) % 3]);
-    std::vector<int> next(m.vertexCount(), -1), prev(m.vertexCount(), -1);
+    const auto [prev, next] = borderNeighbours(m);
     std::vector<std::pair<double, std::pair<int, int>>> shortEdges;
-    for (const auto& [a, b] : directed)
-      if (!directed.count({b, a})) {
-        next[a] = b;
-        prev[b] = a;
-        const double length = (m.points[a] - m.points[b]).norm();
-        if (length < kShortBorderEdge * spacing) shortEdges.push_back({length, {a, b}});
-      }
+    for (int a = 0; a < m.vertexCount(); ++a) {
+      if (next[a] < 0) continue;
+      const double length = (m.points[a] - m.points[next[a]]).norm();
+      if (length < kShortBorderEdge * spacing) shortEdges.push_back({length, {a, next[a]}});
+    }
     std::sort(shortEdges.begin(), shortEdges.end());
     std::vector<bool> fixed(m.vertexCount(), false);
     for (int v : pinned) fixed[v] = true;

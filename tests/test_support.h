@@ -151,47 +151,45 @@ inline RemeshResult remeshSimplified(const std::string& path, int vertices) {
   return remesh(readMesh(path).mesh, options, path);
 }
 
-// A disk: `sectors` vertices on each of `rings` circles around its centre, the last of radius
-// 1, the first at angle `phase`, lifted to z = height(r, angle) (flat without one).
-inline Mesh polarDisk(int sectors, int rings, double phase = 0,
-                      const std::function<double(double, double)>& height = {}) {
+// A centre joined to `rings` rings of `columns` vertices each, `point`(k, i) placing ring k's
+// column i (k from 1): all the way round (`closed`: the last column joins the first) or across a
+// sector (its first and last columns its two straight sides).
+inline Mesh polarGrid(int rings, int columns, bool closed, const Vec3& centre,
+                      const std::function<Vec3(int, int)>& point) {
   Mesh m;
-  m.points.emplace_back(0, 0, height ? height(0, 0) : 0);
+  m.points.push_back(centre);
   for (int k = 1; k <= rings; ++k)
-    for (int i = 0; i < sectors; ++i) {
-      const double a = phase + 2 * M_PI * i / sectors, r = double(k) / rings;
-      m.points.emplace_back(r * std::cos(a), r * std::sin(a), height ? height(r, a) : 0);
-    }
-  const auto at = [&](int k, int i) { return 1 + (k - 1) * sectors + (i % sectors); };
-  for (int i = 0; i < sectors; ++i) m.triangles.push_back({0, at(1, i), at(1, i + 1)});
+    for (int i = 0; i < columns; ++i) m.points.push_back(point(k, i));
+  const auto at = [&](int k, int i) { return 1 + (k - 1) * columns + (i % columns); };
+  const int spans = closed ? columns : columns - 1;
+  for (int i = 0; i < spans; ++i) m.triangles.push_back({0, at(1, i), at(1, i + 1)});
   for (int k = 1; k < rings; ++k)
-    for (int i = 0; i < sectors; ++i) {
+    for (int i = 0; i < spans; ++i) {
       m.triangles.push_back({at(k, i), at(k + 1, i), at(k + 1, i + 1)});
       m.triangles.push_back({at(k, i), at(k + 1, i + 1), at(k, i + 1)});
     }
   return m;
 }
 
+// A disk: `sectors` vertices on each of `rings` circles around its centre, the last of radius
+// 1, the first at angle `phase`, lifted to z = height(r, angle) (flat without one).
+inline Mesh polarDisk(int sectors, int rings, double phase = 0,
+                      const std::function<double(double, double)>& height = {}) {
+  return polarGrid(rings, sectors, true, Vec3(0, 0, height ? height(0, 0) : 0), [&](int k, int i) {
+    const double a = phase + 2 * M_PI * i / sectors, r = double(k) / rings;
+    return Vec3(r * std::cos(a), r * std::sin(a), height ? height(r, a) : 0);
+  });
+}
+
 // A sector of `degrees` and radius 1, finely triangulated: the apex, then rings of a polar grid
-// between its two straight sides; flat, or at `height`(x, y).
+// between its two straight sides; flat, or at `height`(x, y) (the apex stays at 0).
 inline Mesh sector(double degrees, const std::function<double(double, double)>& height = {}, int sectors = 12,
                    int rings = 30) {
-  Mesh m;
-  m.points.emplace_back(0, 0, 0);
-  for (int k = 1; k <= rings; ++k)
-    for (int i = 0; i <= sectors; ++i) {
-      const double a = degrees * M_PI / 180 * i / sectors, r = double(k) / rings;
-      const double x = r * std::cos(a), y = r * std::sin(a);
-      m.points.emplace_back(x, y, height ? height(x, y) : 0);
-    }
-  const auto at = [&](int k, int i) { return 1 + (k - 1) * (sectors + 1) + i; };
-  for (int i = 0; i < sectors; ++i) m.triangles.push_back({0, at(1, i), at(1, i + 1)});
-  for (int k = 1; k < rings; ++k)
-    for (int i = 0; i < sectors; ++i) {
-      m.triangles.push_back({at(k, i), at(k + 1, i), at(k + 1, i + 1)});
-      m.triangles.push_back({at(k, i), at(k + 1, i + 1), at(k, i + 1)});
-    }
-  return m;
+  return polarGrid(rings, sectors + 1, false, Vec3::Zero(), [&](int k, int i) {
+    const double a = degrees * M_PI / 180 * i / sectors, r = double(k) / rings;
+    const double x = r * std::cos(a), y = r * std::sin(a);
+    return Vec3(x, y, height ? height(x, y) : 0);
+  });
 }
 
 // CTest runs test processes in parallel: every process gets names of its own.
