@@ -267,11 +267,20 @@ void normalize(std::vector<Vec2>& uv) {
 
 // Triangles that face against the map's orientation, and triangles of (nearly) zero area but
 // for ears of the border (three border vertices on one straight side of the square: flat, but
-// harmless, as they cover no part of the domain).
+// harmless, as they cover no part of the domain). An ear with a side squeezed to a point is
+// collapsed all the same: the border's samples along that side would pile up on one point.
 struct Folds {
   std::vector<int> flipped, collapsed;
   bool empty() const { return flipped.empty() && collapsed.empty(); }
 };
+
+// A side this short (the map is scaled to a unit square) is a point: LSCM squeezed an ear of an
+// 11-vertex surface's border to 3e-16.
+constexpr double kSqueezedSide = 1e-12;
+
+double shortestSide(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return std::min({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+}
 
 Folds findFolds(const Mesh& mesh, const std::vector<Vec2>& uv, const std::vector<bool>& onBoundary) {
   double total = 0;
@@ -281,7 +290,8 @@ Folds findFolds(const Mesh& mesh, const std::vector<Vec2>& uv, const std::vector
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Triangle& t = mesh.triangles[f];
     const double a = sign * triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
-    const bool ear = onBoundary[t[0]] && onBoundary[t[1]] && onBoundary[t[2]];
+    const bool ear = onBoundary[t[0]] && onBoundary[t[1]] && onBoundary[t[2]] &&
+                     shortestSide(uv[t[0]], uv[t[1]], uv[t[2]]) > kSqueezedSide;
     if (a < -minArea) folds.flipped.push_back(f);
     else if (a <= minArea && !ear) folds.collapsed.push_back(f);
   }

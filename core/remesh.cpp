@@ -78,8 +78,12 @@ std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
     borderVertex.push_back(cdt.insert(Point2(border[i].x(), border[i].y())));
     borderVertex.back()->info() = static_cast<int>(i);
   }
+  // Samples at the same place (where a map squeezes part of the border to a point) are one
+  // vertex of the triangulation, and a constraint from a vertex to itself crashes CGAL's: the
+  // later sample stands for both, the earlier is left out of the triangles.
   for (size_t i = 0; i < border.size(); ++i)
-    cdt.insert_constraint(borderVertex[i], borderVertex[(i + 1) % border.size()]);
+    if (borderVertex[i] != borderVertex[(i + 1) % border.size()])
+      cdt.insert_constraint(borderVertex[i], borderVertex[(i + 1) % border.size()]);
   // Where two border segments cross, CGAL adds a vertex of its own: mark those.
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->info() = -1;
   for (size_t i = 0; i < border.size(); ++i) borderVertex[i]->info() = static_cast<int>(i);

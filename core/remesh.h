@@ -38,7 +38,8 @@ LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
                          const std::string& name, const std::vector<Vec3>& borderPoints = {});
 
 // The 2D triangles of retriangulate(), before lifting (same vertex order); throws Error where
-// the border crosses itself or has fewer than 3 samples.
+// the border crosses itself or has fewer than 3 samples. Of border samples at the same place,
+// the last is in the triangles, the others in none.
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
                                        const std::vector<Vec2>& movableSites);
 

@@ -110,6 +110,21 @@ TEST(Parameterization, AGivenMapIsTakenAsItIsAndChecked) {
     EXPECT_GT(triangleArea(repaired.uv[t[0]], repaired.uv[t[1]], repaired.uv[t[2]]), 0.0);
 }
 
+// A flat ear (a triangle of three border vertices on a straight part of the border) covers no
+// part of the domain and is allowed; squeezed to a point, it is a fold: samples of the border
+// along it would all land on one point (LSCM did this to an 11-vertex surface's first pass,
+// and the triangulation of the sites crashed).
+TEST(Parameterization, AnEarSqueezedToAPointIsAFold) {
+  Mesh ear;
+  ear.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, -0.3, 0.2}};
+  ear.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 4, 1}};
+  std::vector<Vec2> flat = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}};
+  EXPECT_NO_THROW(parameterize(ear, {ParamMethod::Given, Border::Circle, flat}, "ear"));
+  std::vector<Vec2> squeezed = flat;
+  squeezed[4] = Vec2(1e-16, 0);  // onto its border neighbour
+  EXPECT_THROW(parameterize(ear, {ParamMethod::Given, Border::Circle, squeezed}, "ear"), Error);
+}
+
 // A fold on the border: a border vertex pushed in beyond its inside neighbours. The repair
 // puts it back between its two border neighbours (mean-value weights, all on one side of it,
 // would pull it inside).

@@ -26,6 +26,24 @@ TEST(Pipeline, DefaultRetriangulationImprovesTheBumpyDisk) {
   EXPECT_EQ(r.recording.iterations.size(), static_cast<size_t>(r.iterations));
 }
 
+// Half of CGAL's corner_poly: 11 vertices, planes meeting at right angles. Its first pass has
+// as many vertices as the input (no finer), and LSCM squeezed an ear of that mesh's border to
+// a point; the border samples of the run piled up there and CGAL's triangulation of the sites
+// crashed, at any size asked.
+TEST(Pipeline, ATinyInputWithCreasesIsRemeshedFiner) {
+  Mesh input;
+  input.points = {{2, 0, 1},  {2, 0, -1}, {1, 1, 1}, {1, 1, -1}, {0, 1, 1}, {0, 1, -1},
+                  {1, 0, 1},  {1, 0, -1}, {2, 1, 1}, {2, 1, -1}, {2, 1, 0}};
+  input.triangles = {{4, 2, 6}, {4, 6, 0}, {4, 0, 8}, {5, 9, 1}, {5, 1, 7}, {5, 7, 3}, {1, 9, 10},
+                     {1, 10, 8}, {1, 8, 0}, {7, 1, 0}, {7, 0, 6}, {7, 6, 2}, {7, 2, 3}};
+  RemeshOptions o;
+  o.sites.count = 200;
+  const RemeshResult r = remesh(input, o, "corner_poly_1.off");
+  EXPECT_TRUE(analyzeTopology(r.output).isDisk());
+  EXPECT_NEAR(r.output.vertexCount(), 200, 10);
+  EXPECT_GE(r.after.minAngle, 30.0);
+}
+
 TEST(Pipeline, RelocateKeepsTheInputConnectivity) {
   const Mesh input = readMesh(test::assetPath("sphere_cap.off")).mesh;
   RemeshOptions o = referencePreset(RemeshMethod::Relocate);

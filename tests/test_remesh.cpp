@@ -4,6 +4,8 @@
 #include "test_support.h"
 #include "topology.h"
 
+#include <set>
+
 using namespace lloydscope;
 
 namespace {
@@ -145,6 +147,23 @@ TEST(Retriangulate, RespectsANonConvexBorder) {
 TEST(Retriangulate, ABorderThatCrossesItselfIsAnErrorNotACrash) {
   const std::vector<Vec2> bowtie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
   EXPECT_THROW(triangulateSites(bowtie, {{0.5, 0.2}}), Error);
+}
+
+// Border samples at the same place (where a map squeezed part of the border to a point) made a
+// constraint from a vertex to itself, which crashed CGAL's triangulation. The last stands for
+// both.
+TEST(Retriangulate, BorderSamplesAtTheSamePlaceAreOneVertex) {
+  const std::vector<Vec2> border = {{0, 0}, {1, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<Triangle> triangles = triangulateSites(border, {{0.5, 0.5}});
+  double area = 0;
+  auto point = [&](int i) { return i < 6 ? border[i] : Vec2(0.5, 0.5); };
+  std::set<int> used;
+  for (const Triangle& t : triangles) {
+    area += triangleArea(point(t[0]), point(t[1]), point(t[2]));
+    used.insert(t.begin(), t.end());
+  }
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  EXPECT_EQ(used, (std::set<int>{0, 3, 4, 5, 6}));
 }
 
 // A border of fewer than 3 samples (a handful of sites asked for) crashed CGAL's triangulation;
