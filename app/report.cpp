@@ -101,7 +101,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                         {"charts_bars_met", r.chartTrial->chartsBars},
                                                         {"kept", r.charts > 0 ? "charts" : "one-cut"},
                                                         {"failed", r.chartTrial->failed},
-                                                        {"one_cut_failed", r.chartTrial->oneCutFailed}}
+                                                        {"one_cut_failed", r.chartTrial->oneCutFailed},
+                                                        {"for_bars", r.chartTrial->forBars}}
                                        : nlohmann::json()},
           {"first_pass_trial", r.firstPassTrial ? nlohmann::json{{"with_bars_met", r.firstPassTrial->withBars},
                                                                  {"without_bars_met", r.firstPassTrial->withoutBars},
@@ -168,7 +169,8 @@ std::string chartTrialText(const RemeshResult& r) {
     return "Remeshed chart by chart, in " + std::to_string(t.charts) + " charts (as one disk it failed: " +
            t.oneCutFailed + ")";
   return std::string(r.charts > 0 ? "Kept chart by chart" : "Kept as one disk") +
-         " (remeshed both ways, as one disk and chart by chart): average smallest angle " +
+         (t.forBars ? " (a bar was missed as one disk: remeshed chart by chart too): average smallest angle "
+                    : " (remeshed both ways, as one disk and chart by chart): average smallest angle ") +
          format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +
          format("%.1f", t.oneCutAvgMinAngle) + " deg one disk; Hausdorff " + format("%.3f", t.chartsHausdorff) +
          "% and " + format("%.3f", t.oneCutHausdorff) + "%; bars met (irregular, smallest angle, average) " +

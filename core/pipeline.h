@@ -111,6 +111,10 @@ struct ChartTrial {
   // Not empty: the one cut failed (why: every map of it folded or collapsed), and the charts
   // stand alone; the one cut's figures and both distances are then 0 (the result's own are measured).
   std::string oneCutFailed;
+  // Tried because the one disk, its conformal map held, still missed a bar with the first pass
+  // and without (a CAD part whose map squeezes one of its faces: half of CGAL's letter U at
+  // 500 vertices, 0.2 degrees): the charts are kept only where they meet more of the bars.
+  bool forBars = false;
 
   // Where one of the two meets more of the bars (meetsMoreBars()), it is kept. Else the charts
   // are kept if they are rounder (a larger average smallest angle) and at most kFartherBy

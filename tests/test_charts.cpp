@@ -198,8 +198,9 @@ TEST(Charts, AChartsLastStepsWaitForTheStitch) {
 
 TEST(Charts, AreKeptWhereTheyMeetMoreBarsOrAreRounderOrCloser) {
   auto trial = [](double chartsAngle, double oneCutAngle, double chartsDistance, double oneCutDistance,
-                  int chartsBars = 0, int oneCutBars = 0) {
+                  int chartsBars = 0, int oneCutBars = 0, bool forBars = false) {
     ChartTrial t;
+    t.forBars = forBars;
     t.chartsBars = chartsBars;
     t.oneCutBars = oneCutBars;
     t.chartsAvgMinAngle = chartsAngle;
@@ -221,4 +222,30 @@ TEST(Charts, AreKeptWhereTheyMeetMoreBarsOrAreRounderOrCloser) {
   EXPECT_FALSE(trial(53.6, 51.9, 1.243, 1.124, 2, 2));  // as many: 1.7 deg rounder, 1.11x as far
   EXPECT_FALSE(trial(53.4, 51.7, 1.645, 1.207, 2, 1));  // CGAL's dino: more bars, but 1.36x as far
   EXPECT_TRUE(trial(53.2, 54.3, 1.60, 2.41, 1, 2));     // the spool: fewer bars, but far closer
+  // Tried only for the bars a disk missed: only more bars keep the charts.
+  EXPECT_FALSE(trial(53.2, 54.3, 1.60, 2.41, 1, 2, true));
+  EXPECT_FALSE(trial(51.8, 53.3, 1.565, 2.293, 0, 2, true));  // the armadillo's half at 500: closer
+  EXPECT_FALSE(trial(53.6, 51.9, 1.243, 1.124, 2, 2, true));
+  EXPECT_TRUE(trial(57.7, 46.6, 0.240, 0.916, 3, 2, true));   // the octahedron's half at 500
+}
+
+// Four faces of an octahedron, open: a pyramid whose map to one disk held. As one disk its
+// result misses a bar at 500 vertices with the first pass and without (an average smallest
+// angle of 46.6 degrees: the cells bend over its edges); chart by chart, one face each, it
+// meets all three.
+TEST(Charts, ADiskThatMissesABarEitherWayIsRemeshedChartByChartToo) {
+  Mesh pyramid;
+  pyramid.points = {{0, 0, 2}, {0, 2, 0}, {-2, 0, 0}, {0, -2, 0}, {0, 0, -2}};
+  pyramid.triangles = {{3, 0, 2}, {2, 0, 1}, {1, 4, 2}, {2, 4, 3}};
+  RemeshOptions o;
+  o.sites.count = 500;
+  const RemeshResult r = remesh(pyramid, o, "octahedron_0.off");
+  ASSERT_TRUE(r.chartTrial.has_value());
+  EXPECT_TRUE(r.chartTrial->forBars);
+  EXPECT_LT(r.chartTrial->oneCutBars, 3);
+  EXPECT_EQ(r.charts, 4);
+  EXPECT_LE(r.after.irregularBoundaryAware, 15.0);
+  EXPECT_GE(r.after.minAngle, 30.0);
+  EXPECT_GE(r.after.avgMinAngle, 53.0);
+  EXPECT_TRUE(analyzeTopology(r.output).isDisk());
 }

@@ -96,6 +96,26 @@ TEST(Report, ChartsThatStandInForAFailedDiskSaySo) {
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["kept"], "charts");
 }
 
+// Charts tried only because the one disk missed a bar say so; the JSON has the flag.
+TEST(Report, ChartsTriedForAMissedBarSaySo) {
+  RemeshResult r;
+  r.charts = 4;
+  r.chartTrial = ChartTrial{};
+  r.chartTrial->forBars = true;
+  r.chartTrial->charts = 4;
+  r.chartTrial->chartsAvgMinAngle = 57.7;
+  r.chartTrial->oneCutAvgMinAngle = 46.6;
+  r.chartTrial->chartsHausdorff = 0.24;
+  r.chartTrial->oneCutHausdorff = 0.916;
+  r.chartTrial->chartsBars = 3;
+  r.chartTrial->oneCutBars = 2;
+  EXPECT_EQ(chartTrialText(r),
+            "Kept chart by chart (a bar was missed as one disk: remeshed chart by chart too): average smallest "
+            "angle 57.7 deg in 4 charts, 46.6 deg one disk; Hausdorff 0.240% and 0.916%; bars met (irregular, "
+            "smallest angle, average) 3 and 2");
+  EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["for_bars"], true);
+}
+
 // How many times the surface was remeshed (the trials' runs) ends the time line, where more
 // than once: what a long run's time went on.
 TEST(Report, TheTimeLineCountsTheRuns) {
