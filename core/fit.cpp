@@ -1,7 +1,7 @@
 #include "fit.h"
 
 #include "metrics.h"
-#include "polish.h"
+#include "ring_moves.h"
 #include "projection.h"
 
 #include <Eigen/Sparse>
@@ -297,7 +297,7 @@ FitResult FitResult::scaled(double factor) const {
 FitResult fitToSurface(Mesh& mesh, const SearchableSurface& input, const FitOptions& options) {
   const Mesh& surface = input.mesh;
   const int n = mesh.vertexCount();
-  // A vertex on an input vertex (a tip snapped there, core/polish; a corner of the border)
+  // A vertex on an input vertex (a tip snapped there, core/last_steps; a corner of the border)
   // stays on it.
   std::set<std::array<double, 3>> inputVertices;
   for (const Vec3& p : surface.points) inputVertices.insert({p.x(), p.y(), p.z()});

@@ -2,6 +2,8 @@
 
 #include "charts.h"
 #include "mesh_io.h"
+#include "flips.h"
+#include "last_steps.h"
 #include "polish.h"
 #include "simplify.h"
 #include "topology.h"

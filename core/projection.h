@@ -40,7 +40,7 @@ class SurfaceProjection {
 };
 
 // A surface and its closest-point search, built once for the steps that each search it (the
-// last steps of core/polish and core/fit against the input: on a scan of 52,000 triangles each
+// last steps (core/last_steps) and core/fit against the input: on a scan of 52,000 triangles each
 // search took 50 ms to build). Any mesh will do where one is asked for, its search built then.
 struct SearchableSurface {
   SearchableSurface(const Mesh& surface) : mesh(surface), projection(surface) {}  // NOLINT: implicit

@@ -1,3 +1,5 @@
+#include "flips.h"
+#include "last_steps.h"
 #include "lloyd.h"
 #include "metrics.h"
 #include "pipeline.h"
