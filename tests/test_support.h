@@ -206,4 +206,49 @@ inline std::string readText(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// Flips edge (a, b) of m: its two triangles (a, b, c) and (b, a, d) become (c, a, d), (d, b, c).
+inline void flip(Mesh& m, int a, int b) {
+  std::vector<size_t> faces;
+  for (size_t f = 0; f < m.triangles.size(); ++f)
+    if (std::count(m.triangles[f].begin(), m.triangles[f].end(), a) && std::count(m.triangles[f].begin(), m.triangles[f].end(), b))
+      faces.push_back(f);
+  ASSERT_EQ(faces.size(), 2u);
+  auto third = [&](size_t f) {
+    for (int v : m.triangles[f])
+      if (v != a && v != b) return v;
+    return -1;
+  };
+  // Which of the two has the edge as a -> b decides the orientation.
+  const Triangle& t = m.triangles[faces[0]];
+  const bool forward = (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
+  const int c = third(forward ? faces[0] : faces[1]), d = third(forward ? faces[1] : faces[0]);
+  m.triangles[faces[0]] = {c, a, d};
+  m.triangles[faces[1]] = {d, b, c};
+}
+
+// A 7 x 7 patch of equilateral triangles: vertex 7 i + j at (i + j / 2, j sqrt(3) / 2).
+inline Mesh equilateralPatch() {
+  Mesh m;
+  auto at = [](int i, int j) { return 7 * i + j; };
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j) m.points.emplace_back(i + 0.5 * j, j * std::sqrt(3.0) / 2, 0.0);
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      m.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// The patch with edges (8, 14) and (9, 15) flipped: inside, vertex 9 is left with valence 5
+// and 16 with 7; on the border 7 with 5 and 14 with 3. The one flip left that lowers the
+// valences' squared deviation from regular (by 2) makes one more vertex irregular; flipping
+// both back makes the patch regular again.
+inline Mesh patchWithTwoFlips() {
+  Mesh m = equilateralPatch();
+  flip(m, 8, 14);
+  flip(m, 9, 15);
+  return m;
+}
+
 }  // namespace lloydscope::test
