@@ -96,11 +96,15 @@ class EdgeFlips {
     return Candidate{a, b, c, d, f1, f2, mesh_.triangles[f1], mesh_.triangles[f2], quad};
   }
 
-  // Whether the two new triangles would face away from the two old ones (or be flat).
+  // Whether the two new triangles would face away from the two old ones (or be flat: the sine
+  // of their angle at c or d under 1e-12, whatever the mesh's scale).
   bool folds(const Candidate& k) const {
     const Vec3 before = faceNormal(mesh_, k.before1).normalized() + faceNormal(mesh_, k.before2).normalized();
     const Vec3 m1 = faceNormal(mesh_, {k.c, k.a, k.d}), m2 = faceNormal(mesh_, {k.d, k.b, k.c});
-    return m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() < 1e-14 || m2.norm() < 1e-14;
+    const Vec3 &a = mesh_.points[k.a], &b = mesh_.points[k.b], &c = mesh_.points[k.c], &d = mesh_.points[k.d];
+    const double flat = 1e-12 * (d - c).norm();
+    return m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() <= flat * (a - c).norm() ||
+           m2.norm() <= flat * (b - d).norm();
   }
 
   // Whether the flip keeps every angle of the two new triangles at `degrees` or more and does
