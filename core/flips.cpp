@@ -19,6 +19,95 @@ bool raisesRegularityAbove(const Quad& q, double degrees) {
 constexpr double kValenceFlipAngle = 25.0;  // (see raisesRegularity())
 bool raisesRegularity(const Quad& q) { return raisesRegularityAbove(q, kValenceFlipAngle); }
 
+EdgeFlips::EdgeFlips(Mesh& mesh, const std::vector<int>* stitched) : mesh_(mesh), stitched_(stitched) {
+  if (stitched_)
+    for (const Triangle& t : mesh_.triangles)
+      for (int k = 0; k < 3; ++k) ++stitchedEdges_[stitchedEdge(t[k], t[(k + 1) % 3])];
+  faceOf_.reserve(3 * mesh_.triangles.size());
+  facesOf_.resize(mesh_.vertexCount());
+  for (int f = 0; f < mesh_.faceCount(); ++f) {
+    addFace(f);
+    for (int v : mesh_.triangles[f]) facesOf_[v].push_back(f);
+  }
+  VertexEdges edges = vertexEdges(mesh_);
+  valence_ = std::move(edges.valence);
+  border_ = std::move(edges.onBoundary);
+}
+
+std::optional<EdgeFlips::Candidate> EdgeFlips::candidate(int a, int b) const {
+  const auto e1 = faceOf_.find(directed(a, b)), e2 = faceOf_.find(directed(b, a));
+  if (e1 == faceOf_.end() || e2 == faceOf_.end()) return std::nullopt;  // border, or gone
+  const int f1 = e1->second, f2 = e2->second;
+  const int c = third(f1, a, b), d = third(f2, a, b);
+  if (c < 0 || d < 0 || c == d || faceOf_.count(directed(c, d)) || faceOf_.count(directed(d, c)))
+    return std::nullopt;
+  if (stitched_ && ((border_[c] && border_[d]) || stitchedEdges_.count(stitchedEdge(c, d))))
+    return std::nullopt;
+  const Quad quad{mesh_.points[a], mesh_.points[b], mesh_.points[c], mesh_.points[d],
+                  deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0),
+                  deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1),
+                  irregular(a, 0) + irregular(b, 0) + irregular(c, 0) + irregular(d, 0),
+                  irregular(a, -1) + irregular(b, -1) + irregular(c, 1) + irregular(d, 1),
+                  stitched_ && stitchedEdges_.at(stitchedEdge(a, b)) > 2};
+  return Candidate{a, b, c, d, f1, f2, mesh_.triangles[f1], mesh_.triangles[f2], quad};
+}
+
+bool EdgeFlips::folds(const Candidate& k) const {
+  const Vec3 before = faceNormal(mesh_, k.before1).normalized() + faceNormal(mesh_, k.before2).normalized();
+  const Vec3 m1 = faceNormal(mesh_, {k.c, k.a, k.d}), m2 = faceNormal(mesh_, {k.d, k.b, k.c});
+  const Vec3 &a = mesh_.points[k.a], &b = mesh_.points[k.b], &c = mesh_.points[k.c], &d = mesh_.points[k.d];
+  const double flat = 1e-12 * (d - c).norm();
+  return m1.dot(before) <= 0 || m2.dot(before) <= 0 || m1.norm() <= flat * (a - c).norm() ||
+         m2.norm() <= flat * (b - d).norm();
+}
+
+std::vector<std::pair<int, int>> EdgeFlips::edgesAround(std::initializer_list<int> vertices) const {
+  std::vector<std::pair<int, int>> edges;
+  for (int v : vertices)
+    for (int f : facesOf_[v])
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh_.triangles[f][k], b = mesh_.triangles[f][(k + 1) % 3];
+        if (faceOf_.count(directed(b, a))) edges.emplace_back(std::min(a, b), std::max(a, b));
+      }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+void EdgeFlips::addFace(int f) {
+  for (int k = 0; k < 3; ++k)
+    faceOf_[directed(mesh_.triangles[f][k], mesh_.triangles[f][(k + 1) % 3])] = f;
+}
+
+void EdgeFlips::removeFace(int f) {
+  for (int k = 0; k < 3; ++k)
+    faceOf_.erase(directed(mesh_.triangles[f][k], mesh_.triangles[f][(k + 1) % 3]));
+}
+
+void EdgeFlips::replace(const Candidate& k, const Triangle& t1, const Triangle& t2, int sign) {
+  removeFace(k.f1);
+  removeFace(k.f2);
+  mesh_.triangles[k.f1] = t1;
+  mesh_.triangles[k.f2] = t2;
+  addFace(k.f1);
+  addFace(k.f2);
+  valence_[k.a] += sign, valence_[k.b] += sign, valence_[k.c] -= sign, valence_[k.d] -= sign;
+  // a leaves f2 and b f1 (or come back); c joins f2 and d f1 (or leave).
+  for (auto [v, from, to] : {std::tuple{k.a, k.f2, -1}, std::tuple{k.b, k.f1, -1},
+                             std::tuple{k.c, -1, k.f2}, std::tuple{k.d, -1, k.f1}}) {
+    if (sign > 0) std::swap(from, to);
+    std::vector<int>& faces = facesOf_[v];
+    if (from >= 0) faces.erase(std::find(faces.begin(), faces.end(), from));
+    if (to >= 0) faces.push_back(to);
+  }
+  if (stitched_) {  // an inside edge is the side of two triangles
+    const auto gone = sign < 0 ? stitchedEdge(k.a, k.b) : stitchedEdge(k.c, k.d);
+    const auto made = sign < 0 ? stitchedEdge(k.c, k.d) : stitchedEdge(k.a, k.b);
+    if ((stitchedEdges_[gone] -= 2) <= 0) stitchedEdges_.erase(gone);
+    stitchedEdges_[made] += 2;
+  }
+}
+
 int flipEdges(Mesh& mesh, const FlipRule& rule, const std::vector<int>* stitched,
               const std::vector<bool>* region) {
   EdgeFlips flips(mesh, stitched);
