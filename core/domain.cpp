@@ -180,10 +180,15 @@ Vec2 Domain::pointAt(const Location& l) const {
   return l.weights[0] * uv_[t[0]] + l.weights[1] * uv_[t[1]] + l.weights[2] * uv_[t[2]];
 }
 
-bool Domain::onBorder(const Location& l) const {
-  int off = 0;  // the corner the point is not beside
+int farthestCorner(const Eigen::Vector3d& weights) {
+  int off = 0;
   for (int k = 1; k < 3; ++k)
-    if (l.weights[k] < l.weights[off]) off = k;
+    if (weights[k] < weights[off]) off = k;
+  return off;
+}
+
+bool Domain::onBorder(const Location& l) const {
+  const int off = farthestCorner(l.weights);
   return l.weights[off] <= kOnBorderEdge && neighbours_[l.triangle][off] < 0;
 }
 

@@ -16,6 +16,10 @@ struct Location {
   bool inside = false;     // false: the point was outside, this is the closest point's location
 };
 
+// The corner of a location's triangle whose weight is least: the point lies nearest the edge
+// opposite it.
+int farthestCorner(const Eigen::Vector3d& weights);
+
 class Domain {
  public:
   // An empty density is uniform.

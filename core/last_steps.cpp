@@ -410,14 +410,11 @@ class AngleRaiser {
   // None may fold over; a move is kept where StaysClose allows it.
   bool tryVertex(const Rings& rings, int v) {
     const std::vector<int> faces(rings.faces.begin() + rings.offset[v], rings.faces.begin() + rings.offset[v + 1]);
-    Vec3 up = Vec3::Zero();
+    const Vec3 up = ringNormal(m_, rings, v);
     double spacing = 0;  // the mean length of v's edges
-    for (int f : faces) {
-      up += faceNormal(m_, m_.triangles[f]);
+    for (int f : faces)
       for (int w : m_.triangles[f]) spacing += (m_.points[w] - m_.points[v]).norm() / (2.0 * faces.size());
-    }
     if (!(up.squaredNorm() > 0) || !(spacing > 0)) return false;
-    up.normalize();
     const Vec3 start = m_.points[v];
     const SmallestAngles now = smallestAnglesOf(m_, faces);
     const double floor = std::min(meanFloor_[v], now.mean);

@@ -182,7 +182,6 @@ void slideAlongBorder(LiftedMesh& lm, const SurfaceMap& surface, const DomainBor
                       std::vector<int>& triangleOf) {
   Mesh& m = lm.mesh;
   const Rings rings(m);
-  const std::vector<double> unit(m.vertexCount(), 1.0);
   const auto [before, after] = borderNeighbours(m);
   for (int v = 0; v < m.vertexCount(); ++v) {
     if (!slides[v] || before[v] < 0 || after[v] < 0) continue;
@@ -196,8 +195,7 @@ void slideAlongBorder(LiftedMesh& lm, const SurfaceMap& surface, const DomainBor
     };
     const double edge = 0.5 * ((m.points[v] - m.points[p]).norm() + (m.points[n] - m.points[v]).norm());
     const double strayNow = std::max(stray(at, m.points[v]), kSlideStray * edge);
-    Vec3 up;
-    relaxationMove(m, rings, unit, v, PolishTarget::Centroid, up);  // for the ring's normal
+    const Vec3 up = ringNormal(m, rings, v);
     double best = ringSmallestAngle(m, rings, v, m.points[v], up);
     Location bestLocation;
     for (const DomainBorder::Place& toward : {atP, atN}) {
@@ -245,8 +243,7 @@ void repairAngles(LiftedMesh& lm, const SurfaceMap& surface, const Density& surf
   const Rings rings(m);
   for (int v = 0; v < m.vertexCount(); ++v) {
     if (!bad[v] || border[v]) continue;
-    Vec3 up;
-    relaxationMove(m, rings, weight, v, PolishTarget::Centroid, up);  // for the ring's normal
+    Vec3 up = ringNormal(m, rings, v);
     double best = ringSmallestAngle(m, rings, v, m.points[v], up);
     Location bestLocation;
     for (PolishTarget target : {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter}) {

@@ -18,12 +18,10 @@ Vec3 Resampling::toInput(const Mesh& input, int triangle, const Eigen::Vector3d&
 
 std::optional<Vec3> Resampling::borderToInput(const Mesh& input, int triangle, const Eigen::Vector3d& weights) const {
   const Triangle& t = mesh.mesh.triangles[triangle];
-  int off = 0;  // the corner the point is not beside
-  for (int k = 1; k < 3; ++k)
-    if (weights[k] < weights[off]) off = k;
+  const int off = farthestCorner(weights);
   const int a = t[(off + 1) % 3], b = t[(off + 2) % 3];
   const double wa = weights[(off + 1) % 3], wb = weights[(off + 2) % 3];
-  if (weights[off] > 1e-9 || std::isnan(borderPosition[a]) || std::isnan(borderPosition[b])) return std::nullopt;
+  if (weights[off] > Domain::kOnBorderEdge || std::isnan(borderPosition[a]) || std::isnan(borderPosition[b])) return std::nullopt;
   const double whole = inputBorderLength.back();
   double along = borderPosition[b] - borderPosition[a];  // the short way round
   if (along > 0.5 * whole) along -= whole;

@@ -75,6 +75,12 @@ Vec3 relaxationMove(const Mesh& m, const Rings& rings, const std::vector<double>
   return d - normal * normal.dot(d);
 }
 
+Vec3 ringNormal(const Mesh& m, const Rings& rings, int v) {
+  Vec3 sum = Vec3::Zero();
+  for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) sum += faceNormal(m, m.triangles[rings.faces[k]]);
+  return sum.squaredNorm() > 0 ? Vec3(sum.normalized()) : Vec3::Zero();
+}
+
 bool keepsRingUnfolded(const Mesh& m, const Rings& rings, int v, const Vec3& to, const Vec3& up) {
   for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
     const Triangle& t = m.triangles[rings.faces[k]];

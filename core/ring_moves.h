@@ -25,6 +25,10 @@ PolishTarget parsePolishTarget(const std::string& text);  // throws Error on unk
 Vec3 relaxationMove(const Mesh& m, const Rings& rings, const std::vector<double>& weight, int v,
                     PolishTarget target, Vec3& normal);
 
+// The unit normal of v's ring: its triangles' normals summed (weighted by their areas); zero
+// where they cancel.
+Vec3 ringNormal(const Mesh& m, const Rings& rings, int v);
+
 // Whether moving `v` to `to` leaves every triangle of its ring facing along `up` (the ring's
 // normal): not folded. Measured against the ring, not each triangle's old normal, so that a
 // triangle that was folded (a vertex near the border, lifted beyond the border's chord) may
