@@ -166,6 +166,9 @@ class MoveSearch {
     return found_;
   }
 
+  // The flips looked at since the search was made.
+  size_t examined() const { return examined_; }
+
  private:
   void count(const EdgeFlips::Candidate& k, int sign) {
     for (int v : {k.a, k.b, k.c, k.d}) {
@@ -191,6 +194,7 @@ class MoveSearch {
     const EdgeFlips::Candidate last = made_.back();  // a copy: made_ grows below
     for (const auto& [x, y] : flips_.edgesAround({last.a, last.b, last.c, last.d})) {
       if (std::minmax(x, y) == std::minmax(last.c, last.d)) continue;  // the way back
+      ++examined_;
       const std::optional<EdgeFlips::Candidate> next = flips_.candidate(x, y);
       if (!next) continue;
       const ValenceGain withNext = gainWith(*next);
@@ -218,12 +222,13 @@ class MoveSearch {
   std::vector<EdgeFlips::Candidate> made_;
   std::vector<std::pair<int, int>> change_;  // valence change of each vertex the flips touch
   std::vector<ValenceMove> found_;
+  size_t examined_ = 0;
 };
 
 }  // namespace
 
 std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double degrees,
-                                      const std::vector<bool>* near) {
+                                      const std::vector<bool>* near, size_t searchPerVertex) {
   std::vector<std::pair<int, int>> edges;
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k)
@@ -231,6 +236,7 @@ std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double
         edges.emplace_back(t[k], t[(k + 1) % 3]);
   std::vector<ValenceMove> moves;
   MoveSearch search(flips, degrees);
+  const size_t budget = searchPerVertex * mesh.vertexCount();
   for (const auto& [a, b] : edges) {
     const std::optional<EdgeFlips::Candidate> first = flips.candidate(a, b);
     if (!first) continue;
@@ -243,7 +249,7 @@ std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double
     // A sequence starts where the first flip moves a 5-7 pair of valences: its quad holds two
     // irregular vertices (starting from one as well made no difference on 36 disks, and
     // doubled the search).
-    if (first->quad.irregularBefore < 2 || !flips.keeps(*first, degrees)) continue;
+    if (first->quad.irregularBefore < 2 || search.examined() >= budget || !flips.keeps(*first, degrees)) continue;
     flips.flip(*first);
     std::vector<ValenceMove> after = search.movesAfter(*first);
     after.resize(std::min<size_t>(after.size(), kMovesPerFirstFlip));

@@ -158,12 +158,22 @@ class ValenceGain {
 // A flip's valence changes: -1 at the ends of the edge it takes away, +1 at those it makes.
 int changeOf(const EdgeFlips::Candidate& k, int v);
 
+// How many flips the search for sequences of valence moves may look at in one call, per
+// vertex of the mesh. Around vertices of valence 10 and more nearly every flip is worth
+// looking at, and the search branches on all their edges: CGAL's cheese (closed, genus 133;
+// 175 vertices of valence 10-29 at 500) looked at 10,000-24,000 a vertex and took 79 s. The
+// 93 halves of issue 5's sweep look at 1,100 at most (the blade's at 1000; most under 400),
+// so none of them changes.
+constexpr size_t kSearchPerVertex = 2000;
+
 // The valence moves that leave fewer vertices irregular (or as many, nearer regular) whose
 // flips neither fold the surface nor make an angle under `degrees`: every such flip, and for
-// every other flip the best sequence it starts, if any; best first. With `near`, only those
-// whose first edge has an end in it. The mesh is left as it was.
+// every other flip the best sequence it starts, if any, while the search has looked at no more
+// than `searchPerVertex` flips a vertex; best first. With `near`, only those whose first edge
+// has an end in it. The mesh is left as it was.
 std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double degrees,
-                                      const std::vector<bool>* near = nullptr);
+                                      const std::vector<bool>* near = nullptr,
+                                      size_t searchPerVertex = kSearchPerVertex);
 
 // Flips interior edges whose two opposite angles sum to more than 180 degrees (the 3D
 // Delaunay criterion) where the flip neither duplicates an edge nor folds the surface.

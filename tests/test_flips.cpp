@@ -4,8 +4,10 @@
 #include "topology.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
+#include <set>
 
 using namespace lloydscope;
 
@@ -112,4 +114,35 @@ TEST(Flips, TheSameFlipsAtAnyScale) {
     for (Vec3& p : turned.points) p *= 1e-1 * scale;
     EXPECT_GE(flipToRegularity(turned), 1) << scale;
   }
+}
+
+namespace {
+
+std::set<std::vector<std::pair<int, int>>> edgesOf(const std::vector<ValenceMove>& moves, bool singleFlipsOnly) {
+  std::set<std::vector<std::pair<int, int>>> edges;
+  for (const ValenceMove& move : moves)
+    if (!singleFlipsOnly || move.edges.size() == 1) edges.insert(move.edges);
+  return edges;
+}
+
+// The equilateral patch with four edges of a row flipped: two 5-7 pairs of valences inside,
+// which only a sequence of four flips makes regular again.
+Mesh patchWithARowFlipped() {
+  Mesh m = test::equilateralPatch();
+  for (auto [a, b] : {std::pair{9, 15}, {10, 16}, {11, 17}, {12, 18}}) test::flip(m, a, b);
+  return m;
+}
+
+}  // namespace
+
+// The search for sequences stops where it has looked at its budget of flips; the single flips
+// are all still there.
+TEST(Flips, ValenceMovesSearchSequencesWithinABudget) {
+  Mesh m = patchWithARowFlipped();
+  EdgeFlips flips(m, nullptr);
+  const auto unbounded = valenceMoves(flips, m, 0.0, nullptr, std::numeric_limits<size_t>::max());
+  EXPECT_GT(edgesOf(unbounded, false).size(), edgesOf(unbounded, true).size());  // sequences found
+  EXPECT_EQ(edgesOf(valenceMoves(flips, m, 0.0, nullptr, 0), false), edgesOf(unbounded, true));
+  // On a disk as Lloyd leaves it, the default budget is far from reached.
+  EXPECT_EQ(edgesOf(valenceMoves(flips, m, 0.0), false), edgesOf(unbounded, false));
 }
