@@ -3,6 +3,7 @@
 #include "metrics.h"
 #include "ring_moves.h"
 #include "projection.h"
+#include "topology.h"
 
 #include <Eigen/Sparse>
 
@@ -156,17 +157,9 @@ Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
 class InputBorder {
  public:
   explicit InputBorder(const Mesh& input) {
-    std::map<int, int> next;
-    for (const BorderEdge& e : borderEdgesOf(input)) next[e.from] = e.to;
-    while (!next.empty()) {
-      std::vector<Vec3> loop;
-      for (int v = next.begin()->first; next.count(v);) {
-        loop.push_back(input.points[v]);
-        const int w = next[v];
-        next.erase(v);
-        v = w;
-      }
-      loops_.push_back(std::move(loop));
+    for (const std::vector<int>& loop : analyzeTopology(input).boundaryLoops) {
+      std::vector<Vec3>& points = loops_.emplace_back();
+      for (int v : loop) points.push_back(input.points[v]);
     }
   }
 
