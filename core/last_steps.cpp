@@ -554,6 +554,7 @@ int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vec
   std::map<std::pair<int, int>, int> refusedAfter;  // (from, to)
   std::vector<int> changedBy(m.vertexCount(), 0);
   int collapsed = 0;
+  Rings rings(m);  // rebuilt after each collapse
   for (bool again = true; again;) {
     again = false;
     const auto [prev, next] = borderNeighbours(m);
@@ -564,7 +565,6 @@ int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vec
       if (length < kShortBorderEdge * spacing) shortEdges.push_back({length, {a, next[a]}});
     }
     std::sort(shortEdges.begin(), shortEdges.end());
-    const Rings rings(m);
     const auto changedSinceRefused = [&](int from, int to) {
       const auto refused = refusedAfter.find({from, to});
       if (refused == refusedAfter.end()) return true;
@@ -601,9 +601,10 @@ int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vec
         if (after <= before + 1e-6) continue;
         refusedAfter.erase(ends);
         m = std::move(tried);  // `from` stays, unused, until the end: the indices hold meanwhile
+        rings = Rings(m);
         ++collapsed;
         changedBy[from] = collapsed;
-        for (int v : withinRings(m, Rings(m), {to}, kChangeReach)) changedBy[v] = collapsed;
+        for (int v : withinRings(m, rings, {to}, kChangeReach)) changedBy[v] = collapsed;
         again = true;
         break;
       }
