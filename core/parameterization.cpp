@@ -306,10 +306,22 @@ bool borderIsSimple(const std::vector<Vec2>& uv, const std::vector<int>& boundar
   return polygon.is_simple();
 }
 
+// What to try where `method`'s map is not one-to-one. A map with a fixed convex border (Tutte,
+// mean value) is one-to-one in exact arithmetic: where it is not, rounding squeezed thin parts
+// of the surface to nothing (CGAL's dino: its tail and legs), and a coarser input has fewer
+// triangles there; Tutte's positive weights hold on longest. Any other map may fold: those two
+// are one-to-one.
+std::string adviceAfterFolds(ParamMethod method) {
+  const std::string coarser = "--simplify to fewer vertices (rounding squeezed thin parts of the surface to nothing)";
+  if (method == ParamMethod::Tutte) return "try " + coarser;
+  if (method == ParamMethod::MeanValue) return "try --param tutte or " + coarser;
+  return "try --param tutte or mean-value, whose maps are always one-to-one";
+}
+
 // Mirrors the map if it came out clockwise, then refuses any folds (findFolds) and a border
-// that crosses itself.
+// that crosses itself, saying what to try instead (adviceAfterFolds).
 void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool>& onBoundary,
-                     const std::vector<int>& boundaryLoop, const std::string& name) {
+                     const std::vector<int>& boundaryLoop, ParamMethod method, const std::string& name) {
   double total = 0;
   for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
   if (total < 0)
@@ -317,14 +329,12 @@ void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<
   const Folds folds = findFolds(mesh, uv, onBoundary);
   const size_t flipped = folds.flipped.size(), collapsed = folds.collapsed.size();
   if (folds.empty() && !borderIsSimple(uv, boundaryLoop))
-    throw Error(name + ": the parameterization is not one-to-one (its border crosses "
-                           "itself); try --param tutte or mean-value, whose maps are always "
-                           "one-to-one");
+    throw Error(name + ": the parameterization is not one-to-one (its border crosses itself); " +
+                adviceAfterFolds(method));
   if (!folds.empty())
     throw Error(name + ": the parameterization is not one-to-one (" + std::to_string(flipped) +
                 " flipped and " + std::to_string(collapsed) + " collapsed of " +
-                std::to_string(mesh.faceCount()) +
-                " triangles); try --param tutte or mean-value, whose maps are always one-to-one");
+                std::to_string(mesh.faceCount()) + " triangles); " + adviceAfterFolds(method));
 }
 
 double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a
@@ -467,7 +477,7 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   for (int v : result.boundaryLoop) result.onBoundary[v] = true;
   if (options.method == ParamMethod::Lscm || options.method == ParamMethod::Given)
     repairFolds(mesh, result.uv, result.onBoundary, result.boundaryLoop);
-  requireOneToOne(mesh, result.uv, result.onBoundary, result.boundaryLoop, name);
+  requireOneToOne(mesh, result.uv, result.onBoundary, result.boundaryLoop, options.method, name);
   // The border cycle runs around the hole; make it counter-clockwise around the domain.
   double signedArea = 0;
   const auto& loop = result.boundaryLoop;

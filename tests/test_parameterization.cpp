@@ -239,3 +239,38 @@ TEST(Parameterization, TheConformalMapIsCgalsLscm) {
   const Parameterization cgal = parameterize(patch, {ParamMethod::Lscm, Border::Circle}, "patch");
   EXPECT_LT(similarityResidual(ours, cgal.uv), 1e-9);
 }
+
+// A finger: a tube of 8 columns and `rings` rings, capped at the far end, its border the open
+// end. Maps with a fixed border shrink each ring's area about five times (uniform or mean-value
+// weights, whatever the geometry): the cap of a long one is squeezed to nothing by rounding.
+Mesh finger(int rings) {
+  constexpr int kColumns = 8;
+  Mesh m = test::wrappedGrid(kColumns, rings, true, false, [rings](double u, double v) {
+    return Vec3(std::cos(2 * M_PI * u), std::sin(2 * M_PI * u), v * rings);
+  });
+  const int tip = m.vertexCount();
+  m.points.emplace_back(0, 0, rings + 1.0);
+  for (int i = 0; i < kColumns; ++i)
+    m.triangles.push_back({rings * kColumns + i, rings * kColumns + (i + 1) % kColumns, tip});
+  return m;
+}
+
+// Where a map with a fixed border is not one-to-one, rounding did it: the error says to try a
+// coarser input, not the map that just failed.
+TEST(Parameterization, AFixedBorderMapSqueezedByRoundingSaysToSimplify) {
+  const Mesh m = finger(40);
+  ASSERT_NO_THROW(validateMesh(m, "finger.off"));
+  for (ParamMethod method : {ParamMethod::Tutte, ParamMethod::MeanValue, ParamMethod::Auto}) {
+    try {
+      parameterize(m, {method, Border::Circle, {}}, "finger.off");
+      FAIL() << "expected an error";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("collapsed"), std::string::npos) << what;
+      EXPECT_NE(what.find("--simplify to fewer vertices"), std::string::npos) << what;
+      // Auto ends with Tutte, as the advice after mean value would have it.
+      EXPECT_EQ(what.find("--param") == std::string::npos, method != ParamMethod::MeanValue) << what;
+    }
+  }
+  EXPECT_NO_THROW(parameterize(finger(5), {ParamMethod::Tutte, Border::Circle, {}}, "finger.off"));
+}
