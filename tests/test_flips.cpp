@@ -125,20 +125,14 @@ std::set<std::vector<std::pair<int, int>>> edgesOf(const std::vector<ValenceMove
   return edges;
 }
 
-// The equilateral patch with four edges of a row flipped: two 5-7 pairs of valences inside,
-// which only a sequence of four flips makes regular again.
-Mesh patchWithARowFlipped() {
-  Mesh m = test::equilateralPatch();
-  for (auto [a, b] : {std::pair{9, 15}, {10, 16}, {11, 17}, {12, 18}}) test::flip(m, a, b);
-  return m;
-}
-
 }  // namespace
 
 // The search for sequences stops where it has looked at its budget of flips; the single flips
 // are all still there.
 TEST(Flips, ValenceMovesSearchSequencesWithinABudget) {
-  Mesh m = patchWithARowFlipped();
+  // Four edges of a row flipped: two 5-7 pairs of valences inside, which only a sequence of
+  // four flips makes regular again.
+  Mesh m = test::patchWithFlips({{9, 15}, {10, 16}, {11, 17}, {12, 18}});
   EdgeFlips flips(m, nullptr);
   const auto unbounded = valenceMoves(flips, m, 0.0, nullptr, std::numeric_limits<size_t>::max());
   EXPECT_GT(edgesOf(unbounded, false).size(), edgesOf(unbounded, true).size());  // sequences found

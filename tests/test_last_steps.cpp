@@ -85,14 +85,6 @@ TEST(LastSteps, RelaxedValenceMovesFlipTwoEdgesWhereOneWouldNotDo) {
   EXPECT_GT(moved, 4);
 }
 
-// The patch with `edges` flipped, one after the other.
-Mesh patchWithFlips(std::initializer_list<std::pair<int, int>> edges) {
-  Mesh m = test::equilateralPatch();
-  for (auto [a, b] : edges) test::flip(m, a, b);
-  EXPECT_NO_THROW(validateMesh(m, "patch"));
-  return m;
-}
-
 // relaxedValenceMoves() on `m`, its own surface, makes every inside vertex regular, with no
 // angle under 30 degrees.
 void expectMovesMakeItRegular(Mesh m) {
@@ -110,7 +102,7 @@ void expectMovesMakeItRegular(Mesh m) {
 // regular. The four flipped back, one after the other, make the patch regular again: the
 // first three move a 5-7 pair along, the last cancels it.
 TEST(LastSteps, RelaxedValenceMovesFlipFourEdgesWhereFewerWouldNotDo) {
-  const Mesh surface = patchWithFlips({{9, 15}, {10, 16}, {11, 17}, {12, 18}});
+  const Mesh surface = test::patchWithFlips({{9, 15}, {10, 16}, {11, 17}, {12, 18}});
   Mesh m = jitteredInside(surface, 5, 0.05);
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   const QualityMetrics before = measureQuality(m);
@@ -129,7 +121,7 @@ TEST(LastSteps, RelaxedValenceMovesFlipFourEdgesWhereFewerWouldNotDo) {
 // leave; the search has to go on past such a sequence to the fourth flip, which takes 39 back
 // to 8, not end it there (and have it refused).
 TEST(LastSteps, RelaxedValenceMovesSearchPastSequencesThatPushAVertexTooFar) {
-  expectMovesMakeItRegular(patchWithFlips({{38, 37}, {32, 38}, {33, 40}, {24, 31}}));
+  expectMovesMakeItRegular(test::patchWithFlips({{38, 37}, {32, 38}, {33, 40}, {24, 31}}));
 }
 
 // The patch with three edges flipped, (35, 36), (37, 31) and (28, 29). The sequence that
@@ -137,7 +129,7 @@ TEST(LastSteps, RelaxedValenceMovesSearchPastSequencesThatPushAVertexTooFar) {
 // of the smallest angles around by 1.8 degrees and is refused; the next best from the same
 // first flip ends by flipping (29, 42) instead, and is kept: with it the patch is regular again.
 TEST(LastSteps, RelaxedValenceMovesTryTheNextSequenceWhereTheBestIsRefused) {
-  expectMovesMakeItRegular(patchWithFlips({{35, 36}, {37, 31}, {28, 29}}));
+  expectMovesMakeItRegular(test::patchWithFlips({{35, 36}, {37, 31}, {28, 29}}));
 }
 
 // The same patch folded along its two flipped edges (their ends raised): flipping them back

@@ -240,15 +240,18 @@ inline Mesh equilateralPatch() {
   return m;
 }
 
+// The equilateral patch with `edges` flipped, one after the other.
+inline Mesh patchWithFlips(std::initializer_list<std::pair<int, int>> edges) {
+  Mesh m = equilateralPatch();
+  for (auto [a, b] : edges) flip(m, a, b);
+  EXPECT_NO_THROW(validateMesh(m, "patch"));
+  return m;
+}
+
 // The patch with edges (8, 14) and (9, 15) flipped: inside, vertex 9 is left with valence 5
 // and 16 with 7; on the border 7 with 5 and 14 with 3. The one flip left that lowers the
 // valences' squared deviation from regular (by 2) makes one more vertex irregular; flipping
 // both back makes the patch regular again.
-inline Mesh patchWithTwoFlips() {
-  Mesh m = equilateralPatch();
-  flip(m, 8, 14);
-  flip(m, 9, 15);
-  return m;
-}
+inline Mesh patchWithTwoFlips() { return patchWithFlips({{8, 14}, {9, 15}}); }
 
 }  // namespace lloydscope::test
