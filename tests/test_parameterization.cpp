@@ -245,14 +245,10 @@ TEST(Parameterization, TheConformalMapIsCgalsLscm) {
 // weights, whatever the geometry): the cap of a long one is squeezed to nothing by rounding.
 Mesh finger(int rings) {
   constexpr int kColumns = 8;
-  Mesh m = test::wrappedGrid(kColumns, rings, true, false, [rings](double u, double v) {
-    return Vec3(std::cos(2 * M_PI * u), std::sin(2 * M_PI * u), v * rings);
+  return test::polarGrid(rings + 1, kColumns, true, Vec3(0, 0, rings + 1.0), [rings](int k, int i) {
+    const double a = 2 * M_PI * i / kColumns;
+    return Vec3(std::cos(a), std::sin(a), rings + 1.0 - k);
   });
-  const int tip = m.vertexCount();
-  m.points.emplace_back(0, 0, rings + 1.0);
-  for (int i = 0; i < kColumns; ++i)
-    m.triangles.push_back({rings * kColumns + i, rings * kColumns + (i + 1) % kColumns, tip});
-  return m;
 }
 
 // Where a map with a fixed border is not one-to-one, rounding did it: the error says to try a
