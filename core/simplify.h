@@ -25,7 +25,8 @@ struct SimplifyResult {
 // is met or no edge can go. The boundary curve stays in place: a vertex on it never leaves
 // it (border edges collapse to a point of the edge, an edge with one border end to that end),
 // and no edge joining two border vertices through the inside collapses (it would pinch the
-// surface). Throws Error naming `name` for a target that is not positive or not smaller.
+// surface). A mesh far from the origin is simplified about its own centre: the quadrics lose its
+// detail there. Throws Error naming `name` for a target that is not positive or not smaller.
 SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name);
 
 // Loop subdivision rounds until the mesh has at least `vertices` vertices.

@@ -1,4 +1,5 @@
 #include "mesh_io.h"
+#include "metrics.h"
 #include "simplify.h"
 #include "test_support.h"
 #include "topology.h"
@@ -70,4 +71,18 @@ TEST(Simplify, SubdivisionGrowsAMeshAndKeepsItsTopology) {
   EXPECT_NO_THROW(validateMesh(finer, "finer"));
   EXPECT_TRUE(analyzeTopology(finer).isDisk());
   EXPECT_EQ(subdivideTo(input, 10).triangles, input.triangles);
+}
+
+// A mesh far from the origin (in world coordinates, as scans are) is simplified as it would be
+// at the origin: Garland and Heckbert's planes n.p + d lose the mesh's detail where d is large.
+TEST(Simplify, AMeshFarFromTheOriginIsSimplifiedAsAtTheOrigin) {
+  const Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  const Vec3 far(1e5, -2e5, 3e5);  // the disk is 2 across
+  const Mesh near = simplify(input, {300}, "disk").mesh;
+  const Mesh moved = simplify(test::moved(input, 1.0, far), {300}, "disk").mesh;
+  ASSERT_EQ(moved.vertexCount(), near.vertexCount());
+  const QualityMetrics q = measureQuality(near), m = measureQuality(moved);
+  EXPECT_NEAR(m.minAngle, q.minAngle, 0.1);
+  EXPECT_NEAR(m.avgMinAngle, q.avgMinAngle, 0.1);
+  EXPECT_LT(measureFidelity(test::moved(moved, 1.0, -far), near).hausdorffPercent, 0.01);
 }
