@@ -1,5 +1,6 @@
 #include "bench.h"
 
+#include "files.h"
 #include "isotropic.h"
 #include "mesh_io.h"
 #include "pipeline.h"
@@ -125,8 +126,9 @@ void runBench(const BenchOptions& options) {
   if (models.empty())
     throw Error("bench: no models (give mesh files, or run ./build.sh to extract CGAL's samples)");
 
-  // Every model read (and validated) before any is run: a bad one fails in a moment, not
-  // after minutes of the others' work.
+  // Every model read (and validated), and the CSV's folder checked, before any is run: a bad
+  // one fails in a moment, not after minutes of the others' work.
+  requireWritable(options.csv);
   std::vector<Mesh> meshes;
   for (const std::string& path : models) {
     ReadResult read = readMesh(path, ReadOptions{options.repair});
@@ -198,12 +200,7 @@ void runBench(const BenchOptions& options) {
         << r.stages.simplify << "," << r.stages.resample << "," << r.stages.parameterize << "," << r.stages.density << ","
         << r.stages.sites << "," << r.stages.lloyd << "," << r.stages.remesh << ","
         << csvField(r.failed) << "\n";
-  const std::string temporary = options.csv + ".tmp";
-  std::ofstream(temporary) << csv.str();
-  if (std::rename(temporary.c_str(), options.csv.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw Error(options.csv + ": cannot write the CSV");
-  }
+  writeAtomically(options.csv, [&](std::ostream& out) { out << csv.str(); });
   std::cout << "\nCSV: " << options.csv << "\n";
 }
 
@@ -215,6 +212,8 @@ void runStepBench(const BenchOptions& options) {
                                ? std::string(LLOYDSCOPE_SOURCE_DIR) + "/assets/bumpy_disk.off"
                                : options.models.front();
   const Mesh input = readMesh(path).mesh;
+  const std::string file = options.csv + ".lsrec";  // what recording every iteration costs
+  requireWritable(file);
   Recording recording;
   std::cout << "| sites | density | threads | median ms per iteration | µs per site, median | "
                "µs per site, best |\n|---|---|---|---|---|---|\n";
@@ -244,7 +243,6 @@ void runStepBench(const BenchOptions& options) {
       if (density == DensityKind::Area && threads == 0) recording = session.finish().recording;
     }
   // What recording every iteration costs, in memory and in a file, and reading it back.
-  const std::string file = options.csv + ".lsrec";
   saveRecording(recording, file);
   std::ifstream in(file, std::ios::binary | std::ios::ate);
   const double fileBytes = static_cast<double>(in.tellg());

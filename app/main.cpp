@@ -1,5 +1,6 @@
 // lloydscope: the command line. Every command runs headless; errors are one line on stderr.
 #include "bench.h"
+#include "files.h"
 #include "gpu.h"
 #include "headless.h"
 #include "mesh_io.h"
@@ -76,6 +77,9 @@ Mesh load(const std::string& path, bool repair) {
 
 int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   const RemeshOptions options = remeshOptions(a, cmd);
+  // Where the files cannot be saved, say so now, not after minutes of work.
+  if (!a.output.empty()) requireMeshWritable(a.output);
+  if (!a.record.empty()) requireWritable(a.record);
   const Mesh input = load(a.input, a.repair);
   const RemeshResult result = remesh(input, options, a.input);
   if (!a.output.empty()) writeMesh(result.output, a.output);
@@ -321,6 +325,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (simplifyCmd->parsed()) {
+      requireMeshWritable(simplifyOut);
       const Mesh input = load(simplifyIn, simplifyRepair);
       const SimplifyResult s = simplify(input, simplifyTarget, simplifyIn);
       writeMesh(s.mesh, simplifyOut);
@@ -350,6 +355,7 @@ int main(int argc, char** argv) {
         return runWindow(ir.input, options, std::move(result), shot.validation, std::move(input),
                          shot.view);
       }
+      requireWritable(shot.picture.path);  // its folder (numbered pictures go there too)
       RemeshResult result = openForInspection(ir, *inspectCmd, options);
       renderScreenshot(ir.input, options, std::move(result), shot);
       return 0;

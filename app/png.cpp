@@ -1,11 +1,11 @@
 #include "png.h"
 
+#include "files.h"
 #include "mesh.h"
 
 #include <stb_image_write.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <vector>
 
 namespace lloydscope {
@@ -28,15 +28,14 @@ void writePng(const std::string& path, const unsigned char* pixels, int width, i
       to[3] = 255;  // the frame is opaque
     }
   }
-  const std::string temporary = path + ".tmp";
-  if (!stbi_write_png(temporary.c_str(), crop.width, crop.height, 4, rgba.data(), crop.width * 4)) {
-    std::remove(temporary.c_str());
-    throw Error(path + ": cannot write the PNG");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw Error(path + ": cannot write the PNG (rename failed)");
-  }
+  writeAtomically(path, [&](std::ostream& out) {
+    const auto append = [](void* stream, void* data, int size) {
+      static_cast<std::ostream*>(stream)->write(static_cast<const char*>(data), size);
+    };
+    // A failure leaves the stream failed: writeAtomically then leaves the file as it was.
+    if (!stbi_write_png_to_func(append, &out, crop.width, crop.height, 4, rgba.data(), crop.width * 4))
+      out.setstate(std::ios::failbit);
+  });
 }
 
 }  // namespace lloydscope

@@ -7,9 +7,9 @@
 // way the file does (from 0 for OFF and PLY, from 1 for OBJ), so that a user can find them.
 //
 // Every problem is an Error("<path>: <problem>") on a single line.
-
 #include "mesh_io.h"
 
+#include "files.h"
 #include "repair.h"
 
 #include <algorithm>
@@ -1085,30 +1085,27 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   return result;
 }
 
+namespace {
+void requireWritableExtension(const std::string& ext, const std::string& path) {
+  if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, "cannot write: " + unknownExtension(path));
+}
+}  // namespace
+
+void requireMeshWritable(const std::string& path) {
+  requireWritableExtension(lowercaseExtension(path), path);
+  requireWritable(path);
+}
+
 void writeMesh(const Mesh& mesh, const std::string& path) {
   const std::string ext = lowercaseExtension(path);
-  if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, "cannot write: " + unknownExtension(path));
-
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) fail(path, "cannot write " + temporary + " (" + std::strerror(errno) + ")");
+  requireWritableExtension(ext, path);
+  writeAtomically(path, [&](std::ostream& out) {
     out.imbue(std::locale::classic());  // a decimal point, whatever the global locale says
     out << std::setprecision(17);       // enough digits to read back the same doubles
     if (ext == ".off") writeOff(out, mesh);
     else if (ext == ".obj") writeObj(out, mesh);
     else writePly(out, mesh);
-    out.close();
-    if (!out) {
-      std::remove(temporary.c_str());
-      fail(path, "cannot write " + temporary + " (disk full?)");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    fail(path, "cannot write: renaming " + temporary + " onto it failed (" + reason + ")");
-  }
+  });
 }
 
 }  // namespace lloydscope

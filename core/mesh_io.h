@@ -34,5 +34,8 @@ void validateMesh(const Mesh& mesh, const std::string& name);
 
 // Writes by extension. The file appears complete or not at all (temporary file, then rename).
 void writeMesh(const Mesh& mesh, const std::string& path);
+// Throws the Error writeMesh would for `path` (an extension it does not write, a folder it
+// cannot write in: requireWritable), before a run that may take minutes.
+void requireMeshWritable(const std::string& path);
 
 }  // namespace lloydscope

@@ -1,5 +1,7 @@
 #include "recording.h"
 
+#include "files.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -200,20 +202,9 @@ void saveRecording(const Recording& recording, const std::string& path) {
   file.bytes() += payload;
   file.put<std::uint64_t>(fnv1a(payload.data(), payload.size()));
 
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  writeAtomically(path, [&](std::ostream& out) {
     out.write(file.bytes().data(), static_cast<std::streamsize>(file.bytes().size()));
-    out.close();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw Error(path + ": cannot write the recording");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw Error(path + ": cannot write the recording (rename failed)");
-  }
+  });
 }
 
 Recording loadRecording(const std::string& path) {

@@ -342,3 +342,20 @@ TEST(Cli, BenchReadsEveryModelBeforeRunningAny) {
   EXPECT_NE(r.err.find("same position on a border"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("done"), std::string::npos) << r.err;  // no model was run
 }
+
+// A file that cannot be saved (a missing folder, an extension no writer knows) is named before
+// the run: nothing else is written, and no minutes are spent first.
+TEST(Cli, AFileThatCannotBeSavedFailsBeforeTheRun) {
+  const std::string out = test::tempPath("before.off");
+  const std::string missing = test::tempPath("no_such_folder") + "/run.lsrec";
+  CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") + " -o " + out + " --record " + missing);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + missing + ": cannot write " + missing + ".tmp (No such file or directory)\n");
+  EXPECT_FALSE(std::ifstream(out).good()) << "the mesh was written before the recording failed";
+  EXPECT_EQ(r.out, "");
+
+  r = runCli("remesh " + test::assetPath("jittered_grid.off") + " -o " + test::tempPath("out.stl"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("unknown extension '.stl'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+}

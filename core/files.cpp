@@ -1,0 +1,57 @@
+#include "files.h"
+
+#include "mesh.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace lloydscope {
+
+namespace {
+
+std::string temporaryOf(const std::string& path) { return path + ".tmp"; }
+
+[[noreturn]] void cannotMake(const std::string& path, const std::string& temporary) {
+  throw Error(path + ": cannot write " + temporary + " (" + std::strerror(errno) + ")");
+}
+
+void requireNotAFolder(const std::string& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw Error(path + ": cannot write: it is a folder");
+}
+
+}  // namespace
+
+void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  requireNotAFolder(path);
+  const std::string temporary = temporaryOf(path);
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) cannotMake(path, temporary);
+    write(out);
+    out.close();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw Error(path + ": cannot write " + temporary + " (disk full?)");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw Error(path + ": cannot write: renaming " + temporary + " onto it failed (" + reason + ")");
+  }
+}
+
+void requireWritable(const std::string& path) {
+  requireNotAFolder(path);
+  const std::string temporary = temporaryOf(path);
+  std::error_code ignored;
+  const bool there = std::filesystem::exists(temporary, ignored);  // a user's own file: left as it is
+  if (!std::ofstream(temporary, std::ios::binary | std::ios::app)) cannotMake(path, temporary);
+  if (!there) std::remove(temporary.c_str());
+}
+
+}  // namespace lloydscope

@@ -1,0 +1,60 @@
+#include "files.h"
+#include "mesh.h"
+#include "test_support.h"
+
+#include <filesystem>
+
+using namespace lloydscope;
+
+namespace {
+bool exists(const std::string& path) { return std::filesystem::exists(path); }
+
+// The Error's text, or "" where `f` threw none.
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(Files, RequireWritableSaysWhyBeforehandAndLeavesNothingBehind) {
+  const std::string fine = test::tempPath("fine.off");
+  EXPECT_EQ(errorOf([&] { requireWritable(fine); }), "");
+  EXPECT_FALSE(exists(fine));
+  EXPECT_FALSE(exists(fine + ".tmp"));
+
+  const std::string missing = test::tempPath("no_such_folder") + "/x.off";
+  const std::string why = errorOf([&] { requireWritable(missing); });
+  EXPECT_EQ(why.rfind(missing + ": cannot write", 0), 0u) << why;
+  EXPECT_NE(why.find("No such file or directory"), std::string::npos) << why;
+
+  const std::string folder = test::tempPath("a_folder.off");
+  std::filesystem::create_directory(folder);
+  EXPECT_EQ(errorOf([&] { requireWritable(folder); }), folder + ": cannot write: it is a folder");
+  EXPECT_EQ(errorOf([&] { writeAtomically(folder, [](std::ostream& out) { out << "x"; }); }),
+            folder + ": cannot write: it is a folder");
+  std::filesystem::remove(folder);
+}
+
+TEST(Files, WriteAtomicallyReplacesAFileWholeOrNotAtAll) {
+  const std::string path = test::tempPath("whole.txt");
+  writeAtomically(path, [](std::ostream& out) { out << "first"; });
+  EXPECT_EQ(test::readText(path), "first");
+  writeAtomically(path, [](std::ostream& out) { out << "second"; });
+  EXPECT_EQ(test::readText(path), "second");
+  // A writer that fails half-way: the file keeps what it had, and no temporary stays.
+  const std::string why = errorOf([&] {
+    writeAtomically(path, [](std::ostream& out) {
+      out << "thi";
+      out.setstate(std::ios::failbit);
+    });
+  });
+  EXPECT_EQ(why.rfind(path + ": cannot write", 0), 0u) << why;
+  EXPECT_EQ(test::readText(path), "second");
+  EXPECT_FALSE(exists(path + ".tmp"));
+  std::filesystem::remove(path);
+}
