@@ -14,6 +14,8 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <iostream>
 
@@ -100,6 +102,20 @@ void addRepairFlag(CLI::App& cmd, bool& repair) {
                "input is refused)");
 }
 
+// A number from `low` to `high`, not "nan" or "inf" (CLI11's PositiveNumber and Range let NaN
+// through: every comparison with it is false).
+CLI::Validator finiteNumber(double low, const std::string& expected,
+                            double high = std::numeric_limits<double>::max()) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double value = 0;
+        if (CLI::detail::lexical_cast(text, value) && std::isfinite(value) && value >= low && value <= high) return "";
+        return "expected " + expected + ", not '" + text + "'";
+      },
+      "NUMBER");
+}
+const CLI::Range kPositiveCount(1, std::numeric_limits<int>::max());
+
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--polish", r.polish,
                  "retriangulate's clean-up in 3D: -1 none, 0 Delaunay flips, K flips and K "
@@ -119,21 +135,22 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                  "mean-value, tutte or lscm");
   cmd.add_option("--border", r.border, "square or circle (default), for the fixed-border methods");
   cmd.add_option("--density", r.density, "uniform, area (default) or curvature");
-  cmd.add_option("--alpha", r.alpha, "curvature density: weight of |K|");
-  cmd.add_option("--beta", r.beta, "curvature density: weight of H^2");
-  cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)");
-  cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(CLI::PositiveNumber);
+  cmd.add_option("--alpha", r.alpha, "curvature density: weight of |K|")->check(finiteNumber(0, "a number >= 0"));
+  cmd.add_option("--beta", r.beta, "curvature density: weight of H^2")->check(finiteNumber(0, "a number >= 0"));
+  cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)")
+      ->check(finiteNumber(0, "a number >= 0"));
+  cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(kPositiveCount);
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
   cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveCount);
   cmd.add_option("--distance-threshold", r.distanceThreshold,
                  "a site closer than this to its centroid (fraction of the domain size) is still")
-      ->check(CLI::PositiveNumber);
+      ->check(finiteNumber(std::numeric_limits<double>::min(), "a number > 0"));
   cmd.add_option("--percent-threshold", r.percentThreshold,
                  "converged when fewer than this % of the sites are not still")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(finiteNumber(0, "a percentage from 0 to 100", 100));
   cmd.add_flag("--no-resample", r.noResample,
                "Parameterize the input itself, not a rough first remeshing of it");
   cmd.add_flag("--no-snap", r.noSnap,
@@ -411,6 +428,9 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const gpu::GpuError& e) {
     std::cerr << "lloydscope: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "lloydscope: out of memory: ask for fewer vertices (--sites), or simplify the input first\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "lloydscope: internal error: " << e.what() << "\n";

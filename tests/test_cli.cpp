@@ -359,3 +359,27 @@ TEST(Cli, AFileThatCannotBeSavedFailsBeforeTheRun) {
   EXPECT_NE(r.err.find("unknown extension '.stl'"), std::string::npos) << r.err;
   EXPECT_EQ(r.out, "");
 }
+
+// Numbers are checked as they are read: NaN, infinities and values out of range are refused
+// with the option's name (CLI11's own checks let NaN through), before the mesh is read.
+TEST(Cli, NumbersOutOfRangeOrNotFiniteAreRefused) {
+  for (const std::string option : {"--distance-threshold nan", "--distance-threshold 0", "--percent-threshold inf",
+                                   "--percent-threshold 101", "--alpha -1", "--beta nan", "--floor -0.5",
+                                   "--max-iterations 0", "--sites 0"}) {
+    const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") + " " + option);
+    EXPECT_NE(r.code, 0) << option;
+    EXPECT_EQ(r.out, "") << option;
+    EXPECT_EQ(r.err.rfind(option.substr(0, option.find(' ')) + ": ", 0), 0u) << option << ": " << r.err;
+  }
+}
+
+// A run that needs more memory than the process may have ends with one line saying so, not an
+// internal error.
+TEST(Cli, RunningOutOfMemoryIsAOneLineError) {
+  const std::string args = "remesh " + test::assetPath("jittered_grid.off") + " --sites 100000000 -o " +
+                           test::tempPath("huge.off");
+  const std::string err = test::tempPath("oom.err");
+  const int status = std::system(("ulimit -v 800000; " + std::string(LLOYDSCOPE_CLI) + " " + args + " >/dev/null 2>" + err).c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+  EXPECT_EQ(test::readText(err), "lloydscope: out of memory: ask for fewer vertices (--sites), or simplify the input first\n");
+}
