@@ -235,7 +235,8 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots");
   inspectCmd->add_option("--iterations", iterations,
                          "With --screenshot: FIRST:LAST, one numbered PNG per iteration");
-  inspectCmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)");
+  inspectCmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")
+      ->check(CLI::Range(0, std::numeric_limits<int>::max()));
   inspectCmd->add_flag("--final", shot.view.final,
                        "The 3D pane shows the final result (what remesh writes), with a red ring "
                        "where it is farthest from the input");
@@ -265,7 +266,7 @@ int main(int argc, char** argv) {
   RemeshArgs br;
   int frames = 100;
   benchCmd->add_option("input", br.input, "Mesh")->required();
-  benchCmd->add_option("--frames", frames, "Frames to time");
+  benchCmd->add_option("--frames", frames, "Frames to time")->check(kPositiveCount);
   benchCmd->add_option("--size", size, "Frame size WxH (default 1280x800)");
   addRemeshOptions(*benchCmd, br);
 
@@ -277,7 +278,8 @@ int main(int argc, char** argv) {
       "bench", "Lloydscope against CGAL's isotropic_remeshing on prepared inputs (markdown, CSV)");
   peerBenchCmd->add_option("models", benchOptions.models,
                            "Meshes (default: CGAL's disk samples in data/cgal)");
-  peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)");
+  peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)")
+      ->check(kPositiveCount);
   peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)");
   peerBenchCmd->add_option("--save-inputs", benchOptions.saveInputs,
                            "Also write each prepared input to DIR/<model>_<size>.off");
@@ -287,7 +289,8 @@ int main(int argc, char** argv) {
                          "(--sites), with the defaults and --full-input, beside CGAL's remesher on it");
   addRepairFlag(*peerBenchCmd, benchOptions.repair);
   peerBenchCmd->add_option("--lloyd-step", benchOptions.stepSites,
-                           "Instead: time one Lloyd iteration at N sites (one core and all)");
+                           "Instead: time one Lloyd iteration at N sites (one core and all)")
+      ->check(kPositiveCount);
 
   std::string simplifyIn, simplifyOut;
   SimplifyOptions simplifyTarget;
@@ -296,9 +299,10 @@ int main(int argc, char** argv) {
   simplifyCmd->add_option("input", simplifyIn, "Mesh (OFF, OBJ, PLY)")->required();
   simplifyCmd->add_option("-o,--output", simplifyOut, "Where to write the result")->required();
   auto* target = simplifyCmd->add_option_group("target", "one of");
-  target->add_option("--vertices", simplifyTarget.vertices, "Target number of vertices");
-  target->add_option("--faces", simplifyTarget.faces, "Target number of faces");
-  target->add_option("--ratio", simplifyTarget.ratio, "Target fraction of the vertices, in (0, 1]");
+  target->add_option("--vertices", simplifyTarget.vertices, "Target number of vertices")->check(kPositiveCount);
+  target->add_option("--faces", simplifyTarget.faces, "Target number of faces")->check(kPositiveCount);
+  target->add_option("--ratio", simplifyTarget.ratio, "Target fraction of the vertices, in (0, 1]")
+      ->check(finiteNumber(std::numeric_limits<double>::min(), "a fraction in (0, 1]", 1));
   target->require_option(1);
   bool simplifyRepair = false;
   addRepairFlag(*simplifyCmd, simplifyRepair);

@@ -362,14 +362,26 @@ TEST(Cli, AFileThatCannotBeSavedFailsBeforeTheRun) {
 
 // Numbers are checked as they are read: NaN, infinities and values out of range are refused
 // with the option's name (CLI11's own checks let NaN through), before the mesh is read.
+// (bench-frames --frames 0 crashed; bench --lloyd-step -3 ran the whole bench instead.)
 TEST(Cli, NumbersOutOfRangeOrNotFiniteAreRefused) {
+  const std::string mesh = test::assetPath("jittered_grid.off"), out = test::tempPath("never");
   for (const std::string option : {"--distance-threshold nan", "--distance-threshold 0", "--percent-threshold inf",
                                    "--percent-threshold 101", "--alpha -1", "--beta nan", "--floor -0.5",
                                    "--max-iterations 0", "--sites 0"}) {
-    const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") + " " + option);
+    const CliRun r = runCli("remesh " + mesh + " " + option);
     EXPECT_NE(r.code, 0) << option;
     EXPECT_EQ(r.out, "") << option;
     EXPECT_EQ(r.err.rfind(option.substr(0, option.find(' ')) + ": ", 0), 0u) << option << ": " << r.err;
+  }
+  for (const std::string& command : std::vector<std::string>{
+           "bench-frames " + mesh + " --frames 0", "bench --lloyd-step -3", "bench --sizes 0",
+        "simplify " + mesh + " -o " + out + ".off --ratio nan",
+        "inspect " + mesh + " --screenshot " + out + ".png --iteration -5"}) {
+    const CliRun r = runCli(command);
+    EXPECT_NE(r.code, 0) << command;
+    EXPECT_EQ(r.out, "") << command;
+    const std::string option = command.substr(command.rfind("--"), command.rfind(' ') - command.rfind("--"));
+    EXPECT_EQ(r.err.rfind(option + ": ", 0), 0u) << command << ": " << r.err;
   }
 }
 
