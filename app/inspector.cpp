@@ -1189,13 +1189,6 @@ int plot(const char* title, const std::vector<double>& values, ImU32 colour,
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(title, size);
   const bool active = ImGui::IsItemActive();
-  const float font = ImGui::GetFontSize();  // 13 px, or larger when presenting
-  const float left = 4.5f * font, right = 8, top = font + 5, bottom = font + 9;
-  const ImVec2 a(p0.x + left, p0.y + top), b(p0.x + size.x - right, p0.y + size.y - bottom);
-  dl->AddRectFilled(p0, ImVec2(p0.x + size.x, p0.y + size.y), rgb(1, 1, 1));
-  dl->AddRect(a, b, rgb(0.5f, 0.5f, 0.5f));
-  dl->AddText(ImVec2(p0.x + left, p0.y + 1), rgb(0.1f, 0.1f, 0.1f), title);
-  if (values.empty()) return -1;
   auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };
   double lo = INFINITY, hi = -INFINITY;
   size_t longest = values.size();
@@ -1218,17 +1211,28 @@ int plot(const char* title, const std::vector<double>& values, ImU32 colour,
     lo = std::floor(lo);
     hi = std::ceil(hi);
   }
+  // Y ticks: every power of ten on a log axis, five steps on a linear one; the plot starts
+  // right of the widest label.
+  const int ticks = logScale ? static_cast<int>(hi - lo) : 4;
+  std::vector<std::string> labels = tickLabels(lo, hi, ticks);
+  if (logScale)
+    for (int i = 0; i <= ticks; ++i) labels[i] = "1e" + std::to_string(static_cast<int>(std::lround(lo + i)));
+  float widest = 0;
+  for (const std::string& label : labels) widest = std::max(widest, ImGui::CalcTextSize(label.c_str()).x);
+  const float font = ImGui::GetFontSize();  // 13 px, or larger when presenting
+  const float left = std::max(4.5f * font, widest + 8), right = 8, top = font + 5, bottom = font + 9;
+  const ImVec2 a(p0.x + left, p0.y + top), b(p0.x + size.x - right, p0.y + size.y - bottom);
+  dl->AddRectFilled(p0, ImVec2(p0.x + size.x, p0.y + size.y), rgb(1, 1, 1));
+  dl->AddRect(a, b, rgb(0.5f, 0.5f, 0.5f));
+  dl->AddText(ImVec2(p0.x + left, p0.y + 1), rgb(0.1f, 0.1f, 0.1f), title);
+  if (values.empty()) return -1;
   const int n = static_cast<int>(longest);
   auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
   auto y = [&](double v) { return b.y - static_cast<float>((transform(v) - lo) / (hi - lo)) * (b.y - a.y); };
-  // Y ticks: every power of ten on a log axis, five steps on a linear one.
-  const int ticks = logScale ? static_cast<int>(hi - lo) : 4;
   for (int i = 0; i <= ticks; ++i) {
-    const double t = lo + (hi - lo) * i / std::max(ticks, 1);
-    const float ty = b.y - static_cast<float>((t - lo) / (hi - lo)) * (b.y - a.y);
+    const float ty = b.y - static_cast<float>(i) / std::max(ticks, 1) * (b.y - a.y);
     dl->AddLine(ImVec2(a.x - 4, ty), ImVec2(b.x, ty), rgb(0.9f, 0.9f, 0.9f));
-    const std::string label = logScale ? "1e" + std::to_string(static_cast<int>(std::lround(t))) : format("%.3g", t);
-    dl->AddText(ImVec2(p0.x + 2, ty - 7), rgb(0.3f, 0.3f, 0.3f), label.c_str());
+    dl->AddText(ImVec2(p0.x + 2, ty - 7), rgb(0.3f, 0.3f, 0.3f), labels[i].c_str());
   }
   // X ticks: iterations.
   // At most about five labels: steps of 1, 2 or 5 times a power of ten.

@@ -1,5 +1,6 @@
 #include "report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -9,6 +10,18 @@ std::string format(const char* pattern, double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, pattern, value);
   return buffer;
+}
+
+std::vector<std::string> tickLabels(double lo, double hi, int steps) {
+  constexpr int kFewest = 3, kMost = 12;
+  std::vector<std::string> labels;
+  for (int digits = kFewest; digits <= kMost; ++digits) {
+    labels.clear();
+    for (int i = 0; i <= steps; ++i)
+      labels.push_back(format(("%." + std::to_string(digits) + "g").c_str(), lo + (hi - lo) * i / std::max(steps, 1)));
+    if (std::adjacent_find(labels.begin(), labels.end()) == labels.end()) break;
+  }
+  return labels;
 }
 
 namespace {

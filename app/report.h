@@ -6,11 +6,17 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace lloydscope {
 
 // One number in a printf pattern ("%.1f").
 std::string format(const char* pattern, double value);
+
+// Labels of `steps` + 1 evenly spaced ticks from `lo` to `hi` on a plot's axis, each with as
+// few significant digits (three at least) as keep every label apart from its neighbours: the
+// CVT energy of a converging run spans 2% or less, where three digits repeat.
+std::vector<std::string> tickLabels(double lo, double hi, int steps);
 
 nlohmann::json toJson(const QualityMetrics& m);
 nlohmann::json toJson(const Fidelity& f);

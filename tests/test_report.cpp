@@ -127,3 +127,12 @@ TEST(Report, TheTimeLineCountsTheRuns) {
   EXPECT_NE(report.find(" (4 runs)\n"), std::string::npos) << report;
   EXPECT_EQ(toJson(r, RemeshOptions{})["runs"], 4);
 }
+
+// A converging run's CVT energy spans a percent or two: three digits gave the convergence pane
+// the label 1.16e-05 three times on CGAL's eight. Labels take the digits that tell them apart.
+TEST(Report, TickLabelsTakeTheDigitsThatTellThemApart) {
+  EXPECT_EQ(tickLabels(1.147e-5, 1.169e-5, 4),
+            (std::vector<std::string>{"1.147e-05", "1.153e-05", "1.158e-05", "1.163e-05", "1.169e-05"}));
+  EXPECT_EQ(tickLabels(0, 100, 4), (std::vector<std::string>{"0", "25", "50", "75", "100"}));
+  EXPECT_EQ(tickLabels(5, 5, 0), (std::vector<std::string>{"5"}));
+}
