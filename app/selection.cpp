@@ -92,11 +92,17 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
   auto row = [](const char* label, const char* pattern, auto... values) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(label);
+    ImGui::TextWrapped("%s", label);
     ImGui::TableNextColumn();
     ImGui::Text(pattern, values...);
   };
-  const ImGuiTableFlags table = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  // The values keep the width of three coordinates and the labels wrap in what is left: in a
+  // window 1280 pixels wide the values of "s, 3D" and "int x rho" were cut short.
+  const ImGuiTableFlags table = ImGuiTableFlags_RowBg;
+  auto columns = [] {
+    ImGui::TableSetupColumn("label", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("-0.000 -0.000 -0.000").x);
+  };
   for (int cell : cells_) {
     const CellDetails d = describeCell(recording, domain, view, cell);
     if (d.index < 0) continue;
@@ -106,6 +112,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     ImGui::SameLine();
     if (ImGui::SmallButton("unpin")) unpinCell = cell;
     if (ImGui::BeginTable("cell", 2, table)) {
+      columns();
       row("site s", "%.5f %.5f", d.site.x(), d.site.y());
       row("centroid c", "%.5f %.5f", d.centroid.x(), d.centroid.y());
       row("s, 3D", "%.3f %.3f %.3f", d.site3D.x(), d.site3D.y(), d.site3D.z());
@@ -117,13 +124,14 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
       row("sum (y_i+y_i+1)c_i", "%.4e", d.shoelaceSums.y());
       row("M = int rho", "%.4e", d.mass);
       row("int x rho", "%.3e %.3e", d.moment.x(), d.moment.y());
-      row("c = int x rho / M", "%s", "");
-      row("E = int rho|x-s|^2", "%.3e", d.energy);
+      const Vec2 quotient = d.mass > 0 ? Vec2(d.moment / d.mass) : d.site;  // = centroid c, worked out
+      row("c = int x rho/M", "%.5f %.5f", quotient.x(), quotient.y());
+      row("E=int rho|x-s|^2", "%.3e", d.energy);
       row("|c - s|", "%.3e", d.toCentroid);
       row("moved since k-1", "%.3e", d.moved);
       row("neighbours", "%d", d.neighbours);
-      row("valence in result", "%d", d.valence);
-      row("triangles crossed", "%d", d.pieces);
+      row("valence, result", "%d", d.valence);
+      row("param. triangles", "%d", d.pieces);
       ImGui::EndTable();
     }
     ImGui::PopID();
@@ -136,6 +144,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     ImGui::SameLine();
     if (ImGui::SmallButton("unpin")) unpinTriangle = triangle;
     if (ImGui::BeginTable("triangle", 2, table)) {
+      columns();
       row("angles, 3D", "%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]);
       row("angles, UV", "%.1f %.1f %.1f", d.anglesUV[0], d.anglesUV[1], d.anglesUV[2]);
       row("minimum angle", "%.1f", d.minAngle);
