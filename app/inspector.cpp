@@ -704,32 +704,46 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     ImGui::TextDisabled("(relocate needs one site per input vertex)");
 
   ImGui::Separator();
-  ImGui::TextWrapped("Input and the current iteration's result (the report's Table II)");
+  // The final result (what remesh writes: the iteration's mesh after the clean-up on the
+  // surface, stitched or put together from its charts) where the run finished and measured it.
+  const QualityMetrics& finalResult = result_.after;
+  const bool showFinal = finalResult.vertices > 0;
+  ImGui::TextWrapped(showFinal ? "Input, the current iteration's result and the final one, after the clean-up "
+                                 "(the report's Table II)"
+                               : "Input and the current iteration's result (the report's Table II)");
   const QualityMetrics& current = currentQuality();
-  if (ImGui::BeginTable("metrics", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+  const std::string iterationHeader = "It. " + std::to_string(iteration_);
+  if (ImGui::BeginTable("metrics", showFinal ? 4 : 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    // Each number column as wide as its header or a five-digit count, whichever is wider.
+    auto numbers = [](const char* header) {
+      const float width = std::max(ImGui::CalcTextSize(header).x, ImGui::CalcTextSize("00000").x);
+      ImGui::TableSetupColumn(header, ImGuiTableColumnFlags_WidthFixed, width);
+    };
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("Input", ImGuiTableColumnFlags_WidthFixed, 52.0f);
-    ImGui::TableSetupColumn(("It. " + std::to_string(iteration_)).c_str(),
-                            ImGuiTableColumnFlags_WidthFixed, 52.0f);
+    numbers("Input");
+    numbers(iterationHeader.c_str());
+    if (showFinal) numbers("Final");
     ImGui::TableHeadersRow();
-    auto row = [](const char* label, const std::string& a, const std::string& b) {
+    const QualityMetrics* columns[] = {&result_.before, &current, &finalResult};
+    auto row = [&](const char* label, const auto& value) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(label);
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(a.c_str());
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(b.c_str());
+      for (int k = 0; k < (showFinal ? 3 : 2); ++k) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(value(*columns[k]).c_str());
+      }
     };
-    const QualityMetrics& in = result_.before;
-    row("Vertices", std::to_string(in.vertices), std::to_string(current.vertices));
-    row("Faces", std::to_string(in.faces), std::to_string(current.faces));
-    row("Irregular %", format("%.1f", in.irregularPercent), format("%.1f", current.irregularPercent));
-    row("  border-aware %", format("%.1f", in.irregularBoundaryAware),
-        format("%.1f", current.irregularBoundaryAware));
-    row("Min angle", format("%.1f", in.minAngle), format("%.1f", current.minAngle));
-    row("Avg min angle", format("%.1f", in.avgMinAngle), format("%.1f", current.avgMinAngle));
-    row("Under 30 deg %", format("%.1f", in.percentUnder30), format("%.1f", current.percentUnder30));
+    auto oneDecimal = [](double QualityMetrics::*m) {
+      return [m](const QualityMetrics& q) { return format("%.1f", q.*m); };
+    };
+    row("Vertices", [](const QualityMetrics& q) { return std::to_string(q.vertices); });
+    row("Faces", [](const QualityMetrics& q) { return std::to_string(q.faces); });
+    row("Irregular %", oneDecimal(&QualityMetrics::irregularPercent));
+    row(" border-aware", oneDecimal(&QualityMetrics::irregularBoundaryAware));
+    row("Min angle", oneDecimal(&QualityMetrics::minAngle));
+    row("Avg min angle", oneDecimal(&QualityMetrics::avgMinAngle));
+    row("Under 30 deg %", oneDecimal(&QualityMetrics::percentUnder30));
     ImGui::EndTable();
   }
   if (session_)
