@@ -144,7 +144,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
   if (!result_.resampleDropped.empty())
-    message_ = withoutResamplingText(result_.resampleDropped);
+    runNotes_ = withoutResamplingText(result_.resampleDropped);
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
   noteFirst(slitTrialText(result_));
@@ -154,16 +154,16 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
-    message_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
-               "largest chart (on its own); the input column and \"show the final result\" are "
-               "the whole surface. " + message_;
+    runNotes_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
+                "largest chart (on its own); the input and final columns and \"show the final result\" "
+                "are the whole surface. " + runNotes_;
   }
   if (result_.components > 1) {
     if (input_) input_ = largestComponent(*input_);  // what the panes show, and Restart steps
-    message_ = meshName_ + " has " + std::to_string(result_.components) +
-               " connected components, each remeshed on its own: the panes, the iteration "
-               "column and Restart follow the largest; the input column and \"show the final "
-               "result\" are all of them. " + message_;
+    runNotes_ = meshName_ + " has " + std::to_string(result_.components) +
+                " connected components, each remeshed on its own: the panes, the iteration "
+                "column and Restart follow the largest; the input and final columns and \"show "
+                "the final result\" are all of them. " + runNotes_;
   }
   std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
@@ -176,7 +176,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
 Inspector::~Inspector() { stopRun(); }
 
 void Inspector::noteFirst(const std::string& text) {
-  if (!text.empty()) message_ = text + (message_.empty() ? "" : ". " + message_);
+  if (!text.empty()) runNotes_ = text + (runNotes_.empty() ? "" : ". " + runNotes_);
 }
 
 namespace {
@@ -221,15 +221,15 @@ void Inspector::openReplay(Recording recording) {
 
 void Inspector::startSession() {
   stopRun();
+  forgetResult();
   try {
     try {
       session_ = std::make_unique<RemeshSession>(*input_, options_, meshName_);
-      message_.clear();
     } catch (const Error& e) {
       if (!usesResampling(options_)) throw;
       // As remesh() does: without the first pass where it makes the run fail.
       session_ = std::make_unique<RemeshSession>(*input_, withoutResampling(options_), meshName_);
-      message_ = withoutResamplingText(problemOf(e, meshName_));
+      runNotes_ = withoutResamplingText(problemOf(e, meshName_));
     }
     // The 2D pane shows the simplified input's map.
     noteFirst(coarseInputText(session_->coarseInput(), input_->vertexCount()));
@@ -239,8 +239,17 @@ void Inspector::startSession() {
     openReplay(std::move(header));
   } catch (const Error& e) {
     session_.reset();
-    message_ = e.what();
+    runNotes_ = e.what();
   }
+}
+
+// A new run or recording: nothing of the last run's result (its final column, distances,
+// notes) stays on show; the input's own numbers do.
+void Inspector::forgetResult() {
+  const QualityMetrics before = result_.before;
+  result_ = RemeshResult{};
+  result_.before = before;
+  runNotes_.clear();
 }
 
 void Inspector::startRun() {
@@ -281,10 +290,8 @@ void Inspector::finishSession() {
     result_ = session_->finish();
     result_.recording = Recording{};  // the replay holds its iterations already
   } catch (const Error& e) {  // the seams did not stitch: the iterations stay to look at
-    const QualityMetrics before = result_.before;
-    result_ = RemeshResult{};  // nothing of an earlier run's result is shown for this one
-    result_.before = before;
-    message_ = std::string(e.what()) +
+    forgetResult();
+    runNotes_ = std::string(e.what()) +
                (usesResampling(options_) ? " (inspect --no-resample makes it without the first resampling, as remesh does by itself)" : "");
   }
   session_.reset();
@@ -753,6 +760,13 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
                 replay_->recording().converged() ? "converged" : "not converged");
   ImGui::TextWrapped("%s", distanceText(result_.fidelity).c_str());
   if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
+  // How this result was made (trials, a simplified input) or why its run failed: beside the
+  // numbers it explains, not under the controls.
+  if (!runNotes_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.45f, 0.2f, 0.0f, 1.0f));
+    ImGui::TextWrapped("%s", runNotes_.c_str());
+    ImGui::PopStyleColor();
+  }
   const std::vector<CvtSolver> others = otherSolvers(options_.lloyd.solver);
   const std::string compare =
       std::string("Compare with ") + toString(others[0]) + " and " + toString(others[1]);
@@ -949,6 +963,7 @@ void Inspector::fileControls() {
       session_.reset();
       input_.reset();
       result_.before = measureQuality(r.input);
+      forgetResult();
       openReplay(std::move(r));
       message_.clear();
     } catch (const Error& e) {

@@ -142,8 +142,9 @@ class Inspector {
   void fileControls();
   // Live runs: a session steps on a worker thread; its iterations reach the replay here.
   void startSession();
-  // Puts `text` (if any) before the message shown so far.
+  // Puts `text` (if any) before the run's notes so far.
   void noteFirst(const std::string& text);
+  void forgetResult();
   void startRun();
   void stopRun();
   void collectIterations();
@@ -173,7 +174,8 @@ class Inspector {
   std::atomic<bool> stopRequested_{false}, workerDone_{true};
   std::mutex pendingMutex_;
   std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
-  std::string message_;                   // the last error or note, shown in the controls
+  std::string message_;                   // what the last file action did, or its error: under the controls
+  std::string runNotes_;                  // how the result was made, or why its run failed: under the table
   struct Comparison {  // another solver's run from the same first sites
     CvtSolver solver;
     std::vector<IterationRecord> iterations;

@@ -296,3 +296,23 @@ TEST(Inspector, TheFinalResultShowsWhereItStraysFarthest) {
   EXPECT_EQ(redIn3D(readPng(iteration)), 0);
   EXPECT_GT(redIn3D(readPng(final)), 20);
 }
+
+// How a result was made (here: two components, each remeshed on its own) is said in brown under
+// the table it explains, in view; it was the last line of the left pane, under every control
+// and out of sight in a window this size.
+TEST(Inspector, HowTheResultWasMadeIsSaidUnderTheTable) {
+  Mesh two = test::grid(8);
+  append(two, test::moved(test::grid(8, 0.9), 1.0, Vec3(3, 0, 0)));
+  const std::string mesh = test::tempPath("two_notes.off"), png = test::tempPath("two_notes.png");
+  writeMesh(two, mesh);
+  ASSERT_EQ(run("inspect " + mesh + " --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  const Picture p = readPng(png);
+  ASSERT_EQ(p.width, 960);
+  int brown = 0;  // the notes' text colour, in the left pane above the selection's controls
+  for (int y = 0; y < 500; ++y)
+    for (int x = 0; x < 270; ++x) {
+      const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+      brown += std::abs(c[0] - 115) < 30 && std::abs(c[1] - 51) < 30 && c[2] < 30;
+    }
+  EXPECT_GT(brown, 50);
+}
