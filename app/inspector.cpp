@@ -6,6 +6,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "mesh_io.h"
+#include "png.h"
 #include "report.h"
 #include "topology.h"
 
@@ -231,6 +232,8 @@ void Inspector::startSession() {
       session_ = std::make_unique<RemeshSession>(*input_, withoutResampling(options_), meshName_);
       runNotes_ = withoutResamplingText(problemOf(e, meshName_));
     }
+    result_.paramUsed = session_->paramUsed();
+    result_.distortion = session_->distortion();
     // The 2D pane shows the simplified input's map.
     noteFirst(coarseInputText(session_->coarseInput(), input_->vertexCount()));
     session_->step();  // the panes need one iteration to show
@@ -244,11 +247,13 @@ void Inspector::startSession() {
 }
 
 // A new run or recording: nothing of the last run's result (its final column, distances,
-// notes) stays on show; the input's own numbers do.
+// notes) stays on show; the input's own numbers do, and the map until a session names its own.
 void Inspector::forgetResult() {
-  const QualityMetrics before = result_.before;
-  result_ = RemeshResult{};
-  result_.before = before;
+  RemeshResult kept;
+  kept.before = result_.before;
+  kept.paramUsed = result_.paramUsed;
+  kept.distortion = result_.distortion;
+  result_ = std::move(kept);
   runNotes_.clear();
 }
 
@@ -400,9 +405,7 @@ Pane parsePane(const std::string& name) {
 }
 
 void Inspector::startExport(ExportJob job) {
-  const std::string& p = job.path;
-  if (p.size() < 5 || p.compare(p.size() - 4, 4, ".png") != 0)
-    throw Error(p + ": exports are PNG files (end the name with .png)");
+  requirePngPath(job.path);
   const int count = replay_->iterationCount();
   if (job.first >= 0 && (job.last < job.first || job.last >= count))
     throw Error("iterations " + std::to_string(job.first) + ":" + std::to_string(job.last) +
@@ -758,8 +761,12 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   else
     ImGui::Text("Final: %d iterations, %s", replay_->iterationCount(),
                 replay_->recording().converged() ? "converged" : "not converged");
-  ImGui::TextWrapped("%s", distanceText(result_.fidelity).c_str());
-  if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
+  if (session_) {
+    ImGui::TextWrapped("Distances to the input: measured when the run has finished");
+  } else {
+    ImGui::TextWrapped("%s", distanceText(result_.fidelity).c_str());
+    if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
+  }
   // How this result was made (trials, a simplified input) or why its run failed: beside the
   // numbers it explains, not under the controls.
   if (!runNotes_.empty()) {
@@ -937,6 +944,7 @@ void Inspector::fileControls() {
       startSession();
       for (const std::string& note : read.notes) noteFirst(note);
       startRun();
+      message_.clear();  // an earlier file's error or save
     } catch (const Error& e) {
       message_ = e.what();
       const std::string flag = "(--repair fixes this)";  // the command line's way, not this pane's
@@ -1235,6 +1243,7 @@ int plot(const char* title, const std::vector<double>& values, ImU32 colour,
     lo = std::min(lo, transform(threshold));
     hi = std::max(hi, transform(threshold));
   }
+  if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;  // nothing to plot (yet)
   if (!(hi > lo)) hi = lo + 1;
   if (logScale) {
     lo = std::floor(lo);
@@ -1243,9 +1252,11 @@ int plot(const char* title, const std::vector<double>& values, ImU32 colour,
   // Y ticks: every power of ten on a log axis, five steps on a linear one; the plot starts
   // right of the widest label.
   const int ticks = logScale ? static_cast<int>(hi - lo) : 4;
-  std::vector<std::string> labels = tickLabels(lo, hi, ticks);
+  std::vector<std::string> labels;
   if (logScale)
-    for (int i = 0; i <= ticks; ++i) labels[i] = "1e" + std::to_string(static_cast<int>(std::lround(lo + i)));
+    for (int i = 0; i <= ticks; ++i) labels.push_back("1e" + std::to_string(static_cast<int>(std::lround(lo + i))));
+  else
+    labels = tickLabels(lo, hi, ticks);
   float widest = 0;
   for (const std::string& label : labels) widest = std::max(widest, ImGui::CalcTextSize(label.c_str()).x);
   const float font = ImGui::GetFontSize();  // 13 px, or larger when presenting

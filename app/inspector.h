@@ -144,6 +144,7 @@ class Inspector {
   void startSession();
   // Puts `text` (if any) before the run's notes so far.
   void noteFirst(const std::string& text);
+  // Before a new run or recording: the last run's result, and its notes, are not shown with it.
   void forgetResult();
   void startRun();
   void stopRun();

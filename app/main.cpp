@@ -6,6 +6,7 @@
 #include "mesh_io.h"
 #include "window.h"
 #include "pipeline.h"
+#include "png.h"
 #include "report.h"
 #include "simplify.h"
 
@@ -15,9 +16,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 using namespace lloydscope;
 
@@ -376,7 +377,7 @@ int main(int argc, char** argv) {
         return runWindow(ir.input, options, std::move(result), shot.validation, std::move(input),
                          shot.view);
       }
-      requireWritable(shot.picture.path);  // its folder (numbered pictures go there too)
+      requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
       RemeshResult result = openForInspection(ir, *inspectCmd, options);
       renderScreenshot(ir.input, options, std::move(result), shot);
       return 0;
@@ -434,7 +435,7 @@ int main(int argc, char** argv) {
     std::cerr << "lloydscope: " << e.what() << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "lloydscope: out of memory: ask for fewer vertices (--sites), or simplify the input first\n";
+    std::cerr << "lloydscope: out of memory: fewer vertices asked, or a smaller input, need less\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "lloydscope: internal error: " << e.what() << "\n";

@@ -38,4 +38,10 @@ void writePng(const std::string& path, const unsigned char* pixels, int width, i
   });
 }
 
+void requirePngPath(const std::string& path) {
+  if (path.size() < 5 || path.compare(path.size() - 4, 4, ".png") != 0)
+    throw Error(path + ": exports are PNG files (end the name with .png)");
+  requireWritable(path);
+}
+
 }  // namespace lloydscope

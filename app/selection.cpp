@@ -1,6 +1,7 @@
 #include "selection.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace lloydscope {
@@ -89,19 +90,32 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     return;
   }
   int unpinCell = -1, unpinTriangle = -1;
-  auto row = [](const char* label, const char* pattern, auto... values) {
-    ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    ImGui::TextWrapped("%s", label);
-    ImGui::TableNextColumn();
-    ImGui::Text(pattern, values...);
+  // Each table's rows are formatted first: the value column takes the widest value (at most
+  // two thirds of the pane) and the labels wrap in what is left. A fixed width cut the 3D
+  // coordinates of a model in millimetres short.
+  std::vector<std::pair<std::string, std::string>> rows;
+  auto row = [&rows](const std::string& label, const char* pattern, auto... values) {
+    char text[160];
+    std::snprintf(text, sizeof text, pattern, values...);
+    rows.emplace_back(label, text);
   };
-  // The values keep the width of three coordinates and the labels wrap in what is left: in a
-  // window 1280 pixels wide the values of "s, 3D" and "int x rho" were cut short.
-  const ImGuiTableFlags table = ImGuiTableFlags_RowBg;
-  auto columns = [] {
-    ImGui::TableSetupColumn("label", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("-0.000 -0.000 -0.000").x);
+  auto table = [&rows](const char* id) {
+    float widest = 0;
+    for (const auto& r : rows) widest = std::max(widest, ImGui::CalcTextSize(r.second.c_str()).x);
+    if (ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg)) {
+      ImGui::TableSetupColumn("label", ImGuiTableColumnFlags_WidthStretch);
+      ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed,
+                              std::min(widest, 2.0f / 3.0f * ImGui::GetContentRegionAvail().x));
+      for (const auto& [label, value] : rows) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", label.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(value.c_str());
+      }
+      ImGui::EndTable();
+    }
+    rows.clear();
   };
   for (int cell : cells_) {
     const CellDetails d = describeCell(recording, domain, view, cell);
@@ -111,29 +125,26 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
                        d.fixed ? "fixed, border" : "movable");
     ImGui::SameLine();
     if (ImGui::SmallButton("unpin")) unpinCell = cell;
-    if (ImGui::BeginTable("cell", 2, table)) {
-      columns();
-      row("site s", "%.5f %.5f", d.site.x(), d.site.y());
-      row("centroid c", "%.5f %.5f", d.centroid.x(), d.centroid.y());
-      row("s, 3D", "%.3f %.3f %.3f", d.site3D.x(), d.site3D.y(), d.site3D.z());
-      row("c, 3D", "%.3f %.3f %.3f", d.centroid3D.x(), d.centroid3D.y(), d.centroid3D.z());
-      row("area, UV", "%.4e", d.area);
-      row("area, surface", "%.4e", d.surfaceArea);
-      row("A = 1/2 sum c_i", "%.4e", d.shoelaceArea);
-      row("sum (x_i+x_i+1)c_i", "%.4e", d.shoelaceSums.x());
-      row("sum (y_i+y_i+1)c_i", "%.4e", d.shoelaceSums.y());
-      row("M = int rho", "%.4e", d.mass);
-      row("int x rho", "%.3e %.3e", d.moment.x(), d.moment.y());
-      const Vec2 quotient = d.mass > 0 ? Vec2(d.moment / d.mass) : d.site;  // = centroid c, worked out
-      row("c = int x rho/M", "%.5f %.5f", quotient.x(), quotient.y());
-      row("E=int rho|x-s|^2", "%.3e", d.energy);
-      row("|c - s|", "%.3e", d.toCentroid);
-      row("moved since k-1", "%.3e", d.moved);
-      row("neighbours", "%d", d.neighbours);
-      row("valence, result", "%d", d.valence);
-      row("param. triangles", "%d", d.pieces);
-      ImGui::EndTable();
-    }
+    row("site s", "%.5f %.5f", d.site.x(), d.site.y());
+    row("centroid c", "%.5f %.5f", d.centroid.x(), d.centroid.y());
+    row("s, 3D", "%.3f %.3f %.3f", d.site3D.x(), d.site3D.y(), d.site3D.z());
+    row("c, 3D", "%.3f %.3f %.3f", d.centroid3D.x(), d.centroid3D.y(), d.centroid3D.z());
+    row("area, UV", "%.4e", d.area);
+    row("area, surface", "%.4e", d.surfaceArea);
+    row("A = 1/2 sum c_i", "%.4e", d.shoelaceArea);
+    row("sum (x_i+x_i+1)c_i", "%.4e", d.shoelaceSums.x());
+    row("sum (y_i+y_i+1)c_i", "%.4e", d.shoelaceSums.y());
+    row("M = int rho", "%.4e", d.mass);
+    row("int x rho", "%.3e %.3e", d.moment.x(), d.moment.y());
+    if (d.mass > 0) row("c = int x rho/M", "%.5f %.5f", d.moment.x() / d.mass, d.moment.y() / d.mass);
+    else row("c = int x rho/M", "%s", "- (no mass)");
+    row("E=int rho|x-s|^2", "%.3e", d.energy);
+    row("|c - s|", "%.3e", d.toCentroid);
+    row("moved since k-1", "%.3e", d.moved);
+    row("neighbours", "%d", d.neighbours);
+    row("valence, result", "%d", d.valence);
+    row("param. triangles", "%d", d.pieces);
+    table("cell");
     ImGui::PopID();
   }
   for (int triangle : triangles_) {
@@ -143,23 +154,20 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(triangleColor()), "Triangle %d", triangle);
     ImGui::SameLine();
     if (ImGui::SmallButton("unpin")) unpinTriangle = triangle;
-    if (ImGui::BeginTable("triangle", 2, table)) {
-      columns();
-      row("angles, 3D", "%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]);
-      row("angles, UV", "%.1f %.1f %.1f", d.anglesUV[0], d.anglesUV[1], d.anglesUV[2]);
-      row("minimum angle", "%.1f", d.minAngle);
-      row("area, 3D", "%.4e", d.area3D);
-      row("area, UV", "%.4e", d.areaUV);
-      row("area distortion", "%.3f", d.areaDistortion);
-      // Retriangulate: every corner is a site. Relocate: the inside vertices moved to their
-      // sites, the border ones stayed.
-      for (int k = 0; k < 3; ++k) {
-        const std::string label = "vertex " + std::to_string(d.corners[k]);
-        if (d.sites[k] >= 0) row(label.c_str(), "site %d", d.sites[k]);
-        else row(label.c_str(), "%s", "not moved");
-      }
-      ImGui::EndTable();
+    row("angles, 3D", "%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]);
+    row("angles, UV", "%.1f %.1f %.1f", d.anglesUV[0], d.anglesUV[1], d.anglesUV[2]);
+    row("minimum angle", "%.1f", d.minAngle);
+    row("area, 3D", "%.4e", d.area3D);
+    row("area, UV", "%.4e", d.areaUV);
+    row("area distortion", "%.3f", d.areaDistortion);
+    // Retriangulate: every corner is a site. Relocate: the inside vertices moved to their
+    // sites, the border ones stayed.
+    for (int k = 0; k < 3; ++k) {
+      const std::string label = "vertex " + std::to_string(d.corners[k]);
+      if (d.sites[k] >= 0) row(label, "site %d", d.sites[k]);
+      else row(label, "%s", "not moved");
     }
+    table("triangle");
     ImGui::PopID();
   }
   toggleCell(unpinCell);

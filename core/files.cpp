@@ -31,9 +31,15 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) cannotMake(path, temporary);
-    write(out);
+    try {
+      write(out);
+    } catch (...) {  // out of memory, say: no half-written temporary stays
+      out.close();
+      std::remove(temporary.c_str());
+      throw;
+    }
     out.close();
-    if (!out) {
+    if (!out) {  // the writer's own failure (the PNG encoder's), or the disk's
       std::remove(temporary.c_str());
       throw Error(path + ": cannot write " + temporary + " (disk full?)");
     }
@@ -49,7 +55,8 @@ void requireWritable(const std::string& path) {
   requireNotAFolder(path);
   const std::string temporary = temporaryOf(path);
   std::error_code ignored;
-  const bool there = std::filesystem::exists(temporary, ignored);  // a user's own file: left as it is
+  // writeAtomically's own name: one already there (a run stopped before its rename) stays until then
+  const bool there = std::filesystem::exists(temporary, ignored);
   if (!std::ofstream(temporary, std::ios::binary | std::ios::app)) cannotMake(path, temporary);
   if (!there) std::remove(temporary.c_str());
 }

@@ -256,6 +256,9 @@ class RemeshSession {
   bool isCut() const { return cut_.has_value(); }
   // > 0: the input was simplified to this many vertices first (RemeshOptions::coarsenInput).
   int coarseInput() const { return coarsened_ ? options_.simplifyTo : 0; }
+  // The map the session parameterized with (what "auto" chose) and its distortion.
+  ParamMethod paramUsed() const { return param_.method; }
+  const Distortion& distortion() const { return param_.distortion; }
   // For the cells of the steps to come (LloydOptions::threads; the results do not depend on it).
   void setThreads(int threads) {  // for the cells, and the fit's closest points
     options_.lloyd.threads = threads;

@@ -61,6 +61,11 @@ struct SizeStop {
 // ten times its size is simplified about the centre of its bounding box, then moved back
 // (nearer, the move would only change the last bits of its points, and with them the order of
 // equal collapses).
+Mesh moved(Mesh mesh, const Vec3& offset) {
+  for (Vec3& p : mesh.points) p += offset;
+  return mesh;
+}
+
 Vec3 farOffset(const Mesh& mesh) {
   Vec3 lo = mesh.points.front(), hi = lo;
   for (const Vec3& p : mesh.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
@@ -89,9 +94,7 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
     return result;
   }
   const Vec3 offset = farOffset(input);
-  Mesh centred = input;
-  for (Vec3& p : centred.points) p -= offset;
-  SurfaceMesh sm = toSurfaceMesh(centred);
+  SurfaceMesh sm = toSurfaceMesh(offset.isZero() ? input : moved(input, -offset));
   using Policies = SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel>;
   Policies policies(sm);
   BoundaryKeepingPlacement<Policies::Get_placement> placement{policies.get_placement()};
@@ -100,7 +103,7 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
       CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
   sm.collect_garbage();
   result.mesh = fromSurfaceMesh(sm);
-  for (Vec3& p : result.mesh.points) p += offset;
+  if (!offset.isZero()) result.mesh = moved(std::move(result.mesh), offset);
   result.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sys/wait.h>
+#include <thread>
 
 using namespace lloydscope;
 
@@ -354,10 +355,18 @@ TEST(Cli, AFileThatCannotBeSavedFailsBeforeTheRun) {
   EXPECT_FALSE(std::ifstream(out).good()) << "the mesh was written before the recording failed";
   EXPECT_EQ(r.out, "");
 
-  r = runCli("remesh " + test::assetPath("jittered_grid.off") + " -o " + test::tempPath("out.stl"));
+  // Checked before the input is even read: a bad input is not what the user hears of first.
+  const std::string bad = test::tempPath("unread.off");
+  test::writeText(bad, "not a mesh");
+  r = runCli("remesh " + bad + " -o " + test::tempPath("out.stl"));
   EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.err.find("unknown extension '.stl'"), std::string::npos) << r.err;
-  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("out.stl: cannot write: unknown extension '.stl'"), std::string::npos) << r.err;
+  r = runCli("inspect " + bad + " --screenshot " + test::tempPath("shot.jpg"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("shot.jpg: exports are PNG files"), std::string::npos) << r.err;
+  r = runCli("inspect " + bad + " --screenshot " + missing + ".png");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(missing + ".png: cannot write"), std::string::npos) << r.err;
 }
 
 // Numbers are checked as they are read: NaN, infinities and values out of range are refused
@@ -391,7 +400,11 @@ TEST(Cli, RunningOutOfMemoryIsAOneLineError) {
   const std::string args = "remesh " + test::assetPath("jittered_grid.off") + " --sites 100000000 -o " +
                            test::tempPath("huge.off");
   const std::string err = test::tempPath("oom.err");
-  const int status = std::system(("ulimit -v 800000; " + std::string(LLOYDSCOPE_CLI) + " " + args + " >/dev/null 2>" + err).c_str());
+  // Address space for the program, plus what each core's worker thread reserves (its stack and
+  // its malloc arena): a few seconds' subdividing fills the rest.
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::string limit = std::to_string(600000 + 100000 * cores);  // KiB
+  const int status = std::system(("ulimit -v " + limit + "; " + std::string(LLOYDSCOPE_CLI) + " " + args + " >/dev/null 2>" + err).c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
-  EXPECT_EQ(test::readText(err), "lloydscope: out of memory: ask for fewer vertices (--sites), or simplify the input first\n");
+  EXPECT_EQ(test::readText(err), "lloydscope: out of memory: fewer vertices asked, or a smaller input, need less\n");
 }
