@@ -756,8 +756,11 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     row("Under 30 deg %", oneDecimal(&QualityMetrics::percentUnder30));
     ImGui::EndTable();
   }
-  if (session_)
-    ImGui::Text("Running: %d iterations so far", replay_->iterationCount());
+  if (session_ && !workerDone_)
+    ImGui::Text("Running: %d iteration%s so far", replay_->iterationCount(), replay_->iterationCount() == 1 ? "" : "s");
+  else if (session_)
+    ImGui::TextWrapped("Stopped at %d iteration%s: Step or Run goes on", replay_->iterationCount(),
+                       replay_->iterationCount() == 1 ? "" : "s");
   else
     ImGui::Text("Final: %d iterations, %s", replay_->iterationCount(),
                 replay_->recording().converged() ? "converged" : "not converged");
@@ -1244,7 +1247,11 @@ int plot(const char* title, const std::vector<double>& values, ImU32 colour,
     hi = std::max(hi, transform(threshold));
   }
   if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;  // nothing to plot (yet)
-  if (!(hi > lo)) hi = lo + 1;
+  if (!(hi > lo)) {  // one value (a first iteration): a range around it, not from it to it + 1
+    const double spread = lo != 0 ? 0.01 * std::abs(lo) : 1.0;
+    lo -= spread;
+    hi += spread;
+  }
   if (logScale) {
     lo = std::floor(lo);
     hi = std::ceil(hi);
@@ -1274,10 +1281,9 @@ int plot(const char* title, const std::vector<double>& values, ImU32 colour,
     dl->AddLine(ImVec2(a.x - 4, ty), ImVec2(b.x, ty), rgb(0.9f, 0.9f, 0.9f));
     dl->AddText(ImVec2(p0.x + 2, ty - 7), rgb(0.3f, 0.3f, 0.3f), labels[i].c_str());
   }
-  // X ticks: iterations.
-  // At most about five labels: steps of 1, 2 or 5 times a power of ten.
-  const double rough = std::max(1.0, n / 5.0), power = std::pow(10, std::floor(std::log10(rough)));
-  const int step = static_cast<int>(rough / power < 2 ? power : rough / power < 5 ? 2 * power : 5 * power);
+  // X ticks: iterations, as many labels as fit side by side, six at most.
+  const float labelWidth = ImGui::CalcTextSize(std::to_string(std::max(n - 1, 0)).c_str()).x + 0.5f * font;
+  const int step = tickStep(n, static_cast<int>((b.x - a.x) / labelWidth));
   for (int k = 0; k < n; k += step) {
     dl->AddLine(ImVec2(x(k), b.y), ImVec2(x(k), b.y + 4), rgb(0.3f, 0.3f, 0.3f));
     dl->AddText(ImVec2(x(k) - 6, b.y + 5), rgb(0.3f, 0.3f, 0.3f), std::to_string(k).c_str());

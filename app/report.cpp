@@ -1,6 +1,7 @@
 #include "report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -22,6 +23,14 @@ std::vector<std::string> tickLabels(double lo, double hi, int steps) {
     if (std::adjacent_find(labels.begin(), labels.end()) == labels.end()) break;
   }
   return labels;
+}
+
+int tickStep(int count, int fitting) {
+  const double rough = std::max(1.0, static_cast<double>(count) / std::clamp(fitting, 1, 6));
+  const double power = std::pow(10, std::floor(std::log10(rough)));
+  for (double nice : {1.0, 2.0, 5.0})
+    if (rough <= nice * power) return static_cast<int>(nice * power);
+  return static_cast<int>(10 * power);
 }
 
 namespace {

@@ -136,3 +136,13 @@ TEST(Report, TickLabelsTakeTheDigitsThatTellThemApart) {
   EXPECT_EQ(tickLabels(0, 100, 4), (std::vector<std::string>{"0", "25", "50", "75", "100"}));
   EXPECT_EQ(tickLabels(5, 5, 0), (std::vector<std::string>{"5"}));
 }
+
+// Steps of 1, 2 or 5 times a power of ten: six labels at most, and no more than fit.
+TEST(Report, TickStepsLabelNoMoreThanFit) {
+  EXPECT_EQ(tickStep(230, 20), 50);   // 0 50 100 150 200 (steps of 20 ran together)
+  EXPECT_EQ(tickStep(112, 20), 20);
+  EXPECT_EQ(tickStep(1000, 5), 200);
+  EXPECT_EQ(tickStep(1000, 3), 500);  // a narrow plot
+  EXPECT_EQ(tickStep(5, 20), 1);
+  EXPECT_EQ(tickStep(1, 0), 1);
+}
