@@ -58,7 +58,7 @@ case "${1:-}" in
     else
       echo "No display: remeshing headless (under xvfb-run you get the window)."
       ./build/app/lloydscope remesh assets/bumpy_disk.off -o build/bumpy_disk_remeshed.off
-      ./build/app/lloydscope inspect assets/bumpy_disk.off --no-fidelity --screenshot build/inspector.png
+      ./build/app/lloydscope inspect assets/bumpy_disk.off --screenshot build/inspector.png
       echo "The inspector's picture: build/inspector.png"
     fi ;;
   test) ctest --test-dir build --output-on-failure -j"$(nproc)" ;;
