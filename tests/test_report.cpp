@@ -6,7 +6,7 @@
 using namespace lloydscope;
 
 // A run without the measurement (--no-fidelity) says so, rather than "Hausdorff 0.000%": the
-// inspector's picture of ./build.sh run (made with --no-fidelity) claimed a perfect fit.
+// inspector's picture of ./build.sh run (then made with --no-fidelity) claimed a perfect fit.
 TEST(Report, TheDistanceToTheInputIsShownOnlyWhereMeasured) {
   RemeshOptions options;
   options.sites.count = 60;
