@@ -1075,8 +1075,10 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   const auto [p0, extent] = canvasArea();
   ImGui::InvisibleButton("canvas2d", extent, ImGuiButtonFlags_MouseButtonLeft);
   ImGuiIO& io = ImGui::GetIO();
-  const float base = 0.92f * std::min(extent.x, extent.y);
-  const ImVec2 center(p0.x + extent.x / 2 + pan2D_.x, p0.y + extent.y / 2 + pan2D_.y);
+  // The domain fits above the legend's line (in large type it covered the domain's foot).
+  const float legend = ImGui::GetFontSize() + 10, fitHeight = std::max(1.0f, extent.y - legend);
+  const float base = 0.92f * std::min(extent.x, fitHeight);
+  const ImVec2 center(p0.x + extent.x / 2 + pan2D_.x, p0.y + fitHeight / 2 + pan2D_.y);
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
     pan2D_.x += io.MouseDelta.x;
     pan2D_.y += io.MouseDelta.y;
