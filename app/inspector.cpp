@@ -764,12 +764,9 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   else
     ImGui::Text("Final: %d iterations, %s", replay_->iterationCount(),
                 replay_->recording().converged() ? "converged" : "not converged");
-  if (session_) {
-    ImGui::TextWrapped("Distances to the input: measured when the run has finished");
-  } else {
-    ImGui::TextWrapped("%s", distanceText(result_.fidelity).c_str());
-    if (showTimings_) ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
-  }
+  ImGui::TextWrapped("%s", shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr).c_str());
+  if (showTimings_ && !session_ && result_.ms.total > 0)  // a recording opened alone has no times
+    ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
   // How this result was made (trials, a simplified input) or why its run failed: beside the
   // numbers it explains, not under the controls.
   if (!runNotes_.empty()) {

@@ -225,6 +225,12 @@ std::string distanceText(const Fidelity& f) {
          "% of diagonal";
 }
 
+std::string shownDistanceText(const Fidelity& f, bool asked, bool running) {
+  if (running) return "Distances to the input: measured when the run has finished";
+  if (f.samples > 0 || !asked) return distanceText(f);
+  return "Distances to the input: none for what is shown (a recording keeps its iterations only)";
+}
+
 std::string farthestPointText(const Fidelity& f) {
   const Vec3& p = f.farthestPoint;
   return "(" + format("%.4g", p.x()) + ", " + format("%.4g", p.y()) + ", " +

@@ -44,6 +44,11 @@ std::string chartTrialText(const RemeshResult& r);
 // "Hausdorff 0.335%, RMS 0.030% of diagonal", or that it was not measured (--no-fidelity):
 // no sample taken, which zeros would hide.
 std::string distanceText(const Fidelity& f);
+// The inspector's line for the result it shows: distanceText where that was measured, or where
+// --no-fidelity (`asked` false) left it out; while a run goes on, that its distances come at
+// the end; else none (a recording opened alone, or a run whose seams did not stitch), whatever
+// --no-fidelity says.
+std::string shownDistanceText(const Fidelity& f, bool asked, bool running);
 
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,

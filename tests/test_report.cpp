@@ -146,3 +146,17 @@ TEST(Report, TickStepsLabelNoMoreThanFit) {
   EXPECT_EQ(tickStep(5, 20), 1);
   EXPECT_EQ(tickStep(1, 0), 1);
 }
+
+// A recording opened in the inspector has no distances: its line said "not measured
+// (--no-fidelity)", blaming a flag nobody passed.
+TEST(Report, TheInspectorsDistanceLineSaysWhyThereIsNone) {
+  Fidelity none;
+  EXPECT_EQ(shownDistanceText(none, true, false).find("--no-fidelity"), std::string::npos);
+  EXPECT_NE(shownDistanceText(none, true, false).find("recording"), std::string::npos);
+  EXPECT_NE(shownDistanceText(none, false, false).find("--no-fidelity"), std::string::npos);
+  EXPECT_NE(shownDistanceText(none, true, true).find("when the run has finished"), std::string::npos);
+  Fidelity measured;
+  measured.samples = 10;
+  measured.hausdorffPercent = 0.335;
+  EXPECT_EQ(shownDistanceText(measured, true, false), distanceText(measured));
+}
