@@ -756,13 +756,14 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     row("Under 30 deg %", oneDecimal(&QualityMetrics::percentUnder30));
     ImGui::EndTable();
   }
+  const int iterations = replay_->iterationCount();
+  const char* plural = iterations == 1 ? "" : "s";
   if (session_ && !workerDone_)
-    ImGui::Text("Running: %d iteration%s so far", replay_->iterationCount(), replay_->iterationCount() == 1 ? "" : "s");
+    ImGui::Text("Running: %d iteration%s so far", iterations, plural);
   else if (session_)
-    ImGui::TextWrapped("Stopped at %d iteration%s: Step or Run goes on", replay_->iterationCount(),
-                       replay_->iterationCount() == 1 ? "" : "s");
+    ImGui::TextWrapped("Stopped at %d iteration%s: Step or Run goes on", iterations, plural);
   else
-    ImGui::Text("Final: %d iterations, %s", replay_->iterationCount(),
+    ImGui::Text("Final: %d iterations, %s", iterations,
                 replay_->recording().converged() ? "converged" : "not converged");
   ImGui::TextWrapped("%s", shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr).c_str());
   if (showTimings_ && !session_ && result_.ms.total > 0)  // a recording opened alone has no times

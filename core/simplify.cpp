@@ -67,8 +67,7 @@ Mesh moved(Mesh mesh, const Vec3& offset) {
 }
 
 Vec3 farOffset(const Mesh& mesh) {
-  Vec3 lo = mesh.points.front(), hi = lo;
-  for (const Vec3& p : mesh.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const auto [lo, hi] = boundingBox(mesh);
   const Vec3 centre = 0.5 * (lo + hi);
   return centre.norm() > 10 * (hi - lo).norm() ? centre : Vec3::Zero();
 }
