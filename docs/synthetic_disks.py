@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes six disk meshes unlike the bench's, each a test of one thing a remesher can get
+"""Writes eight disk meshes unlike the bench's, each a test of one thing a remesher can get
 wrong (docs/bench.md, "Synthetic disks"):
 
     python3 docs/synthetic_disks.py DIR
@@ -9,7 +9,9 @@ wrong (docs/bench.md, "Synthetic disks"):
 - bowl.off: most of a hemisphere, a jittered grid;
 - ellipse.off: a 20:1 strip that bends and twists;
 - ripples.off: a square with ripples a tenth of its size;
-- tent.off: a square with a narrow peak, 0.4 high and 0.06 wide.
+- tent.off: a square with a narrow peak, 0.4 high and 0.06 wide;
+- fan.off: a dome fanned from its apex, 200 slivers around one vertex of valence 200;
+- ribbon.off: a 50:1 strip, a few edge lengths wide at 500 vertices.
 
 The grids are jittered (their valences alternate 4 and 8): every vertex starts irregular.
 """
@@ -131,6 +133,12 @@ def tent(u, v):
     return [u, v, 0.4 * math.exp(-(r / 0.06) ** 2)]
 
 
+def fan(n=200):
+    """A low dome over the unit disk: its apex joined to each of n rim vertices."""
+    rim = [[math.cos(2 * math.pi * i / n), math.sin(2 * math.pi * i / n), 0.0] for i in range(n)]
+    return [[0.0, 0.0, 0.5]] + rim, [(0, 1 + i, 1 + (i + 1) % n) for i in range(n)]
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -144,6 +152,9 @@ def main():
     write_off(os.path.join(out, "ripples.off"),
               *grid(90, 90, lambda u, v: [u, v, 0.03 * math.sin(20 * u) * math.sin(17 * v)]))
     write_off(os.path.join(out, "tent.off"), *grid(90, 90, tent))
+    write_off(os.path.join(out, "fan.off"), *fan())
+    write_off(os.path.join(out, "ribbon.off"),
+              *grid(100, 2, lambda u, v: [50 * u, v, 0.1 * math.sin(15 * u)]))
 
 
 if __name__ == "__main__":
