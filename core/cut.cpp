@@ -248,25 +248,26 @@ void markSeams(CutResult& cut, const Mesh& input, const std::map<Edge, std::vect
 
 }  // namespace
 
-std::vector<int> seamPartners(const Mesh& disk, double tolerance) {
-  const std::vector<bool> border = vertexEdges(disk).onBoundary;
+std::vector<int> firstCopies(const std::vector<Vec3>& points, const std::vector<bool>& among, double tolerance) {
   std::vector<int> order;
-  for (int v = 0; v < disk.vertexCount(); ++v)
-    if (border[v]) order.push_back(v);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return disk.points[a].x() < disk.points[b].x(); });
-  std::vector<int> target(disk.vertexCount());
+  for (int v = 0; v < static_cast<int>(points.size()); ++v)
+    if (among.empty() || among[v]) order.push_back(v);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return points[a].x() < points[b].x(); });
+  std::vector<int> target(points.size());
   std::iota(target.begin(), target.end(), 0);
   std::function<int(int)> root = [&](int v) { return target[v] == v ? v : target[v] = root(target[v]); };
   for (size_t i = 0; i < order.size(); ++i)
-    for (size_t j = i + 1;
-         j < order.size() && disk.points[order[j]].x() - disk.points[order[i]].x() <= tolerance; ++j)
-      if ((disk.points[order[j]] - disk.points[order[i]]).norm() <= tolerance) {
+    for (size_t j = i + 1; j < order.size() && points[order[j]].x() - points[order[i]].x() <= tolerance; ++j)
+      if ((points[order[j]] - points[order[i]]).norm() <= tolerance) {
         const int a = root(order[i]), b = root(order[j]);
         target[std::max(a, b)] = std::min(a, b);  // the first copy stays
       }
-  for (int v = 0; v < disk.vertexCount(); ++v) target[v] = root(v);
+  for (size_t v = 0; v < points.size(); ++v) target[v] = root(static_cast<int>(v));
   return target;
+}
+
+std::vector<int> seamPartners(const Mesh& disk, double tolerance) {
+  return firstCopies(disk.points, vertexEdges(disk).onBoundary, tolerance);
 }
 
 std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance) {

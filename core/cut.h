@@ -64,6 +64,10 @@ struct CutOptions {
 // connected component; throws Error("<name>: ...") otherwise.
 CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions& options = {});
 
+// Per point, the first of the points within `tolerance` of it (and of those, and so on) among
+// those `among` flags (empty: all), or itself.
+std::vector<int> firstCopies(const std::vector<Vec3>& points, const std::vector<bool>& among, double tolerance);
+
 // Per vertex of a remeshed disk, the vertex it becomes when stitched: the first of the border
 // vertices within `tolerance` of it (the copies of one seam sample), or itself.
 std::vector<int> seamPartners(const Mesh& disk, double tolerance);

@@ -336,10 +336,11 @@ int RemeshSession::siteCount() const {
   const int wanted = verticesAsked(options_);
   if (wanted <= 0) return input_.vertexCount();
   if (!cut_) return wanted;
-  // A cut surface's disk holds each seam sample twice: one more site per sample, so that the
-  // result has the vertices asked for once stitched. The input's seams have as many copies as
-  // the disk has vertices more than the surface; the result's are as many times more as its
-  // edges are shorter: the square root of the ratio of vertex counts.
+  // A cut surface's disk holds each seam sample twice: one more site per sample, which sets
+  // the border's spacing (the inside's count is then made exact from the samples themselves:
+  // SiteOptions::stitchedCount). The input's seams have as many copies as the disk has
+  // vertices more than the surface; the result's are as many times more as its edges are
+  // shorter: the square root of the ratio of vertex counts.
   const int surfaceVertices = *std::max_element(cut_->original.begin(), cut_->original.end()) + 1;
   const double copies = input_.vertexCount() - surfaceVertices;
   return wanted + static_cast<int>(std::lround(copies * std::sqrt(static_cast<double>(wanted) / surfaceVertices)));
@@ -348,6 +349,7 @@ int RemeshSession::siteCount() const {
 SiteOptions RemeshSession::seamSites() const {
   SiteOptions sites = options_.sites;  // a chart's seams (core/charts), per input vertex
   if (!cut_) return sites;
+  sites.stitchedCount = verticesAsked(options_);
   sites.seamNode = cut_->seamNode;
   sites.onSeam = cut_->onSeam;
   if (!options_.sites.onSeam.empty())

@@ -1,5 +1,6 @@
 #include "sites.h"
 
+#include "cut.h"
 #include "metrics.h"
 
 #include <algorithm>
@@ -10,6 +11,15 @@
 namespace lloydscope {
 
 namespace {
+// How many places the points are at: a seam sample's two copies, one place (as stitchSeams
+// finds them).
+int distinctPoints(const std::vector<Vec3>& points, double diagonal) {
+  if (points.empty()) return 0;
+  const std::vector<int> first = firstCopies(points, {}, kSeamTolerance * diagonal);
+  int distinct = 0;
+  for (size_t i = 0; i < first.size(); ++i) distinct += first[i] == static_cast<int>(i);
+  return distinct;
+}
 
 double uniform01(std::mt19937_64& rng) { return (rng() >> 11) * 0x1.0p-53; }
 
@@ -246,7 +256,10 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   const double spacing = options.spacing > 0 ? options.spacing
                                              : std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
   sites.fixed = resampleBorder(mesh, param, spacing, options, sites.fixedPoints);
-  const int inside = std::max(0, count - static_cast<int>(sites.fixed.size()));
+  const bool stitched = options.stitchedCount > 0;  // the border's seam copies become one vertex each
+  const int border = stitched ? distinctPoints(sites.fixedPoints, boundingBoxDiagonal(mesh))
+                              : static_cast<int>(sites.fixed.size());
+  const int inside = std::max(0, (stitched ? options.stitchedCount : count) - border);
   sites.movable = sampleDensity(domain, inside, options.seed);
   sites.movableVertex.assign(sites.movable.size(), -1);
   return sites;

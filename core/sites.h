@@ -24,6 +24,10 @@ struct SiteOptions {
   // > 0: the border's samples this far apart (3D arc length) whatever `count` gives: charts of
   // one surface (core/charts) sample their shared borders alike.
   double spacing = 0;
+  // > 0, on a surface cut open to one disk (both copies of each seam on it): as many inside
+  // sites as leave this many vertices once each seam sample's two copies are stitched into one
+  // (`count` still sets the spacing, and over the seams' copies it can only be estimated).
+  int stitchedCount = 0;
   // Seams shared with another surface's samples (a chart's, with its spacing given): their
   // points must match exactly, so the border samples' points are InitialSites::fixedPoints.
   bool sharesSeams() const { return spacing > 0 && !onSeam.empty(); }

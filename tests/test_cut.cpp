@@ -78,12 +78,14 @@ TEST(Cut, ADiskComesBackUnchanged) {
   EXPECT_TRUE(cut.seam.empty());
 }
 
-// --sites counts the vertices of the result: the seam copies of the cut disk come on top.
+// --sites counts the vertices of the result: the seam copies of the cut disk come on top, as
+// many as its border samples' copies (estimated from the spacing, they left 399 here, 652 on
+// the mannequin below, 496 on ../shared's camel head at 500).
 TEST(Cut, ACutSurfaceGetsTheVerticesAsked) {
   RemeshOptions o;
   o.sites.count = 400;
   const RemeshResult r = remesh(sphere(), o, "sphere");
-  EXPECT_NEAR(r.output.vertexCount(), 400, 8);
+  EXPECT_EQ(r.output.vertexCount(), 400);
 }
 
 TEST(Cut, SeveralComponentsAreRefusedWithTheReason) {
@@ -260,15 +262,15 @@ TEST(ClosedCgalSample, TriceratopsFallsBackToTheInputsOwnMap) {
 
 // CGAL's mannequin is a disk (its neck is open), but its map to a disk shrinks the far side of
 // the head by 6 10^4: it is slit open like the closed samples (CutOptions::slitDisksAbove),
-// remeshed, and stitched back into one disk; made whole too, both meet the three bars at 700
-// vertices and the slit one is closer to the input (2.15% of the diagonal against 2.40%): it is
-// kept (at 600 and 1000 the whole one is closer, and kept). --no-slit (slitDisks = false) keeps
-// it whole.
+// remeshed, and stitched back into one disk of the vertices asked; made whole too, both meet
+// the three bars at 650 vertices and the slit one is closer to the input (2.38% of the diagonal
+// against 2.95%): it is kept (at 600 and 1000 the whole one is closer, and kept). --no-slit
+// (slitDisks = false) keeps it whole.
 TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   const std::string path = test::cgalSample("mannequin-devil.off");
   SKIP_UNLESS_EXTRACTED(path);
   RemeshOptions o;
-  o.simplifyTo = 700;
+  o.simplifyTo = 650;
   const RemeshResult r = remesh(readMesh(path).mesh, o, path);
   EXPECT_GT(r.cut.extremityCuts, 0);
   EXPECT_GT(r.cut.seamEdges, 0);
@@ -281,7 +283,7 @@ TEST(NearlyClosedCgalSample, TheMannequinIsSlitAndStitchedBackIntoADisk) {
   EXPECT_EQ(r.runs, 2);  // slit open and whole
   EXPECT_NO_THROW(validateMesh(r.output, "output"));
   EXPECT_TRUE(analyzeTopology(r.output).isDisk()) << analyzeTopology(r.output).describe();
-  EXPECT_NEAR(r.output.vertexCount(), 700, 28);
+  EXPECT_EQ(r.output.vertexCount(), 650);
   EXPECT_GT(r.after.avgMinAngle, 53.0);
   EXPECT_LT(r.fidelity.hausdorffPercent, 3.0);
 
