@@ -43,7 +43,11 @@ Density areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv) {
   // starve the shrunken parts of sites.)
   std::vector<double> weighted(mesh.points.size(), 0.0), weight(mesh.points.size(), 0.0);
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (!(area2[t] > 0)) continue;  // a flat UV triangle (an ear of a square border)
+    // A flat UV triangle (an ear of a straight border) covers none of the domain, and its
+    // ratio, huge where rounding left it a sliver of area, would swamp its corners' (the
+    // first pass of ../shared's camel head at --simplify 1000 had one, 10^15 times its share:
+    // Lloyd's iterations ran to their limit there).
+    if (!(area2[t] > kFlatAreaShare * total2)) continue;
     const double ratio = (area3[t] / total3) / (area2[t] / total2);
     for (int v : mesh.triangles[t]) {
       weighted[v] += area3[t] * ratio;

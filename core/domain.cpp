@@ -93,7 +93,7 @@ Domain::Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, Density de
     total += std::abs(area[t]);
   }
   std::vector<bool> flat(triangles_.size());
-  for (size_t t = 0; t < triangles_.size(); ++t) flat[t] = !(area[t] > 1e-14 * total);
+  for (size_t t = 0; t < triangles_.size(); ++t) flat[t] = !(area[t] > kFlatAreaShare * total);
   for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) {
     if (flat[t]) continue;
     for (int k = 0; k < 3; ++k) {

@@ -55,5 +55,8 @@ double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas
 // Appends `part`'s vertices and triangles to `to` (as another component).
 void append(Mesh& to, const Mesh& part);
 double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c);  // signed, > 0 if CCW
+// A parameter triangle with no more than this share of its map's whole area is flat: an ear of
+// a straight border (which covers none of the domain), or a triangle squeezed to nothing.
+constexpr double kFlatAreaShare = 1e-14;
 
 }  // namespace lloydscope

@@ -285,7 +285,7 @@ double shortestSide(const Vec2& a, const Vec2& b, const Vec2& c) {
 Folds findFolds(const Mesh& mesh, const std::vector<Vec2>& uv, const std::vector<bool>& onBoundary) {
   double total = 0;
   for (const Triangle& t : mesh.triangles) total += triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
-  const double minArea = 1e-14 * std::abs(total), sign = total < 0 ? -1.0 : 1.0;
+  const double minArea = kFlatAreaShare * std::abs(total), sign = total < 0 ? -1.0 : 1.0;
   Folds folds;
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Triangle& t = mesh.triangles[f];
@@ -430,10 +430,12 @@ Distortion measureDistortion(const Mesh& mesh, const std::vector<Vec2>& uv) {
   for (const Triangle& t : mesh.triangles) {
     const double a3 = triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
     const double a2 = std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]));
-    const double r = (a3 / area3) / std::max(a2 / area2, 1e-300);
-    d.minAreaRatio = std::min(d.minAreaRatio, r);
-    d.maxAreaRatio = std::max(d.maxAreaRatio, r);
-    d.meanLogAreaRatio += a3 / area3 * std::abs(std::log(std::max(r, 1e-300)));
+    if (a2 > kFlatAreaShare * area2) {  // a flat ear covers none of the domain: no ratio
+      const double r = (a3 / area3) / (a2 / area2);
+      d.minAreaRatio = std::min(d.minAreaRatio, r);
+      d.maxAreaRatio = std::max(d.maxAreaRatio, r);
+      d.meanLogAreaRatio += a3 / area3 * std::abs(std::log(std::max(r, 1e-300)));
+    }
     for (int k = 0; k < 3; ++k) {
       const int i = t[k], j = t[(k + 1) % 3], l = t[(k + 2) % 3];
       angleError += std::abs(cornerAngle(mesh.points[i], mesh.points[j], mesh.points[l]) -

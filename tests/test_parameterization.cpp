@@ -172,6 +172,42 @@ TEST(Density, AreaDensityIsTheSquaredAreaRatio) {
   for (double r : right) EXPECT_NEAR(r / left[0], 4.0, 1e-9);
 }
 
+// A square and a flat ear below its bottom side: three border vertices on a straight line in
+// the map, the ear itself bent down out of the plane in 3D. `drop` is how far below the line
+// the ear's middle corner is in the map: 0 is flat, 1e-16 flat but for rounding.
+namespace {
+Mesh squareWithEar() {
+  Mesh ear;
+  ear.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, -0.3, 0.2}};
+  ear.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 4, 1}};
+  return ear;
+}
+std::vector<Vec2> squareWithEarMap(double drop) { return {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, -drop}}; }
+}  // namespace
+
+// A flat ear covers none of the domain, so it gives its corners no density; one that rounding
+// left a sliver of area (the first pass of ../shared's camel head at --simplify 1000 had one
+// 10^15 times smaller than its share) is as flat: its huge ratio of areas gave its corners a
+// density that Lloyd's iterations could not converge under.
+TEST(Density, AFlatEarGivesItsCornersNoDensityEvenWithASliverOfArea) {
+  const Mesh ear = squareWithEar();
+  const Density flat = areaDensity(ear, squareWithEarMap(0.0));
+  const Density sliver = areaDensity(ear, squareWithEarMap(1e-16));
+  for (size_t t = 0; t < 2; ++t)  // the square's two triangles
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(sliver[t][k], flat[t][k], 1e-9 * flat[t][k]);
+}
+
+// Nor has a flat ear a ratio of areas: the report's range is the domain's (the reference
+// preset's square border makes such ears at its corners; nefertiti's read 0.2 .. 4.6e295).
+TEST(Parameterization, AFlatEarIsLeftOutOfTheAreaRatios) {
+  const Mesh ear = squareWithEar();
+  for (double drop : {0.0, 1e-16}) {
+    const Distortion d = measureDistortion(ear, squareWithEarMap(drop));
+    EXPECT_NEAR(d.minAreaRatio, 1 / 1.18, 1e-3) << drop;  // the square: all the map, 1 / 1.18 of the 3D area
+    EXPECT_NEAR(d.maxAreaRatio, d.minAreaRatio, 1e-12) << drop;
+  }
+}
+
 TEST(Density, CurvatureOfAUnitSphereCap) {
   // Vertices on the unit sphere: K = 1 and H = 1 in the interior.
   Mesh mesh = test::grid(20, 0.6);
