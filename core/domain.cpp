@@ -32,6 +32,11 @@ struct Domain::Index {
   Vec2 perUnit = Vec2::Zero();                 // buckets per unit of u and of v
   int columns = 0, rows = 0;
   std::vector<int> start, bucket;  // bucket[start[c] .. start[c + 1]): the triangles of cell c
+  // The vertices whose every triangle is flat (left out above), by their point: each at its
+  // own corner of one of them. The triangle beside such a vertex holds its point on an edge,
+  // and lifting it there would put it between that edge's ends (the tip of a slit whose one
+  // triangle, an ear, was flat in the map lifted off its seam, which then did not stitch).
+  std::map<std::pair<double, double>, Location> stranded;
 
   bool inBox(const Vec2& p) const {  // (false for NaN)
     return p.x() >= lo.x() && p.y() >= lo.y() && p.x() <= hi.x() && p.y() <= hi.y();
@@ -126,6 +131,13 @@ Domain::Domain(std::vector<Vec2> uv, std::vector<Triangle> triangles, Density de
     index_->triangles.emplace_back(p(triangles_[t][0]), p(triangles_[t][1]), p(triangles_[t][2]));
     index_->triangleId.push_back(static_cast<int>(t));
   }
+  std::vector<bool> inIndex(uv_.size(), false);
+  for (int t : index_->triangleId)
+    for (int v : triangles_[t]) inIndex[v] = true;
+  for (int t = 0; t < static_cast<int>(triangles_.size()); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (const int v = triangles_[t][k]; !inIndex[v])
+        index_->stranded.emplace(std::pair(uv_[v].x(), uv_[v].y()), Location{t, Eigen::Vector3d::Unit(k), true});
   index_->tree.insert(index_->triangles.cbegin(), index_->triangles.cend());
   index_->tree.build();
   index_->tree.accelerate_distance_queries();
@@ -136,9 +148,16 @@ Domain::~Domain() = default;
 Domain::Domain(Domain&&) noexcept = default;
 Domain& Domain::operator=(Domain&&) noexcept = default;
 
+const Location* Domain::stranded(const Vec2& p) const {
+  if (index_->stranded.empty()) return nullptr;
+  const auto it = index_->stranded.find({p.x(), p.y()});
+  return it == index_->stranded.end() ? nullptr : &it->second;
+}
+
 Location Domain::locate(const Vec2& p) const {
   Location l;
   if (index_->triangles.empty()) return l;
+  if (const Location* own = stranded(p)) return *own;
   const Index& g = *index_;
   if (g.inBox(p)) {
     const int c = g.cellOf(p);
@@ -158,6 +177,7 @@ Location Domain::locate(const Vec2& p) const {
 }
 
 Location Domain::locate(const Vec2& p, int hint) const {
+  if (const Location* own = stranded(p)) return *own;
   int t = hint;
   for (int step = 0; t >= 0 && step < 64; ++step) {
     const Eigen::Vector3d w = barycentric(t, p);

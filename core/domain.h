@@ -54,6 +54,8 @@ class Domain {
 
  private:
   struct Index;
+  // The location of a vertex at `p` whose triangles are all flat, at its own corner; else null.
+  const Location* stranded(const Vec2& p) const;
   std::vector<Vec2> uv_;
   std::vector<Triangle> triangles_;
   Density density_;

@@ -265,3 +265,18 @@ TEST(BoundedCells, VoronoiEdgesAreTheLinesBetweenCellsEachOnce) {
   }
   EXPECT_NEAR(length, 2.0, 1e-12);
 }
+
+// A vertex whose only triangle is flat in the map (an ear of a straight border, here the
+// middle of the bottom side) is not in the domain's index; located, it is at its own corner of
+// that ear, not on the edge of the triangle beside it (lifted there, it would land between that
+// edge's ends: a seam copy at a slit's tip lifted off its seam, which then did not stitch).
+TEST(Domain, AVertexWhoseOnlyTriangleIsFlatIsLocatedAtItsOwnCorner) {
+  const std::vector<Triangle> triangles = {{0, 1, 2}, {0, 2, 3}, {0, 4, 1}};
+  const Domain domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}}, triangles, {});
+  for (const Location& l : {domain.locate(Vec2(0.5, 0)), domain.locate(Vec2(0.5, 0), 0)}) {
+    ASSERT_EQ(l.triangle, 2);
+    EXPECT_EQ(l.weights, Eigen::Vector3d(0, 1, 0));  // all on vertex 4
+  }
+  const Location beside = domain.locate(Vec2(0.5, 1e-9));  // any other point: as before
+  EXPECT_EQ(beside.triangle, 0);
+}
