@@ -96,13 +96,16 @@ struct SmallestAngles {
 };
 SmallestAngles smallestAnglesOf(const Mesh& m, const std::vector<int>& faces) {
   SmallestAngles angles;
+  int counted = 0;
   for (int f : faces) {
     const Triangle& t = m.triangles[f];
+    if (isMergeMarker(t)) continue;
+    ++counted;
     const double a = smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
     angles.smallest = std::min(angles.smallest, a);
     angles.mean += a;
   }
-  if (!faces.empty()) angles.mean /= faces.size();
+  if (counted > 0) angles.mean /= counted;
   return angles;
 }
 
@@ -113,6 +116,7 @@ double farthestChordPoint(const Mesh& m, const SurfaceProjection& surface, const
   std::vector<Vec3> points;
   for (int f : faces) {
     const Triangle& t = m.triangles[f];
+    if (isMergeMarker(t)) continue;
     points.push_back((m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3);
   }
   for (const auto& [a, b] : edges) points.push_back((m.points[a] + m.points[b]) / 2);
@@ -125,7 +129,8 @@ double farthestFromFaces(const Mesh& m, const std::vector<int>& faces, const std
   if (points.empty()) return 0;
   Mesh part;
   part.points = m.points;
-  for (int f : faces) part.triangles.push_back(m.triangles[f]);
+  for (int f : faces)
+    if (!isMergeMarker(m.triangles[f])) part.triangles.push_back(m.triangles[f]);
   const SurfaceProjection projection(part);
   const std::vector<double> squared = projection.squaredDistances(points);
   return std::sqrt(*std::max_element(squared.begin(), squared.end()));
@@ -540,6 +545,17 @@ std::pair<double, double> smallestAnglesChanged(const Mesh& before, const Mesh& 
   return {smallestNotIn(before, placed(after)), smallestNotIn(after, placed(before))};
 }
 
+// Renumbers `m` without the vertices no triangle uses (those merged into others), and
+// `pinned` with it (a pinned vertex must be one that stays).
+void dropUnusedVertices(Mesh& m, std::vector<int>& pinned) {
+  std::vector<int> kept;
+  const std::vector<Vec3> points = m.points;
+  m = assemble(m.triangles, points, &kept);
+  std::vector<int> newIndex(points.size(), -1);
+  for (size_t i = 0; i < kept.size(); ++i) newIndex[kept[i]] = static_cast<int>(i);
+  for (int& v : pinned) v = newIndex[v];
+}
+
 }  // namespace
 
 int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vector<int>& pinned) {
@@ -611,15 +627,78 @@ int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vec
       if (again) break;
     }
   }
-  if (collapsed > 0) {
-    std::vector<int> kept;
-    const std::vector<Vec3> points = m.points;
-    m = assemble(m.triangles, points, &kept);
-    std::vector<int> newIndex(points.size(), -1);
-    for (size_t i = 0; i < kept.size(); ++i) newIndex[kept[i]] = static_cast<int>(i);
-    for (int& v : pinned) v = newIndex[v];  // never removed: a pinned vertex is no `from`
-  }
+  if (collapsed > 0) dropUnusedVertices(m, pinned);  // a pinned vertex is no `from`: it stays
   return collapsed;
+}
+
+int earsAtSharpCorners(Mesh& m, const SearchableSurface& surface, std::vector<int>& pinned) {
+  if (m.triangles.empty() || surface.mesh.triangles.empty()) return 0;
+  int made = 0;
+  std::set<std::pair<int, int>> refused;  // (corner, inside neighbour), since the last change
+  for (bool again = true; again;) {
+    again = false;
+    const Rings rings(m);
+    const std::vector<bool> border = vertexEdges(m).onBoundary;
+    std::vector<bool> fixed(m.vertexCount(), false);
+    for (int v : pinned) fixed[v] = true;
+    // The border vertices of two or more triangles with an angle under 30 degrees, worst first.
+    std::vector<std::pair<double, int>> corners;
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      if (!border[v] || rings.offset[v + 1] - rings.offset[v] < 2) continue;
+      double smallest = 180;
+      for (int k = rings.offset[v]; k < rings.offset[v + 1]; ++k) {
+        const Triangle& t = m.triangles[rings.faces[k]];
+        const int at = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+        smallest = std::min(smallest, cornerAnglesDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]])[at]);
+      }
+      if (smallest < 30) corners.emplace_back(smallest, v);
+    }
+    std::sort(corners.begin(), corners.end());
+    std::optional<StaysClose> close;  // built for the first try: it searches the whole result
+    for (const auto& [smallest, v] : corners) {
+      for (int k = rings.offset[v]; k < rings.offset[v + 1] && !again; ++k)
+        for (int u : m.triangles[rings.faces[k]]) {
+          if (border[u] || !refused.insert({v, u}).second) continue;
+          Mesh tried = m;
+          std::vector<int> faces;  // the triangles that change, by index in both meshes
+          std::vector<std::pair<int, int>> oldEdges, newEdges;
+          const bool removes = rings.offset[u + 1] - rings.offset[u] == 3;
+          if (removes) {  // u goes into v: its three triangles become one, v's only one
+            if (fixed[u] || !mergeVertex(tried, u, v)) continue;
+            faces.assign(rings.faces.begin() + rings.offset[u], rings.faces.begin() + rings.offset[u + 1]);
+            for (int f : faces)
+              for (int w : m.triangles[f])
+                if (w != u) oldEdges.emplace_back(u, w);
+          } else {  // v's edge to u flipped: v has one triangle fewer
+            EdgeFlips flips(tried, nullptr);
+            const std::optional<EdgeFlips::Candidate> flip = flips.candidate(v, u);
+            if (!flip || flips.folds(*flip)) continue;
+            flips.flip(*flip);
+            faces = {flip->f1, flip->f2};
+            oldEdges = {{v, u}};
+            newEdges = {{flip->c, flip->d}};
+          }
+          if (smallestAnglesOf(tried, faces).smallest <= smallestAnglesOf(m, faces).smallest + 1e-6) continue;
+          if (!close) close.emplace(m, surface);
+          std::vector<Triangle> changed;
+          for (int f : faces) changed.push_back(tried.triangles[f]);
+          const auto show = [&](bool asChanged) {
+            for (size_t i = 0; i < faces.size(); ++i)
+              tried.triangles[faces[i]] = asChanged ? changed[i] : m.triangles[faces[i]];
+          };
+          if (!close->allows(tried, faces, newEdges, oldEdges, show)) continue;
+          eraseMergedTriangles(tried);
+          m = std::move(tried);
+          if (removes) dropUnusedVertices(m, pinned);
+          refused.clear();
+          ++made;
+          again = true;
+          break;
+        }
+      if (again) break;
+    }
+  }
+  return made;
 }
 
 }  // namespace lloydscope

@@ -1,7 +1,7 @@
 // The last steps on a finished result, in 3D, with the input surface at hand (core/pipeline
 // runs them once a disk's polish is done, or once a cut surface or its charts are stitched):
 // seams relaxed, vertices snapped onto thin tips the result cut off, valence moves, small
-// angles raised, short border edges collapsed.
+// angles raised, short border edges collapsed, sharp border corners given fewer triangles.
 #pragma once
 
 #include "mesh.h"
@@ -87,5 +87,18 @@ int raiseMeanAngles(Mesh& mesh, const SearchableSurface& surface, const std::vec
 // where an edge collapses, the mesh's unused vertices are dropped and `pinned` renumbered with
 // it. Returns how many edges were collapsed.
 int collapseShortBorderEdges(Mesh& mesh, const SearchableSurface& surface, std::vector<int>& pinned);
+
+// A border vertex's triangles share its corner: where the corner is under 60 degrees and has
+// two triangles, or under 90 with three, one of them has an angle under 30 at it whatever the
+// inside vertices do. Lloyd's iterations leave such a corner with a site in its wedge, joined to
+// it and to the two border vertices beside it: the mesh's smallest angle, which no move of a
+// vertex can raise. At each border vertex with an angle under 30 degrees, worst first, an edge
+// to an inside vertex goes: flipped, or, where that vertex has three triangles, the vertex
+// removed and its three triangles made one. Kept where the smallest angle of the triangles
+// that changed rises and, as for relaxedValenceMoves(), neither their chords nor the input's
+// vertices under them end farther apart than before (or than three quarters of the farthest
+// anywhere). `pinned` vertices stay, renumbered with the mesh where a vertex is removed.
+// Returns how many edges went.
+int earsAtSharpCorners(Mesh& mesh, const SearchableSurface& surface, std::vector<int>& pinned);
 
 }  // namespace lloydscope

@@ -219,6 +219,9 @@ namespace {
 // (relaxedValenceMoves: on 36 disks, mean irregularity 15.5 -> 13.3%, smallest angles and their
 // mean up too); the vertices of triangles under 35 degrees moved where their smallest angle is
 // largest (raiseSmallAngles: on the 36 disks, the mean smallest angle 29.6 -> 31.5 degrees);
+// a border corner under 60 degrees with a site in its wedge made an ear (earsAtSharpCorners: on
+// 194 of CGAL's samples clipped at 30 and 70% of their height, at 1000 vertices, 179 met the
+// three bars instead of 177, the poly's 30.6-degree corner 15.3 -> 30.6 degrees);
 // where a border edge is left too short, its collapse, and those steps again
 // (collapseShortBorderEdges: on the 36 disks, 25 meet all bars instead of 23, Homer clipped in
 // half at 2000 vertices 16.4 -> 32.5 degrees, the man at 500 23.7 -> 33.1; collapsing first,
@@ -235,6 +238,7 @@ void lastSteps(Mesh& result, const PreparedInput& input, const RemeshOptions& o,
       flipToRegularity(result);
       relaxedValenceMoves(result, original, tips);
       raiseSmallAngles(result, original, tips);
+      earsAtSharpCorners(result, original, tips);
     };
     regularize();
     if (collapseShortBorderEdges(result, original, tips) > 0) regularize();

@@ -148,9 +148,7 @@ bool mergeVertex(Mesh& m, int from, int to) {
 }
 
 void eraseMergedTriangles(Mesh& m) {
-  m.triangles.erase(std::remove_if(m.triangles.begin(), m.triangles.end(),
-                                   [](const Triangle& t) { return t[0] == t[1]; }),
-                    m.triangles.end());
+  m.triangles.erase(std::remove_if(m.triangles.begin(), m.triangles.end(), isMergeMarker), m.triangles.end());
 }
 
 // A flat triangle that neither moves nor flips can fix (a vertex on the segment between two

@@ -52,7 +52,9 @@ std::pair<std::vector<int>, std::vector<int>> borderNeighbours(const Mesh& m);
 // third corners of the triangles on their edge: two inside, one on the border -- the link
 // condition) and folds none of the triangles that keep `from`.
 bool mergeVertex(Mesh& m, int from, int to);
-// Erases the markers mergeVertex() leaves where triangles went.
+// The marker mergeVertex() leaves where a triangle went (its three corners the same), and their
+// erasure.
+inline bool isMergeMarker(const Triangle& t) { return t[0] == t[1]; }
 void eraseMergedTriangles(Mesh& m);
 
 // Merges an inside vertex of each triangle under 10 degrees into a neighbour along the

@@ -345,6 +345,66 @@ TEST(LastSteps, AShortBorderEdgeStaysWhereItsCollapseLowersTheAngles) {
   EXPECT_EQ(m.triangles, surface.triangles);
 }
 
+// A point `length` from the origin at `degrees` from the x axis, in the plane z = 0.
+Vec3 polar(double length, double degrees) {
+  const double a = degrees * M_PI / 180;
+  return Vec3(length * std::cos(a), length * std::sin(a), 0.0);
+}
+
+// A border corner of 40 degrees at vertex 0 whose two triangles share inside vertex 3 (a site
+// in the wedge, 0.6 out along its bisector): 20 degrees at the corner, which no move of vertex 3
+// raises. Vertex 3 goes, and the corner is one triangle of 40, 70 and 70 degrees; a pinned
+// vertex keeps its place under its new number. Pinned itself, vertex 3 stays.
+TEST(LastSteps, ASharpCornerWithASiteInItsWedgeBecomesAnEar) {
+  Mesh surface;
+  surface.points = {Vec3::Zero(), polar(1, 0), polar(1, 40), polar(0.6, 20), polar(1.6, 20)};
+  surface.triangles = {{0, 1, 3}, {0, 3, 2}, {3, 1, 2}, {1, 4, 2}};
+  ASSERT_NEAR(measureQuality(surface).minAngle, 20.0, 1e-9);
+  Mesh m = surface;
+  std::vector<int> pinned = {4};
+  EXPECT_EQ(earsAtSharpCorners(m, surface, pinned), 1);
+  EXPECT_NO_THROW(validateMesh(m, "ear"));
+  EXPECT_TRUE(analyzeTopology(m).isDisk());
+  EXPECT_EQ(m.vertexCount(), 4);
+  EXPECT_EQ(m.faceCount(), 2);
+  EXPECT_NEAR(measureQuality(m).minAngle, 40.0, 1e-9);
+  ASSERT_EQ(pinned, std::vector<int>{3});
+  EXPECT_EQ(m.points[3], surface.points[4]);
+
+  Mesh kept = surface;
+  std::vector<int> site = {3};
+  EXPECT_EQ(earsAtSharpCorners(kept, surface, site), 0);
+  EXPECT_EQ(kept.triangles, surface.triangles);
+}
+
+// A border corner of 50 degrees at vertex 0 whose two triangles share inside vertex 3 of five
+// triangles, beyond the chord between the corner's neighbours: 25 degrees at the corner. The
+// edge from the corner to vertex 3 is flipped: the corner is one triangle, the one across the
+// new edge has 35.2 degrees at least, and the mesh's smallest angle is now that of the triangles
+// beside them (30.2). A corner of 70 degrees (35 on either side) is left as it is.
+TEST(LastSteps, ASharpCornersEdgeToAnInsideVertexIsFlippedAway) {
+  const auto fan = [](double corner) {
+    Mesh m;
+    m.points = {Vec3::Zero(), polar(1, 0), polar(1, corner), polar(1.2, corner / 2), polar(2, 5),
+                polar(2, corner - 5)};
+    m.triangles = {{0, 1, 3}, {0, 3, 2}, {1, 4, 3}, {3, 4, 5}, {3, 5, 2}};
+    return m;
+  };
+  const Mesh surface = fan(50);
+  ASSERT_NEAR(measureQuality(surface).minAngle, 25.0, 1e-9);
+  Mesh m = surface;
+  std::vector<int> none;
+  EXPECT_EQ(earsAtSharpCorners(m, surface, none), 1);
+  EXPECT_EQ(m.vertexCount(), surface.vertexCount());
+  EXPECT_EQ(Rings(m).offset[1] - Rings(m).offset[0], 1);  // the corner's one triangle
+  EXPECT_NEAR(measureQuality(m).minAngle, 30.16, 0.01);
+
+  const Mesh wide = fan(70);
+  Mesh same = wide;
+  EXPECT_EQ(earsAtSharpCorners(same, wide, none), 0);
+  EXPECT_EQ(same.triangles, wide.triangles);
+}
+
 // Issue 6: the vertices of a stitched seam (here a jittered column of a flat grid) move on the
 // surface and their triangles get rounder; the rest of the mesh stays where it was but for the
 // seam's neighbours.
