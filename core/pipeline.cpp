@@ -465,14 +465,14 @@ void measureFidelityOf(RemeshResult& result, const PreparedInput& input) {
 // of a seam get the same samples; its projection is the map tried where LSCM folds. The
 // stitched seams are relaxed (polishSeams) and snapped to tips.
 RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name,
-                          const PreparedInput* prepared) {
+                          const PreparedInput* prepared, const ChartOptions& charting) {
   Stopwatch wall, stage;
   RemeshResult result;
   result.coarseInput = coarseTarget(options, input);
   const Mesh mesh = simplifiedTo(input, simplifyTarget(options, input), prepared, name);
   result.ms.simplify = stage.lap();
   const int asked = verticesAsked(options) > 0 ? verticesAsked(options) : mesh.vertexCount();
-  const Charts charts = splitIntoCharts(mesh, asked);
+  const Charts charts = splitIntoCharts(mesh, asked, charting);
   if (charts.charts.size() < 2) throw Error(name + ": one chart covers it");
   const double area = surfaceArea(mesh);
   const double spacing = std::sqrt(2.0 * area / (std::sqrt(3.0) * asked));
@@ -556,19 +556,27 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
 // Where the one cut fails (every map of it folds or collapses: a badly shaped input whose
 // protrusions the slits do not all reach, as CGAL's bull clipped lengthwise, 3 of 98 clipped
 // halves of CGAL's samples), the surface chart by chart: each chart is nearly flat, and its own
-// projection holds. If that fails too, the one cut's error stands.
+// projection holds. A chart too small for its share of the vertices is merged into a neighbour
+// (ChartOptions::smallestShare), and the union can bend more than any map of it holds (CGAL's
+// bull clipped at 70% of its height, at 500 vertices: a leg's charts merged into one whose
+// normals spread over 170 degrees, and even Tutte's map collapsed triangles of it) or leave
+// seams that do not stitch (the camel clipped so); where the charts fail, smaller ones are
+// allowed, down to kSmallestChartShare. If they all fail, the one cut's error stands.
 RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, const std::string& name,
                            const PreparedInput& prepared, const Error& oneCut) {
-  try {
-    RemeshResult charted = remeshCharts(input, options, name, &prepared);
-    charted.chartTrial = ChartTrial{};
-    charted.chartTrial->charts = charted.charts;
-    charted.chartTrial->chartsAvgMinAngle = charted.after.avgMinAngle;
-    charted.chartTrial->chartsBars = barsMet(charted.after);
-    charted.chartTrial->oneCutFailed = problemOf(oneCut, name);
-    return charted;
-  } catch (const Error&) {
-    throw oneCut;
+  constexpr int kSmallestChartShare = 5;
+  for (ChartOptions charting;; charting.smallestShare /= 2) {
+    try {
+      RemeshResult charted = remeshCharts(input, options, name, &prepared, charting);
+      charted.chartTrial = ChartTrial{};
+      charted.chartTrial->charts = charted.charts;
+      charted.chartTrial->chartsAvgMinAngle = charted.after.avgMinAngle;
+      charted.chartTrial->chartsBars = barsMet(charted.after);
+      charted.chartTrial->oneCutFailed = problemOf(oneCut, name);
+      return charted;
+    } catch (const Error&) {
+      if (charting.smallestShare / 2 < kSmallestChartShare) throw oneCut;
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 // The whole remeshing pipeline: parameterize, density, initial sites, Lloyd, lift, measure.
 #pragma once
 
+#include "charts.h"
 #include "cut.h"
 #include "density.h"
 #include "fit.h"
@@ -225,7 +226,8 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
 // conformal map of it holds, and keeps where it is better (ChartTrial). Throws Error where
 // there is one chart only, a chart fails or the seams do not stitch.
 RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const std::string& name,
-                          const PreparedInput* prepared = nullptr);  // as RemeshSession takes it
+                          const PreparedInput* prepared = nullptr,  // as RemeshSession takes it
+                          const ChartOptions& charting = {});
 bool usesResampling(const RemeshOptions& options);  // false with relocate or the input's vertices
 RemeshOptions withoutResampling(RemeshOptions options);
 // The problem an Error states, without the "<name>: " it starts with and any "; try ..." advice.

@@ -127,15 +127,16 @@ inline std::string cgalSample(const std::string& name) {
 #define SKIP_UNLESS_EXTRACTED(path) \
   if (!std::ifstream(path).good()) GTEST_SKIP() << (path) << " not extracted (run ./build.sh)"
 
-// The lower half of a mesh along `axis` (triangles wholly below the middle of its range), its
-// largest piece.
-inline Mesh lowerHalf(const Mesh& mesh, int axis = 2) {
+// The lower half of a mesh along `axis` (triangles wholly below the middle of its range, or
+// below `fraction` of it), its largest piece.
+inline Mesh lowerHalf(const Mesh& mesh, int axis = 2, double fraction = 0.5) {
   double low = INFINITY, high = -INFINITY;
   for (const Vec3& p : mesh.points) low = std::min(low, p[axis]), high = std::max(high, p[axis]);
   Mesh half;
   half.points = mesh.points;
   for (const Triangle& t : mesh.triangles)
-    if (std::max({mesh.points[t[0]][axis], mesh.points[t[1]][axis], mesh.points[t[2]][axis]}) < 0.5 * (low + high))
+    if (std::max({mesh.points[t[0]][axis], mesh.points[t[1]][axis], mesh.points[t[2]][axis]}) <
+        low + fraction * (high - low))
       half.triangles.push_back(t);
   std::vector<Mesh> pieces = splitComponents(half);
   return *std::max_element(pieces.begin(), pieces.end(),
