@@ -2,9 +2,10 @@
 """Clips a closed triangle mesh (OFF) in half, for disks that are in neither of the bench's
 sets (docs/bench.md, "Disks from outside the bench").
 
-    python3 docs/clip_half.py IN.off OUT.off [AXIS]
+    python3 docs/clip_half.py IN.off OUT.off [AXIS [FRACTION]]
 
-The plane is z = the middle of the mesh's z range (AXIS 0 or 1: x or y instead). Triangles that cross it are split along it
+The plane is z = the middle of the mesh's z range (AXIS 0 or 1: x or y instead; FRACTION 0.3:
+at 30% of the range from its low end instead of 50%). Triangles that cross it are split along it
 (vertices within a fifth of the mean edge length of it are first moved onto it, so that no
 sliver is made), the part below is kept, and of that its largest edge-connected piece. Exits
 with 1, writing nothing, unless that piece is a disk (one border loop, Euler characteristic 1).
@@ -31,9 +32,9 @@ def read_off(path):
     return points, faces
 
 
-def clip_below(points, faces, axis=2):
+def clip_below(points, faces, axis=2, fraction=0.5):
     lo, hi = min(p[axis] for p in points), max(p[axis] for p in points)
-    level = lo + 0.5 * (hi - lo)
+    level = lo + fraction * (hi - lo)
     mean_edge = sum(math.dist(points[f[0]], points[f[1]]) for f in faces) / len(faces)
     points = [list(p) for p in points]
     for p in points:
@@ -125,12 +126,15 @@ def disk_problem(faces):
 
 
 def main():
-    if len(sys.argv) not in (3, 4) or (len(sys.argv) == 4 and sys.argv[3] not in ("0", "1", "2")):
+    if len(sys.argv) not in (3, 4, 5) or (len(sys.argv) >= 4 and sys.argv[3] not in ("0", "1", "2")):
         sys.exit(__doc__)
     source, target = sys.argv[1], sys.argv[2]
-    axis = int(sys.argv[3]) if len(sys.argv) == 4 else 2
+    axis = int(sys.argv[3]) if len(sys.argv) >= 4 else 2
+    fraction = float(sys.argv[4]) if len(sys.argv) == 5 else 0.5
+    if not 0 < fraction < 1:
+        sys.exit(f"FRACTION must be between 0 and 1, not {sys.argv[4]}")
     points, faces = read_off(source)
-    points, faces = clip_below(points, faces, axis)
+    points, faces = clip_below(points, faces, axis, fraction)
     faces = largest_piece(faces)
     problem = disk_problem(faces)
     if problem:
