@@ -635,7 +635,10 @@ int earsAtSharpCorners(Mesh& m, const SearchableSurface& surface, std::vector<in
   if (m.triangles.empty() || surface.mesh.triangles.empty()) return 0;
   int made = 0;
   std::set<std::pair<int, int>> refused;  // (corner, inside neighbour), since the last change
-  for (bool again = true; again;) {
+  // Each change takes a triangle from a corner; the bound only guards against flips that undo
+  // each other, which no measured run made.
+  const int most = m.faceCount();
+  for (bool again = true; again && made < most;) {
     again = false;
     const Rings rings(m);
     const std::vector<bool> border = vertexEdges(m).onBoundary;
