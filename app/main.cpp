@@ -122,8 +122,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                  "retriangulate's clean-up in 3D: -1 none, 0 Delaunay flips, K flips and K "
                  "relaxation passes on the surface (default 3)");
   cmd.add_option("--polish-target", r.polishTarget,
-                 "where the polish moves each vertex: centroid (default, of its ring) or "
-                 "circumcenter (optimal Delaunay)");
+                 "where the polish moves each vertex: centroid (default: of its ring's triangles), "
+                 "voronoi (of its Voronoi cell in its ring) or circumcenter (optimal Delaunay)");
   cmd.add_option("--simplify", r.simplify,
                  "Quadric edge collapse to N vertices first (the boundary stays in place), and "
                  "N vertices in the result (a coarser input is remeshed finer)");

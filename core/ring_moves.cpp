@@ -244,7 +244,7 @@ const char* toString(PolishTarget target) {
 }
 
 PolishTarget parsePolishTarget(const std::string& text) {
-  for (PolishTarget t : {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter})
+  for (PolishTarget t : kPolishTargets)
     if (text == toString(t)) return t;
   throw Error("unknown polish target '" + text + "' (voronoi, centroid, circumcenter)");
 }

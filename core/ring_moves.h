@@ -17,6 +17,7 @@ enum class PolishTarget {
   Centroid,      // the area-weighted centroid of the ring's triangles (a Lloyd step)
   Circumcenter,  // the area-weighted circumcentre (optimal Delaunay triangulation, Chen & Xu)
 };
+constexpr PolishTarget kPolishTargets[] = {PolishTarget::Voronoi, PolishTarget::Centroid, PolishTarget::Circumcenter};
 const char* toString(PolishTarget target);
 PolishTarget parsePolishTarget(const std::string& text);  // throws Error on unknown names
 

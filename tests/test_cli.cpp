@@ -1,5 +1,7 @@
 // The command line as a user meets it: exit codes, one-line errors, JSON, files left alone.
+#include "lloyd.h"
 #include "mesh_io.h"
+#include "ring_moves.h"
 #include "topology.h"
 #include "test_support.h"
 
@@ -282,6 +284,14 @@ TEST(Cli, UnknownOptionValues) {
   EXPECT_NE(r.err.find("unknown parameterization 'nope'"), std::string::npos) << r.err;
   EXPECT_NE(runCli("remesh " + test::assetPath("jittered_grid.off") +
                        " --method relocate --sites 100").code, 0);
+}
+
+// The help lists every value an option with a fixed set of choices takes.
+TEST(Cli, RemeshHelpNamesEverySolverAndPolishTarget) {
+  const CliRun r = runCli("remesh --help");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (CvtSolver s : kCvtSolvers) EXPECT_NE(r.out.find(toString(s)), std::string::npos) << toString(s);
+  for (PolishTarget t : kPolishTargets) EXPECT_NE(r.out.find(toString(t)), std::string::npos) << toString(t);
 }
 
 TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
