@@ -654,7 +654,8 @@ void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), rgb(1.0f, 0.98f, 0.9f));
   const Caption c = caption(*stage_, captionFacts());
-  ImGui::TextColored(ImVec4(0.6f, 0.15f, 0.0f, 1.0f), "%s", c.title.c_str());
+  const std::string title = c.title + (lesson_.paused() && lesson_.playing() ? " (paused: Space plays on)" : "");
+  ImGui::TextColored(ImVec4(0.6f, 0.15f, 0.0f, 1.0f), "%s", title.c_str());
   ImGui::SameLine();
   ImGui::TextWrapped("%s", c.formula.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.15f, 0.5f, 1.0f));
@@ -685,10 +686,15 @@ void Inspector::handleKeys() {
   if (letterPressed('P')) presentation_ = !presentation_;
   if (letterPressed('L')) toggleLesson();
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) setIteration(replay_->iterationCount() - 1);
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
-    if (!playing_ && iteration_ + 1 >= replay_->iterationCount()) setIteration(0);
-    playing_ = !playing_;
-  }
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) togglePlay();
+}
+
+// Play or pause: the lesson where one is playing, else the iterations (from the first again
+// once at the last).
+void Inspector::togglePlay() {
+  if (lesson_.playing()) return lesson_.togglePause();
+  if (!playing_ && iteration_ + 1 >= replay_->iterationCount()) setIteration(0);
+  playing_ = !playing_;
 }
 
 void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
@@ -1371,10 +1377,8 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   if (ImGui::Button("<")) setIteration(iteration_ - 1);
   ImGui::SameLine();
-  if (ImGui::Button(playing_ ? "Pause" : "Play ")) {
-    if (!playing_ && iteration_ >= last) setIteration(0);
-    playing_ = !playing_;
-  }
+  const bool moving = lesson_.playing() ? !lesson_.paused() : playing_;
+  if (ImGui::Button(moving ? "Pause" : "Play ")) togglePlay();
   ImGui::SameLine();
   if (ImGui::Button(">")) setIteration(iteration_ + 1);
   ImGui::SameLine();

@@ -133,6 +133,7 @@ class Inspector {
   CaptionFacts captionFacts();
   Layers layers() const;  // the lesson stage's, or the display switches'
   void toggleLesson();
+  void togglePlay();
   void handleKeys();
   void pick2D(const Vec2& uv);
   void pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent);

@@ -60,10 +60,11 @@ void LessonPlayer::start(std::vector<LessonStep> plan) {
   plan_ = std::move(plan);
   next_ = 0;
   clock_ = 0;
+  paused_ = false;
 }
 
 void LessonPlayer::advance(float seconds) {
-  if (!playing()) return;
+  if (!playing() || paused_) return;
   clock_ += seconds;
   while (clock_ >= plan_[next_].seconds) {
     clock_ -= plan_[next_].seconds;

@@ -43,12 +43,15 @@ struct LessonStep {
 // iterations one at a time, then the other iterations quickly, then lift and the result.
 std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations = 3);
 
-// Plays a plan: advance() by the frame's seconds times a speed factor.
+// Plays a plan: advance() by the frame's seconds times a speed factor. Paused, it stays on its
+// step (a lecturer stops at a stage to work one cell's numbers with the class).
 class LessonPlayer {
  public:
   void start(std::vector<LessonStep> plan);
   void stop() { plan_.clear(); }
   bool playing() const { return !plan_.empty(); }
+  void togglePause() { paused_ = !paused_; }
+  bool paused() const { return paused_; }
   void advance(float seconds);
   const LessonStep& current() const { return plan_.at(next_); }
 
@@ -56,6 +59,7 @@ class LessonPlayer {
   std::vector<LessonStep> plan_;
   size_t next_ = 0;
   float clock_ = 0;
+  bool paused_ = false;
 };
 
 // The numbers a caption quotes.

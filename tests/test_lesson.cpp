@@ -41,6 +41,23 @@ TEST(Lesson, PlayerAdvancesAndStopsOnTheResult) {
   EXPECT_FALSE(player.playing());
 }
 
+// Paused, the lesson stays on its stage however long the frames run; a new lesson starts
+// unpaused.
+TEST(Lesson, APausedLessonStaysOnItsStage) {
+  LessonPlayer player;
+  player.start(lessonPlan(4, 1));
+  player.togglePause();
+  EXPECT_TRUE(player.paused());
+  player.advance(1000.0f);
+  EXPECT_EQ(player.current().stage, Stage::Load);
+  player.togglePause();
+  player.advance(4.1f);
+  EXPECT_EQ(player.current().stage, Stage::Parameterize);
+  player.togglePause();
+  player.start(lessonPlan(4, 1));
+  EXPECT_FALSE(player.paused());
+}
+
 TEST(Lesson, StagesRevealOneLayerAtATime) {
   const Layers load = layersFor(Stage::Load), voronoi = layersFor(Stage::Voronoi),
                centroids = layersFor(Stage::Centroids), move = layersFor(Stage::Move),
