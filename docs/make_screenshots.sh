@@ -3,12 +3,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/app/lloydscope
-$bin inspect assets/bumpy_disk.off --no-timings --iteration 0 --screenshot docs/inspector_iteration0.png
+# From scattered sites (no first pass), as a lesson starts: see docs/guide.md.
+$bin inspect assets/bumpy_disk.off --no-timings --no-resample --iteration 0 --screenshot docs/inspector_iteration0.png
 $bin inspect assets/bumpy_disk.off --no-timings --iteration 10 --screenshot docs/inspector_iteration10.png
 $bin inspect assets/bumpy_disk.off --no-timings --screenshot docs/inspector_converged.png
 $bin inspect assets/bumpy_disk.off --no-timings --iteration 3 --select-cell 400 \
   --select-triangle 700 --screenshot docs/inspector_selection.png
-$bin inspect assets/bumpy_disk.off --no-timings --iteration 1 --presentation --stage centroids \
+$bin inspect assets/bumpy_disk.off --no-timings --no-resample --iteration 1 --presentation --stage centroids \
   --select-cell 400 --screenshot docs/inspector_lesson.png
 $bin inspect assets/bumpy_disk.off --no-timings --compare-solvers --pane plots \
   --screenshot docs/inspector_compared.png
