@@ -636,6 +636,8 @@ CaptionFacts Inspector::captionFacts() {
   f.border = toString(options_.param.border);
   f.solver = toString(options_.lloyd.solver);
   f.method = toString(replay_->method());
+  f.firstPass = usesResampling(options_) && result_.resampleDropped.empty() &&
+                !(result_.firstPassTrial && result_.firstPassTrial->keptWithout);
   f.distortion = result_.distortion;
   f.iteration = iteration_;
   f.iterations = replay_->iterationCount();
@@ -1130,10 +1132,10 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   if (fill_ != CellFill::None)
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, format("%.2e", fillRange_[1]).c_str(),
                  format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
+  const Layers shown = layers();
+  const bool seams = !replay_->seams().empty() || !replay_->recording().sharedSeams.empty();
   dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - ImGui::GetFontSize() - 5), rgb(0.1f, 0.1f, 0.1f),
-              replay_->seams().empty() && replay_->recording().sharedSeams.empty()
-                  ? "dots: sites  rings: centroids  squares: fixed border sites"
-                                            : "dots: sites  rings: centroids  squares: fixed  purple: seams");
+              domainLegend(shown.sites2D, shown.centroids2D, seams).c_str());
   dl->PopClipRect();
   ImGui::End();
 }

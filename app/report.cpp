@@ -219,6 +219,16 @@ std::string coarseInputText(int coarse, int inputVertices) {
          "against the input itself";
 }
 
+std::string domainLegend(bool sites, bool centroids, bool seams) {
+  std::string legend;
+  auto add = [&](const char* part) { legend += (legend.empty() ? "" : "  ") + std::string(part); };
+  if (sites) add("dots: sites");
+  if (centroids) add("rings: centroids");
+  if (sites) add(seams ? "squares: fixed" : "squares: fixed border sites");
+  if (seams) add("purple: seams");
+  return legend;
+}
+
 std::string distanceText(const Fidelity& f) {
   if (f.samples == 0) return "Distance to the input not measured (--no-fidelity)";
   return "Hausdorff " + format("%.3f", f.hausdorffPercent) + "%, RMS " + format("%.3f", f.rmsPercent) +

@@ -50,6 +50,10 @@ std::string distanceText(const Fidelity& f);
 // --no-fidelity says.
 std::string shownDistanceText(const Fidelity& f, bool asked, bool running);
 
+// The 2D pane's legend for what it draws: the sites (dots, and the fixed ones as squares), the
+// centroids (rings), and a cut surface's seams.
+std::string domainLegend(bool sites, bool centroids, bool seams);
+
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);

@@ -91,9 +91,11 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                          f.input.minAngle, f.input.avgMinAngle);
       break;
     case Stage::Parameterize:
-      c.formula = format("The %s map flattens the disk onto the plane (%s border): every "
+      c.formula = format("The %s map flattens %s onto the plane (%s border): every "
                          "point of the surface gets coordinates (u, v).",
-                         f.param.c_str(), f.border.c_str());
+                         f.param.c_str(),
+                         f.firstPass ? "a rough first remeshing of the disk (its vertices are the first sites)" : "the disk",
+                         f.border.c_str());
       c.numbers = format("Area distortion r = (3D area share) / (UV area share): %.2f to %.2f; "
                          "mean |ln r| = %.2f. The density ρ makes up for it.",
                          f.distortion.minAreaRatio, f.distortion.maxAreaRatio,
@@ -120,6 +122,9 @@ Caption caption(Stage stage, const CaptionFacts& f) {
       c.formula = f.solver == "lloyd"
                       ? "Lloyd: every site moves to its centroid, sᵢ ← cᵢ (arrows), and the "
                         "cells are drawn again."
+                  : f.solver == "newton"
+                      ? "Newton: the sites take a step with the energy's exact second derivatives, "
+                        "down its gradient 2 Mᵢ (sᵢ − cᵢ) (arrows: sᵢ → cᵢ)."
                       : "L-BFGS: the sites take a quasi-Newton step down the energy, whose "
                         "gradient is 2 Mᵢ (sᵢ − cᵢ) (arrows: sᵢ → cᵢ).";
       c.numbers = format("Iteration %d: E = %.4e, largest move %.2e, %.1f%% of sites moved "

@@ -67,6 +67,7 @@ struct CaptionFacts {
   std::string mesh;
   QualityMetrics input, result;
   std::string param, border, solver, method;  // as the settings name them
+  bool firstPass = false;  // the map is of a rough first remeshing, whose vertices are the first sites
   Distortion distortion;
   int iteration = 0, iterations = 0;
   double energy = 0, maxMove = 0, percentMoving = 0;

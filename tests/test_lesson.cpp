@@ -90,8 +90,22 @@ TEST(Lesson, CaptionsQuoteThePinnedCell) {
   EXPECT_NE(centroids.numbers.find("2.500e-03"), std::string::npos);
   EXPECT_NE(centroids.numbers.find("(0.25000, 0.75000)"), std::string::npos);
   EXPECT_NE(caption(Stage::Move, facts).formula.find("Lloyd"), std::string::npos);
+  facts.solver = "newton";
+  EXPECT_EQ(caption(Stage::Move, facts).formula.rfind("Newton", 0), 0u);
+  facts.solver = "lbfgs";
+  EXPECT_EQ(caption(Stage::Move, facts).formula.rfind("L-BFGS", 0), 0u);
   facts.cell.reset();
   EXPECT_NE(caption(Stage::Voronoi, facts).numbers.find("Iteration 2 of 9"), std::string::npos);
+}
+
+// The map of a run with the first pass is the rough remeshing's, and the caption says so: it
+// is why the sites start evenly spread.
+TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
+  CaptionFacts facts;
+  facts.param = "lscm";
+  EXPECT_EQ(caption(Stage::Parameterize, facts).formula.find("first remeshing"), std::string::npos);
+  facts.firstPass = true;
+  EXPECT_NE(caption(Stage::Parameterize, facts).formula.find("first remeshing"), std::string::npos);
 }
 
 TEST(Lesson, StageNamesRoundTrip) {

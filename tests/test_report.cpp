@@ -160,3 +160,13 @@ TEST(Report, TheInspectorsDistanceLineSaysWhyThereIsNone) {
   measured.hausdorffPercent = 0.335;
   EXPECT_EQ(shownDistanceText(measured, true, false), distanceText(measured));
 }
+
+// The 2D pane's legend names only what the pane draws: a lesson's stage before the sites has
+// no dots, squares or rings to explain.
+TEST(Report, TheDomainLegendNamesWhatIsDrawn) {
+  EXPECT_EQ(domainLegend(true, true, false), "dots: sites  rings: centroids  squares: fixed border sites");
+  EXPECT_EQ(domainLegend(true, false, false), "dots: sites  squares: fixed border sites");
+  EXPECT_EQ(domainLegend(false, false, false), "");
+  EXPECT_EQ(domainLegend(false, false, true), "purple: seams");
+  EXPECT_EQ(domainLegend(true, true, true), "dots: sites  rings: centroids  squares: fixed  purple: seams");
+}
