@@ -348,23 +348,32 @@ TEST(ClippedCgalSample, AllTheCamelsLimbsAreSlit) {
   EXPECT_NEAR(r.output.vertexCount(), 500, 10);
 }
 
-// CGAL's bull clipped lengthwise (its lower half along y: two legs, the tail, slivers of 1
-// degree): every map of the one cut folds or collapses (27 triangles under 10^-14 of the domain
-// even in Tutte's), and remesh failed. It is remeshed chart by chart instead, and says why.
-TEST(ClippedCgalSample, TheBullWhoseMapsAllCollapseIsRemeshedChartByChart) {
-  const std::string path = test::cgalSample("bull.off");
-  SKIP_UNLESS_EXTRACTED(path);
-  const Mesh bull = test::lowerHalf(readMesh(path).mesh, 1);
+namespace {
+// CGAL's bull clipped along y at `fraction` of its height, remeshed to `sites` vertices into
+// `r`: its one cut fails ("not one-to-one"), and its charts stand in, a disk of `sites`
+// vertices within `tolerance`.
+void remeshTheClippedBullInCharts(double fraction, int sites, int tolerance, RemeshResult& r) {
+  const Mesh bull = test::lowerHalf(readMesh(test::cgalSample("bull.off")).mesh, 1, fraction);
   ASSERT_TRUE(analyzeTopology(bull).isDisk()) << analyzeTopology(bull).describe();
   RemeshOptions o;
-  o.sites.count = 1000;
+  o.sites.count = sites;
   o.measureFidelity = false;
-  const RemeshResult r = remesh(bull, o, "bull");
+  r = remesh(bull, o, "bull");
   EXPECT_GT(r.charts, 1);
   ASSERT_TRUE(r.chartTrial.has_value());
   EXPECT_NE(r.chartTrial->oneCutFailed.find("not one-to-one"), std::string::npos) << r.chartTrial->oneCutFailed;
   EXPECT_TRUE(analyzeTopology(r.output).isDisk());
-  EXPECT_NEAR(r.output.vertexCount(), 1000, 30);
+  EXPECT_NEAR(r.output.vertexCount(), sites, tolerance);
+}
+}  // namespace
+
+// CGAL's bull clipped lengthwise (its lower half along y: two legs, the tail, slivers of 1
+// degree): every map of the one cut folds or collapses (27 triangles under 10^-14 of the domain
+// even in Tutte's), and remesh failed. It is remeshed chart by chart instead, and says why.
+TEST(ClippedCgalSample, TheBullWhoseMapsAllCollapseIsRemeshedChartByChart) {
+  SKIP_UNLESS_EXTRACTED(test::cgalSample("bull.off"));
+  RemeshResult r;
+  ASSERT_NO_FATAL_FAILURE(remeshTheClippedBullInCharts(0.5, 1000, 30, r));
   EXPECT_GT(r.after.avgMinAngle, 50.0);
 }
 
@@ -373,19 +382,9 @@ TEST(ClippedCgalSample, TheBullWhoseMapsAllCollapseIsRemeshedChartByChart) {
 // neighbour, and one of those unions bent so far that even Tutte's map of it collapsed
 // triangles. Smaller charts are allowed where that happens (chartsInstead).
 TEST(ClippedCgalSample, TheBullWhoseChartsFailAtFirstIsRemeshedInSmallerCharts) {
-  const std::string path = test::cgalSample("bull.off");
-  SKIP_UNLESS_EXTRACTED(path);
-  const Mesh bull = test::lowerHalf(readMesh(path).mesh, 1, 0.7);
-  ASSERT_TRUE(analyzeTopology(bull).isDisk()) << analyzeTopology(bull).describe();
-  RemeshOptions o;
-  o.sites.count = 500;
-  o.measureFidelity = false;
-  const RemeshResult r = remesh(bull, o, "bull");
-  EXPECT_GT(r.charts, 1);
-  ASSERT_TRUE(r.chartTrial.has_value());
-  EXPECT_NE(r.chartTrial->oneCutFailed.find("not one-to-one"), std::string::npos) << r.chartTrial->oneCutFailed;
-  EXPECT_TRUE(analyzeTopology(r.output).isDisk());
-  EXPECT_NEAR(r.output.vertexCount(), 500, 25);
+  SKIP_UNLESS_EXTRACTED(test::cgalSample("bull.off"));
+  RemeshResult r;
+  remeshTheClippedBullInCharts(0.7, 500, 25, r);
 }
 
 // CGAL's three peaks simplified to 1000 vertices: its peaks shrink it by 3 10^4 and five slits
