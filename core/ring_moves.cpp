@@ -162,7 +162,7 @@ int collapseFlatTriangles(Mesh& m) {
   int merged = 0;
   for (size_t f = 0; f < m.triangles.size(); ++f) {
     const Triangle t = m.triangles[f];
-    if (t[0] == t[1] || smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]) >= kCollapseBelow)
+    if (isMergeMarker(t) || smallestAngleDeg(m.points[t[0]], m.points[t[1]], m.points[t[2]]) >= kCollapseBelow)
       continue;
     // Its edges, shortest first; each end that is not on the border may go.
     std::array<int, 3> edges = {0, 1, 2};
