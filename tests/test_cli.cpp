@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <sys/wait.h>
 #include <thread>
 
@@ -311,6 +312,45 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
       << table;
   EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 8) << rows;  // header and seven rows
   EXPECT_EQ(rows.rfind("model,size,method,vertices", 0), 0u);
+}
+
+// Issue 5 asks the bench to print the input's size (Table I before) and the time of each stage
+// too: a table of the defaults' stages, its total the main table's time, and the same in the CSV.
+TEST(Cli, BenchPrintsWhereTheTimeGoes) {
+  const std::string csv = test::tempPath("bench_stages.csv");
+  const CliRun r = runCli("bench " + test::assetPath("sphere_cap.off") + " --sizes 200 --no-reference --csv " + csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto cells = [](const std::string& line) {  // a markdown row's cells, trimmed ([0] is before the first |)
+    std::vector<std::string> out;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, '|');) {
+      const size_t first = cell.find_first_not_of(' ');
+      out.push_back(first == std::string::npos ? "" : cell.substr(first, cell.find_last_not_of(' ') - first + 1));
+    }
+    return out;
+  };
+  const auto lineStarting = [&](const std::string& start, size_t from = 0) {
+    const size_t at = r.out.find(start, from);
+    return at == std::string::npos ? std::string() : r.out.substr(at, r.out.find('\n', at) - at);
+  };
+  const std::vector<std::string> main = cells(lineStarting("| sphere_cap | 200 | lloydscope |"));
+  const size_t header = r.out.find("| model | size | input vertices | input faces |");
+  ASSERT_NE(header, std::string::npos) << r.out;
+  const std::vector<std::string> stages = cells(lineStarting("| sphere_cap | 200 |", header));
+  ASSERT_GE(main.size(), 8u);
+  ASSERT_GE(stages.size(), 15u) << r.out;
+  EXPECT_EQ(stages[3], "200");  // the prepared input has the size asked
+  EXPECT_GT(std::stoi(stages[4]), 300);  // faces: a disk of 200 vertices has nearly twice as many
+  EXPECT_GT(std::stod(stages[10]), 0);  // Lloyd's stage took time
+  EXPECT_EQ(stages[13], main[7]);  // the total is the main table's time
+
+  const std::string rows = test::readText(csv);
+  const std::string head = rows.substr(0, rows.find('\n'));
+  for (const char* column : {"vertices_before", "faces_before", "ms_cut", "ms_other_way"})
+    EXPECT_NE(head.find(column), std::string::npos) << column;
+  const std::string first = rows.substr(head.size() + 1, rows.find('\n', head.size() + 1) - head.size() - 1);
+  EXPECT_EQ(first.rfind("sphere_cap,200,lloydscope,", 0), 0u) << first;
+  EXPECT_NE(first.find(",200," + stages[4] + ","), std::string::npos) << first;  // before: as printed
 }
 
 // --as-is: the model as it comes, remeshed to the size, the defaults and --full-input beside CGAL.
