@@ -827,7 +827,8 @@ std::string problemOf(const Error& e, const std::string& name) {
   return problem.substr(0, problem.find("; try"));
 }
 
-std::string describe(const RemeshOptions& o) {
+std::string describe(const RemeshOptions& options) {
+  const RemeshOptions o = effective(options);  // what runs: relocate has no first pass, for one
   std::ostringstream s;
   if (o.simplifyTo > 0) s << "simplify=" << o.simplifyTo << " ";
   s << "method=" << toString(o.method) << " resample=" << (o.resample ? "yes" : "no") << " param=" << toString(o.param.method)

@@ -414,6 +414,17 @@ TEST(Pipeline, SimplifiesFirstWhenAsked) {
   EXPECT_NE(describe(o).find("simplify=400"), std::string::npos);
 }
 
+// The settings line says what runs: relocate moves the input's own vertices, with no first
+// pass (it said "resample=yes sites=as-many-as-input" of a relocate run).
+TEST(Pipeline, TheSettingsLineDescribesWhatRuns) {
+  RemeshOptions o;
+  o.method = RemeshMethod::Relocate;
+  const std::string line = describe(o);
+  EXPECT_NE(line.find("resample=no"), std::string::npos) << line;
+  EXPECT_NE(line.find("sites=input-vertices"), std::string::npos) << line;
+  EXPECT_NE(describe(RemeshOptions()).find("resample=yes"), std::string::npos);
+}
+
 // --simplify N asks for N vertices: a coarser input is not simplified but remeshed finer, to N
 // (the result of `remesh pig.off --simplify 2000` had the pig's 468 vertices).
 TEST(Pipeline, ACoarserInputIsRemeshedToTheSimplifySize) {
