@@ -107,7 +107,8 @@ std::string verdict(const Row& row, const Row& peer) {
 }
 
 // The defaults changed one way each, to show what that step buys: on a prepared input, the
-// polish, the snaps, the fit, the solver, the first pass (and the report's preset); on a model
+// polish, the snaps, the fit, the solver, the first pass, the method (the input's own vertices
+// moved, its triangles kept) and the report's preset; on a model
 // as it comes, simplifying it first (the others would take minutes on a large input).
 std::vector<std::pair<std::string, RemeshOptions>> variants(const RemeshOptions& defaults,
                                                             const BenchOptions& options) {
@@ -126,6 +127,7 @@ std::vector<std::pair<std::string, RemeshOptions>> variants(const RemeshOptions&
   add("--no-fit", [](RemeshOptions& o) { o.fit = false; });
   add("--solver newton", [](RemeshOptions& o) { o.lloyd.solver = CvtSolver::Newton; });
   add("--no-resample", [](RemeshOptions& o) { o.resample = false; });
+  add("--method relocate", [](RemeshOptions& o) { o.method = RemeshMethod::Relocate; });
   if (options.reference)
     all.emplace_back("--preset reference", referencePreset(RemeshMethod::Retriangulate));
   return all;
