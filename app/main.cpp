@@ -185,7 +185,8 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
                                std::optional<Mesh>* input = nullptr) {
   options = remeshOptions(a, cmd);
   const std::string& in = a.input;
-  if (in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) {
+  // By its name, or by its first bytes where it was saved under another (--record takes any).
+  if ((in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) || isRecording(in)) {
     RemeshResult result;
     result.recording = loadRecording(in);
     result.before = measureQuality(result.recording.input);
@@ -229,7 +230,7 @@ int main(int argc, char** argv) {
   CLI::App* inspectCmd = app.add_subcommand(
       "inspect", "Open the inspector on a mesh or a recording; with --screenshot, render it "
                  "headless to a PNG and exit");
-  inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (.lsrec)")
+  inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (remesh --record, .lsrec)")
       ->required();
   inspectCmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit");
   std::string pane = "window", iterations;

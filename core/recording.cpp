@@ -207,6 +207,12 @@ void saveRecording(const Recording& recording, const std::string& path) {
   });
 }
 
+bool isRecording(const std::string& path) {
+  char start[sizeof(kMagic)] = {};
+  std::ifstream file(path, std::ios::binary);
+  return file.read(start, sizeof start) && std::memcmp(start, kMagic, sizeof(kMagic)) == 0;
+}
+
 Recording loadRecording(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw Error(path + ": cannot open the recording (missing or unreadable)");

@@ -48,5 +48,7 @@ std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydO
 void saveRecording(const Recording& recording, const std::string& path);
 // Throws Error("<path>: ...") for a missing, truncated, corrupt or other-version file.
 Recording loadRecording(const std::string& path);
+// Whether the file starts as a recording does, whatever its name (remesh --record takes any).
+bool isRecording(const std::string& path);
 
 }  // namespace lloydscope

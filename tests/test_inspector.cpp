@@ -113,6 +113,17 @@ TEST(Inspector, ReplaysARecording) {
   EXPECT_EQ(readPng(png).width, 640);
 }
 
+// Saved under a name of the user's own (it was refused: "unknown extension '.run'").
+TEST(Inspector, ReplaysARecordingSavedUnderAnyName) {
+  const std::string rec = test::tempPath("inspect.run");
+  ASSERT_EQ(run("remesh " + test::assetPath("jittered_grid.off") +
+                " --max-iterations 4 --no-fidelity --record " + rec + " > /dev/null"),
+            0);
+  const std::string png = test::tempPath("from_named_recording.png");
+  ASSERT_EQ(run("inspect " + rec + " --size 640x400 --screenshot " + png), 0);
+  EXPECT_EQ(readPng(png).width, 640);
+}
+
 TEST(Inspector, PinnedCellAndTriangle) {
   // Cell 100 and triangle 50 highlighted in both views, their numbers in the details panel.
   checkScene("inspector_selection.png", "--iteration 3 --select-cell 100 --select-triangle 50");

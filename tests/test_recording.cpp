@@ -90,6 +90,19 @@ TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {
   }
 }
 
+// A recording is told by its first bytes, whatever its name: remesh --record takes any.
+TEST(Recording, IsToldByItsFirstBytes) {
+  const std::string saved = test::tempPath("run.rec"), mesh = test::tempPath("mesh_named.lsrec"),
+                    tiny = test::tempPath("tiny.rec");
+  saveRecording(sphereCapRun().recording, saved);
+  test::writeText(mesh, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  test::writeText(tiny, "LLO");
+  EXPECT_TRUE(isRecording(saved));
+  EXPECT_FALSE(isRecording(mesh));
+  EXPECT_FALSE(isRecording(tiny));
+  EXPECT_FALSE(isRecording(test::tempPath("none.rec")));
+}
+
 TEST(Recording, MissingFile) { expectError(test::tempPath("nope.lsrec"), "missing"); }
 
 TEST(Recording, NotARecording) {
