@@ -142,7 +142,8 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     row("|c - s|", "%.3e", d.toCentroid);
     row("moved since k-1", "%.3e", d.moved);
     row("neighbours", "%d", d.neighbours);
-    row("valence, result", "%d", d.valence);
+    if (d.valence >= 0) row("valence, result", "%d", d.valence);
+    else row("valence, result", "%s", "- (no vertex)");
     row("param. triangles", "%d", d.pieces);
     table("cell");
     ImGui::PopID();

@@ -19,6 +19,7 @@ Replay::Replay(Recording recording)
   };
   for (const auto& [a, b] : recording_.sharedSeams)
     if (fixedSite(a) >= 0 && fixedSite(b) >= 0) sharedOnOutput_.emplace_back(fixedSite(a), fixedSite(b));
+  for (int v = 0; v < static_cast<int>(recording_.uv.size()); ++v) borderSite_.push_back(fixedSite(v));
 }
 
 void Replay::setMethod(RemeshMethod method) {
@@ -54,7 +55,7 @@ const IterationView& Replay::view(int k) {
     view_.output = relocate(recording_.input, recording_.movableVertex,
                             {view_.liftedSites.begin() + fixedCount, view_.liftedSites.end()});
     view_.outputUV = recording_.uv;
-    view_.outputSite.assign(recording_.uv.size(), -1);
+    view_.outputSite = borderSite_;  // relocate leaves the border vertices on their fixed sites
     for (size_t i = 0; i < it.sites.size(); ++i) {
       view_.outputUV[recording_.movableVertex[i]] = it.sites[i];
       view_.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);

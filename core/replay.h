@@ -13,8 +13,7 @@ struct IterationView {
   std::vector<Vec3> liftedSites;   // on the input surface
   Mesh output;                     // what these sites would give as the result
   std::vector<Vec2> outputUV;      // where each output vertex lies in the parameter domain
-  std::vector<int> outputSite;     // the site each output vertex is, or -1 (an input vertex
-                                   // that relocate leaves in place)
+  std::vector<int> outputSite;     // the site each output vertex is, or -1
   // On a surface that was cut open (its parameterized mesh has seams): `output` with its seams
   // stitched, what the inspector measures; empty otherwise.
   Mesh stitched;
@@ -49,6 +48,7 @@ class Replay {
   Domain domain_;
   RemeshMethod method_;
   std::vector<std::pair<int, int>> seams_, sharedOnOutput_;
+  std::vector<int> borderSite_;  // each input vertex's fixed site (its own parameter point), or -1
   IterationView view_;
   CellHints hints_;  // each site's parameter triangle in the last view: nearby iterations
                             // start their searches there

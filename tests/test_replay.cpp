@@ -1,4 +1,5 @@
 #include "mesh_io.h"
+#include "inspection.h"
 #include "replay.h"
 #include "topology.h"
 #include "test_support.h"
@@ -44,6 +45,17 @@ TEST(Replay, RelocateOnlyWhereSitesAreInputVertices) {
   Replay relocated(remesh(input, o, "grid").recording);
   EXPECT_EQ(relocated.method(), RemeshMethod::Relocate);
   EXPECT_EQ(relocated.view(2).output.triangles, input.triangles);
+  // Every vertex is a site, the border's the fixed ones: a border cell's valence is shown (it
+  // was -1, as if its site had no vertex).
+  const IterationView& view = relocated.view(2);
+  for (int v = 0; v < view.output.vertexCount(); ++v) {
+    ASSERT_GE(view.outputSite[v], 0) << v;
+    EXPECT_EQ(view.sites[view.outputSite[v]], view.outputUV[v]) << v;
+  }
+  const int borderVertex = static_cast<int>(
+      std::find(view.outputSite.begin(), view.outputSite.end(), 0) - view.outputSite.begin());
+  EXPECT_EQ(describeCell(relocated.recording(), relocated.domain(), view, 0).valence,
+            vertexEdges(view.output).valence[borderVertex]);
   relocated.setMethod(RemeshMethod::Retriangulate);
   EXPECT_EQ(relocated.method(), RemeshMethod::Retriangulate);
 
