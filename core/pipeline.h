@@ -60,8 +60,9 @@ RemeshOptions referencePreset(RemeshMethod method);
 struct StageTimes {  // milliseconds
   double simplify = 0, cut = 0, resample = 0, parameterize = 0, density = 0, sites = 0, lloyd = 0, remesh = 0,
          metrics = 0, total = 0;
-  // The run a slit disk was compared with (SlitTrial), its metrics left out: it runs beside
-  // the kept one, so `total` (wall clock) is less than the sum of the stages and this.
+  // The runs the result was compared with and not kept (the slit trial's other way, which runs
+  // beside the kept one, so `total` (wall clock) is less than the sum of the stages and this;
+  // the runs without the first pass and chart by chart), their metrics left out.
   double compared = 0;
 
   StageTimes& operator+=(const StageTimes& o) {
