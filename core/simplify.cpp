@@ -97,11 +97,11 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
   using Policies = SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel>;
   Policies policies(sm);
   BoundaryKeepingPlacement<Policies::Get_placement> placement{policies.get_placement()};
-  result.collapses = SMS::edge_collapse(
-      sm, stop,
-      CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
+  SMS::edge_collapse(sm, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
   sm.collect_garbage();
   result.mesh = fromSurfaceMesh(sm);
+  // One vertex goes with each collapse (edge_collapse counts the edges removed: three inside).
+  result.collapses = input.vertexCount() - result.mesh.vertexCount();
   if (!offset.isZero()) result.mesh = moved(std::move(result.mesh), offset);
   result.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
