@@ -424,6 +424,10 @@ void Inspector::exported(const std::string& error) {
 }
 
 void OpeningView::applyTo(Inspector& inspector) const {
+  const int count = inspector.iterationCount();
+  if (iteration >= count)  // it showed the last one, as if that had been asked
+    throw Error("iteration " + std::to_string(iteration) + " does not exist (" + std::to_string(count) +
+                " recorded, numbered from 0)");
   if (iteration >= 0) inspector.setIteration(iteration);
   inspector.showFinal(final);
   for (int cell : cells) inspector.pinCell(cell);

@@ -104,6 +104,7 @@ class Inspector {
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }
   int iteration() const { return iteration_; }
+  int iterationCount() const { return replay_->iterationCount(); }
   // Pins a cell, or a triangle of the current iteration's result; throws Error (one line) if
   // there is no such one.
   void pinCell(int cell);

@@ -134,12 +134,14 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
   const std::string out = test::tempPath("never.png"), err = test::tempPath("select.err");
   for (const std::string& args :
        {std::string("--select-cell 500"), std::string("--select-triangle -1"),
+        std::string("--iteration 5000"),  // it showed the last one, as if asked
         std::string("--camera 'one two'"), std::string("--camera '0 0 -1 0 0 0'")}) {
     EXPECT_EQ(run("inspect " + mesh + " --screenshot " + out + " " + args + " 2> " + err), 1) << args;
     const std::string message = test::readText(err);
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
     EXPECT_TRUE(message.find("cell 500 does not exist") != std::string::npos ||
                 message.find("triangle -1 does not exist") != std::string::npos ||
+                message.find("iteration 5000 does not exist") != std::string::npos ||
                 message.find("camera") != std::string::npos)
         << message;
     EXPECT_FALSE(std::ifstream(out).good()) << args;
