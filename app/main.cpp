@@ -115,12 +115,25 @@ CLI::Validator finiteNumber(double low, const std::string& expected,
       },
       "NUMBER");
 }
-const CLI::Range kPositiveCount(1, std::numeric_limits<int>::max());
+// A whole number from `low` up (CLI11's Range said "Value abc not in range" of a word).
+CLI::Validator wholeNumber(int low) {
+  const std::string expected = "a whole number >= " + std::to_string(low);
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        long long value = 0;
+        if (CLI::detail::lexical_cast(text, value) && value >= low && value <= std::numeric_limits<int>::max())
+          return "";
+        return "expected " + expected + ", not '" + text + "'";
+      },
+      ">= " + std::to_string(low));
+}
+const CLI::Validator kPositiveCount = wholeNumber(1);
 
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--polish", r.polish,
                  "retriangulate's clean-up in 3D: -1 none, 0 Delaunay flips, K flips and K "
-                 "relaxation passes on the surface (default 3)");
+                 "relaxation passes on the surface (default 3)")
+      ->check(wholeNumber(-1));
   cmd.add_option("--polish-target", r.polishTarget,
                  "where the polish moves each vertex: centroid (default: of its ring's triangles), "
                  "voronoi (of its Voronoi cell in its ring) or circumcenter (optimal Delaunay)");
@@ -238,7 +251,7 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--iterations", iterations,
                          "With --screenshot: FIRST:LAST, one numbered PNG per iteration");
   inspectCmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")
-      ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+      ->check(wholeNumber(0));
   inspectCmd->add_flag("--final", shot.view.final,
                        "The 3D pane shows the final result (what remesh writes), with a red ring "
                        "where it is farthest from the input");
@@ -324,7 +337,15 @@ int main(int argc, char** argv) {
       ->required();
   infoCmd->add_flag("--json", infoJson, "Print JSON");
 
-  CLI11_PARSE(app, argc, argv);
+  // A command-line error is one line, as every other error, with exit code 1 (CLI11's own
+  // printed two and exited 105-109); --help prints the help and exits 0.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::cerr << "lloydscope: " << e.what() << " (--help lists the options)\n";
+    return 1;
+  }
   if (app.get_subcommands().empty()) {  // plain `lloydscope`: the inspector on the default mesh
     ir.input = LLOYDSCOPE_SOURCE_DIR "/assets/bumpy_disk.off";
     try {

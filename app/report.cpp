@@ -82,7 +82,8 @@ nlohmann::json toJson(const Fidelity& f) {
 
 nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
   nlohmann::json output = toJson(r.after);
-  output["fidelity"] = toJson(r.fidelity);
+  // null where it was not measured (--no-fidelity): zeros would read as a perfect fit
+  output["fidelity"] = r.fidelity.samples > 0 ? toJson(r.fidelity) : nlohmann::json();
   return {{"settings",
            {{"method", toString(o.method)},
             {"param", toString(o.param.method)},

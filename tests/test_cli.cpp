@@ -148,6 +148,10 @@ TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
               j["output"]["fidelity"]["farthest_on"] == "output");
   for (const char* stage : {"parameterize", "density", "lloyd", "remesh", "metrics", "total"})
     EXPECT_TRUE(j["milliseconds"].contains(stage)) << stage;
+  // Not measured: null, where it read as a perfect fit (0%, 0 samples).
+  const CliRun unmeasured = runCli("remesh " + test::assetPath("jittered_grid.off") + " --no-fidelity --json");
+  ASSERT_EQ(unmeasured.code, 0) << unmeasured.err;
+  EXPECT_TRUE(nlohmann::json::parse(unmeasured.out)["output"]["fidelity"].is_null()) << unmeasured.out;
   EXPECT_EQ(j["settings"]["param"], "auto");
   EXPECT_EQ(j["settings"]["param_used"], "lscm");
 
@@ -429,20 +433,43 @@ TEST(Cli, NumbersOutOfRangeOrNotFiniteAreRefused) {
                                    "--percent-threshold 101", "--alpha -1", "--beta nan", "--floor -0.5",
                                    "--max-iterations 0", "--sites 0"}) {
     const CliRun r = runCli("remesh " + mesh + " " + option);
-    EXPECT_NE(r.code, 0) << option;
+    EXPECT_EQ(r.code, 1) << option;
     EXPECT_EQ(r.out, "") << option;
-    EXPECT_EQ(r.err.rfind(option.substr(0, option.find(' ')) + ": ", 0), 0u) << option << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("lloydscope: " + option.substr(0, option.find(' ')) + ": ", 0), 0u) << option << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
   for (const std::string& command : std::vector<std::string>{
            "bench-frames " + mesh + " --frames 0", "bench --lloyd-step -3", "bench --sizes 0",
         "simplify " + mesh + " -o " + out + ".off --ratio nan",
         "inspect " + mesh + " --screenshot " + out + ".png --iteration -5"}) {
     const CliRun r = runCli(command);
-    EXPECT_NE(r.code, 0) << command;
+    EXPECT_EQ(r.code, 1) << command;
     EXPECT_EQ(r.out, "") << command;
     const std::string option = command.substr(command.rfind("--"), command.rfind(' ') - command.rfind("--"));
-    EXPECT_EQ(r.err.rfind(option + ": ", 0), 0u) << command << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("lloydscope: " + option + ": ", 0), 0u) << command << ": " << r.err;
   }
+}
+
+// A command-line mistake is one line and exit code 1, as every other error (CLI11's own were two
+// lines and exit codes 105-109), and says what was expected; --help still exits 0.
+TEST(Cli, CommandLineMistakesAreOneLineErrors) {
+  const std::string mesh = test::assetPath("jittered_grid.off");
+  const std::vector<std::pair<std::string, std::string>> mistakes = {
+      {"remesh " + mesh + " --bogus", "--bogus"},
+      {"remesh", "input"},
+      {"remesh " + mesh + " --max-iterations abc", "expected a whole number >= 1, not 'abc'"},
+      {"remesh " + mesh + " --sites 1.5", "expected a whole number >= 1, not '1.5'"},
+      {"remesh " + mesh + " --polish -2", "expected a whole number >= -1, not '-2'"}};
+  for (const auto& [command, says] : mistakes) {
+    const CliRun r = runCli(command);
+    EXPECT_EQ(r.code, 1) << command;
+    EXPECT_EQ(r.err.rfind("lloydscope: ", 0), 0u) << command << ": " << r.err;
+    EXPECT_NE(r.err.find(says), std::string::npos) << command << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << command << ": " << r.err;
+  }
+  const CliRun help = runCli("remesh --help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("--max-iterations"), std::string::npos);
 }
 
 // A run that needs more memory than the process may have ends with one line saying so, not an
