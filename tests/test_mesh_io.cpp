@@ -226,6 +226,18 @@ TEST(MeshIo, ReadsObjWithSlashesNegativeIndicesAndQuads) {
   }
 }
 
+// Some editors start a text file with a UTF-8 byte order mark: an OBJ lost its first vertex
+// to it (its faces then pointed one past the end), an OFF's header was refused.
+TEST(MeshIo, AByteOrderMarkIsNotPartOfTheFirstLine) {
+  const std::string bom = "\xEF\xBB\xBF";
+  const std::string obj = writeFile("bom.obj", bom + "v 5 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+  const Mesh fromObj = readMesh(obj).mesh;
+  ASSERT_EQ(fromObj.vertexCount(), 4);
+  EXPECT_EQ(fromObj.points[0], Vec3(5, 0, 0));
+  const std::string off = writeFile("bom.off", bom + "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(readMesh(off).mesh.faceCount(), 1);
+}
+
 TEST(MeshIo, ConvexPolygonWithStraightCornerGetsNoZeroAreaTriangle) {
   // Vertex 1 lies on the side from 0 to 2: a fan from vertex 0 would make triangle 0-1-2 flat.
   const std::string path = writeFile("pentagon.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n2 0 0\n2 2 0\n0 2 0\n5 0 1 2 3 4\n");
