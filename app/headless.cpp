@@ -1,5 +1,6 @@
 #include "headless.h"
 
+#include "fonts.h"
 #include "gpu.h"
 #include "inspector.h"
 #include "png.h"
@@ -47,7 +48,7 @@ class OffscreenRenderer {
     io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
     io.DeltaTime = 1.0f / 60.0f;
     ImGui::StyleColorsLight();
-    Inspector::addFonts();
+    addInspectorFonts();
     gpu::initImGuiRenderer(gpu_, renderPass_, 2);
   }
 

@@ -13,7 +13,6 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
-#include <fstream>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -668,17 +667,6 @@ void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::TextWrapped("%s", c.numbers.c_str());
   ImGui::PopStyleColor();
   ImGui::End();
-}
-
-void Inspector::addFonts() {
-  ImGuiIO& io = ImGui::GetIO();
-  io.Fonts->AddFontDefault();
-  // Latin-1, Greek, sub- and superscripts, arrows, maths: what the captions' formulas use.
-  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D62, 0x1D62,
-                                   0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF,
-                                   0x2C7C, 0x2C7C, 0};
-  const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // fonts-dejavu-core
-  if (std::ifstream(font).good()) io.Fonts->AddFontFromFileTTF(font, 21.0f, nullptr, ranges);
 }
 
 void Inspector::handleKeys() {

@@ -75,9 +75,6 @@ class Inspector {
             RemeshOptions options, RemeshResult result, std::optional<Mesh> input = {});
   ~Inspector();
 
-  // The fonts: ImGui's own, and a large one with Greek and maths for presentations. Call once
-  // after ImGui::CreateContext(), before the font texture is uploaded.
-  static void addFonts();
   // "Open mesh" reads with the repair (core/repair), its notes shown in the message line.
   void setRepairOnOpen(bool on) { repairOnOpen_ = on; }
   // Classroom mode: large fonts, thick lines and marks, high contrast, no controls pane.

@@ -1,5 +1,6 @@
 #include "window.h"
 
+#include "fonts.h"
 #include "gpu.h"
 #include "inspector.h"
 #include "png.h"
@@ -187,7 +188,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     ImGui::GetIO().IniFilename = nullptr;
     ImGui::StyleColorsLight();
     ImGui_ImplGlfw_InitForVulkan(window, true);
-    Inspector::addFonts();
+    addInspectorFonts();
     gpu::initImGuiRenderer(gpu, pass, static_cast<uint32_t>(chain.images.size()));
 
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};

@@ -1,0 +1,79 @@
+// Every character the inspector's lesson captions use has a glyph in both of its fonts: the
+// small one it draws with outside presentation mode, and the presentation one. (Outside
+// presentation mode a caption read "c? = ? x ? dA": the small font stopped at Latin-1.)
+#include "fonts.h"
+#include "lesson.h"
+
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace lloydscope;
+
+namespace {
+
+// The code points of UTF-8 text.
+std::vector<unsigned> codePoints(const std::string& text) {
+  std::vector<unsigned> points;
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    const int length = c < 0x80 ? 1 : c < 0xE0 ? 2 : c < 0xF0 ? 3 : 4;
+    unsigned point = length == 1 ? c : c & (0x3F >> (length - 1));
+    for (int k = 1; k < length && i + k < text.size(); ++k) point = point << 6 | (text[i + k] & 0x3F);
+    points.push_back(point);
+    i += length;
+  }
+  return points;
+}
+
+// Every caption of every stage, for each solver, with and without a pinned cell.
+std::vector<std::string> everyCaption() {
+  std::vector<std::string> texts;
+  CaptionFacts facts;
+  facts.iterations = 10;
+  facts.iteration = 2;
+  CellDetails cell;
+  cell.index = 4;
+  for (const char* solver : {"lloyd", "lbfgs", "newton"})
+    for (bool pinned : {false, true})
+      for (bool firstPass : {false, true}) {
+        facts.solver = solver;
+        facts.firstPass = firstPass;
+        if (pinned) facts.cell = cell;
+        else facts.cell.reset();
+        for (Stage stage : {Stage::Load, Stage::Parameterize, Stage::Voronoi, Stage::Centroids, Stage::Move,
+                            Stage::Lift, Stage::Result}) {
+          const Caption c = caption(stage, facts);
+          texts.insert(texts.end(), {c.title, c.formula, c.numbers});
+        }
+      }
+  return texts;
+}
+
+}  // namespace
+
+TEST(Fonts, EveryCaptionCharacterHasAGlyphInBothFonts) {
+  if (!std::ifstream("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf").good())
+    GTEST_SKIP() << "fonts-dejavu-core is not installed (./build.sh installs it)";
+  ImGui::CreateContext();
+  addInspectorFonts();
+  ImFontAtlas* atlas = ImGui::GetIO().Fonts;
+  unsigned char* pixels = nullptr;
+  int width = 0, height = 0;
+  atlas->GetTexDataAsRGBA32(&pixels, &width, &height);  // builds the glyphs, on the CPU
+  ASSERT_EQ(atlas->Fonts.Size, 2);
+  int nonAscii = 0;
+  for (const std::string& text : everyCaption())
+    for (unsigned point : codePoints(text)) {
+      if (point < 0x20) continue;
+      nonAscii += point > 0x7F;
+      for (ImFont* font : {atlas->Fonts[0], atlas->Fonts[1]})
+        EXPECT_NE(font->FindGlyphNoFallback(static_cast<ImWchar>(point)), nullptr)
+            << "U+" << std::hex << point << " in \"" << text << "\"";
+    }
+  EXPECT_GT(nonAscii, 0);  // the captions do use Greek and maths
+  ImGui::DestroyContext();
+}
