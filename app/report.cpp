@@ -139,6 +139,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"iterations", r.iterations},
           {"converged", r.converged},
           {"snapped_tips", r.snappedTips},
+          {"held_back", r.heldBack},
           {"fit", {{"vertices_moved", r.fit.moved},
                    {"border_vertices_moved", r.fit.borderMoved},
                    {"mean_percent_diagonal", r.fit.meanPercent},
@@ -298,6 +299,10 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   if (r.snappedTips > 0)
     out << "Snapped onto tips of the input the result had cut off: " << r.snappedTips
         << (r.snappedTips == 1 ? " vertex\n" : " vertices\n");
+  if (r.heldBack > 0)
+    out << "Relocated: " << r.heldBack << (r.heldBack == 1 ? " vertex" : " vertices")
+        << " held short of their sites (moved all the way, they would turn the input's triangles "
+           "over or into slivers; retriangulate makes new ones)\n";
   if (r.fit.moved > 0)
     out << "Fitted to the input: " << r.fit.moved - r.fit.borderMoved << " vertices moved along their normals, "
         << r.fit.borderMoved << " on the border across it, " << format("%.3f", r.fit.meanPercent) << "% of the diagonal on average, at most " << format("%.3f", r.fit.maxPercent)

@@ -161,12 +161,13 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     row("area, 3D", "%.4e", d.area3D);
     row("area, UV", "%.4e", d.areaUV);
     row("area distortion", "%.3f", d.areaDistortion);
-    // Retriangulate: every corner is a site. Relocate: the inside vertices moved to their
-    // sites, the border ones stayed.
+    // Retriangulate: every corner is a site. Relocate: the inside vertices moved towards their
+    // sites (short of them where they would fold), the border ones are theirs.
     for (int k = 0; k < 3; ++k) {
       const std::string label = "vertex " + std::to_string(d.corners[k]);
-      if (d.sites[k] >= 0) row(label, "site %d", d.sites[k]);
-      else row(label, "%s", "not moved");
+      if (d.sites[k] < 0) row(label, "%s", "not moved");
+      else if (d.atSite[k]) row(label, "site %d", d.sites[k]);
+      else row(label, "site %d, short of it", d.sites[k]);
     }
     table("triangle");
     ImGui::PopID();

@@ -100,7 +100,10 @@ TriangleDetails describeTriangle(const IterationView& view, int triangle) {
     totalUV += std::abs(triangleArea(view.outputUV[u[0]], view.outputUV[u[1]], view.outputUV[u[2]]));
   d.areaDistortion = d.areaUV > 0 ? (d.area3D / total3D) / (d.areaUV / totalUV) : INFINITY;
   d.minAngle = *std::min_element(d.angles3D.begin(), d.angles3D.end());
-  for (int k = 0; k < 3; ++k) d.sites[k] = view.outputSite[t[k]];
+  for (int k = 0; k < 3; ++k) {
+    d.sites[k] = view.outputSite[t[k]];
+    d.atSite[k] = d.sites[k] >= 0 && view.outputUV[t[k]] == view.sites[d.sites[k]];
+  }
   return d;
 }
 

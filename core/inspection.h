@@ -49,6 +49,8 @@ struct TriangleDetails {
   double areaDistortion = 0;
   double minAngle = 0;                  // in 3D, degrees
   std::array<int, 3> sites{};           // the site each corner is, or -1 (not moved)
+  // Whether the corner is at its site: relocate stops a vertex short where it would fold.
+  std::array<bool, 3> atSite{};
 };
 
 TriangleDetails describeTriangle(const IterationView& view, int triangle);

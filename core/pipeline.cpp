@@ -263,9 +263,9 @@ void finishStitched(Mesh& stitched, const std::vector<bool>& seamVertex, const M
 Mesh RemeshSession::buildOutput(RemeshResult& result) const {
   const std::vector<Vec2>& movable = solver_->movableSites();
   if (options_.method == RemeshMethod::Relocate) {
-    std::vector<Vec3> lifted;
-    for (const Vec2& s : movable) lifted.push_back(lift(input_, domain_, s));
-    return relocate(input_, sites_.movableVertex, lifted);
+    Relocation relocated = relocate(input_, domain_, sites_.movableVertex, movable);
+    result.heldBack = relocated.heldBack;
+    return std::move(relocated.mesh);
   }
   // A chart's border samples must be where the neighbouring chart's are, which lifting them
   // through a map nearly flat at the border may miss (onto an inside edge): they are put on

@@ -166,6 +166,7 @@ struct RemeshResult {
   QualityMetrics before, after;
   Fidelity fidelity;  // output against input; zero when not measured
   int snappedTips = 0;  // vertices the polish snapped onto tips the result cut off (snapToTips)
+  int heldBack = 0;     // relocate: vertices left short of their sites (Relocation::heldBack)
   FitResult fit;  // how far RemeshOptions::fit moved the vertices
   // Not empty: the run failed with the first pass (this says why) and was made without it.
   std::string resampleDropped;
@@ -269,7 +270,7 @@ class RemeshSession {
   }
 
  private:
-  Mesh buildOutput(RemeshResult& result) const;  // sets its snappedTips and fit
+  Mesh buildOutput(RemeshResult& result) const;  // sets its snappedTips, fit and heldBack
   // The site options with the seams of a cut surface marked (and a chart's, given in them).
   SiteOptions seamSites() const;
   // Whether the border holds seams to stitch: a cut's, or those of a chart of a surface.

@@ -2,12 +2,14 @@
 
 #include "cgal_types.h"
 #include "lloyd.h"
+#include "metrics.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 
 namespace lloydscope {
@@ -57,12 +59,63 @@ Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p, int hint) {
          l.weights[2] * input.points[t[2]];
 }
 
-Mesh relocate(const Mesh& input, const std::vector<int>& movableVertex,
-              const std::vector<Vec3>& movablePoints) {
-  Mesh output = input;
-  for (size_t i = 0; i < movablePoints.size(); ++i)
-    if (movableVertex[i] >= 0) output.points[movableVertex[i]] = movablePoints[i];
-  return output;
+namespace {
+
+double signedArea(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const Vec2 u = b - a, w = c - a;
+  return 0.5 * (u.x() * w.y() - u.y() * w.x());
+}
+
+}  // namespace
+
+Relocation relocate(const Mesh& input, const Domain& domain, const std::vector<int>& movableVertex,
+                    const std::vector<Vec2>& sites) {
+  Relocation r{input, domain.uv(), 0};
+  std::vector<std::vector<int>> ring(input.vertexCount());  // each vertex's triangles
+  for (int f = 0; f < input.faceCount(); ++f)
+    for (int v : input.triangles[f]) ring[v].push_back(f);
+  const auto corner = [&](int v) { return Vec3(r.uv[v].x(), r.uv[v].y(), 0.0); };
+  // The smallest angle of v's triangles in the domain, 0 where one faces the other way.
+  const auto smallestAngle = [&](int v) {
+    double smallest = 180;
+    for (int f : ring[v]) {
+      const Triangle& t = input.triangles[f];
+      const double before = signedArea(domain.uv()[t[0]], domain.uv()[t[1]], domain.uv()[t[2]]);
+      if (!(before * signedArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]) > 0)) return 0.0;
+      smallest = std::min(smallest, smallestAngleDeg(corner(t[0]), corner(t[1]), corner(t[2])));
+    }
+    return smallest;
+  };
+  // Each vertex as far towards its site as its triangles stay unfolded, their smallest angle
+  // in the domain not under the lesser of what it was and kSmallest (pushed to the edge of a
+  // fold, a triangle is a sliver): the whole way, or half of what is left, a quarter, ... (six
+  // halvings); again while a sweep moves any.
+  constexpr double kSmallest = 5;
+  constexpr int kSweeps = 20, kHalvings = 6;
+  for (int sweep = 0; sweep < kSweeps; ++sweep) {
+    bool moved = false;
+    for (size_t i = 0; i < sites.size(); ++i) {
+      const int v = movableVertex[i];
+      if (v < 0 || r.uv[v] == sites[i]) continue;
+      const Vec2 from = r.uv[v];
+      const double floor = std::min(kSmallest, smallestAngle(v));
+      for (int halving = 0; halving <= kHalvings; ++halving) {
+        r.uv[v] = halving == 0 ? sites[i] : from + std::ldexp(1.0, -halving) * (sites[i] - from);
+        const double now = smallestAngle(v);
+        if (now > 0 && now >= floor) break;
+        r.uv[v] = from;
+      }
+      moved = moved || r.uv[v] != from;
+    }
+    if (!moved) break;
+  }
+  for (size_t i = 0; i < sites.size(); ++i) {
+    const int v = movableVertex[i];
+    if (v < 0) continue;
+    r.heldBack += r.uv[v] != sites[i];
+    r.mesh.points[v] = lift(input, domain, r.uv[v]);
+  }
+  return r;
 }
 
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,

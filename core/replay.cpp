@@ -43,7 +43,8 @@ const IterationView& Replay::view(int k) {
   view_.liftedSites.clear();
   for (size_t i = 0; i < view_.sites.size(); ++i)
     view_.liftedSites.push_back(lift(recording_.input, domain_, view_.sites[i], hints_.triangle[i]));
-  // Both outputs are made of exactly these lifted points: no second lift.
+  // The retriangulated output is made of exactly these lifted points: no second lift
+  // (relocate lifts its vertices where they end, short of a site where it would fold).
   const size_t fixedCount = recording_.fixedSites.size();
   view_.outputUV.clear();
   view_.outputSite.clear();
@@ -52,14 +53,12 @@ const IterationView& Replay::view(int k) {
                             &view_.outputSite);
     for (int s : view_.outputSite) view_.outputUV.push_back(view_.sites[s]);
   } else {
-    view_.output = relocate(recording_.input, recording_.movableVertex,
-                            {view_.liftedSites.begin() + fixedCount, view_.liftedSites.end()});
-    view_.outputUV = recording_.uv;
+    Relocation relocated = relocate(recording_.input, domain_, recording_.movableVertex, it.sites.unpack());
+    view_.output = std::move(relocated.mesh);
+    view_.outputUV = std::move(relocated.uv);  // short of the sites where they would fold
     view_.outputSite = borderSite_;  // relocate leaves the border vertices on their fixed sites
-    for (size_t i = 0; i < it.sites.size(); ++i) {
-      view_.outputUV[recording_.movableVertex[i]] = it.sites[i];
+    for (size_t i = 0; i < it.sites.size(); ++i)
       view_.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
-    }
   }
   view_.stitched = !seams_.empty() ? stitchSeams(view_.output, kSeamTolerance * boundingBoxDiagonal(view_.output)) : Mesh{};
   return view_;

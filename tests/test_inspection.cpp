@@ -100,8 +100,11 @@ TEST(Inspection, TriangleNumbers) {
       EXPECT_NEAR(d.anglesUV[0] + d.anglesUV[1] + d.anglesUV[2], 180.0, 1e-9);
       EXPECT_EQ(d.minAngle, std::min({d.angles3D[0], d.angles3D[1], d.angles3D[2]}));
       total += d.area3D;
-      for (int k = 0; k < 3; ++k)
-        if (d.sites[k] >= 0) EXPECT_EQ(view.outputUV[d.corners[k]], view.sites[d.sites[k]]);
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_GE(d.sites[k], 0);  // relocate: the border vertices are the fixed sites
+        EXPECT_EQ(d.atSite[k], view.outputUV[d.corners[k]] == view.sites[d.sites[k]]);
+        if (method == RemeshMethod::Retriangulate) EXPECT_TRUE(d.atSite[k]);
+      }
     }
     EXPECT_NEAR(total, surfaceArea(view.output), 1e-12);
     if (method == RemeshMethod::Retriangulate) {

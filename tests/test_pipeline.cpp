@@ -56,6 +56,23 @@ TEST(Pipeline, RelocateKeepsTheInputConnectivity) {
   for (const Vec3& p : r.output.points) EXPECT_NEAR(p.norm(), 1.0, 0.01);
 }
 
+// Run to convergence, the sites move past one another; the input's triangles, kept, must not
+// turn over (77 of the sphere cap's 938 faced inwards): vertices stop short where they would.
+TEST(Pipeline, RelocateTurnsNoTriangleOver) {
+  const Mesh input = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  RemeshOptions o;
+  o.method = RemeshMethod::Relocate;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(input, o, "sphere_cap.off");
+  ASSERT_EQ(r.output.triangles, input.triangles);
+  EXPECT_GT(r.heldBack, 0);
+  for (const Triangle& t : r.output.triangles) {
+    const Vec3* p = r.output.points.data();
+    const Vec3 normal = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
+    EXPECT_GT(normal.dot(p[t[0]] + p[t[1]] + p[t[2]]), 0);  // outwards, as the cap's faces are
+  }
+}
+
 TEST(Pipeline, SiteCountIsHonoured) {
   const Mesh input = readMesh(test::assetPath("sphere_cap.off")).mesh;
   RemeshOptions o;
