@@ -111,12 +111,13 @@ class OffscreenRenderer {
 }  // namespace
 
 void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
-                      RemeshResult result, const ScreenshotOptions& shot) {
+                      RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
   if (shot.width < 320 || shot.height < 240 || shot.width > 8192 || shot.height > 8192)
     throw Error("--size must be between 320x240 and 8192x8192");
   OffscreenRenderer renderer(shot.width, shot.height, shot.validation);
   {
-    Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result));
+    Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result),
+                        std::move(input));
     shot.view.applyTo(inspector);
     inspector.showTimings(shot.timings);
     // ImGui settles its layout over the first frames; the pictures come after them.

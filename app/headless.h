@@ -4,6 +4,7 @@
 #include "inspector.h"
 #include "pipeline.h"
 
+#include <optional>
 #include <string>
 
 namespace lloydscope {
@@ -22,8 +23,10 @@ struct FrameTimes {
 
 // Throws Error (or gpu::GpuError) with a one-line message on failure; the PNG is written to a
 // temporary file and renamed, so an existing picture is replaced whole or not at all.
+// `input`: the mesh the result was made of, as the window has it (the lesson's first stage and
+// "show the input instead" show it); none for a recording.
 void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
-                      RemeshResult result, const ScreenshotOptions& shot);
+                      RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input = {});
 
 // Renders `frames` frames, timing each: jumping to another iteration every frame (a scrub), or
 // staying on the last one.

@@ -400,8 +400,8 @@ int main(int argc, char** argv) {
                          shot.view);
       }
       requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
-      RemeshResult result = openForInspection(ir, *inspectCmd, options);
-      renderScreenshot(ir.input, options, std::move(result), shot);
+      RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
+      renderScreenshot(ir.input, options, std::move(result), shot, std::move(input));
       return 0;
     }
     if (benchCmd->parsed()) {
