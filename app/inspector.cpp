@@ -718,9 +718,13 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   // surface, stitched or put together from its charts) where the run finished and measured it.
   const QualityMetrics& finalResult = result_.after;
   const bool showFinal = finalResult.vertices > 0;
-  ImGui::TextWrapped(showFinal ? "Input, the current iteration's result and the final one, after the clean-up "
-                                 "(the report's Table II)"
-                               : "Input and the current iteration's result (the report's Table II)");
+  // A recording holds the mesh its map is of (a first remeshing of the input, say), not the input.
+  const char* first = input_ ? "Input" : "Mapped";
+  ImGui::TextWrapped("%s", (std::string(input_ ? "Input" : "The mesh the map is of (a recording holds no input)") +
+                            (showFinal ? ", the current iteration's result and the final one, after the clean-up "
+                                         "(the report's Table II)"
+                                       : " and the current iteration's result (the report's Table II)"))
+                               .c_str());
   const QualityMetrics& current = currentQuality();
   const std::string iterationHeader = "It. " + std::to_string(iteration_);
   if (ImGui::BeginTable("metrics", showFinal ? 4 : 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
@@ -730,7 +734,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
       ImGui::TableSetupColumn(header, ImGuiTableColumnFlags_WidthFixed, width);
     };
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-    numbers("Input");
+    numbers(first);
     numbers(iterationHeader.c_str());
     if (showFinal) numbers("Final");
     ImGui::TableHeadersRow();

@@ -340,8 +340,8 @@ nlohmann::json recordingSummary(const Recording& r) {
                           {"percent_moving", 100.0 * it.fractionMoving},
                           {"milliseconds", it.milliseconds}});
   return {{"settings", r.settings},
-          {"input_vertices", r.input.vertexCount()},
-          {"input_faces", r.input.faceCount()},
+          {"parameterized_vertices", r.input.vertexCount()},  // the mesh the map is of, not always the input
+          {"parameterized_faces", r.input.faceCount()},
           {"fixed_sites", r.fixedSites.size()},
           {"movable_sites", r.iterations.empty() ? 0 : r.iterations.front().sites.size()},
           {"distance_threshold", r.distanceThreshold},
@@ -354,7 +354,8 @@ std::string recordingReport(const Recording& r) {
   const nlohmann::json s = recordingSummary(r);
   std::ostringstream out;
   out << "Settings: " << r.settings << "\n"
-      << "Input: " << r.input.vertexCount() << " vertices, " << r.input.faceCount() << " faces\n"
+      << "Parameterized mesh: " << r.input.vertexCount() << " vertices, " << r.input.faceCount()
+      << " faces (the input, or its rough first remeshing, simplification or cut as the settings say)\n"
       << "Sites: " << s["fixed_sites"] << " fixed, " << s["movable_sites"] << " movable\n"
       << "Iterations: " << r.iterations.size()
       << (s["converged"].get<bool>() ? " (converged)" : " (not converged)") << "\n\n"

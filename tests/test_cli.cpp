@@ -162,7 +162,13 @@ TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
 
   const CliRun info = runCli("info " + rec + " --json");
   ASSERT_EQ(info.code, 0) << info.err;
-  EXPECT_EQ(nlohmann::json::parse(info.out)["iterations"].size(), j["iterations"].get<size_t>());
+  const auto summary = nlohmann::json::parse(info.out);
+  EXPECT_EQ(summary["iterations"].size(), j["iterations"].get<size_t>());
+  // The recording holds the mesh the map is of: here the input's rough first remeshing, not
+  // the input, which it was called (the bumpy disk's: 1899 faces, the input's 1908).
+  EXPECT_TRUE(summary.contains("parameterized_faces"));
+  EXPECT_FALSE(summary.contains("input_faces"));
+  EXPECT_EQ(runCli("info " + rec).out.find("Input:"), std::string::npos);
 }
 
 TEST(Cli, ReferencePresetPrintsTheTable) {
