@@ -112,8 +112,10 @@ class OffscreenRenderer {
 
 void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
                       RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
-  if (shot.width < 320 || shot.height < 240 || shot.width > 8192 || shot.height > 8192)
-    throw Error("--size must be between 320x240 and 8192x8192");
+  // Under 960x600 the panes are too small to read (at 640x480 the plots' titles ran into each
+  // other and the timeline's buttons were cut off): a smaller picture is a larger one scaled.
+  if (shot.width < 960 || shot.height < 600 || shot.width > 8192 || shot.height > 8192)
+    throw Error("--size must be between 960x600 and 8192x8192");
   OffscreenRenderer renderer(shot.width, shot.height, shot.validation);
   {
     Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result),

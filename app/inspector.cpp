@@ -1223,15 +1223,22 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
 
 namespace {
 
+// A plot's title, and a shorter one for where the plot is too narrow for it (a small window,
+// or presentation mode's large font): titles ran into each other.
+struct PlotTitle {
+  const char* full;
+  const char* brief;
+};
+
 // A plot with axes and ticks over the whole recording; returns the iteration clicked, or -1.
 // `values` (in `colour`) are the run's; `others`, drawn behind them in `otherColours`, are
 // other runs' (empty: none).
-int plot(const char* title, const std::vector<double>& values, ImU32 colour,
+int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colour,
          const std::vector<std::vector<double>>& others, const std::vector<ImU32>& otherColours,
          bool logScale, double threshold, int current, const ImVec2& size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  ImGui::InvisibleButton(title, size);
+  ImGui::InvisibleButton(heading.full, size);
   const bool active = ImGui::IsItemActive();
   auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };
   double lo = INFINITY, hi = -INFINITY;
@@ -1275,7 +1282,11 @@ int plot(const char* title, const std::vector<double>& values, ImU32 colour,
   const ImVec2 a(p0.x + left, p0.y + top), b(p0.x + size.x - right, p0.y + size.y - bottom);
   dl->AddRectFilled(p0, ImVec2(p0.x + size.x, p0.y + size.y), rgb(1, 1, 1));
   dl->AddRect(a, b, rgb(0.5f, 0.5f, 0.5f));
+  // The full title where it fits over the plot, else the brief one, cut at the plot's edge.
+  const char* title = ImGui::CalcTextSize(heading.full).x <= size.x - left ? heading.full : heading.brief;
+  dl->PushClipRect(p0, ImVec2(p0.x + size.x, p0.y + size.y), true);
   dl->AddText(ImVec2(p0.x + left, p0.y + 1), rgb(0.1f, 0.1f, 0.1f), title);
+  dl->PopClipRect();
   if (values.empty()) return -1;
   const int n = static_cast<int>(longest);
   auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
@@ -1353,15 +1364,15 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   }
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 each((avail.x - 2 * ImGui::GetStyle().ItemSpacing.x) / 3, avail.y);
-  int jump = plot("CVT energy", run.energy[0], colour, others.energy, otherColours, false, 0,
+  int jump = plot({"CVT energy", "CVT energy"}, run.energy[0], colour, others.energy, otherColours, false, 0,
                   iteration_, each);
   ImGui::SameLine();
-  int k = plot("max distance site-centroid (log)", run.displacement[0], colour,
+  int k = plot({"max distance site-centroid (log)", "max |c - s| (log)"}, run.displacement[0], colour,
                others.displacement, otherColours, true, replay_->recording().distanceThreshold,
                iteration_, each);
   if (k >= 0) jump = k;
   ImGui::SameLine();
-  k = plot("% sites farther than threshold (log)", run.moving[0], colour, others.moving,
+  k = plot({"% sites farther than threshold (log)", "% moving (log)"}, run.moving[0], colour, others.moving,
            otherColours, true, replay_->recording().percentThreshold, iteration_, each);
   if (k >= 0) jump = k;
   if (jump >= 0) setIteration(jump);

@@ -268,7 +268,7 @@ int main(int argc, char** argv) {
                          "voronoi, centroids, move, lift or result");
   inspectCmd->add_option("--camera", shot.view.camera,
                          "3D view as \"yaw pitch distance x y z\" (the inspector's Copy view)");
-  inspectCmd->add_option("--size", size, "Picture size WxH (default 1280x800)");
+  inspectCmd->add_option("--size", size, "Picture size WxH, 960x600 or more (default 1280x800)");
   inspectCmd->add_flag("--validation", shot.validation,
                        "Enable the Vulkan validation layer; fail if it reports anything");
   bool noTimings = false;

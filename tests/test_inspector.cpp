@@ -98,7 +98,7 @@ TEST(Inspector, WithoutADisplayItSaysWhatToDo) {
 
 TEST(Inspector, ValidationLayerReportsNothingHeadless) {
   EXPECT_EQ(run("inspect " + test::assetPath("jittered_grid.off") + " --max-iterations 5 "
-                "--no-fidelity --validation --size 640x400 --screenshot " +
+                "--no-fidelity --validation --size 960x600 --screenshot " +
                 test::tempPath("validated.png")),
             0);
 }
@@ -109,8 +109,8 @@ TEST(Inspector, ReplaysARecording) {
                 " --max-iterations 4 --no-fidelity --record " + rec + " > /dev/null"),
             0);
   const std::string png = test::tempPath("from_recording.png");
-  ASSERT_EQ(run("inspect " + rec + " --iteration 2 --size 640x400 --screenshot " + png), 0);
-  EXPECT_EQ(readPng(png).width, 640);
+  ASSERT_EQ(run("inspect " + rec + " --iteration 2 --size 960x600 --screenshot " + png), 0);
+  EXPECT_EQ(readPng(png).width, 960);
 }
 
 // Saved under a name of the user's own (it was refused: "unknown extension '.run'").
@@ -120,8 +120,8 @@ TEST(Inspector, ReplaysARecordingSavedUnderAnyName) {
                 " --max-iterations 4 --no-fidelity --record " + rec + " > /dev/null"),
             0);
   const std::string png = test::tempPath("from_named_recording.png");
-  ASSERT_EQ(run("inspect " + rec + " --size 640x400 --screenshot " + png), 0);
-  EXPECT_EQ(readPng(png).width, 640);
+  ASSERT_EQ(run("inspect " + rec + " --size 960x600 --screenshot " + png), 0);
+  EXPECT_EQ(readPng(png).width, 960);
 }
 
 TEST(Inspector, PinnedCellAndTriangle) {
@@ -176,7 +176,8 @@ TEST(Inspector, ExportErrorsAreOneLine) {
        {"--screenshot " + test::tempPath("x.png") + " --iterations 5:2",
         "--screenshot " + test::tempPath("x.png") + " --iterations 0:100000",
         "--screenshot " + test::tempPath("x.jpg"),
-        "--screenshot " + test::tempPath("x.png") + " --pane left"}) {
+        "--screenshot " + test::tempPath("x.png") + " --pane left",
+        "--screenshot " + test::tempPath("x.png") + " --size 640x480"}) {  // too small to read
     EXPECT_EQ(run("inspect " + mesh + " " + args + " 2> " + err), 1) << args;
     const std::string message = test::readText(err);
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
@@ -194,9 +195,9 @@ TEST(Inspector, PresentationModeShowsTheLessonStage) {
 TEST(Inspector, OpensASimplifiedMesh) {
   const std::string out = test::tempPath("simplified.png");
   ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + " --simplify 400 --sites 400 " +
-                "--max-iterations 5 --size 640x400 --screenshot " + out),
+                "--max-iterations 5 --size 960x600 --screenshot " + out),
             0);
-  EXPECT_EQ(readPng(out).width, 640);
+  EXPECT_EQ(readPng(out).width, 960);
 }
 
 // A face turned against its neighbours: refused, opened with --repair.
@@ -205,10 +206,10 @@ TEST(Inspector, OpensWithTheRepair) {
   std::swap(disk.triangles[0][0], disk.triangles[0][1]);
   const std::string mesh = test::tempPath("turned_face.off"), png = test::tempPath("turned_face.png");
   writeMesh(disk, mesh);
-  const std::string args = "inspect " + mesh + " --sites 200 --max-iterations 5 --size 640x400 --screenshot " + png;
+  const std::string args = "inspect " + mesh + " --sites 200 --max-iterations 5 --size 960x600 --screenshot " + png;
   EXPECT_EQ(run(args), 1);
   ASSERT_EQ(run(args + " --repair"), 0);
-  EXPECT_EQ(readPng(png).width, 640);
+  EXPECT_EQ(readPng(png).width, 960);
 }
 
 // Issue 6: where a torus was cut open, the seam is drawn in purple in both views.
@@ -236,8 +237,8 @@ TEST(Inspector, OpensAMeshWhoseFirstResamplingFails) {
   const std::string mesh = test::cgalSample("triceratops.off");
   SKIP_UNLESS_EXTRACTED(mesh);
   const std::string png = test::tempPath("triceratops.png");
-  ASSERT_EQ(run("inspect " + mesh + " --simplify 2000 --no-timings --size 640x400 --screenshot " + png), 0);
-  EXPECT_EQ(readPng(png).width, 640);
+  ASSERT_EQ(run("inspect " + mesh + " --simplify 2000 --no-timings --size 960x600 --screenshot " + png), 0);
+  EXPECT_EQ(readPng(png).width, 960);
 }
 
 // The first view fits the whole shape into the 3D pane, whatever its proportions: a strip ten
