@@ -1424,7 +1424,8 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SetNextItemWidth(120);
   ImGui::SliderFloat("it/s", &playSpeed_, 1.0f, 60.0f, "%.0f");
   const IterationRecord& it = replay_->recording().iterations[iteration_];
-  ImGui::Text("iteration %d of %d   energy %.6e   max move %.2e   %.1f%% moving   %s"
+  // Numbered from 0: "of 159" read as one fewer than the 160 iterations the controls pane counts.
+  ImGui::Text("iteration %d (0-%d)   energy %.6e   max move %.2e   %.1f%% moving   %s"
               "keys: <- -> (Shift: 10), Home, End, Space",
               iteration_, last, it.energy, it.maxDisplacement, 100.0 * it.fractionMoving,
               showTimings_ ? format("%.1f ms   ", it.milliseconds).c_str() : "");
