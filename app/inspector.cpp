@@ -606,7 +606,11 @@ void Inspector::frame() {
 }
 
 bool Inspector::finalShown() const {
-  return showFinal_ && !stage_ && !result_.output.triangles.empty();
+  if (result_.output.triangles.empty()) return false;
+  // The lesson's last stage at the last iteration shows what remesh writes, as its caption
+  // quotes it (it showed the last iteration's mesh before the clean-up, and quoted that).
+  if (stage_) return *stage_ == Stage::Result && iteration_ == replay_->iterationCount() - 1;
+  return showFinal_;
 }
 
 Layers Inspector::layers() const {
@@ -634,7 +638,8 @@ CaptionFacts Inspector::captionFacts() {
   CaptionFacts f;
   f.mesh = meshName_;
   f.input = result_.before;
-  f.result = currentQuality();
+  f.cleanedUp = finalShown();
+  f.result = f.cleanedUp ? result_.after : currentQuality();
   f.param = toString(result_.paramUsed);
   f.border = toString(options_.param.border);
   f.solver = toString(options_.lloyd.solver);

@@ -143,10 +143,13 @@ Caption caption(Stage stage, const CaptionFacts& f) {
       break;
     case Stage::Result:
       c.formula = f.method == "relocate"
-                      ? "Relocate: the input's vertices move to their lifted sites; the "
-                        "connectivity stays."
-                      : "Retriangulate: the Delaunay triangulation of the sites, lifted: a new "
-                        "mesh of nearly equilateral triangles.";
+                      ? "Relocate: the input's vertices move towards their lifted sites (short of "
+                        "them where a triangle would turn over); the connectivity stays."
+                  : f.cleanedUp ? "Retriangulate: the Delaunay triangulation of the sites, lifted, then "
+                                  "cleaned up on the surface (edge flips, relaxation): a new mesh of "
+                                  "nearly equilateral triangles."
+                                : "Retriangulate: the Delaunay triangulation of the sites, lifted: a new "
+                                  "mesh of nearly equilateral triangles.";
       c.numbers = format("%d vertices; irregular %.0f%% → %.0f%%; smallest angle %.1f° → "
                          "%.1f°; average smallest angle %.1f° → %.1f°",
                          f.result.vertices, f.input.irregularPercent, f.result.irregularPercent,

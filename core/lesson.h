@@ -68,6 +68,7 @@ struct CaptionFacts {
   QualityMetrics input, result;
   std::string param, border, solver, method;  // as the settings name them
   bool firstPass = false;  // the map is of a rough first remeshing, whose vertices are the first sites
+  bool cleanedUp = false;  // `result` is the final one, after the clean-up on the surface
   Distortion distortion;
   int iteration = 0, iterations = 0;
   double energy = 0, maxMove = 0, percentMoving = 0;

@@ -192,6 +192,12 @@ TEST(Inspector, PresentationModeShowsTheLessonStage) {
              "--iteration 1 --presentation --stage centroids --select-cell 100");
 }
 
+// The lesson's last stage shows and quotes the final result, after the clean-up, as the
+// controls pane's Final column has it (it showed the last iteration's mesh before it).
+TEST(Inspector, TheLessonsLastStageShowsTheFinalResult) {
+  checkScene("inspector_result_stage.png", "--presentation --stage result");
+}
+
 TEST(Inspector, OpensASimplifiedMesh) {
   const std::string out = test::tempPath("simplified.png");
   ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + " --simplify 400 --sites 400 " +

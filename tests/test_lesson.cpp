@@ -98,6 +98,19 @@ TEST(Lesson, CaptionsQuoteThePinnedCell) {
   EXPECT_NE(caption(Stage::Voronoi, facts).numbers.find("Iteration 2 of 9"), std::string::npos);
 }
 
+// The last stage quotes what remesh writes, after the clean-up, and says so (it quoted the last
+// iteration's mesh before the clean-up: 22% irregular where the result has 19%).
+TEST(Lesson, TheResultCaptionSaysWhetherItIsCleanedUp) {
+  CaptionFacts facts;
+  facts.method = "retriangulate";
+  facts.result.irregularPercent = 19.3;
+  EXPECT_EQ(caption(Stage::Result, facts).formula.find("cleaned up"), std::string::npos);
+  facts.cleanedUp = true;
+  const Caption c = caption(Stage::Result, facts);
+  EXPECT_NE(c.formula.find("cleaned up on the surface"), std::string::npos) << c.formula;
+  EXPECT_NE(c.numbers.find("→ 19%"), std::string::npos) << c.numbers;
+}
+
 // The map of a run with the first pass is the rough remeshing's, and the caption says so: it
 // is why the sites start evenly spread.
 TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
