@@ -150,6 +150,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   noteFirst(slitTrialText(result_));
   // Likewise a disk kept as remeshed without the first resampling.
   if (result_.firstPassTrial && result_.firstPassTrial->keptWithout) options_.resample = false;
+  settings_ = options_;
   noteFirst(firstPassTrialText(result_));
   noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
   if (result_.charts > 0) {
@@ -222,6 +223,7 @@ void Inspector::openReplay(Recording recording) {
 void Inspector::startSession() {
   stopRun();
   forgetResult();
+  options_ = settings_;  // the Settings pane's, from now on the run's
   try {
     try {
       session_ = std::make_unique<RemeshSession>(*input_, options_, meshName_);
@@ -879,47 +881,50 @@ void Inspector::settingsControls() {
     return ImGui::Combo(label, &value, items);
   };
   ImGui::SetNextItemWidth(130);
-  ImGui::InputInt("simplify to (0: no)", &options_.simplifyTo, 100, 1000);
-  options_.simplifyTo = options_.simplifyTo > 0 ? std::max(kSmallestRemeshedShare, options_.simplifyTo) : 0;
-  int param = static_cast<int>(options_.param.method);
+  ImGui::InputInt("simplify to (0: no)", &settings_.simplifyTo, 100, 1000);
+  settings_.simplifyTo = settings_.simplifyTo > 0 ? std::max(kSmallestRemeshedShare, settings_.simplifyTo) : 0;
+  int param = static_cast<int>(settings_.param.method);
   if (combo("parameterization", param, "auto\0authalic\0conformal\0mean-value\0tutte\0lscm\0"))
-    options_.param.method = static_cast<ParamMethod>(param);
-  int border = options_.param.border == Border::Square ? 0 : 1;
+    settings_.param.method = static_cast<ParamMethod>(param);
+  int border = settings_.param.border == Border::Square ? 0 : 1;
   if (combo("border", border, "square\0circle\0"))
-    options_.param.border = border == 0 ? Border::Square : Border::Circle;
-  int density = static_cast<int>(options_.density.kind);
+    settings_.param.border = border == 0 ? Border::Square : Border::Circle;
+  int density = static_cast<int>(settings_.density.kind);
   if (combo("density", density, "uniform\0area\0curvature\0"))
-    options_.density.kind = static_cast<DensityKind>(density);
-  if (options_.density.kind == DensityKind::Curvature) {
+    settings_.density.kind = static_cast<DensityKind>(density);
+  if (settings_.density.kind == DensityKind::Curvature) {
     ImGui::SetNextItemWidth(130);
-    ImGui::InputDouble("alpha", &options_.density.alpha, 0.1, 1.0, "%.2f");
+    ImGui::InputDouble("alpha", &settings_.density.alpha, 0.1, 1.0, "%.2f");
     ImGui::SetNextItemWidth(130);
-    ImGui::InputDouble("beta", &options_.density.beta, 0.1, 1.0, "%.2f");
+    ImGui::InputDouble("beta", &settings_.density.beta, 0.1, 1.0, "%.2f");
   }
-  int method = options_.method == RemeshMethod::Relocate ? 0 : 1;
+  int method = settings_.method == RemeshMethod::Relocate ? 0 : 1;
   if (combo("method", method, "relocate\0retriangulate\0"))
-    options_.method = method == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate;
-  int solver = static_cast<int>(options_.lloyd.solver);  // in CvtSolver's order
+    settings_.method = method == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate;
+  int solver = static_cast<int>(settings_.lloyd.solver);  // in CvtSolver's order
   if (combo("solver", solver, "lloyd\0lbfgs\0newton\0"))
-    options_.lloyd.solver = static_cast<CvtSolver>(solver);
-  bool own = options_.sites.fromInputVertices;
-  if (ImGui::Checkbox("sites = input vertices", &own)) options_.sites.fromInputVertices = own;
+    settings_.lloyd.solver = static_cast<CvtSolver>(solver);
+  bool own = settings_.sites.fromInputVertices;
+  if (ImGui::Checkbox("sites = input vertices", &own)) settings_.sites.fromInputVertices = own;
   if (!own) {
     ImGui::SetNextItemWidth(130);
-    ImGui::InputInt("sites (0: as input)", &options_.sites.count, 100, 1000);
-    options_.sites.count = options_.sites.count > 0 ? std::max(kSmallestRemeshedShare, options_.sites.count) : 0;
+    ImGui::InputInt("sites (0: as input)", &settings_.sites.count, 100, 1000);
+    settings_.sites.count = settings_.sites.count > 0 ? std::max(kSmallestRemeshedShare, settings_.sites.count) : 0;
   }
   ImGui::SetNextItemWidth(130);
-  ImGui::InputDouble("distance thr.", &options_.lloyd.distanceThreshold, 0, 0, "%.1e");
+  ImGui::InputDouble("distance thr.", &settings_.lloyd.distanceThreshold, 0, 0, "%.1e");
   ImGui::SetNextItemWidth(130);
-  ImGui::InputDouble("percent thr.", &options_.lloyd.percentThreshold, 1, 5, "%.1f");
+  ImGui::InputDouble("percent thr.", &settings_.lloyd.percentThreshold, 1, 5, "%.1f");
   ImGui::SetNextItemWidth(130);
-  ImGui::InputInt("polish (-1: none)", &options_.polish, 1, 1);
-  options_.polish = std::max(-1, options_.polish);
+  ImGui::InputInt("polish (-1: none)", &settings_.polish, 1, 1);
+  settings_.polish = std::max(-1, settings_.polish);
   ImGui::SetNextItemWidth(130);
-  ImGui::InputInt("max iterations", &options_.lloyd.maxIterations, 10, 100);
-  options_.lloyd.maxIterations = std::max(1, options_.lloyd.maxIterations);
-  ImGui::TextDisabled("then Restart, Step or Run below the plots");
+  ImGui::InputInt("max iterations", &settings_.lloyd.maxIterations, 10, 100);
+  settings_.lloyd.maxIterations = std::max(1, settings_.lloyd.maxIterations);
+  // Wrapped: the pane is narrower than the line (it ran past its edge).
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("then Restart below the plots: the run on screen keeps its own settings until then");
+  ImGui::PopStyleColor();
 }
 
 void Inspector::fileControls() {
@@ -947,7 +952,7 @@ void Inspector::fileControls() {
       stopRun();
       ReadResult read = readMesh(meshPath_, ReadOptions{repairOnOpen_});
       input_ = std::move(read.mesh);
-      options_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
+      settings_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
       meshName_ = meshPath_;
       meshName_ = meshName_.substr(meshName_.find_last_of('/') + 1);
       result_.before = measureQuality(*input_);

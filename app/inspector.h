@@ -163,7 +163,8 @@ class Inspector {
   gpu::Context& gpu_;
   MeshRenderer renderer_;
   std::string meshName_;
-  RemeshOptions options_;
+  RemeshOptions options_;   // the run on screen's: the header, the captions and Compare describe it
+  RemeshOptions settings_;  // the Settings pane's, for the next Restart or Open mesh
   bool repairOnOpen_ = false;
   bool slitDisksAsked_;  // options_.slitDisks as given (remesh()'s choice may override it)
   RemeshResult result_;
