@@ -397,6 +397,15 @@ void Inspector::setCamera(const std::string& text) {
   fitPending_ = false;
 }
 
+CellFill parseCellFill(const std::string& name) {
+  const std::pair<const char*, CellFill> fills[] = {{"none", CellFill::None},       {"mass", CellFill::Mass},
+                                                    {"area", CellFill::Area},       {"energy", CellFill::Energy},
+                                                    {"distance", CellFill::ToCentroid}, {"moved", CellFill::Moved}};
+  for (const auto& [text, fill] : fills)
+    if (name == text) return fill;
+  throw Error("fill \"" + name + "\": expected none, mass, area, energy, distance or moved");
+}
+
 Pane parsePane(const std::string& name) {
   if (name == "window") return Pane::Window;
   if (name == "3d") return Pane::View3D;
@@ -431,6 +440,7 @@ void OpeningView::applyTo(Inspector& inspector) const {
                 " recorded, numbered from 0)");
   if (iteration >= 0) inspector.setIteration(iteration);
   inspector.showFinal(final);
+  if (fill) inspector.setFill(*fill);
   for (int cell : cells) inspector.pinCell(cell);
   for (int triangle : triangles) inspector.pinTriangle(triangle);
   if (!camera.empty()) inspector.setCamera(camera);
@@ -1168,8 +1178,13 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
         default: return (c.centroid - view.sites[i]).norm();
       }
     };
+    // The fixed border sites never move: their distance to the centroid, 10^3 times the
+    // movable sites' at convergence, made the scale and left every movable cell one colour.
+    // They are grey, outside the scale, for the two quantities of the sites' moves.
+    const bool movableOnly = fill_ == CellFill::ToCentroid || fill_ == CellFill::Moved;
+    const size_t first = movableOnly ? fixedCount : 0;
     double lo = INFINITY, hi = -INFINITY;
-    for (size_t i = 0; i < view.cells.size(); ++i) {
+    for (size_t i = first; i < view.cells.size(); ++i) {
       lo = std::min(lo, quantity(i));
       hi = std::max(hi, quantity(i));
     }
@@ -1177,7 +1192,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
     fillRange_[1] = hi;
     for (size_t i = 0; i < view.cells.size(); ++i) {
       const float t = hi > lo ? static_cast<float>((quantity(i) - lo) / (hi - lo)) : 0.5f;
-      const ImU32 color = quantityColor(t, 0.85f);
+      const ImU32 color = i < first ? rgb(0.85f, 0.85f, 0.85f) : quantityColor(t, 0.85f);
       for (const CellPiece& piece : view.cells[i].pieces)
         for (size_t k = 1; k + 1 < piece.polygon.size(); ++k)
           g.fill(piece.polygon[0], piece.polygon[k], piece.polygon[k + 1], color);

@@ -31,11 +31,11 @@ struct Camera {
 // What colours the 2D cells: Moved is how far each site went from iteration k-1 to k, where
 // the diagram is still changing.
 enum class CellFill { None, Mass, Area, Energy, ToCentroid, Moved };
+// "none", "mass", "area", "energy", "distance" (to the centroid), "moved"; throws Error.
+CellFill parseCellFill(const std::string& name);
 
 class Inspector;
 
-// What the inspector opens on beyond the recording, from the command line: the same for the
-// window and for headless pictures.
 // What an export saves: the whole window or one pane.
 enum class Pane { Window, View3D, Domain2D, Plots };
 Pane parsePane(const std::string& name);  // "window", "3d", "2d", "plots"; throws Error
@@ -55,6 +55,8 @@ struct ExportRequest {
   float crop[4];  // x, y, width, height in framebuffer pixels
 };
 
+// What the inspector opens on beyond the recording, from the command line: the same for the
+// window and for headless pictures.
 struct OpeningView {
   int iteration = -1;                 // -1: the last
   std::vector<int> cells, triangles;  // pinned
@@ -63,6 +65,7 @@ struct OpeningView {
   std::optional<Stage> stage;         // show this stage of the lesson, with its caption
   bool compareSolvers = false;        // also the other solvers' curves (Inspector::compareSolvers)
   bool final = false;                 // the 3D pane shows the final result (showFinal)
+  std::optional<CellFill> fill;       // what colours the 2D cells
   bool repair = false;                // "Open mesh" repairs what it reads (--repair)
   void applyTo(Inspector& inspector) const;
 };
@@ -79,6 +82,7 @@ class Inspector {
   void setRepairOnOpen(bool on) { repairOnOpen_ = on; }
   // Classroom mode: large fonts, thick lines and marks, high contrast, no controls pane.
   void setPresentation(bool on) { presentation_ = on; }
+  void setFill(CellFill fill) { fill_ = fill; }
   // Shows one stage of the lesson (its layers and caption); none: everything, no caption.
   void showStage(std::optional<Stage> stage) { stage_ = stage; }
   // The 3D pane shows the final result (polished, stitched, snapped: what remesh writes) with a

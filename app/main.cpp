@@ -258,6 +258,10 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)");
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
                          "Pin this triangle of the result (repeatable)");
+  std::string fill;
+  inspectCmd->add_option("--fill", fill,
+                         "What colours the 2D cells: none, mass, area, energy, distance (site to "
+                         "centroid) or moved (since the iteration before)");
   inspectCmd->add_flag("--compare-solvers", shot.view.compareSolvers,
                        "Also relax the run's start with the other two solvers and plot their curves");
   inspectCmd->add_flag("--presentation", shot.view.presentation,
@@ -386,6 +390,7 @@ int main(int argc, char** argv) {
       shot.timings = !noTimings;
       shot.picture.pane = parsePane(pane);
       if (!stage.empty()) shot.view.stage = parseStage(stage);
+      if (!fill.empty()) shot.view.fill = parseCellFill(fill);
       shot.view.repair = ir.repair;
       if (!iterations.empty()) {
         char rest;

@@ -177,7 +177,8 @@ TEST(Inspector, ExportErrorsAreOneLine) {
         "--screenshot " + test::tempPath("x.png") + " --iterations 0:100000",
         "--screenshot " + test::tempPath("x.jpg"),
         "--screenshot " + test::tempPath("x.png") + " --pane left",
-        "--screenshot " + test::tempPath("x.png") + " --size 640x480"}) {  // too small to read
+        "--screenshot " + test::tempPath("x.png") + " --size 640x480",  // too small to read
+        "--screenshot " + test::tempPath("x.png") + " --fill colour"}) {
     EXPECT_EQ(run("inspect " + mesh + " " + args + " 2> " + err), 1) << args;
     const std::string message = test::readText(err);
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
@@ -196,6 +197,12 @@ TEST(Inspector, PresentationModeShowsTheLessonStage) {
 // controls pane's Final column has it (it showed the last iteration's mesh before it).
 TEST(Inspector, TheLessonsLastStageShowsTheFinalResult) {
   checkScene("inspector_result_stage.png", "--presentation --stage result");
+}
+
+// The cells coloured by their site's distance to its centroid, the fixed border sites grey and
+// outside the scale: their distances made it, and every movable cell was one dark colour.
+TEST(Inspector, FillsTheCellsByTheirDistanceToTheCentroid) {
+  checkScene("inspector_fill_distance.png", "--iteration 60 --fill distance --pane 2d");
 }
 
 TEST(Inspector, OpensASimplifiedMesh) {
