@@ -1316,10 +1316,14 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   const int n = static_cast<int>(longest);
   auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
   auto y = [&](double v) { return b.y - static_cast<float>((transform(v) - lo) / (hi - lo)) * (b.y - a.y); };
+  // Every tick's line, but only every `every`-th label where they would overlap (a short plot:
+  // presentation mode's large font on a projector's 1024x768 printed them over each other).
+  const float spacing = (b.y - a.y) / std::max(ticks, 1);
+  const int every = std::max(1, static_cast<int>(std::ceil(font / std::max(spacing, 1.0f))));
   for (int i = 0; i <= ticks; ++i) {
-    const float ty = b.y - static_cast<float>(i) / std::max(ticks, 1) * (b.y - a.y);
+    const float ty = b.y - static_cast<float>(i) * spacing;
     dl->AddLine(ImVec2(a.x - 4, ty), ImVec2(b.x, ty), rgb(0.9f, 0.9f, 0.9f));
-    dl->AddText(ImVec2(p0.x + 2, ty - 7), rgb(0.3f, 0.3f, 0.3f), labels[i].c_str());
+    if (i % every == 0) dl->AddText(ImVec2(p0.x + 2, ty - 0.5f * font), rgb(0.3f, 0.3f, 0.3f), labels[i].c_str());
   }
   // X ticks: iterations, as many labels as fit side by side, six at most.
   const float labelWidth = ImGui::CalcTextSize(std::to_string(std::max(n - 1, 0)).c_str()).x + 0.5f * font;
@@ -1442,11 +1446,16 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   if (ImGui::Button(presentation_ ? "Controls" : "Present")) presentation_ = !presentation_;
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(std::max(100.0f, ImGui::GetContentRegionAvail().x - 180));
+  // The speed slider and its label keep their room, in the font's units (a fixed 180 px cut
+  // "it/s" off in presentation mode's large font).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float speedWidth = 5 * ImGui::GetFontSize();
+  const float speedRoom = speedWidth + style.ItemInnerSpacing.x + ImGui::CalcTextSize("it/s").x + style.ItemSpacing.x;
+  ImGui::SetNextItemWidth(std::max(4 * ImGui::GetFontSize(), ImGui::GetContentRegionAvail().x - speedRoom));
   int k = iteration_;
   if (ImGui::SliderInt("##iteration", &k, 0, last, "iteration %d")) setIteration(k);
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(120);
+  ImGui::SetNextItemWidth(speedWidth);
   ImGui::SliderFloat("it/s", &playSpeed_, 1.0f, 60.0f, "%.0f");
   const IterationRecord& it = replay_->recording().iterations[iteration_];
   // Numbered from 0: "of 159" read as one fewer than the 160 iterations the controls pane counts.
