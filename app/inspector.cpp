@@ -97,8 +97,15 @@ void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, cons
   }
   dl->AddRect(at, ImVec2(at.x + width, at.y + height), rgb(0.2f, 0.2f, 0.2f));
   const float font = ImGui::GetFontSize();
-  dl->AddText(ImVec2(at.x + width + 4, at.y - 0.45f * font), rgb(0.1f, 0.1f, 0.1f), top);
-  dl->AddText(ImVec2(at.x + width + 4, at.y + height - 0.6f * font), rgb(0.1f, 0.1f, 0.1f), bottom);
+  // On a light box: over the 2D cells, a dark label on dark cells could not be read.
+  auto label = [&](ImVec2 where, const char* text) {
+    const ImVec2 extent = ImGui::CalcTextSize(text);
+    dl->AddRectFilled(ImVec2(where.x - 2, where.y), ImVec2(where.x + extent.x + 2, where.y + extent.y),
+                      IM_COL32(255, 255, 255, 220));
+    dl->AddText(where, rgb(0.1f, 0.1f, 0.1f), text);
+  };
+  label(ImVec2(at.x + width + 4, at.y - 0.45f * font), top);
+  label(ImVec2(at.x + width + 4, at.y + height - 0.6f * font), bottom);
 }
 
 void drawMeshCallback(const ImDrawList*, const ImDrawCmd* cmd) {
