@@ -59,29 +59,23 @@ Vec3 lift(const Mesh& input, const Domain& domain, const Vec2& p, int hint) {
          l.weights[2] * input.points[t[2]];
 }
 
-namespace {
-
-double signedArea(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const Vec2 u = b - a, w = c - a;
-  return 0.5 * (u.x() * w.y() - u.y() * w.x());
-}
-
-}  // namespace
-
 Relocation relocate(const Mesh& input, const Domain& domain, const std::vector<int>& movableVertex,
                     const std::vector<Vec2>& sites) {
   Relocation r{input, domain.uv(), 0};
   std::vector<std::vector<int>> ring(input.vertexCount());  // each vertex's triangles
-  for (int f = 0; f < input.faceCount(); ++f)
-    for (int v : input.triangles[f]) ring[v].push_back(f);
+  std::vector<double> area(input.faceCount());               // each one's in the map, signed
+  for (int f = 0; f < input.faceCount(); ++f) {
+    const Triangle& t = input.triangles[f];
+    for (int v : t) ring[v].push_back(f);
+    area[f] = triangleArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]);
+  }
   const auto corner = [&](int v) { return Vec3(r.uv[v].x(), r.uv[v].y(), 0.0); };
   // The smallest angle of v's triangles in the domain, 0 where one faces the other way.
   const auto smallestAngle = [&](int v) {
     double smallest = 180;
     for (int f : ring[v]) {
       const Triangle& t = input.triangles[f];
-      const double before = signedArea(domain.uv()[t[0]], domain.uv()[t[1]], domain.uv()[t[2]]);
-      if (!(before * signedArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]) > 0)) return 0.0;
+      if (!(area[f] * triangleArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]) > 0)) return 0.0;
       smallest = std::min(smallest, smallestAngleDeg(corner(t[0]), corner(t[1]), corner(t[2])));
     }
     return smallest;
