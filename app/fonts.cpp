@@ -12,17 +12,16 @@ void addInspectorFonts() {
   // Greek, sub- and superscripts, arrows, maths: what the captions' formulas use beyond Latin-1.
   static const ImWchar maths[] = {0x0370, 0x03FF, 0x1D62, 0x1D62, 0x2070, 0x209F, 0x2190, 0x21FF,
                                   0x2200, 0x22FF, 0x2C7C, 0x2C7C, 0};
-  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D62, 0x1D62,
-                                   0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF,
-                                   0x2C7C, 0x2C7C, 0};
+  static const ImWchar latin[] = {0x0020, 0x00FF, 0};
   const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // fonts-dejavu-core
   if (!std::ifstream(font).good()) return;
-  // Into the small default font too, whose own glyphs stop at Latin-1: a lesson's caption
-  // outside presentation mode showed "c? = ? x ? dA".
+  // The maths go into the small default font too, whose own glyphs stop at Latin-1: a lesson's
+  // caption outside presentation mode showed "c? = ? x ? dA".
   ImFontConfig merged;
   merged.MergeMode = true;
   io.Fonts->AddFontFromFileTTF(font, 13.0f, &merged, maths);
-  io.Fonts->AddFontFromFileTTF(font, 21.0f, nullptr, ranges);  // presentation mode's
+  io.Fonts->AddFontFromFileTTF(font, 21.0f, nullptr, latin);  // presentation mode's
+  io.Fonts->AddFontFromFileTTF(font, 21.0f, &merged, maths);
 }
 
 }  // namespace lloydscope
