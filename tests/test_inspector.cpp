@@ -103,26 +103,22 @@ TEST(Inspector, ValidationLayerReportsNothingHeadless) {
             0);
 }
 
-TEST(Inspector, ReplaysARecording) {
-  const std::string rec = test::tempPath("inspect.lsrec");
+// Records a short run to `recording` (a file name in the temporary folder), and opens the
+// recording headless with `view` (inspect's options): it must give a picture.
+void replayARecording(const std::string& recording, const std::string& view) {
+  const std::string rec = test::tempPath(recording);
   ASSERT_EQ(run("remesh " + test::assetPath("jittered_grid.off") +
                 " --max-iterations 4 --no-fidelity --record " + rec + " > /dev/null"),
             0);
-  const std::string png = test::tempPath("from_recording.png");
-  ASSERT_EQ(run("inspect " + rec + " --iteration 2 --size 960x600 --screenshot " + png), 0);
+  const std::string png = test::tempPath(recording + ".png");
+  ASSERT_EQ(run("inspect " + rec + " " + view + " --size 960x600 --screenshot " + png), 0);
   EXPECT_EQ(readPng(png).width, 960);
 }
 
+TEST(Inspector, ReplaysARecording) { replayARecording("inspect.lsrec", "--iteration 2"); }
+
 // Saved under a name of the user's own (it was refused: "unknown extension '.run'").
-TEST(Inspector, ReplaysARecordingSavedUnderAnyName) {
-  const std::string rec = test::tempPath("inspect.run");
-  ASSERT_EQ(run("remesh " + test::assetPath("jittered_grid.off") +
-                " --max-iterations 4 --no-fidelity --record " + rec + " > /dev/null"),
-            0);
-  const std::string png = test::tempPath("from_named_recording.png");
-  ASSERT_EQ(run("inspect " + rec + " --size 960x600 --screenshot " + png), 0);
-  EXPECT_EQ(readPng(png).width, 960);
-}
+TEST(Inspector, ReplaysARecordingSavedUnderAnyName) { replayARecording("inspect.run", ""); }
 
 TEST(Inspector, PinnedCellAndTriangle) {
   // Cell 100 and triangle 50 highlighted in both views, their numbers in the details panel.

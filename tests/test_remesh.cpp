@@ -85,15 +85,23 @@ TEST(Lift, LocateFindsTheTriangleOfEveryPointOfANonConvexDomain) {
   }
 }
 
+namespace {
+// The map's inside vertices, and a site for each at its own parameter point.
+void insideVerticesAsSites(const WavyMap& w, std::vector<int>& inside, std::vector<Vec2>& sites) {
+  for (int v = 0; v < w.mesh.vertexCount(); ++v)
+    if (!w.p.onBoundary[v]) {
+      inside.push_back(v);
+      sites.push_back(w.p.uv[v]);
+    }
+}
+}  // namespace
+
 TEST(Relocate, KeepsConnectivityAndMovesOnlyInsideVertices) {
   const WavyMap w(6);
   std::vector<int> inside;
   std::vector<Vec2> sites;
-  for (int v = 0; v < w.mesh.vertexCount(); ++v)
-    if (!w.p.onBoundary[v]) {
-      inside.push_back(v);
-      sites.push_back(0.5 * w.p.uv[v] + Vec2(0.25, 0.25));  // pulled towards the centre
-    }
+  insideVerticesAsSites(w, inside, sites);
+  for (Vec2& s : sites) s = 0.5 * s + Vec2(0.25, 0.25);  // pulled towards the centre
   const Relocation r = relocate(w.mesh, w.domain, inside, sites);
   const Mesh& out = r.mesh;
   EXPECT_EQ(out.triangles, w.mesh.triangles);
@@ -112,22 +120,15 @@ TEST(Relocate, HoldsVerticesBackWhereTheirTrianglesWouldFold) {
   const WavyMap w(6);
   std::vector<int> inside;
   std::vector<Vec2> sites;
-  for (int v = 0; v < w.mesh.vertexCount(); ++v)
-    if (!w.p.onBoundary[v]) {
-      inside.push_back(v);
-      sites.push_back(w.p.uv[v]);
-    }
+  insideVerticesAsSites(w, inside, sites);
   std::swap(sites[3], sites[10]);  // two sites that passed each other, far apart
   sites[5] = Vec2(0.5, 0.5) + 0.2 * (sites[5] - Vec2(0.5, 0.5));
   const Relocation r = relocate(w.mesh, w.domain, inside, sites);
   EXPECT_GT(r.heldBack, 0);
-  for (const Triangle& t : w.mesh.triangles) {
-    const auto area = [&](const std::vector<Vec2>& uv) {
-      const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
-      return a.x() * b.y() - a.y() * b.x();
-    };
-    EXPECT_GT(area(w.p.uv) * area(r.uv), 0);
-  }
+  const auto area = [](const Triangle& t, const std::vector<Vec2>& uv) {
+    return triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]);
+  };
+  for (const Triangle& t : w.mesh.triangles) EXPECT_GT(area(t, w.p.uv) * area(t, r.uv), 0);
   for (size_t i = 0; i < inside.size(); ++i)
     if (r.uv[inside[i]] == sites[i]) EXPECT_EQ(r.mesh.points[inside[i]], lift(w.mesh, w.domain, sites[i]));
 }
