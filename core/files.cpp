@@ -61,4 +61,11 @@ void requireWritable(const std::string& path) {
   if (!there) std::remove(temporary.c_str());
 }
 
+void makeFolder(const std::string& path) {
+  std::error_code error;
+  std::filesystem::create_directories(path, error);
+  if (!error && !std::filesystem::is_directory(path, error)) error = std::make_error_code(std::errc::not_a_directory);
+  if (error) throw Error(path + ": cannot make the folder (" + error.message() + ")");
+}
+
 }  // namespace lloydscope

@@ -17,4 +17,8 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
 // Leaves nothing behind.
 void requireWritable(const std::string& path);
 
+// Makes the folder `path` and the folders above it where missing. Throws Error("<path>: cannot
+// make the folder (why)") where it cannot be made or is a file.
+void makeFolder(const std::string& path);
+
 }  // namespace lloydscope

@@ -367,8 +367,12 @@ TEST(Cli, BenchPrintsWhereTheTimeGoes) {
 // --as-is: the model as it comes, remeshed to the size, the defaults and --full-input beside CGAL.
 TEST(Cli, BenchAsIsRemeshesTheModelsAsTheyCome) {
   const std::string csv = test::tempPath("bench_as_is.csv");
-  const CliRun r = runCli("bench " + test::assetPath("bumpy_disk.off") + " --as-is --sizes 60 --csv " + csv);
+  // --save-inputs makes its folder (it failed with "cannot write" where the folder was new)
+  const std::string inputs = test::tempPath("bench_inputs") + "/as_is";
+  const CliRun r = runCli("bench " + test::assetPath("bumpy_disk.off") + " --as-is --sizes 60 --csv " + csv +
+                          " --save-inputs " + inputs);
   ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(readMesh(inputs + "/bumpy_disk_60.off").mesh.vertexCount(), readMesh(test::assetPath("bumpy_disk.off")).mesh.vertexCount());
   const std::string& table = r.out;
   const std::string rows = test::readText(csv);
   EXPECT_NE(table.find("| bumpy_disk | 60 | lloydscope | 6"), std::string::npos) << table;  // ~60 vertices

@@ -58,3 +58,15 @@ TEST(Files, WriteAtomicallyReplacesAFileWholeOrNotAtAll) {
   EXPECT_FALSE(exists(path + ".tmp"));
   std::filesystem::remove(path);
 }
+
+TEST(Files, MakeFolderMakesTheFoldersAboveAndRefusesAFile) {
+  const std::string top = test::tempPath("made");
+  EXPECT_EQ(errorOf([&] { makeFolder(top + "/inner"); }), "");
+  EXPECT_TRUE(std::filesystem::is_directory(top + "/inner"));
+  EXPECT_EQ(errorOf([&] { makeFolder(top + "/inner"); }), "");  // already there
+  const std::string file = top + "/a_file";
+  test::writeText(file, "x");
+  const std::string why = errorOf([&] { makeFolder(file); });
+  EXPECT_EQ(why.rfind(file + ": cannot make the folder (", 0), 0u) << why;
+  std::filesystem::remove_all(top);
+}
