@@ -592,7 +592,7 @@ void Inspector::frame() {
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float left = presentation_ ? 0.0f : std::max(280.0f, display.x * 0.23f);
   const float captionHeight = stage_ ? 3 * line + 20 : 0;
-  const float timelineHeight = presentation_ ? 2 * line + 30 : 64.0f;
+  const float timelineHeight = (presentation_ ? 2 * line + 30 : 64.0f) + (timelineWrapped_ ? ImGui::GetFrameHeightWithSpacing() : 0);
   const float plotsHeight = presentation_ ? std::max(170.0f, display.y * 0.22f)
                                           : std::max(170.0f, display.y * 0.27f);
   const float viewsHeight = display.y - captionHeight - timelineHeight - plotsHeight;
@@ -1454,11 +1454,15 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::Button(presentation_ ? "Controls" : "Present")) presentation_ = !presentation_;
   ImGui::SameLine();
   // The speed slider and its label keep their room, in the font's units (a fixed 180 px cut
-  // "it/s" off in presentation mode's large font).
+  // "it/s" off in presentation mode's large font). Where the buttons leave the iteration slider
+  // less than 16 characters (it shrank to a stub at 960 px), both go to a row of their own, and
+  // the pane grows by a row from the next frame on.
   const ImGuiStyle& style = ImGui::GetStyle();
   const float speedWidth = 5 * ImGui::GetFontSize();
   const float speedRoom = speedWidth + style.ItemInnerSpacing.x + ImGui::CalcTextSize("it/s").x + style.ItemSpacing.x;
-  ImGui::SetNextItemWidth(std::max(4 * ImGui::GetFontSize(), ImGui::GetContentRegionAvail().x - speedRoom));
+  timelineWrapped_ = ImGui::GetContentRegionAvail().x - speedRoom < 16 * ImGui::GetFontSize();
+  if (timelineWrapped_) ImGui::NewLine();
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - speedRoom);
   int k = iteration_;
   if (ImGui::SliderInt("##iteration", &k, 0, last, "iteration %d")) setIteration(k);
   ImGui::SameLine();

@@ -233,6 +233,9 @@ class Inspector {
   void exportControls();
   bool pickTriangles2D_ = false;  // a click in the 2D view pins a result triangle, not a cell
   bool presentation_ = false;
+  // The timeline's iteration slider has a row of its own: the buttons left it too little room
+  // in the last frame (a narrow window, or presentation mode's large font).
+  bool timelineWrapped_ = false;
   ImFont* presentationFont_ = nullptr;  // null: the default font, scaled
   std::optional<Stage> stage_;
   LessonPlayer lesson_;

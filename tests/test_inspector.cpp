@@ -274,6 +274,25 @@ TEST(Inspector, TheFirstViewFitsALongShape) {
   EXPECT_GT(right - left, 150);
 }
 
+// In a window 960 px wide the timeline's buttons left the iteration slider a stub of about 80
+// px; it now has a row of its own, as wide as the pane less the speed slider.
+TEST(Inspector, TheIterationSliderKeepsItsRoomInANarrowWindow) {
+  const std::string png = test::tempPath("narrow.png");
+  ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + " --no-resample --screenshot " + png +
+                " --size 960x600 --no-timings"),
+            0);
+  const Picture p = readPng(png);
+  ASSERT_EQ(p.width, 960);
+  int widest = 0;  // the longest white run in the timeline, under the plots: the slider's frame
+  for (int y = p.height - 100; y < p.height; ++y)
+    for (int x = 285, run = 0; x < p.width; ++x) {
+      const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+      run = c[0] == 255 && c[1] == 255 && c[2] == 255 ? run + 1 : 0;
+      widest = std::max(widest, run);
+    }
+  EXPECT_GT(widest, 400);
+}
+
 // Two components are remeshed each on its own; the panes follow the larger, and with --final
 // the 3D pane shows both: the view fits them all (it fitted the larger only, the other beyond
 // the pane's side).
