@@ -129,7 +129,12 @@ CLI::Validator wholeNumber(int low) {
 }
 const CLI::Validator kPositiveCount = wholeNumber(1);
 
+// The options that say how a mesh is remeshed, under a heading of their own in the help: a
+// recording, which replays its own run, refuses them (refuseRemeshingOptions).
+constexpr const char* kRemeshing = "Remeshing";
+
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
+  cmd.option_defaults()->group(kRemeshing);
   cmd.add_option("--polish", r.polish,
                  "retriangulate's clean-up in 3D: -1 none, 0 Delaunay flips, K flips and K "
                  "relaxation passes on the surface (default 3)")
@@ -184,6 +189,17 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                "are against the input itself either way)");
   cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
   addRepairFlag(cmd, r.repair);
+  cmd.option_defaults()->group("Options");
+}
+
+// A recording is replayed with the settings it was made with: an option that would remesh is
+// refused, not shown as if it had been used (--solver newton relabelled an L-BFGS run).
+void refuseRemeshingOptions(const CLI::App& cmd, const std::string& recording) {
+  for (const CLI::Option* option : cmd.get_options())
+    if (option->get_group() == kRemeshing && option->count() > 0)
+      throw Error(recording + ": " + option->get_name() +
+                  " applies to a mesh; a recording replays its own run, with the settings it was made with "
+                  "(lloydscope info shows them)");
 }
 
 // "1280x800" -> width, height.
@@ -200,12 +216,19 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
   const std::string& in = a.input;
   // By its name, or by its first bytes where it was saved under another (--record takes any).
   if ((in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) || isRecording(in)) {
+    refuseRemeshingOptions(cmd, in);
     RemeshResult result;
     result.recording = loadRecording(in);
+    try {
+      options = optionsFromSettings(result.recording.settings);
+    } catch (const Error& e) {
+      throw Error(in + ": damaged recording (" + e.what() + ")");
+    }
     result.before = measureQuality(result.recording.input);
     result.iterations = static_cast<int>(result.recording.iterations.size());
     result.converged = result.recording.converged();
-    result.paramUsed = options.param.method;
+    const std::string used = settingValue(result.recording.settings, "param-used");
+    result.paramUsed = used.empty() ? options.param.method : parseParamMethod(used);  // older recordings: as asked
     return result;
   }
   Mesh mesh = load(in, a.repair);

@@ -197,7 +197,7 @@ bool RemeshSession::finished() const {
 
 Recording RemeshSession::header() const {
   Recording r;
-  r.settings = describe(options_);
+  r.settings = describe(options_) + " param-used=" + toString(param_.method);  // what "auto" chose
   r.method = options_.method;
   r.distanceThreshold = options_.lloyd.distanceThreshold;
   r.percentThreshold = options_.lloyd.percentThreshold;
@@ -850,6 +850,52 @@ std::string describe(const RemeshOptions& options) {
     if (!o.slitDisks) s << " slit-disks=no";
   }
   return s.str();
+}
+
+std::string settingValue(const std::string& settings, const std::string& key) {
+  std::istringstream words(settings);
+  for (std::string word; words >> word;)
+    if (word.size() > key.size() && word.compare(0, key.size(), key) == 0 && word[key.size()] == '=')
+      return word.substr(key.size() + 1);
+  return "";
+}
+
+RemeshOptions optionsFromSettings(const std::string& settings) {
+  RemeshOptions o;
+  // Each key describe() writes, parsed back where the line has it.
+  auto with = [&](const char* key, const std::function<void(const std::string&)>& set) {
+    const std::string value = settingValue(settings, key);
+    if (value.empty()) return;
+    try {
+      set(value);
+    } catch (const std::logic_error&) {  // std::stoi and std::stod's
+      throw Error(std::string("setting ") + key + "=" + value + " is not a number");
+    }
+  };
+  auto yes = [](const std::string& v) { return v == "yes"; };
+  with("simplify", [&](const std::string& v) { o.simplifyTo = std::stoi(v); });
+  with("method", [&](const std::string& v) { o.method = parseRemeshMethod(v); });
+  with("resample", [&](const std::string& v) { o.resample = yes(v); });
+  with("param", [&](const std::string& v) { o.param.method = parseParamMethod(v); });
+  with("border", [&](const std::string& v) { o.param.border = parseBorder(v); });
+  with("density", [&](const std::string& v) { o.density.kind = parseDensityKind(v); });
+  with("alpha", [&](const std::string& v) { o.density.alpha = std::stod(v); });
+  with("beta", [&](const std::string& v) { o.density.beta = std::stod(v); });
+  with("floor", [&](const std::string& v) { o.density.floor = std::stod(v); });
+  with("sites", [&](const std::string& v) {
+    o.sites.fromInputVertices = v == "input-vertices";
+    o.sites.count = v == "input-vertices" || v == "as-many-as-input" ? 0 : std::stoi(v);
+  });
+  with("solver", [&](const std::string& v) { o.lloyd.solver = parseCvtSolver(v); });
+  with("distance-threshold", [&](const std::string& v) { o.lloyd.distanceThreshold = std::stod(v); });
+  with("percent-threshold", [&](const std::string& v) { o.lloyd.percentThreshold = std::stod(v); });
+  with("max-iterations", [&](const std::string& v) { o.lloyd.maxIterations = std::stoi(v); });
+  with("polish", [&](const std::string& v) { o.polish = std::stoi(v); });
+  with("polish-target", [&](const std::string& v) { o.polishTarget = parsePolishTarget(v); });
+  with("snap", [&](const std::string& v) { o.snapToTips = yes(v); });
+  with("fit", [&](const std::string& v) { o.fit = yes(v); });
+  with("slit-disks", [&](const std::string& v) { o.slitDisks = yes(v); });
+  return o;
 }
 
 const char* toString(RemeshMethod method) {

@@ -305,6 +305,14 @@ class RemeshSession {
 // One line naming every setting, stored in recordings and printed by the command line.
 std::string describe(const RemeshOptions& options);
 
+// The value of `key` in a describe() line, "" where the line does not name it. A recording's
+// line also names the map "auto" chose (param-used=lscm).
+std::string settingValue(const std::string& settings, const std::string& key);
+// The options a describe() line was made from (a recording's: the inspector shows and compares
+// with what the run was), keys it does not name at their defaults. Throws Error on a value
+// that is not one of the setting's.
+RemeshOptions optionsFromSettings(const std::string& settings);
+
 const char* toString(RemeshMethod method);
 RemeshMethod parseRemeshMethod(const std::string& text);  // throws Error on unknown names
 

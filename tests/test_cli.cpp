@@ -280,6 +280,20 @@ TEST(Cli, TruncatedRecording) {
   EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
 }
 
+// A recording replays its own run: an option that would remesh is refused, in one line naming
+// it (inspect cap.lsrec --solver newton drew the L-BFGS run in Newton's colour, labelled newton).
+TEST(Cli, ARecordingRefusesRemeshingOptions) {
+  const std::string rec = test::tempPath("cli_options.lsrec");
+  ASSERT_EQ(runCli("remesh " + test::assetPath("jittered_grid.off") + " --max-iterations 3 --no-fidelity --record " + rec).code, 0);
+  for (const std::string option : {"--solver newton", "--density uniform", "--distance-threshold 1e-3", "--polish 0"}) {
+    const CliRun r = runCli("inspect " + rec + " " + option + " --screenshot " + test::tempPath("never.png"));
+    EXPECT_EQ(r.code, 1) << option;
+    EXPECT_EQ(r.err.rfind("lloydscope: " + rec + ": " + option.substr(0, option.find(' ')) + " applies to a mesh", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_EQ(runCli("inspect " + rec + " --iteration 1 --screenshot " + test::tempPath("fine.png")).code, 0);
+}
+
 TEST(Cli, AFailedRunLeavesTheUsersFileAlone) {
   const std::string out = test::tempPath("precious.off");
   test::writeText(out, kTriangle);

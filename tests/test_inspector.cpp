@@ -38,9 +38,11 @@ int run(const std::string& args) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-void checkScene(const std::string& name, const std::string& args) {
+// `input`: a mesh or a recording, by default the sphere cap.
+void checkScene(const std::string& name, const std::string& args, std::string input = "") {
+  if (input.empty()) input = test::assetPath("sphere_cap.off");
   const std::string actualPath = test::tempPath(name);
-  ASSERT_EQ(run("inspect " + test::assetPath("sphere_cap.off") + " --screenshot " + actualPath +
+  ASSERT_EQ(run("inspect " + input + " --screenshot " + actualPath +
                 " --size 960x600 --no-timings " + args),
             0);
   const std::string expectedPath = std::string(LLOYDSCOPE_SOURCE_DIR) + "/tests/snapshots/" + name;
@@ -75,6 +77,16 @@ TEST(Inspector, ComparesTheSolversCurves) {
 // A Newton run: each solver keeps its colour (Newton purple, L-BFGS blue, Lloyd grey).
 TEST(Inspector, ColoursEachSolverTheSameWhicheverRuns) {
   checkScene("inspector_compared_newton.png", "--solver newton --compare-solvers --pane plots");
+}
+
+// The same Newton run, recorded and replayed: the same picture. A recording was shown with the
+// command line's defaults ("lbfgs, this run", in L-BFGS's blue, and Newton run again beside it).
+TEST(Inspector, ReplaysARecordingWithTheSettingsItWasMadeWith) {
+  const std::string rec = test::tempPath("newton.lsrec");
+  ASSERT_EQ(run("remesh " + test::assetPath("sphere_cap.off") + " --solver newton --no-fidelity --record " + rec +
+                " > /dev/null"),
+            0);
+  checkScene("inspector_compared_newton.png", "--compare-solvers --pane plots", rec);
 }
 
 TEST(Inspector, PicturesDifferBetweenIterations) {

@@ -442,6 +442,45 @@ TEST(Pipeline, TheSettingsLineDescribesWhatRuns) {
   EXPECT_NE(describe(RemeshOptions()).find("resample=yes"), std::string::npos);
 }
 
+// A recording's settings line gives back the options it was made with (the inspector showed a
+// recording with the command line's defaults), and names the map "auto" chose.
+TEST(Pipeline, TheSettingsLineGivesBackItsOptions) {
+  std::vector<RemeshOptions> cases(5);
+  cases[1].method = RemeshMethod::Relocate;
+  cases[2].lloyd.solver = CvtSolver::Newton;
+  cases[2].density.kind = DensityKind::Curvature;
+  cases[2].density.alpha = 0.5;
+  cases[2].lloyd.distanceThreshold = 1e-5;
+  cases[2].lloyd.percentThreshold = 2.5;
+  cases[2].sites.count = 321;
+  cases[3] = referencePreset(RemeshMethod::Retriangulate);
+  cases[4].polish = 0;
+  cases[4].param.method = ParamMethod::Tutte;
+  cases[4].param.border = Border::Square;
+  cases[4].simplifyTo = 700;
+  cases[4].slitDisks = false;
+  cases[4].fit = false;
+  for (const RemeshOptions& o : cases) {
+    const std::string line = describe(o);
+    EXPECT_EQ(describe(optionsFromSettings(line)), line);
+  }
+  const RemeshOptions newton = optionsFromSettings(describe(cases[2]));
+  EXPECT_EQ(newton.lloyd.solver, CvtSolver::Newton);
+  EXPECT_EQ(newton.lloyd.distanceThreshold, 1e-5);
+  EXPECT_EQ(newton.sites.count, 321);
+  EXPECT_EQ(settingValue("polish=3 polish-target=voronoi", "polish"), "3");
+  EXPECT_EQ(settingValue("polish=3 polish-target=voronoi", "polish-target"), "voronoi");
+  EXPECT_EQ(settingValue("polish=3", "param-used"), "");
+  EXPECT_THROW(optionsFromSettings("solver=quick"), Error);
+  EXPECT_THROW(optionsFromSettings("max-iterations=many"), Error);
+
+  RemeshOptions quick;
+  quick.lloyd.maxIterations = 2;
+  quick.measureFidelity = false;
+  const RemeshResult r = remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, quick, "cap");
+  EXPECT_EQ(settingValue(r.recording.settings, "param-used"), toString(r.paramUsed));
+}
+
 // --simplify N asks for N vertices: a coarser input is not simplified but remeshed finer, to N
 // (the result of `remesh pig.off --simplify 2000` had the pig's 468 vertices).
 TEST(Pipeline, ACoarserInputIsRemeshedToTheSimplifySize) {
