@@ -174,14 +174,21 @@ std::string withoutResamplingText(const std::string& problem) {
 
 std::string slitTrialText(const RemeshResult& r) {
   if (!r.slitTrial) return "";
+  const SlitTrial& t = *r.slitTrial;
+  // Why, as SlitTrial::wholeBetter() decides: a kept result with the smaller average angle
+  // read as the worse one kept.
+  const std::string why =
+      t.slitBars != t.wholeBars
+          ? "; bars met (irregular, smallest angle, average) " + std::to_string(t.slitBars) + " slit, " +
+                std::to_string(t.wholeBars) + " whole: the one meeting more kept"
+      : t.bothMeetTheBars() ? "; both meet the three bars, the closer kept: Hausdorff " +
+                                  format("%.3f", t.slitHausdorff) + "% slit, " + format("%.3f", t.wholeHausdorff) +
+                                  "% whole"
+                            : "; as many bars met (" + std::to_string(t.slitBars) + "), the rounder kept";
   return std::string(r.cut.seamEdges > 0 ? "Kept slit open" : "Kept whole") +
          " (remeshed both slit open and whole: its map to a disk shrinks part of it over " +
          std::to_string(static_cast<long>(CutOptions{}.slitDisksAbove)) + " times): average smallest angle " +
-         format("%.1f", r.slitTrial->slit) + " deg slit, " + format("%.1f", r.slitTrial->whole) + " deg whole" +
-         (r.slitTrial->bothMeetTheBars() ? "; both meet the three bars, the closer kept: Hausdorff " +
-                                               format("%.3f", r.slitTrial->slitHausdorff) + "% slit, " +
-                                               format("%.3f", r.slitTrial->wholeHausdorff) + "% whole"
-                                         : "");
+         format("%.1f", t.slit) + " deg slit, " + format("%.1f", t.whole) + " deg whole" + why;
 }
 
 std::string chartTrialText(const RemeshResult& r) {

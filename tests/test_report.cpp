@@ -67,6 +67,15 @@ TEST(Report, TheSlitTrialSaysWhereTheDistanceDecided) {
   std::string text = slitTrialText(r);
   EXPECT_EQ(text.rfind("Kept slit open", 0), 0u) << text;
   EXPECT_EQ(text.find("Hausdorff"), std::string::npos) << text;
+  // Why the one with the smaller average angle was kept (the line gave the angles alone)
+  EXPECT_NE(text.find("53.9 deg slit, 54.0 deg whole; bars met (irregular, smallest angle, average) 3 slit, 2 whole: "
+                      "the one meeting more kept"),
+            std::string::npos)
+      << text;
+  r.slitTrial->slitBars = 2;
+  text = slitTrialText(r);
+  EXPECT_NE(text.find("; as many bars met (2), the rounder kept"), std::string::npos) << text;
+  r.slitTrial->slitBars = 3;
   r.slitTrial->wholeBars = 3;
   r.slitTrial->slitHausdorff = 2.985;
   r.slitTrial->wholeHausdorff = 3.676;
