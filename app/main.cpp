@@ -158,17 +158,18 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--beta", r.beta, "curvature density: weight of H^2")->check(finiteNumber(0, "a number >= 0"));
   cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)")
       ->check(finiteNumber(0, "a number >= 0"));
-  cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(kPositiveCount);
+  cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(wholeNumber(kSmallestRemeshedShare));
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
   cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
       ->check(kPositiveCount);
   cmd.add_option("--distance-threshold", r.distanceThreshold,
-                 "a site closer than this to its centroid (fraction of the domain size) is still")
+                 "a site farther than this from its centroid (a fraction of the domain's size) is still "
+                 "moving (default 1e-6)")
       ->check(finiteNumber(std::numeric_limits<double>::min(), "a number > 0"));
   cmd.add_option("--percent-threshold", r.percentThreshold,
-                 "converged when fewer than this % of the sites are not still")
+                 "converged when fewer than this % of the sites are still moving (default 5)")
       ->check(finiteNumber(0, "a percentage from 0 to 100", 100));
   cmd.add_flag("--no-resample", r.noResample,
                "Parameterize the input itself, not a rough first remeshing of it");
@@ -294,7 +295,8 @@ int main(int argc, char** argv) {
                          "Show one stage of the lesson with its caption: load, parameterize, "
                          "voronoi, centroids, move, lift or result");
   inspectCmd->add_option("--camera", shot.view.camera,
-                         "3D view as \"yaw pitch distance x y z\" (the inspector's Copy view)");
+                         "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
+                         "the point x y z looked at (the inspector's Copy view)");
   inspectCmd->add_option("--size", size, "Picture size WxH, 960x600 or more (default 1280x800)");
   inspectCmd->add_flag("--validation", shot.validation,
                        "Enable the Vulkan validation layer; fail if it reports anything");

@@ -14,8 +14,15 @@ namespace {
 
 std::string temporaryOf(const std::string& path) { return path + ".tmp"; }
 
+// Says why "<path>.tmp" could not be made: a missing folder by its name (the user never typed
+// the temporary's), else the system's reason.
 [[noreturn]] void cannotMake(const std::string& path, const std::string& temporary) {
-  throw Error(path + ": cannot write " + temporary + " (" + std::strerror(errno) + ")");
+  const std::string reason = std::strerror(errno);
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code ignored;
+  if (!folder.empty() && !std::filesystem::exists(folder, ignored))
+    throw Error(path + ": cannot write: there is no folder " + folder.string());
+  throw Error(path + ": cannot write " + temporary + " (" + reason + ")");
 }
 
 void requireNotAFolder(const std::string& path) {

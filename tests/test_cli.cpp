@@ -110,17 +110,21 @@ TEST(Cli, FullInputKeepsALargeInputAsItIs) {
   }
 }
 
-// Fewer than 20 vertices asked is a one-line error naming the file (a handful of border
-// samples crashed the triangulation, or left an empty result).
+// Fewer than 20 vertices asked is a one-line error naming the file or the option (a handful of
+// border samples crashed the triangulation, or left an empty result). --sites says so in the
+// help (it said ">= 1").
 TEST(Cli, TooFewVerticesAskedIsAnError) {
   const std::string path = test::assetPath("bumpy_disk.off");
-  for (const std::string asked : {"--sites 2", "--sites 19", "--simplify 5"}) {
+  for (const auto& [asked, why] : std::vector<std::pair<std::string, std::string>>{
+           {"--sites 2", "--sites: expected a whole number >= 20, not '2'"},
+           {"--sites 19", "--sites: expected a whole number >= 20, not '19'"},
+           {"--simplify 5", path + ": 5 vertices asked; a surface is remeshed to 20 at least"}}) {
     const CliRun r = runCli("remesh " + path + " " + asked + " -o " + test::tempPath("never.off"));
     EXPECT_EQ(r.code, 1) << asked << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(path + ": "), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("a surface is remeshed to 20 at least"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
   }
+  EXPECT_NE(runCli("remesh --help").out.find("--sites INT:>= 20"), std::string::npos);
   EXPECT_EQ(runCli("remesh " + path + " --sites 20 --no-fidelity -o " + test::tempPath("twenty.off")).code, 0);
 }
 
@@ -430,7 +434,7 @@ TEST(Cli, AFileThatCannotBeSavedFailsBeforeTheRun) {
   const std::string missing = test::tempPath("no_such_folder") + "/run.lsrec";
   CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") + " -o " + out + " --record " + missing);
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(r.err, "lloydscope: " + missing + ": cannot write " + missing + ".tmp (No such file or directory)\n");
+  EXPECT_EQ(r.err, "lloydscope: " + missing + ": cannot write: there is no folder " + test::tempPath("no_such_folder") + "\n");
   EXPECT_FALSE(std::ifstream(out).good()) << "the mesh was written before the recording failed";
   EXPECT_EQ(r.out, "");
 
@@ -482,7 +486,7 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"remesh " + mesh + " --bogus", "--bogus"},
       {"remesh", "input"},
       {"remesh " + mesh + " --max-iterations abc", "expected a whole number >= 1, not 'abc'"},
-      {"remesh " + mesh + " --sites 1.5", "expected a whole number >= 1, not '1.5'"},
+      {"remesh " + mesh + " --sites 1.5", "expected a whole number >= 20, not '1.5'"},
       {"remesh " + mesh + " --polish -2", "expected a whole number >= -1, not '-2'"}};
   for (const auto& [command, says] : mistakes) {
     const CliRun r = runCli(command);
