@@ -1286,7 +1286,9 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   extend(values);
   for (const std::vector<double>& series : others) extend(series);
   if (threshold > 0) {
-    lo = std::min(lo, transform(threshold));
+    // Half a decade under the threshold on a log axis: at 10^-6, rounded down to a decade, the
+    // green line lay on the plot's bottom edge and read as the axis.
+    lo = std::min(lo, transform(threshold) - (logScale ? 0.5 : 0.0));
     hi = std::max(hi, transform(threshold));
   }
   if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;  // nothing to plot (yet)

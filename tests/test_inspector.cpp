@@ -305,6 +305,27 @@ TEST(Inspector, TheIterationSliderKeepsItsRoomInANarrowWindow) {
   EXPECT_GT(widest, 400);
 }
 
+// The largest move's plot shows its threshold, the green line, above the plot's bottom edge: at
+// 10^-6 the axis ended on it, and the line read as the axis.
+TEST(Inspector, TheDistanceThresholdLineIsAboveTheAxis) {
+  const std::string png = test::tempPath("threshold.png");
+  ASSERT_EQ(run("inspect " + test::assetPath("sphere_cap.off") + " --pane plots --screenshot " + png +
+                " --size 960x600 --no-timings"),
+            0);
+  const Picture p = readPng(png);
+  ASSERT_GT(p.width, 0);
+  const int x = p.width / 2;  // the middle plot's middle
+  int green = -1, edge = -1;  // the lowest rows of each in that column
+  for (int y = 0; y < p.height; ++y) {
+    const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+    if (c[1] > 120 && c[0] < 90 && c[2] < 90) green = y;
+    if (std::abs(c[0] - 128) < 8 && std::abs(c[1] - 128) < 8 && std::abs(c[2] - 128) < 8) edge = y;
+  }
+  ASSERT_GE(green, 0);
+  ASSERT_GE(edge, 0);
+  EXPECT_LT(green, edge - 4);
+}
+
 // Two components are remeshed each on its own; the panes follow the larger, and with --final
 // the 3D pane shows both: the view fits them all (it fitted the larger only, the other beyond
 // the pane's side).
