@@ -49,6 +49,10 @@ std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh);
 // Length of its diagonal.
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
+// Zero area up to rounding, as readMesh() refuses a face: the sine of the angle at a is
+// negligible. Exact comparison with 0 would let through collinear corners whose coordinates are
+// not exactly representable.
+bool hasZeroArea(const Vec3& a, const Vec3& b, const Vec3& c);
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b);
 Vec3 faceNormal(const Mesh& mesh, const Triangle& t);  // not unit: its length is twice the area
 double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas

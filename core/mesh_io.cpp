@@ -703,13 +703,6 @@ bool checkFaceIndices(const Index* v, size_t n, long long face, size_t vertexCou
   return repeated != sorted.end() && repeatedVertex(*repeated);
 }
 
-// Zero area up to rounding: the sine of the angle at a is negligible. Exact comparison with 0
-// would let through collinear corners whose coordinates are not exactly representable.
-bool hasZeroArea(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 u = b - a, v = c - a;
-  return u.cross(v).norm() <= 1e-12 * u.norm() * v.norm();
-}
-
 // Pairs of used vertices at exactly the same position, each pair once, in order of position.
 std::vector<std::pair<int, int>> coincidentVertices(const Mesh& mesh) {
   std::vector<bool> isUsed(mesh.points.size(), false);

@@ -9,6 +9,8 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 namespace lloydscope {
@@ -54,10 +56,36 @@ bool turnMostBack(SurfaceMesh& sm, Soup& faces, std::vector<bool>& turned) {
   return any;
 }
 
-int degenerateFaceCount(const SurfaceMesh& sm) {
-  int count = 0;
-  for (SurfaceMesh::Face_index f : sm.faces())
-    if (PMP::is_degenerate_triangle_face(f, sm)) ++count;
+// The faces of zero area as readMesh() tells them (hasZeroArea: up to rounding).
+std::vector<SurfaceMesh::Face_index> flatFaces(const SurfaceMesh& sm) {
+  std::vector<SurfaceMesh::Face_index> flat;
+  for (SurfaceMesh::Face_index f : sm.faces()) {
+    std::array<Vec3, 3> corner;
+    int k = 0;
+    for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
+      const Point3& p = sm.point(v);
+      corner[k++] = Vec3(p.x(), p.y(), p.z());
+    }
+    if (hasZeroArea(corner[0], corner[1], corner[2])) flat.push_back(f);
+  }
+  return flat;
+}
+
+// Removes the faces of zero area: those exactly flat by collapsing or flipping an edge (CGAL's
+// remove_degenerate_faces), then those flat only up to rounding (a corner a hair off the line of
+// the other two, which the exact test calls a triangle) as CGAL's almost-degenerate removal
+// does: a cap's longest edge flipped, a needle's shortest collapsed. Returns how many there were.
+int removeFlatFaces(SurfaceMesh& sm) {
+  const int count = static_cast<int>(flatFaces(sm).size());
+  if (count == 0) return 0;
+  PMP::remove_degenerate_faces(sm);
+  const std::vector<SurfaceMesh::Face_index> nearlyFlat = flatFaces(sm);
+  if (!nearlyFlat.empty()) {
+    // An angle within 1e-12 of 180 degrees is a cap, edges 10^6 times as long as another a
+    // needle: a flat face is one or the other (the sine of one of its angles is under 1e-12).
+    const double capCosine = std::cos(179.0 * M_PI / 180.0), needleRatio = 1e6;
+    PMP::experimental::remove_almost_degenerate_faces(nearlyFlat, sm, capCosine, needleRatio, 0.0);
+  }
   return count;
 }
 
@@ -91,8 +119,7 @@ RepairResult repairMesh(const Mesh& mesh) {
     PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
   }
   result.turnedFaces = static_cast<int>(std::count(turned.begin(), turned.end(), true));
-  result.degenerateFaces = degenerateFaceCount(sm);
-  if (result.degenerateFaces > 0) PMP::remove_degenerate_faces(sm);
+  result.degenerateFaces = removeFlatFaces(sm);
   result.mesh = result.changed() ? fromSurfaceMesh(sm) : mesh;
   return result;
 }
