@@ -14,6 +14,7 @@
 #include <future>
 #include <thread>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
@@ -764,11 +765,41 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
 
 }  // namespace
 
+namespace {
+std::string shortNumber(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", x);
+  return text;
+}
+}  // namespace
+
+void requireRemeshableSize(const Mesh& input, const std::string& name) {
+  double largest = 0;
+  for (const Vec3& p : input.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  if (largest > kLargestCoordinate)
+    throw Error(name + ": coordinates as large as " + shortNumber(largest) + " are beyond what can be remeshed in " +
+                "double precision (up to " + shortNumber(kLargestCoordinate) + "); scale the mesh down");
+  const double diagonal = boundingBoxDiagonal(input);
+  if (diagonal < kSmallestDiagonal)
+    throw Error(name + ": too small to remesh in double precision: its bounding box's diagonal is " +
+                shortNumber(diagonal) + " (the least is " + shortNumber(kSmallestDiagonal) + "); scale it up");
+  if (largest > kFarthestPerSize * diagonal)
+    throw Error(name + ": too far from the origin for its size: " + shortNumber(largest / diagonal) +
+                " times its diagonal away (at most " + shortNumber(kFarthestPerSize) +
+                "), double precision leaves too few digits for its shape or the result's; move it nearer");
+  const double area = surfaceArea(input);
+  if (area < kThinnestArea * diagonal * diagonal)
+    throw Error(name + ": too thin to remesh: its area is " + shortNumber(area / (diagonal * diagonal)) +
+                " times its bounding box's diagonal squared (the least is " + shortNumber(kThinnestArea) +
+                "): a sliver of a surface, or a vertex far off the rest");
+}
+
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   const int asked = verticesAsked(options);
   if (asked > 0 && asked < kSmallestRemeshedShare)
     throw Error(name + ": " + std::to_string(asked) + " vertices asked; a surface is remeshed to " +
                 std::to_string(kSmallestRemeshedShare) + " at least");
+  requireRemeshableSize(input, name);
   const Topology topology = analyzeTopology(input);
   if (topology.components <= 1) return remeshSurface(input, topology.isDisk(), options, name);
   Stopwatch total;

@@ -302,6 +302,17 @@ class RemeshSession {
   std::unique_ptr<LloydSolver> solver_;
 };
 
+// The sizes double precision remeshes: beyond them CGAL's exact predicates crashed (GMP on the
+// NaN of an overflowed product: coordinates of 1e80), its triangulation looped (a strip 10^9
+// times as long as wide, or one vertex 10^10 away from a unit grid), or the result lost its
+// shape to rounding (a unit grid 10^15 from the origin came out with 0-degree angles; 10^12
+// was fine). Throws Error naming `name`, the measure and its limit, for a mesh outside them.
+constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthestPerSize = 1e12;
+// Of the diagonal squared. A strip 10^6 to 1 runs, slowly: at its spacing its border alone takes
+// 16,000 vertices for 81 asked.
+constexpr double kThinnestArea = 1e-8;
+void requireRemeshableSize(const Mesh& input, const std::string& name);
+
 // One line naming every setting, stored in recordings and printed by the command line.
 std::string describe(const RemeshOptions& options);
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 
 using namespace lloydscope;
 
@@ -479,6 +480,42 @@ TEST(Pipeline, TheSettingsLineGivesBackItsOptions) {
   quick.measureFidelity = false;
   const RemeshResult r = remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, quick, "cap");
   EXPECT_EQ(settingValue(r.recording.settings, "param-used"), toString(r.paramUsed));
+}
+
+// Sizes double precision cannot remesh are refused in one line saying which and why: they crashed
+// (coordinates of 1e80: GMP's abort on an overflowed NaN in CGAL's exact predicates), looped
+// (a strip 10^9 times as long as wide; a vertex 10^10 away from a unit grid) or came out with
+// 0-degree angles (a unit grid 10^15 from the origin). Just inside the limits, a run works.
+TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
+  const Mesh grid = test::grid(8);
+  auto transformed = [&](const std::function<Vec3(const Vec3&)>& f) {
+    Mesh m = grid;
+    for (Vec3& p : m.points) p = f(p);
+    return m;
+  };
+  auto why = [](const Mesh& m) {
+    RemeshOptions quick;
+    quick.lloyd.maxIterations = 3;
+    quick.measureFidelity = false;
+    try {
+      remesh(m, quick, "m.off");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return 1e80 * p; })).rfind("m.off: coordinates as large as 1e+80", 0), 0u);
+  EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return 1e-40 * p; })).rfind("m.off: too small to remesh", 0), 0u);
+  const std::string far = why(transformed([](const Vec3& p) -> Vec3 { return p + Vec3(1e15, 0, 0); }));
+  EXPECT_EQ(far.rfind("m.off: too far from the origin", 0), 0u) << far;
+  EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-9 * p.y(), p.z()); })).rfind("m.off: too thin to remesh", 0), 0u);
+  Mesh farVertex = grid;
+  farVertex.points[0] = Vec3(-1e10, -1e10, 0);
+  EXPECT_EQ(why(farVertex).rfind("m.off: too thin to remesh", 0), 0u);
+  for (const Mesh& fine : {transformed([](const Vec3& p) -> Vec3 { return 1e29 * p; }), transformed([](const Vec3& p) -> Vec3 { return 1e-29 * p; }),
+                           transformed([](const Vec3& p) -> Vec3 { return p + Vec3(1e11, 0, 0); }),
+                           transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-4 * p.y(), p.z()); })})
+    EXPECT_EQ(why(fine), "");
 }
 
 // --simplify N asks for N vertices: a coarser input is not simplified but remeshed finer, to N
