@@ -311,7 +311,10 @@ constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthest
 // Of the diagonal squared. A strip 10^6 to 1 runs, slowly: at its spacing its border alone takes
 // 16,000 vertices for 81 asked.
 constexpr double kThinnestArea = 1e-8;
-void requireRemeshableSize(const Mesh& input, const std::string& name);
+// And `vertices` (those asked) far too few for the surface: its border alone, sampled at their
+// spacing, would take over kMostBorderPerVertex times as many.
+constexpr int kMostBorderPerVertex = 10;
+void requireRemeshableSize(const Mesh& input, int vertices, const std::string& name);
 
 // One line naming every setting, stored in recordings and printed by the command line.
 std::string describe(const RemeshOptions& options);

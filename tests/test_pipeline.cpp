@@ -485,7 +485,8 @@ TEST(Pipeline, TheSettingsLineGivesBackItsOptions) {
 // Sizes double precision cannot remesh are refused in one line saying which and why: they crashed
 // (coordinates of 1e80: GMP's abort on an overflowed NaN in CGAL's exact predicates), looped
 // (a strip 10^9 times as long as wide; a vertex 10^10 away from a unit grid) or came out with
-// 0-degree angles (a unit grid 10^15 from the origin). Just inside the limits, a run works.
+// 0-degree angles (a unit grid 10^15 from the origin); and too few vertices for a surface's
+// border. Just inside the limits, a run works.
 TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
   const Mesh grid = test::grid(8);
   auto transformed = [&](const std::function<Vec3(const Vec3&)>& f) {
@@ -509,12 +510,16 @@ TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
   const std::string far = why(transformed([](const Vec3& p) -> Vec3 { return p + Vec3(1e15, 0, 0); }));
   EXPECT_EQ(far.rfind("m.off: too far from the origin", 0), 0u) << far;
   EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-9 * p.y(), p.z()); })).rfind("m.off: too thin to remesh", 0), 0u);
+  // A strip 10^4 to 1 at its 81 vertices: sampled at their spacing, its border alone takes 1676
+  // (the result had 1676 vertices; at 10^6 to 1, 16,751 in 31 s).
+  const std::string few = why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-4 * p.y(), p.z()); }));
+  EXPECT_EQ(few.rfind("m.off: 81 vertices are too few for it: at their spacing its border alone takes 1676 (over 10", 0), 0u) << few;
   Mesh farVertex = grid;
   farVertex.points[0] = Vec3(-1e10, -1e10, 0);
   EXPECT_EQ(why(farVertex).rfind("m.off: too thin to remesh", 0), 0u);
   for (const Mesh& fine : {transformed([](const Vec3& p) -> Vec3 { return 1e29 * p; }), transformed([](const Vec3& p) -> Vec3 { return 1e-29 * p; }),
                            transformed([](const Vec3& p) -> Vec3 { return p + Vec3(1e11, 0, 0); }),
-                           transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-4 * p.y(), p.z()); })})
+                           transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 0.01 * p.y(), p.z()); })})
     EXPECT_EQ(why(fine), "");
 }
 
