@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -72,6 +73,18 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   return o;
 }
 
+// The recording, the output and the input are three files: --record onto the input or the
+// output replaced it with a recording, silently.
+void refuseSameFile(const RemeshArgs& a) {
+  auto same = [](const std::string& x, const std::string& y) {
+    std::error_code ignored;
+    return !x.empty() && !y.empty() &&
+           std::filesystem::weakly_canonical(x, ignored) == std::filesystem::weakly_canonical(y, ignored);
+  };
+  if (same(a.record, a.input)) throw Error(a.record + ": --record would replace the input mesh; give it another name");
+  if (same(a.record, a.output)) throw Error(a.record + ": --record and --output name the same file; give them two");
+}
+
 Mesh load(const std::string& path, bool repair) {
   ReadResult read = readMesh(path, ReadOptions{repair});
   for (const std::string& note : read.notes) std::cerr << "note: " << note << "\n";
@@ -83,6 +96,7 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   // Where the files cannot be saved, say so now, not after minutes of work.
   if (!a.output.empty()) requireMeshWritable(a.output);
   if (!a.record.empty()) requireWritable(a.record);
+  refuseSameFile(a);
   const Mesh input = load(a.input, a.repair);
   const RemeshResult result = remesh(input, options, a.input);
   if (!a.output.empty()) writeMesh(result.output, a.output);

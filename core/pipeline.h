@@ -308,9 +308,10 @@ class RemeshSession {
 // shape to rounding (a unit grid 10^15 from the origin came out with 0-degree angles; 10^12
 // was fine). Throws Error naming `name`, the measure and its limit, for a mesh outside them.
 constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthestPerSize = 1e12;
-// Of the diagonal squared. A strip 10^6 to 1 runs, slowly: at its spacing its border alone takes
-// 16,000 vertices for 81 asked.
-constexpr double kThinnestArea = 1e-8;
+// Of the diagonal squared: a ribbon 1000 to 1 has 10^-3. Under 10^-6 the border check below
+// could only be met by asking for hundreds of thousands of vertices (a rectangle 1 by 10^-7
+// asked for 954,894, then ran out of memory).
+constexpr double kThinnestArea = 1e-6;
 // And `vertices` (those asked) far too few for the surface: its border alone, sampled at their
 // spacing, would take over kMostBorderPerVertex times as many.
 constexpr int kMostBorderPerVertex = 10;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -214,6 +215,8 @@ bool isRecording(const std::string& path) {
 }
 
 Recording loadRecording(const std::string& path) {
+  std::error_code ignored;  // a folder opens, then fails to read with an "internal error"
+  if (std::filesystem::is_directory(path, ignored)) throw Error(path + ": is a folder, not a recording");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw Error(path + ": cannot open the recording (missing or unreadable)");
   const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
@@ -296,6 +297,27 @@ TEST(Cli, ARecordingRefusesRemeshingOptions) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
   EXPECT_EQ(runCli("inspect " + rec + " --iteration 1 --screenshot " + test::tempPath("fine.png")).code, 0);
+}
+
+// --record onto the input or the output replaced it with a recording (exit 0); a folder given
+// as a recording was an "internal error" (exit 2).
+TEST(Cli, ARecordingNeitherReplacesTheInputNorTheOutputNorReadsAFolder) {
+  const std::string mesh = test::tempPath("keep_me.off"), out = test::tempPath("keep_out.off");
+  test::writeText(mesh, test::readText(test::assetPath("jittered_grid.off")));
+  test::writeText(out, kTriangle);
+  CliRun r = runCli("remesh " + mesh + " --max-iterations 2 --record " + mesh);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + mesh + ": --record would replace the input mesh; give it another name\n");
+  r = runCli("remesh " + mesh + " --max-iterations 2 -o " + out + " --record " + out);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + out + ": --record and --output name the same file; give them two\n");
+  EXPECT_EQ(test::readText(mesh), test::readText(test::assetPath("jittered_grid.off")));
+  EXPECT_EQ(test::readText(out), kTriangle);
+  const std::string folder = test::tempPath("folder.lsrec");
+  std::filesystem::create_directory(folder);
+  r = runCli("info " + folder);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + folder + ": is a folder, not a recording\n");
 }
 
 TEST(Cli, AFailedRunLeavesTheUsersFileAlone) {

@@ -510,6 +510,7 @@ TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
   const std::string far = why(transformed([](const Vec3& p) -> Vec3 { return p + Vec3(1e15, 0, 0); }));
   EXPECT_EQ(far.rfind("m.off: too far from the origin", 0), 0u) << far;
   EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-9 * p.y(), p.z()); })).rfind("m.off: too thin to remesh", 0), 0u);
+  EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-7 * p.y(), p.z()); })).rfind("m.off: too thin to remesh", 0), 0u);
   // A strip 10^4 to 1 at its 81 vertices: sampled at their spacing, its border alone takes 1676
   // (the result had 1676 vertices; at 10^6 to 1, 16,751 in 31 s).
   const std::string few = why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-4 * p.y(), p.z()); }));
