@@ -773,7 +773,7 @@ std::string shortNumber(double x) {
 }
 }  // namespace
 
-void requireRemeshableSize(const Mesh& input, int vertices, const std::string& name) {
+void requireRemeshableSize(const Mesh& input, const Topology& topology, int vertices, const std::string& name) {
   double largest = 0;
   for (const Vec3& p : input.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
   if (largest > kLargestCoordinate)
@@ -796,7 +796,7 @@ void requireRemeshableSize(const Mesh& input, int vertices, const std::string& n
   // takes: beyond ten times as many as asked (20 at least, as a run asks), a sliver's border
   // runs away with the run (a strip 10^6 to 1 took 16,751 vertices for 81, in 31 s).
   double borderLength = 0;
-  for (const std::vector<int>& loop : analyzeTopology(input).boundaryLoops)
+  for (const std::vector<int>& loop : topology.boundaryLoops)
     for (size_t i = 0; i < loop.size(); ++i) borderLength += (input.points[loop[i]] - input.points[loop[(i + 1) % loop.size()]]).norm();
   vertices = std::max(vertices, kSmallestRemeshedShare);
   const double spacing = std::sqrt(2.0 * area / (std::sqrt(3.0) * vertices));
@@ -812,8 +812,8 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
   if (asked > 0 && asked < kSmallestRemeshedShare)
     throw Error(name + ": " + std::to_string(asked) + " vertices asked; a surface is remeshed to " +
                 std::to_string(kSmallestRemeshedShare) + " at least");
-  requireRemeshableSize(input, asked > 0 ? asked : input.vertexCount(), name);
   const Topology topology = analyzeTopology(input);
+  requireRemeshableSize(input, topology, asked > 0 ? asked : input.vertexCount(), name);
   if (topology.components <= 1) return remeshSurface(input, topology.isDisk(), options, name);
   Stopwatch total;
   RemeshResult result = remeshComponents(input, options, name);

@@ -312,10 +312,10 @@ constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthest
 // could only be met by asking for hundreds of thousands of vertices (a rectangle 1 by 10^-7
 // asked for 954,894, then ran out of memory).
 constexpr double kThinnestArea = 1e-6;
-// And `vertices` (those asked) far too few for the surface: its border alone, sampled at their
-// spacing, would take over kMostBorderPerVertex times as many.
+// And `vertices` (those asked) far too few for the surface: its border (`topology`'s loops, the
+// input's), sampled at their spacing, would take over kMostBorderPerVertex times as many.
 constexpr int kMostBorderPerVertex = 10;
-void requireRemeshableSize(const Mesh& input, int vertices, const std::string& name);
+void requireRemeshableSize(const Mesh& input, const Topology& topology, int vertices, const std::string& name);
 
 // One line naming every setting, stored in recordings and printed by the command line.
 std::string describe(const RemeshOptions& options);

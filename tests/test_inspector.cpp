@@ -20,6 +20,7 @@ namespace {
 struct Picture {
   int width = 0, height = 0;
   std::vector<unsigned char> rgba;
+  const unsigned char* at(int x, int y) const { return &rgba[4 * (static_cast<size_t>(y) * width + x)]; }
 };
 
 Picture readPng(const std::string& path) {
@@ -38,13 +39,16 @@ int run(const std::string& args) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+// `inspect ARGS` rendered headless at 960x600 without timings to `png`: the exit code.
+int renderScene(const std::string& args, const std::string& png) {
+  return run("inspect " + args + " --screenshot " + png + " --size 960x600 --no-timings");
+}
+
 // `input`: a mesh or a recording, by default the sphere cap.
 void checkScene(const std::string& name, const std::string& args, std::string input = "") {
   if (input.empty()) input = test::assetPath("sphere_cap.off");
   const std::string actualPath = test::tempPath(name);
-  ASSERT_EQ(run("inspect " + input + " --screenshot " + actualPath +
-                " --size 960x600 --no-timings " + args),
-            0);
+  ASSERT_EQ(renderScene(input + " " + args, actualPath), 0);
   const std::string expectedPath = std::string(LLOYDSCOPE_SOURCE_DIR) + "/tests/snapshots/" + name;
   if (std::getenv("LLOYDSCOPE_UPDATE_SNAPSHOTS")) {
     std::rename(actualPath.c_str(), expectedPath.c_str());
@@ -237,13 +241,13 @@ TEST(Inspector, OpensWithTheRepair) {
 TEST(Inspector, DrawsTheSeamsOfACutSurface) {
   const std::string mesh = test::tempPath("seam_torus.off"), png = test::tempPath("seam_torus.png");
   writeMesh(test::torus(), mesh);
-  ASSERT_EQ(run("inspect " + mesh + " --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  ASSERT_EQ(renderScene(mesh, png), 0);
   const Picture p = readPng(png);
   ASSERT_EQ(p.width, 960);
   int purple3D = 0, purple2D = 0;  // the 3D pane is left of x = 620, the 2D pane right of it
   for (int y = 0; y < 370; ++y)
     for (int x = 290; x < p.width; ++x) {
-      const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+      const unsigned char* c = p.at(x, y);
       if (std::abs(c[0] - 150) < 30 && std::abs(c[1] - 40) < 30 && std::abs(c[2] - 190) < 30)
         ++(x < 620 ? purple3D : purple2D);
     }
@@ -270,11 +274,11 @@ TEST(Inspector, TheFirstViewFitsALongShape) {
   for (Vec3& p : strip.points) p = Vec3(10 * p.x(), p.y(), 0.3 * std::sin(3 * p.x()));
   const std::string mesh = test::tempPath("strip.off"), png = test::tempPath("strip.png");
   writeMesh(strip, mesh);
-  ASSERT_EQ(run("inspect " + mesh + " --max-iterations 3 --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  ASSERT_EQ(renderScene(mesh + " --max-iterations 3", png), 0);
   const Picture p = readPng(png);
   ASSERT_EQ(p.width, 960);
   auto isMesh = [&](int x, int y) {  // shaded by its angles: green to red, never grey
-    const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+    const unsigned char* c = p.at(x, y);
     return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}) > 60;
   };
   int left = p.width, right = 0;  // of the mesh in the 3D pane (x 285..620), under its colour bar
@@ -290,15 +294,13 @@ TEST(Inspector, TheFirstViewFitsALongShape) {
 // px; it now has a row of its own, as wide as the pane less the speed slider.
 TEST(Inspector, TheIterationSliderKeepsItsRoomInANarrowWindow) {
   const std::string png = test::tempPath("narrow.png");
-  ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + " --no-resample --screenshot " + png +
-                " --size 960x600 --no-timings"),
-            0);
+  ASSERT_EQ(renderScene(test::assetPath("bumpy_disk.off") + " --no-resample", png), 0);
   const Picture p = readPng(png);
   ASSERT_EQ(p.width, 960);
   int widest = 0;  // the longest white run in the timeline, under the plots: the slider's frame
   for (int y = p.height - 100; y < p.height; ++y)
     for (int x = 285, run = 0; x < p.width; ++x) {
-      const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+      const unsigned char* c = p.at(x, y);
       run = c[0] == 255 && c[1] == 255 && c[2] == 255 ? run + 1 : 0;
       widest = std::max(widest, run);
     }
@@ -309,15 +311,13 @@ TEST(Inspector, TheIterationSliderKeepsItsRoomInANarrowWindow) {
 // 10^-6 the axis ended on it, and the line read as the axis.
 TEST(Inspector, TheDistanceThresholdLineIsAboveTheAxis) {
   const std::string png = test::tempPath("threshold.png");
-  ASSERT_EQ(run("inspect " + test::assetPath("sphere_cap.off") + " --pane plots --screenshot " + png +
-                " --size 960x600 --no-timings"),
-            0);
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --pane plots", png), 0);
   const Picture p = readPng(png);
   ASSERT_GT(p.width, 0);
   const int x = p.width / 2;  // the middle plot's middle
   int green = -1, edge = -1;  // the lowest rows of each in that column
   for (int y = 0; y < p.height; ++y) {
-    const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+    const unsigned char* c = p.at(x, y);
     if (c[1] > 120 && c[0] < 90 && c[2] < 90) green = y;
     if (std::abs(c[0] - 128) < 8 && std::abs(c[1] - 128) < 8 && std::abs(c[2] - 128) < 8) edge = y;
   }
@@ -335,10 +335,10 @@ TEST(Inspector, TheFinalResultOfTwoComponentsFitsBoth) {
   for (Vec3& p : two.points) p.z() = 0.1 * std::sin(3 * p.x()) * std::sin(3 * p.y());
   const std::string mesh = test::tempPath("two_grids.off"), png = test::tempPath("two_grids.png");
   writeMesh(two, mesh);
-  ASSERT_EQ(run("inspect " + mesh + " --final --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  ASSERT_EQ(renderScene(mesh + " --final", png), 0);
   const Picture p = readPng(png);
   auto isMesh = [&](int x, int y) {  // shaded by its angles: green to red, never grey
-    const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+    const unsigned char* c = p.at(x, y);
     return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}) > 60;
   };
   int left = p.width, right = 0, columns = 0;  // of the meshes in the 3D pane, under its colour bar
@@ -363,7 +363,7 @@ TEST(Inspector, TheFinalResultShowsWhereItStraysFarthest) {
     int red = 0;  // inside the 3D pane, right of its colour bar (whose 0 degrees is red)
     for (int y = 30; y < 370; ++y)
       for (int x = 330; x < 620; ++x) {
-        const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+        const unsigned char* c = p.at(x, y);
         red += c[0] > 200 && c[1] < 70 && c[2] < 70;
       }
     return red;
@@ -380,13 +380,13 @@ TEST(Inspector, HowTheResultWasMadeIsSaidUnderTheTable) {
   append(two, test::moved(test::grid(8, 0.9), 1.0, Vec3(3, 0, 0)));
   const std::string mesh = test::tempPath("two_notes.off"), png = test::tempPath("two_notes.png");
   writeMesh(two, mesh);
-  ASSERT_EQ(run("inspect " + mesh + " --screenshot " + png + " --size 960x600 --no-timings"), 0);
+  ASSERT_EQ(renderScene(mesh, png), 0);
   const Picture p = readPng(png);
   ASSERT_EQ(p.width, 960);
   int brown = 0;  // the notes' text colour, in the left pane above the selection's controls
   for (int y = 0; y < 500; ++y)
     for (int x = 0; x < 270; ++x) {
-      const unsigned char* c = &p.rgba[4 * (static_cast<size_t>(y) * p.width + x)];
+      const unsigned char* c = p.at(x, y);
       brown += std::abs(c[0] - 115) < 30 && std::abs(c[1] - 51) < 30 && c[2] < 30;
     }
   EXPECT_GT(brown, 50);

@@ -39,11 +39,16 @@ TEST(Repair, DropsAFaceOnTwoVerticesAtOnePosition) {
   EXPECT_NO_THROW(validateMesh(r.mesh, "needle"));
 }
 
+// Four faces, face 1 a cap whose corner `third` (vertex 3) is on the segment 1-2, from (1, 0, 0)
+// to (0, 1, 0).
+Mesh capWithCornerAt(const Vec3& third) {
+  return meshOf({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, third, {1, 1, 0.5}}, {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {1, 4, 2}});
+}
+
 // Face 1 is a cap: its three corners are distinct but on a line (vertex 3 on the segment 1-2).
 // Its long edge is flipped away or the face collapsed.
 TEST(Repair, RemovesAFaceWithThreeCornersOnALine) {
-  const Mesh cap = meshOf({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.75, 0}, {1, 1, 0.5}},
-                          {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {1, 4, 2}});
+  const Mesh cap = capWithCornerAt({0.25, 0.75, 0});
   EXPECT_THROW(validateMesh(cap, "cap"), Error);
   const RepairResult r = repairMesh(cap);
   EXPECT_EQ(r.degenerateFaces, 1);
@@ -54,8 +59,7 @@ TEST(Repair, RemovesAFaceWithThreeCornersOnALine) {
 // binary): readMesh() calls it zero area, CGAL's exact test a triangle, and the repair left it
 // ("face 10 has zero area (left after the repair)").
 TEST(Repair, RemovesAFaceFlatUpToRounding) {
-  const Mesh cap = meshOf({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.9, 0.1, 0}, {1, 1, 0.5}},
-                          {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {1, 4, 2}});
+  const Mesh cap = capWithCornerAt({0.9, 0.1, 0});
   EXPECT_THROW(validateMesh(cap, "cap"), Error);
   const RepairResult r = repairMesh(cap);
   EXPECT_EQ(r.degenerateFaces, 1);
