@@ -62,6 +62,12 @@ double surfaceArea(const Mesh& mesh) {
   return area;
 }
 
+double loopLength(const Mesh& mesh, const std::vector<int>& loop) {
+  double length = 0;
+  for (size_t i = 0; i < loop.size(); ++i) length += (mesh.points[loop[i]] - mesh.points[loop[(i + 1) % loop.size()]]).norm();
+  return length;
+}
+
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 0.5 * (b - a).cross(c - a).norm();
 }

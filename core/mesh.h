@@ -56,6 +56,7 @@ bool hasZeroArea(const Vec3& a, const Vec3& b, const Vec3& c);
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b);
 Vec3 faceNormal(const Mesh& mesh, const Triangle& t);  // not unit: its length is twice the area
 double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas
+double loopLength(const Mesh& mesh, const std::vector<int>& loop);  // closed: last to first too
 // Appends `part`'s vertices and triangles to `to` (as another component).
 void append(Mesh& to, const Mesh& part);
 double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c);  // signed, > 0 if CCW

@@ -14,6 +14,7 @@
 #include <future>
 #include <thread>
 #include <cmath>
+#include <numeric>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -181,7 +182,7 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
     siteOptions.seamNode.clear();
     if (seamed() || siteCount() <= input_.vertexCount()) siteOptions.fromInputVertices = true;
   }
-  sites_ = initialSites(surface(), param_, domain_, siteOptions);
+  sites_ = initialSites(surface(), param_, domain_, siteOptions, name_);
   ms_.sites = stage.lap();
   solver_ = std::make_unique<LloydSolver>(domain_, sites_.fixed, sites_.movable, options_.lloyd);
 }
@@ -481,6 +482,19 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   result.charts = static_cast<int>(charts.charts.size());
   result.cut.seamEdges = charts.seamEdges;
   result.converged = true;
+  // Each chart's share of the area, and half its seams' samples (each seam is sampled on both
+  // sides) and its nodes'.
+  std::vector<int> counts;
+  for (const Chart& chart : charts.charts)
+    counts.push_back(std::max(1, static_cast<int>(std::lround(asked * surfaceArea(chart.mesh) / area +
+                                                              0.5 * chart.seamLength / spacing + chart.nodeSamples))));
+  // Seams far longer than the vertices asked span (charts up a spike a million times as tall as
+  // wide) run away with the run, as a border does (core/sites).
+  const long long total = std::accumulate(counts.begin(), counts.end(), 0LL);
+  if (total > static_cast<long long>(kMostBorderPerVertex) * std::max(asked, kSmallestRemeshedShare))
+    throw Error(name + ": " + std::to_string(asked) + " vertices are too few for it chart by chart: at their spacing " +
+                "the charts take " + std::to_string(total) + " (over " + std::to_string(kMostBorderPerVertex) +
+                " times as many)");
   Mesh pieces;
   double largest = -1;
   for (size_t i = 0; i < charts.charts.size(); ++i) {
@@ -491,8 +505,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
     const double chartArea = surfaceArea(chart.mesh);
     RemeshOptions o = options;
     o.simplifyTo = 0;
-    o.sites.count = std::max(1, static_cast<int>(std::lround(asked * chartArea / area + 0.5 * chart.seamLength / spacing +
-                                                             chart.nodeSamples)));
+    o.sites.count = counts[i];
     o.sites.onSeam = chart.onSeam;
     o.sites.seamNode = chart.seamNode;
     o.sites.spacing = spacing;
@@ -796,8 +809,7 @@ void requireRemeshableSize(const Mesh& input, const Topology& topology, int vert
   // takes: beyond ten times as many as asked (20 at least, as a run asks), a sliver's border
   // runs away with the run (a strip 10^6 to 1 took 16,751 vertices for 81, in 31 s).
   double borderLength = 0;
-  for (const std::vector<int>& loop : topology.boundaryLoops)
-    for (size_t i = 0; i < loop.size(); ++i) borderLength += (input.points[loop[i]] - input.points[loop[(i + 1) % loop.size()]]).norm();
+  for (const std::vector<int>& loop : topology.boundaryLoops) borderLength += loopLength(input, loop);
   vertices = std::max(vertices, kSmallestRemeshedShare);
   const double spacing = std::sqrt(2.0 * area / (std::sqrt(3.0) * vertices));
   if (borderLength > kMostBorderPerVertex * vertices * spacing)

@@ -146,12 +146,10 @@ struct FirstPassTrial {
   bool withoutBetter() const;
 };
 
-// The fewest vertices remesh() remeshes a surface or a connected component to. Fewer asked for
-// a whole surface is an error: a handful leave its border a sample or two, nothing to
-// triangulate (the camel head at 10 came out empty). A component whose share of the vertices
-// asked for is smaller, and which has no more vertices than this (debris, a loose triangle),
-// is kept as it is; a larger one is remeshed to this many.
-constexpr int kSmallestRemeshedShare = 20;
+// remesh() takes kSmallestRemeshedShare (core/sites) vertices at least: fewer asked for a
+// whole surface is an error. A component whose share of the vertices asked for is smaller, and
+// which has no more vertices than that (debris, a loose triangle), is kept as it is; a larger
+// one is remeshed to that many.
 
 // How many vertices a large input is simplified to before a run asked for `vertices`
 // (RemeshOptions::coarsenInput): ten per vertex asked, or five where ten would be over 10,000.
@@ -313,8 +311,8 @@ constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthest
 // asked for 954,894, then ran out of memory).
 constexpr double kThinnestArea = 1e-6;
 // And `vertices` (those asked) far too few for the surface: its border (`topology`'s loops, the
-// input's), sampled at their spacing, would take over kMostBorderPerVertex times as many.
-constexpr int kMostBorderPerVertex = 10;
+// input's), sampled at their spacing, would take over kMostBorderPerVertex (core/sites) times
+// as many. (initialSites() checks the border it samples, slits included, the same way.)
 void requireRemeshableSize(const Mesh& input, const Topology& topology, int vertices, const std::string& name);
 
 // One line naming every setting, stored in recordings and printed by the command line.

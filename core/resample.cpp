@@ -78,7 +78,7 @@ Resampling resample(const Mesh& input, const SiteOptions& siteOptions,
   Parameterization param = parameterize(input, map, name);
   Density rho = computeDensity(input, param.uv, density);
   Domain domain(param.uv, input.triangles, rho);
-  const InitialSites sites = initialSites(input, param, domain, siteOptions);
+  const InitialSites sites = initialSites(input, param, domain, siteOptions, name);
   LloydOptions lloyd;
   lloyd.maxIterations = options.iterations;
   LloydSolver solver(domain, sites.fixed, sites.movable, lloyd);

@@ -237,7 +237,7 @@ std::vector<Vec2> sampleDensity(const Domain& domain, int count, std::uint64_t s
 }  // namespace
 
 InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const Domain& domain,
-                          const SiteOptions& options) {
+                          const SiteOptions& options, const std::string& name) {
   InitialSites sites;
   if (options.fromInputVertices) {
     for (int v : param.boundaryLoop) {
@@ -256,6 +256,24 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   const double spacing = options.spacing > 0 ? options.spacing
                                              : std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
   sites.fixed = resampleBorder(mesh, param, spacing, options, sites.fixedPoints);
+  // Fewer than three samples: a border far shorter than the surface is wide (a spike or a fold
+  // inside a small border), nothing to triangulate.
+  if (sites.fixed.size() < 3) {
+    // The spacing that samples the border 3 times, and the count that gives it.
+    const double border = loopLength(mesh, param.boundaryLoop), needed = border / 3;
+    const double enough = std::ceil(count * (spacing / needed) * (spacing / needed));
+    throw Error(name + ": at the spacing of " + std::to_string(count) + " vertices its border takes " +
+                std::to_string(sites.fixed.size()) + (sites.fixed.size() == 1 ? " sample" : " samples") +
+                " (3 at least), far too short for the surface inside it (a spike or a fold?); " +
+                (enough < 1e7 ? "about " + std::to_string(static_cast<long long>(enough)) + " vertices would take 3"
+                              : "millions of vertices would not take 3"));
+  }
+  const int most = kMostBorderPerVertex * std::max(count, kSmallestRemeshedShare);
+  if (static_cast<int>(sites.fixed.size()) > most)
+    throw Error(name + ": " + std::to_string(count) + " vertices are too few for it: at their spacing its border" +
+                (options.onSeam.empty() ? "" : ", with the slits that cut it open,") + " takes " +
+                std::to_string(sites.fixed.size()) + " (over " + std::to_string(kMostBorderPerVertex) +
+                " times as many); ask for more (--sites), or look for a spike or a sliver far longer than wide");
   const bool stitched = options.stitchedCount > 0;  // the border's seam copies become one vertex each
   const int border = stitched ? distinctPoints(sites.fixedPoints, boundingBoxDiagonal(mesh))
                               : static_cast<int>(sites.fixed.size());

@@ -5,6 +5,7 @@
 #include "parameterization.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace lloydscope {
@@ -43,7 +44,17 @@ struct InitialSites {
   std::vector<int> movableVertex;  // the input vertex each movable site started at, or -1
 };
 
+// The fewest vertices a surface is remeshed to: a handful leave its border a sample or two,
+// nothing to triangulate (the camel head at 10 came out empty).
+constexpr int kSmallestRemeshedShare = 20;
+// The most border samples per vertex asked (kSmallestRemeshedShare at least): a border sampled
+// at their spacing beyond that is a sliver's, or a slit's up a spike far longer than wide, and
+// runs away with the run (a strip 10^6 to 1 took 16,751 vertices for 81 asked, in 31 s; a slit
+// up a spike 10^6 tall and 1 wide took thousands for 9, in 55 s).
+constexpr int kMostBorderPerVertex = 10;
+
+// Throws Error where the border takes over kMostBorderPerVertex times the vertices asked.
 InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const Domain& domain,
-                          const SiteOptions& options);
+                          const SiteOptions& options, const std::string& name);
 
 }  // namespace lloydscope

@@ -524,6 +524,40 @@ TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
     EXPECT_EQ(why(fine), "");
 }
 
+// A 2 x 2 grid whose middle vertex is `height` up: a spike, and in the plane (height 0) with
+// its middle vertex moved `over` along x: a fold, whose triangles overlap.
+Mesh spikeOrFold(double height, double over = 0) {
+  Mesh m = test::grid(2);
+  m.points[4] += Vec3(over, 0, height);
+  return m;
+}
+
+// Surfaces far larger than their border (a spike 10^5 or 10^6 times as tall as wide; a fold
+// 66,666 long inside a unit square) are refused in one line, the border's samples counted: they
+// ran for 2, 4 and over 5 minutes (raising the small angles of a result of slivers; Lloyd's
+// cells in a domain of overlapping triangles; the charts, whose seams up the spike took
+// thousands of samples for 200 vertices asked), the first one making a result of 0-degree angles.
+TEST(Pipeline, ASurfaceFarLargerThanItsBorderIsRefused) {
+  auto why = [](const Mesh& m, int sites) {
+    RemeshOptions o;
+    o.sites.count = sites;
+    try {
+      remesh(m, o, "m.off");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string spike = why(spikeOrFold(1e5), 0);
+  EXPECT_EQ(spike.rfind("m.off: at the spacing of 9 vertices its border takes 1 sample (3 at least), far too short", 0), 0u)
+      << spike;
+  const std::string fold = why(spikeOrFold(0, 66666), 0);
+  EXPECT_EQ(fold.rfind("m.off: at the spacing of 9 vertices its border takes 1 sample (3 at least)", 0), 0u) << fold;
+  const std::string charts = why(spikeOrFold(1e6), 200);
+  EXPECT_EQ(charts.rfind("m.off: at the spacing of 200 vertices its border takes 1 sample", 0), 0u) << charts;
+  EXPECT_EQ(why(spikeOrFold(10), 100), "");  // a spike 10 times as tall as wide is remeshed
+}
+
 // --simplify N asks for N vertices: a coarser input is not simplified but remeshed finer, to N
 // (the result of `remesh pig.off --simplify 2000` had the pig's 468 vertices).
 TEST(Pipeline, ACoarserInputIsRemeshedToTheSimplifySize) {

@@ -30,7 +30,7 @@ RoughMesh roughMesh() {
   Mesh input = readMesh(test::assetPath("bumpy_disk.off")).mesh;
   Parameterization param = parameterize(input, {}, "bumpy");
   Domain domain(param.uv, input.triangles, areaDensity(input, param.uv));
-  const InitialSites sites = initialSites(input, param, domain, {});
+  const InitialSites sites = initialSites(input, param, domain, {}, "m.off");
   LiftedMesh lifted = retriangulate(input, domain, sites.fixed, sites.movable, "test");
   return {std::move(input), std::move(param), std::move(domain), std::move(lifted)};
 }
@@ -156,7 +156,7 @@ TEST(Polish, BorderVerticesSlideAlongTheBorderOutOfASharpCornersStrip) {
   const Domain domain(param.uv, input.triangles, {});
   SiteOptions sites;
   sites.count = 100;
-  const InitialSites start = initialSites(input, param, domain, sites);
+  const InitialSites start = initialSites(input, param, domain, sites, "m.off");
   LloydSolver solver(domain, start.fixed, start.movable, {});
   solver.run();
   const LiftedMesh relaxed = retriangulate(input, domain, start.fixed, solver.movableSites(), "sector");

@@ -57,7 +57,7 @@ TEST(Sites, AChamferedCornerGivesOneBorderSampleNotTwo) {
   const Domain domain(p.uv, cleaned.triangles, {});
   SiteOptions o;
   o.count = 50;
-  const InitialSites sites = initialSites(cleaned, p, domain, o);
+  const InitialSites sites = initialSites(cleaned, p, domain, o, "m.off");
   const double spacing = std::sqrt(2.0 * surfaceArea(cleaned) / (std::sqrt(3.0) * 50));
   const size_t n = sites.fixed.size();
   for (size_t i = 0; i < n; ++i) {
@@ -156,7 +156,7 @@ TEST(Sites, ACornerOfTheMapAloneGivesWayToABumpOfTheBorder) {
   const Domain domain(p.uv, m.triangles, {});
   SiteOptions o;
   o.count = 300;
-  const InitialSites sites = initialSites(m, p, domain, o);
+  const InitialSites sites = initialSites(m, p, domain, o, "m.off");
   const Vec3 tip(0.5, bump(0.5), 0);
   double nearest = INFINITY;
   for (const Vec3& q : sites.fixedPoints) nearest = std::min(nearest, (q - tip).norm());

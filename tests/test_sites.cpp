@@ -21,7 +21,7 @@ TEST(Sites, InsideSitesAreDrawnBySqrtOfTheDensity) {
   const Domain domain(param.uv, grid.triangles, vertexDensity(grid.triangles, rho));
   SiteOptions o;
   o.count = 4000;
-  const InitialSites sites = initialSites(grid, param, domain, o);
+  const InitialSites sites = initialSites(grid, param, domain, o, "m.off");
   int left = 0, right = 0;
   for (const Vec2& p : sites.movable) {
     if (p.x() < 0.45) ++left;
@@ -29,6 +29,38 @@ TEST(Sites, InsideSitesAreDrawnBySqrtOfTheDensity) {
   }
   ASSERT_GT(right, 0);
   EXPECT_NEAR(double(left) / right, 2.0, 0.25);
+}
+
+// The border sampled at the spacing of the vertices asked: fewer than three samples (a spike
+// far taller than its border is wide) or over ten times the vertices asked (a strip far longer
+// than wide) is an error naming the mesh. For the first it says how many would take three, and
+// that many do.
+TEST(Sites, ABorderFarTooShortOrTooLongForTheVerticesAskedIsAnError) {
+  const auto sitesOn = [](const Mesh& m, int count) {
+    const Parameterization param = parameterize(m, {ParamMethod::Tutte, Border::Square, {}}, "m.off");
+    const Domain domain(param.uv, m.triangles, vertexDensity(m.triangles, std::vector<double>(m.vertexCount(), 1.0)));
+    SiteOptions o;
+    o.count = count;
+    return initialSites(m, param, domain, o, "m.off");
+  };
+  Mesh spike = test::grid(2);
+  spike.points[4].z() = 1000;
+  std::string problem;
+  try {
+    sitesOn(spike, 20);
+  } catch (const Error& e) {
+    problem = e.what();
+  }
+  ASSERT_EQ(problem.rfind("m.off: at the spacing of 20 vertices its border takes 1 sample (3 at least)", 0), 0u) << problem;
+  const size_t about = problem.find("about ");
+  ASSERT_NE(about, std::string::npos) << problem;
+  const int enough = std::stoi(problem.substr(about + 6));
+  EXPECT_GT(enough, 1000);
+  EXPECT_GE(sitesOn(spike, enough).fixed.size(), 3u);
+  Mesh strip = test::grid(8);
+  for (Vec3& p : strip.points) p.x() *= 1000;  // border 2002, area 1000
+  EXPECT_THROW(sitesOn(strip, 20), Error);     // its border takes 263 at their spacing
+  EXPECT_GT(sitesOn(strip, 100).fixed.size(), 200u);  // 587, under 1000
 }
 
 // Charts of one surface (core/charts) sample their shared borders at one spacing, whatever
@@ -39,9 +71,9 @@ TEST(Sites, TheBorderSpacingCanBeGiven) {
   const Domain domain(param.uv, grid.triangles, vertexDensity(grid.triangles, std::vector<double>(grid.vertexCount(), 1.0)));
   SiteOptions o;
   o.count = 500;  // its own spacing would be about 0.068: 59 samples
-  EXPECT_GT(initialSites(grid, param, domain, o).fixed.size(), 50u);
+  EXPECT_GT(initialSites(grid, param, domain, o, "m.off").fixed.size(), 50u);
   o.spacing = 0.1;
-  const InitialSites sites = initialSites(grid, param, domain, o);
+  const InitialSites sites = initialSites(grid, param, domain, o, "m.off");
   EXPECT_EQ(sites.fixed.size(), 40u);
   EXPECT_EQ(sites.fixed.size() + sites.movable.size(), 500u);
 }
@@ -59,7 +91,7 @@ TEST(Sites, CornersCloseTogetherMakeNoShortBorderEdge) {
   SiteOptions o;
   o.count = 150;
   o.spacing = 0.05 / 0.6;
-  const InitialSites sites = initialSites(notched, param, domain, o);
+  const InitialSites sites = initialSites(notched, param, domain, o, "m.off");
   ASSERT_GT(sites.fixedPoints.size(), 10u);
   for (size_t i = 0; i < sites.fixedPoints.size(); ++i) {
     const Vec3& next = sites.fixedPoints[(i + 1) % sites.fixedPoints.size()];
@@ -76,7 +108,7 @@ TEST(Sites, FixedPointsLieOnTheBorderEdges) {
   const Domain domain(param.uv, grid.triangles, vertexDensity(grid.triangles, std::vector<double>(grid.vertexCount(), 1.0)));
   SiteOptions o;
   o.count = 300;
-  const InitialSites sites = initialSites(grid, param, domain, o);
+  const InitialSites sites = initialSites(grid, param, domain, o, "m.off");
   ASSERT_EQ(sites.fixedPoints.size(), sites.fixed.size());
   const std::vector<int>& loop = param.boundaryLoop;
   for (const Vec3& p : sites.fixedPoints) {
