@@ -114,7 +114,8 @@ void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
                       RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
   // Under 960x600 the panes are too small to read (at 640x480 the plots' titles ran into each
   // other and the timeline's buttons were cut off): a smaller picture is a larger one scaled.
-  if (shot.width < 960 || shot.height < 600 || shot.width > 8192 || shot.height > 8192)
+  if (shot.width < kSmallestPicture.width || shot.height < kSmallestPicture.height ||
+      shot.width > kLargestPictureSide || shot.height > kLargestPictureSide)
     throw Error("--size must be between 960x600 and 8192x8192");
   OffscreenRenderer renderer(shot.width, shot.height, shot.validation);
   {

@@ -9,6 +9,14 @@
 
 namespace lloydscope {
 
+// The sizes a picture may have: under 960x600 the panes are too small to read; 8192 is a side
+// every Vulkan device can render.
+struct PictureSize {
+  int width, height;
+};
+constexpr PictureSize kSmallestPicture{960, 600};
+constexpr int kLargestPictureSide = 8192;
+
 struct ScreenshotOptions {
   ExportJob picture;  // the PNG (or numbered PNGs), the pane, the iterations
   int width = 1280, height = 800;

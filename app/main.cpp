@@ -61,7 +61,6 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   if (cmd.count("--distance-threshold")) o.lloyd.distanceThreshold = a.distanceThreshold;
   if (cmd.count("--percent-threshold")) o.lloyd.percentThreshold = a.percentThreshold;
   o.measureFidelity = !a.noFidelity;
-  if (a.simplify < 0) throw Error("--simplify " + std::to_string(a.simplify) + ": expected a positive number of vertices");
   o.simplifyTo = a.simplify;
   if (cmd.count("--polish")) o.polish = a.polish;
   if (a.noResample) o.resample = false;
@@ -130,18 +129,23 @@ CLI::Validator finiteNumber(double low, const std::string& expected,
       "NUMBER");
 }
 // A whole number from `low` up (CLI11's Range said "Value abc not in range" of a word).
-CLI::Validator wholeNumber(int low) {
-  const std::string expected = "a whole number >= " + std::to_string(low);
+CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) {
+  const bool bounded = high < std::numeric_limits<int>::max();
+  const std::string range = bounded ? "from " + std::to_string(low) + " to " + std::to_string(high)
+                                    : ">= " + std::to_string(low);
   return CLI::Validator(
       [=](std::string& text) -> std::string {
         long long value = 0;
-        if (CLI::detail::lexical_cast(text, value) && value >= low && value <= std::numeric_limits<int>::max())
-          return "";
-        return "expected " + expected + ", not '" + text + "'";
+        if (CLI::detail::lexical_cast(text, value) && value >= low && value <= high) return "";
+        return "expected a whole number " + range + ", not '" + text + "'";
       },
-      ">= " + std::to_string(low));
+      bounded ? std::to_string(low) + ".." + std::to_string(high) : ">= " + std::to_string(low));
 }
 const CLI::Validator kPositiveCount = wholeNumber(1);
+// The most vertices a run remeshes to (ten times the 100,000 sites issue 5 times Lloyd's
+// iterations at), and the most relaxation passes it polishes with (the default is 3): more is a
+// slip of the keyboard that would run for hours.
+constexpr int kMostVertices = 1000000, kMostPolishPasses = 100;
 
 // The options that say how a mesh is remeshed, under a heading of their own in the help: a
 // recording, which replays its own run, refuses them (refuseRemeshingOptions).
@@ -152,13 +156,14 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--polish", r.polish,
                  "retriangulate's clean-up in 3D: -1 none, 0 Delaunay flips, K flips and K "
                  "relaxation passes on the surface (default 3)")
-      ->check(wholeNumber(-1));
+      ->check(wholeNumber(-1, kMostPolishPasses));
   cmd.add_option("--polish-target", r.polishTarget,
                  "where the polish moves each vertex: centroid (default: of its ring's triangles), "
                  "voronoi (of its Voronoi cell in its ring) or circumcenter (optimal Delaunay)");
   cmd.add_option("--simplify", r.simplify,
                  "Quadric edge collapse to N vertices first (the boundary stays in place), and "
-                 "N vertices in the result (a coarser input is remeshed finer)");
+                 "N vertices in the result (a coarser input is remeshed finer)")
+      ->check(wholeNumber(kSmallestRemeshedShare, kMostVertices));
   cmd.add_option("--preset", r.preset,
                  "best (default) or reference: the report's settings (authalic, square border, "
                  "uniform density, input vertices as sites, plain Lloyd)");
@@ -172,7 +177,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--beta", r.beta, "curvature density: weight of H^2")->check(finiteNumber(0, "a number >= 0"));
   cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)")
       ->check(finiteNumber(0, "a number >= 0"));
-  cmd.add_option("--sites", r.sites, "number of vertices of the result")->check(wholeNumber(kSmallestRemeshedShare));
+  cmd.add_option("--sites", r.sites, "number of vertices of the result")
+      ->check(wholeNumber(kSmallestRemeshedShare, kMostVertices));
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
@@ -217,11 +223,20 @@ void refuseRemeshingOptions(const CLI::App& cmd, const std::string& recording) {
                   "(lloydscope info shows them)");
 }
 
-// "1280x800" -> width, height.
+// "1280x800" -> width, height, within the sizes renderScreenshot() takes (bench-frames took
+// any: 100000x100000 went on to ask Vulkan for 40 GB).
 void parseSize(const std::string& text, int& width, int& height) {
   if (text.empty()) return;
-  if (std::sscanf(text.c_str(), "%dx%d", &width, &height) != 2)
+  long long w = 0, h = 0;
+  char rest;
+  if (std::sscanf(text.c_str(), "%lldx%lld%c", &w, &h, &rest) != 2)
     throw Error("--size must look like 1280x800, not '" + text + "'");
+  if (w < kSmallestPicture.width || h < kSmallestPicture.height || w > kLargestPictureSide || h > kLargestPictureSide)
+    throw Error("--size must be between " + std::to_string(kSmallestPicture.width) + "x" +
+                std::to_string(kSmallestPicture.height) + " and " + std::to_string(kLargestPictureSide) + "x" +
+                std::to_string(kLargestPictureSide) + ", not '" + text + "'");
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
 }
 
 // A mesh is remeshed first (and kept in `input`); a recording is replayed as it is.
@@ -293,9 +308,10 @@ int main(int argc, char** argv) {
   inspectCmd->add_flag("--final", shot.view.final,
                        "The 3D pane shows the final result (what remesh writes), with a red ring "
                        "where it is farthest from the input");
-  inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)");
+  inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)")->check(wholeNumber(0));
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
-                         "Pin this triangle of the result (repeatable)");
+                         "Pin this triangle of the result (repeatable)")
+      ->check(wholeNumber(0));
   std::string fill;
   inspectCmd->add_option("--fill", fill,
                          "What colours the 2D cells: none, mass, area, energy, distance (site to "
@@ -325,7 +341,7 @@ int main(int argc, char** argv) {
   int frames = 100;
   benchCmd->add_option("input", br.input, "Mesh")->required();
   benchCmd->add_option("--frames", frames, "Frames to time")->check(kPositiveCount);
-  benchCmd->add_option("--size", size, "Frame size WxH (default 1280x800)");
+  benchCmd->add_option("--size", size, "Frame size WxH, 960x600 or more (default 1280x800)");
   addRemeshOptions(*benchCmd, br);
 
   std::string metricsMesh, metricsReference;
@@ -432,10 +448,13 @@ int main(int argc, char** argv) {
       if (!fill.empty()) shot.view.fill = parseCellFill(fill);
       shot.view.repair = ir.repair;
       if (!iterations.empty()) {
+        long long first = 0, last = 0;
         char rest;
-        if (std::sscanf(iterations.c_str(), "%d:%d%c", &shot.picture.first, &shot.picture.last,
-                        &rest) != 2 || shot.picture.first < 0)
+        if (std::sscanf(iterations.c_str(), "%lld:%lld%c", &first, &last, &rest) != 2 || first < 0 ||
+            last > std::numeric_limits<int>::max())  // 0:4294967296 wrapped to 0:0
           throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
+        shot.picture.first = static_cast<int>(first);
+        shot.picture.last = static_cast<int>(last);
       }
       if (shot.picture.path.empty()) {
         requireDisplay();  // before minutes of work that no window would show

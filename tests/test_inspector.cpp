@@ -144,18 +144,16 @@ TEST(Inspector, PinnedCellAndTriangle) {
 TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
   const std::string mesh = test::assetPath("sphere_cap.off");
   const std::string out = test::tempPath("never.png"), err = test::tempPath("select.err");
-  for (const std::string& args :
-       {std::string("--select-cell 500"), std::string("--select-triangle -1"),
-        std::string("--iteration 5000"),  // it showed the last one, as if asked
-        std::string("--camera 'one two'"), std::string("--camera '0 0 -1 0 0 0'")}) {
+  for (const auto& [args, says] : std::vector<std::pair<std::string, std::string>>{
+           {"--select-cell 500", "cell 500 does not exist"},
+           {"--select-triangle -1", "--select-triangle: expected a whole number >= 0, not '-1'"},
+           {"--iteration 5000", "iteration 5000 does not exist"},  // it showed the last one, as if asked
+           {"--camera 'one two'", "camera"},
+           {"--camera '0 0 -1 0 0 0'", "camera"}}) {
     EXPECT_EQ(run("inspect " + mesh + " --screenshot " + out + " " + args + " 2> " + err), 1) << args;
     const std::string message = test::readText(err);
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
-    EXPECT_TRUE(message.find("cell 500 does not exist") != std::string::npos ||
-                message.find("triangle -1 does not exist") != std::string::npos ||
-                message.find("iteration 5000 does not exist") != std::string::npos ||
-                message.find("camera") != std::string::npos)
-        << message;
+    EXPECT_NE(message.find(says), std::string::npos) << message;
     EXPECT_FALSE(std::ifstream(out).good()) << args;
   }
 }
