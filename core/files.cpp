@@ -75,4 +75,35 @@ void makeFolder(const std::string& path) {
   if (error) throw Error(path + ": cannot make the folder (" + error.message() + ")");
 }
 
+namespace {
+// "2 GB", "1 MB", "100 bytes".
+std::string sizeText(std::uint64_t bytes) {
+  char text[32];
+  if (bytes >= 1000000000)
+    std::snprintf(text, sizeof text, "%g GB", bytes / 1e9);
+  else if (bytes >= 1000000)
+    std::snprintf(text, sizeof text, "%g MB", bytes / 1e6);
+  else
+    std::snprintf(text, sizeof text, "%llu bytes", static_cast<unsigned long long>(bytes));
+  return text;
+}
+}  // namespace
+
+std::string readWhole(std::istream& in, const std::string& path, std::uint64_t mostBytes, const std::string& what) {
+  const auto tooLarge = [&] {
+    return Error(path + ": larger than " + sizeText(mostBytes) + ", more than " + what + " takes");
+  };
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > mostBytes && !ec)
+    throw tooLarge();
+  std::string data;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    data.append(buffer, static_cast<size_t>(in.gcount()));
+    if (data.size() > mostBytes) throw tooLarge();
+  }
+  if (in.bad()) throw Error(path + ": cannot read the file (read error)");
+  return data;
+}
+
 }  // namespace lloydscope

@@ -1,7 +1,10 @@
-// Saving a file whole or not at all, and finding out before a long run that it cannot be saved.
+// Saving a file whole or not at all, and finding out before a long run that it cannot be saved;
+// reading one whole, up to a size.
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <istream>
 #include <ostream>
 #include <string>
 
@@ -20,5 +23,11 @@ void requireWritable(const std::string& path);
 // Makes the folder `path` and the folders above it where missing. Throws Error("<path>: cannot
 // make the folder (why)") where it cannot be made or is a file.
 void makeFolder(const std::string& path);
+
+// The whole of `path` (opened as `in`), at most `mostBytes` of it: beyond, Error("<path>: larger
+// than <size>, more than <what> takes"), before reading where the file says its size (a link to
+// /dev/zero, which never ends, grew until memory ran out). Throws Error("<path>: cannot read
+// the file (read error)") where reading fails.
+std::string readWhole(std::istream& in, const std::string& path, std::uint64_t mostBytes, const std::string& what);
 
 }  // namespace lloydscope

@@ -958,10 +958,7 @@ std::string loadFile(const std::string& path) {
 
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot read the file (") + std::strerror(errno) + ")");
-  std::string data;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) data.append(buffer, static_cast<size_t>(in.gcount()));
-  if (in.bad()) fail(path, "cannot read the file (read error)");
+  std::string data = readWhole(in, path, kLargestMeshFile, "a mesh file");
   // A UTF-8 byte order mark (some editors write one) is not part of the first line: an OBJ's
   // first vertex was lost with it, an OFF's header refused.
   if (data.rfind("\xEF\xBB\xBF", 0) == 0) data.erase(0, 3);

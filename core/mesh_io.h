@@ -4,6 +4,7 @@
 
 #include "mesh.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,12 @@ struct ReadOptions {
   bool repair = false;
 };
 
+// The largest mesh file read: about 40 million triangles as binary PLY, 20 million as OFF.
+constexpr std::uint64_t kLargestMeshFile = 2'000'000'000;
+
 // Reads by extension (.off, .obj, .ply; case-insensitive) and validates with validateMesh().
-// A problem that the repair would fix says so ("... (--repair fixes this)").
+// A problem that the repair would fix says so ("... (--repair fixes this)"). A file larger than
+// kLargestMeshFile is refused.
 ReadResult readMesh(const std::string& path, const ReadOptions& options = {});
 
 // Checks what every later stage relies on and throws Error("<name>: <problem>") otherwise:

@@ -219,7 +219,7 @@ Recording loadRecording(const std::string& path) {
   if (std::filesystem::is_directory(path, ignored)) throw Error(path + ": is a folder, not a recording");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw Error(path + ": cannot open the recording (missing or unreadable)");
-  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string bytes = readWhole(file, path, kLargestRecording, "a recording");
   if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
     throw Error(path + ": not a Lloydscope recording");
   if (bytes.size() < kHeaderSize)

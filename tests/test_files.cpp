@@ -3,6 +3,8 @@
 #include "test_support.h"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 using namespace lloydscope;
 
@@ -69,4 +71,21 @@ TEST(Files, MakeFolderMakesTheFoldersAboveAndRefusesAFile) {
   const std::string why = errorOf([&] { makeFolder(file); });
   EXPECT_EQ(why.rfind(file + ": cannot make the folder (", 0), 0u) << why;
   std::filesystem::remove_all(top);
+}
+
+// A file is read whole up to a size: a larger one is refused before it is read, and a stream
+// that never ends (a link to /dev/zero, read as a mesh, grew until memory ran out) once it
+// passes the size.
+TEST(Files, ReadWholeStopsAtItsSize) {
+  const std::string path = test::tempPath("hundred.off");
+  test::writeText(path, std::string(100, 'x'));
+  std::ifstream file(path, std::ios::binary);
+  EXPECT_EQ(errorOf([&] { readWhole(file, path, 99, "a mesh file"); }), path + ": larger than 99 bytes, more than a mesh file takes");
+  EXPECT_EQ(file.tellg(), 0);  // refused by its size, unread
+  EXPECT_EQ(readWhole(file, path, 100, "a mesh file"), std::string(100, 'x'));
+  std::ifstream zero("/dev/zero", std::ios::binary);
+  EXPECT_EQ(errorOf([&] { readWhole(zero, "z.off", 1000000, "a mesh file"); }),
+            "z.off: larger than 1 MB, more than a mesh file takes");
+  std::istringstream small("abc");
+  EXPECT_EQ(readWhole(small, "s.off", 3, "a mesh file"), "abc");
 }
