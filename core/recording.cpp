@@ -233,6 +233,11 @@ Recording loadRecording(const std::string& path) {
                 " is not supported (this build reads version " +
                 std::to_string(Recording::kVersion) + ")");
   const size_t available = bytes.size() - kHeaderSize;
+  // A size past any recording's is a damaged header, not a cut file (2^64 - 1 bytes read
+  // "truncated recording (... bytes, expected 19)": the sum wrapped round).
+  if (payloadSize > kLargestRecording)
+    throw Error(path + ": damaged recording (its header gives " + std::to_string(payloadSize) +
+                " bytes of data, more than any recording holds)");
   if (payloadSize > available || available - payloadSize < kChecksumSize)
     throw Error(path + ": truncated recording (" + std::to_string(bytes.size()) + " bytes, " +
                 "expected " + std::to_string(kHeaderSize + payloadSize + kChecksumSize) + ")");

@@ -121,6 +121,17 @@ TEST(Recording, Truncated) {
   }
 }
 
+// The header's data size set past any recording's: said so, not read as a file cut short with
+// a wrapped-round expected size ("expected 19 bytes").
+TEST(Recording, AHeaderOverstatingItsSizeIsDamaged) {
+  const std::string path = test::tempPath("overstated.lsrec");
+  saveRecording(sphereCapRun().recording, path);
+  std::string bytes = test::readText(path);
+  bytes.replace(12, 8, std::string(8, '\xff'));  // the size follows the magic and the version
+  test::writeText(path, bytes);
+  expectError(path, "damaged recording (its header gives 18446744073709551615 bytes of data, more than any recording holds)");
+}
+
 TEST(Recording, CorruptByte) {
   const std::string path = test::tempPath("corrupt.lsrec");
   saveRecording(sphereCapRun().recording, path);
