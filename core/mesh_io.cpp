@@ -27,6 +27,7 @@
 #include <iomanip>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string_view>
 #include <system_error>
 #include <tuple>
@@ -665,9 +666,19 @@ void checkHasFaces(long long faceCount, const std::string& name) {
   if (faceCount == 0) fail(name, "the mesh has no faces");
 }
 
+// Past this, squares overflow double precision and every length is infinite (a triangle of
+// coordinates 1e308 read "face 0 has zero area").
+constexpr double kLargestMeasurableCoordinate = 1e150;
+
 void checkFinite(const std::vector<Vec3>& points, const std::string& name, int base) {
   for (size_t i = 0; i < points.size(); ++i) {
     if (!points[i].allFinite()) fail(name, "vertex " + str(i + base) + " has a non-finite coordinate");
+    if (points[i].cwiseAbs().maxCoeff() > kLargestMeasurableCoordinate) {
+      std::ostringstream largest;
+      largest << points[i].cwiseAbs().maxCoeff();
+      fail(name, "vertex " + str(i + base) + " has a coordinate of " + largest.str() +
+                     ", too large to measure in double precision (lengths overflow past 1e+150)");
+    }
   }
 }
 

@@ -440,6 +440,9 @@ TEST(MeshIoErrors, NumberDoesNotParse) {
 TEST(MeshIoErrors, NonFiniteCoordinate) {
   expectFileError("nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n", "vertex 2 has a non-finite coordinate");
   expectFileError("inf.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", "vertex 2 has a non-finite coordinate");
+  // Finite, but their squares are not ("face 0 has zero area", before).
+  expectFileError("huge.off", "OFF\n3 1 0\n0 0 0\n1e308 0 0\n0 -1e308 0\n3 0 1 2\n",
+                  "vertex 1 has a coordinate of 1e+308, too large to measure in double precision (lengths overflow past 1e+150)");
 }
 
 TEST(MeshIoErrors, FaceIndexOutOfRange) {
