@@ -142,10 +142,11 @@ CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) 
       bounded ? std::to_string(low) + ".." + std::to_string(high) : ">= " + std::to_string(low));
 }
 const CLI::Validator kPositiveCount = wholeNumber(1);
-// The most vertices a run remeshes to (ten times the 100,000 sites issue 5 times Lloyd's
-// iterations at), and the most relaxation passes it polishes with (the default is 3): more is a
-// slip of the keyboard that would run for hours.
-constexpr int kMostVertices = 1000000, kMostPolishPasses = 100;
+// The vertices a run is asked for (core/sites); the most relaxation passes it polishes with
+// (the default is 3) and frames bench-frames times: more is a slip of the keyboard that would
+// run for hours.
+const CLI::Validator kVerticesAsked = wholeNumber(kSmallestRemeshedShare, kMostRemeshedVertices);
+constexpr int kMostPolishPasses = 100, kMostFrames = 100000;
 
 // The options that say how a mesh is remeshed, under a heading of their own in the help: a
 // recording, which replays its own run, refuses them (refuseRemeshingOptions).
@@ -163,7 +164,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--simplify", r.simplify,
                  "Quadric edge collapse to N vertices first (the boundary stays in place), and "
                  "N vertices in the result (a coarser input is remeshed finer)")
-      ->check(wholeNumber(kSmallestRemeshedShare, kMostVertices));
+      ->check(kVerticesAsked);
   cmd.add_option("--preset", r.preset,
                  "best (default) or reference: the report's settings (authalic, square border, "
                  "uniform density, input vertices as sites, plain Lloyd)");
@@ -178,7 +179,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)")
       ->check(finiteNumber(0, "a number >= 0"));
   cmd.add_option("--sites", r.sites, "number of vertices of the result")
-      ->check(wholeNumber(kSmallestRemeshedShare, kMostVertices));
+      ->check(kVerticesAsked);
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
@@ -340,7 +341,7 @@ int main(int argc, char** argv) {
   RemeshArgs br;
   int frames = 100;
   benchCmd->add_option("input", br.input, "Mesh")->required();
-  benchCmd->add_option("--frames", frames, "Frames to time")->check(kPositiveCount);
+  benchCmd->add_option("--frames", frames, "Frames to time")->check(wholeNumber(1, kMostFrames));
   benchCmd->add_option("--size", size, "Frame size WxH, 960x600 or more (default 1280x800)");
   addRemeshOptions(*benchCmd, br);
 
@@ -353,7 +354,7 @@ int main(int argc, char** argv) {
   peerBenchCmd->add_option("models", benchOptions.models,
                            "Meshes (default: CGAL's disk samples in data/cgal)");
   peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)")
-      ->check(kPositiveCount);
+      ->check(kVerticesAsked);
   peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)");
   peerBenchCmd->add_option("--save-inputs", benchOptions.saveInputs,
                            "Also write each prepared input to DIR/<model>_<size>.off");
@@ -364,7 +365,7 @@ int main(int argc, char** argv) {
   addRepairFlag(*peerBenchCmd, benchOptions.repair);
   peerBenchCmd->add_option("--lloyd-step", benchOptions.stepSites,
                            "Instead: time one Lloyd iteration at N sites (one core and all)")
-      ->check(kPositiveCount);
+      ->check(kVerticesAsked);
 
   std::string simplifyIn, simplifyOut;
   SimplifyOptions simplifyTarget;

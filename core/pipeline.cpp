@@ -812,7 +812,7 @@ void requireRemeshableSize(const Mesh& input, const Topology& topology, int vert
   for (const std::vector<int>& loop : topology.boundaryLoops) borderLength += loopLength(input, loop);
   vertices = std::max(vertices, kSmallestRemeshedShare);
   const double spacing = std::sqrt(2.0 * area / (std::sqrt(3.0) * vertices));
-  if (borderLength > kMostBorderPerVertex * vertices * spacing)
+  if (borderLength > static_cast<double>(kMostBorderPerVertex) * vertices * spacing)
     throw Error(name + ": " + std::to_string(vertices) + " vertices are too few for it: at their spacing its border alone takes " +
                 std::to_string(static_cast<long long>(std::ceil(borderLength / spacing))) + " (over " +
                 std::to_string(kMostBorderPerVertex) + " times as many); ask for more (--sites), or look for a sliver or " +

@@ -256,20 +256,21 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   const double spacing = options.spacing > 0 ? options.spacing
                                              : std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
   sites.fixed = resampleBorder(mesh, param, spacing, options, sites.fixedPoints);
-  // Fewer than three samples: a border far shorter than the surface is wide (a spike or a fold
-  // inside a small border), nothing to triangulate.
+  // Fewer than three samples: a border far shorter than the surface is wide (a small hole in a
+  // closed surface, a spike or a fold inside a small border), nothing to triangulate.
   if (sites.fixed.size() < 3) {
     // The spacing that samples the border 3 times, and the count that gives it.
     const double border = loopLength(mesh, param.boundaryLoop), needed = border / 3;
     const double enough = std::ceil(count * (spacing / needed) * (spacing / needed));
     throw Error(name + ": at the spacing of " + std::to_string(count) + " vertices its border takes " +
                 std::to_string(sites.fixed.size()) + (sites.fixed.size() == 1 ? " sample" : " samples") +
-                " (3 at least), far too short for the surface inside it (a spike or a fold?); " +
-                (enough < 1e7 ? "about " + std::to_string(static_cast<long long>(enough)) + " vertices would take 3"
-                              : "millions of vertices would not take 3"));
+                " (3 at least), far too short for the surface inside it (a small hole, a spike, a fold); " +
+                (enough <= kMostRemeshedVertices
+                     ? "about " + std::to_string(static_cast<long long>(enough)) + " vertices would take 3"
+                     : "it would take more vertices than a run is asked for (" + std::to_string(kMostRemeshedVertices) + ")"));
   }
-  const int most = kMostBorderPerVertex * std::max(count, kSmallestRemeshedShare);
-  if (static_cast<int>(sites.fixed.size()) > most)
+  const long long most = static_cast<long long>(kMostBorderPerVertex) * std::max(count, kSmallestRemeshedShare);
+  if (static_cast<long long>(sites.fixed.size()) > most)
     throw Error(name + ": " + std::to_string(count) + " vertices are too few for it: at their spacing its border" +
                 (options.onSeam.empty() ? "" : ", with the slits that cut it open,") + " takes " +
                 std::to_string(sites.fixed.size()) + " (over " + std::to_string(kMostBorderPerVertex) +

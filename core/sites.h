@@ -45,8 +45,10 @@ struct InitialSites {
 };
 
 // The fewest vertices a surface is remeshed to: a handful leave its border a sample or two,
-// nothing to triangulate (the camel head at 10 came out empty).
-constexpr int kSmallestRemeshedShare = 20;
+// nothing to triangulate (the camel head at 10 came out empty). And the most a run is asked
+// for (ten times the 100,000 sites issue 5 times Lloyd's iterations at; the command line's
+// limit): more is a slip of the keyboard that would run for hours.
+constexpr int kSmallestRemeshedShare = 20, kMostRemeshedVertices = 1000000;
 // The most border samples per vertex asked (kSmallestRemeshedShare at least): a border sampled
 // at their spacing beyond that is a sliver's, or a slit's up a spike far longer than wide, and
 // runs away with the run (a strip 10^6 to 1 took 16,751 vertices for 81 asked, in 31 s; a slit

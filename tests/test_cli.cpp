@@ -521,7 +521,13 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --size 1280x800x --screenshot x.png", "--size must look like 1280x800, not '1280x800x'"},
       {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
       {"inspect " + mesh + " --select-cell 99999999999 --screenshot x.png", "--select-cell: expected a whole number >= 0, not '99999999999'"},
-      {"inspect " + mesh + " --select-triangle -1 --screenshot x.png", "--select-triangle: expected a whole number >= 0, not '-1'"}};
+      {"inspect " + mesh + " --select-triangle -1 --screenshot x.png", "--select-triangle: expected a whole number >= 0, not '-1'"},
+      // bench's sizes as --sites (--lloyd-step 214748365 wrapped round in the border check and
+      // was told it was too few; --sizes 50000000 and --frames 2000000000 ran on for hours).
+      {"bench --lloyd-step 214748365", "--lloyd-step: expected a whole number from 20 to 1000000, not '214748365'"},
+      {"bench " + mesh + " --sizes 500 50000000", "--sizes: expected a whole number from 20 to 1000000, not '50000000'"},
+      {"bench " + mesh + " --sizes 1", "--sizes: expected a whole number from 20 to 1000000, not '1'"},
+      {"bench-frames " + mesh + " --frames 2000000000", "--frames: expected a whole number from 1 to 100000, not '2000000000'"}};
   for (const auto& [command, says] : mistakes) {
     const CliRun r = runCli(command);
     EXPECT_EQ(r.code, 1) << command;

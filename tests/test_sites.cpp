@@ -57,6 +57,13 @@ TEST(Sites, ABorderFarTooShortOrTooLongForTheVerticesAskedIsAnError) {
   const int enough = std::stoi(problem.substr(about + 6));
   EXPECT_GT(enough, 1000);
   EXPECT_GE(sitesOn(spike, enough).fixed.size(), 3u);
+  spike.points[4].z() = 1e7;  // past the million vertices a run takes, it says so
+  try {
+    sitesOn(spike, 20);
+  } catch (const Error& e) {
+    problem = e.what();
+  }
+  EXPECT_NE(problem.find("; it would take more vertices than a run is asked for (1000000)"), std::string::npos) << problem;
   Mesh strip = test::grid(8);
   for (Vec3& p : strip.points) p.x() *= 1000;  // border 2002, area 1000
   EXPECT_THROW(sitesOn(strip, 20), Error);     // its border takes 263 at their spacing
