@@ -588,8 +588,10 @@ RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, cons
       charted.chartTrial->chartsBars = barsMet(charted.after);
       charted.chartTrial->oneCutFailed = problemOf(oneCut, name);
       return charted;
-    } catch (const Error&) {
-      if (charting.smallestShare / 2 < kSmallestChartShare) throw oneCut;
+    } catch (const Error& e) {
+      // Both ways said: the one disk's problem alone hid why the charts failed too.
+      if (charting.smallestShare / 2 < kSmallestChartShare)
+        throw Error(std::string(oneCut.what()) + "; chart by chart it failed too: " + problemOf(e, name));
     }
   }
 }

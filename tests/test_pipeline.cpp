@@ -551,6 +551,8 @@ TEST(Pipeline, ASurfaceFarLargerThanItsBorderIsRefused) {
   const std::string spike = why(spikeOrFold(1e5), 0);
   EXPECT_EQ(spike.rfind("m.off: at the spacing of 9 vertices its border takes 1 sample (3 at least), far too short", 0), 0u)
       << spike;
+  // The charts, tried where the one disk failed, say why they failed too.
+  EXPECT_NE(spike.find("; chart by chart it failed too: one chart covers it"), std::string::npos) << spike;
   const std::string fold = why(spikeOrFold(0, 66666), 0);
   EXPECT_EQ(fold.rfind("m.off: at the spacing of 9 vertices its border takes 1 sample (3 at least)", 0), 0u) << fold;
   const std::string charts = why(spikeOrFold(1e6), 200);
