@@ -135,8 +135,11 @@ CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) 
                                     : ">= " + std::to_string(low);
   return CLI::Validator(
       [=](std::string& text) -> std::string {
+        // Decimal digits only: CLI11 reads "0x20" as 32 and "1e3" not at all.
+        const bool decimal = !text.empty() && text.find_first_not_of("0123456789", text[0] == '-') == std::string::npos &&
+                             text != "-";
         long long value = 0;
-        if (CLI::detail::lexical_cast(text, value) && value >= low && value <= high) return "";
+        if (decimal && CLI::detail::lexical_cast(text, value) && value >= low && value <= high) return "";
         return "expected a whole number " + range + ", not '" + text + "'";
       },
       bounded ? std::to_string(low) + ".." + std::to_string(high) : ">= " + std::to_string(low));

@@ -514,6 +514,7 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"remesh " + mesh + " --max-iterations abc", "expected a whole number >= 1, not 'abc'"},
       {"remesh " + mesh + " --sites 1.5", "expected a whole number from 20 to 1000000, not '1.5'"},
       {"remesh " + mesh + " --polish -2", "expected a whole number from -1 to 100, not '-2'"},
+      {"remesh " + mesh + " --sites 0x20", "expected a whole number from 20 to 1000000, not '0x20'"},  // was 32
       // Sizes and numbers past what the run takes (bench-frames took any size; the others wrapped
       // round or printed CLI11's own text).
       {"bench-frames " + mesh + " --size 100000x100000", "--size must be between 960x600 and 8192x8192, not '100000x100000'"},
