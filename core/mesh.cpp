@@ -77,11 +77,17 @@ bool hasZeroArea(const Vec3& a, const Vec3& b, const Vec3& c) {
   return u.cross(v).norm() <= 1e-12 * u.norm() * v.norm();
 }
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
+namespace {
+template <class Point>
+double distanceToSegmentOf(const Point& p, const Point& a, const Point& b) {
+  const Point ab = b - a;
   const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
   return (p - (a + t * ab)).norm();
 }
+}  // namespace
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) { return distanceToSegmentOf(p, a, b); }
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) { return distanceToSegmentOf(p, a, b); }
 
 double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c) {
   const Vec2 u = b - a, v = c - a;

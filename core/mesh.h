@@ -54,6 +54,7 @@ double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
 // not exactly representable.
 bool hasZeroArea(const Vec3& a, const Vec3& b, const Vec3& c);
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b);
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
 Vec3 faceNormal(const Mesh& mesh, const Triangle& t);  // not unit: its length is twice the area
 double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas
 double loopLength(const Mesh& mesh, const std::vector<int>& loop);  // closed: last to first too
