@@ -110,13 +110,19 @@ class OffscreenRenderer {
 
 }  // namespace
 
-void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
-                      RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
+void requirePictureSize(long long width, long long height) {
   // Under 960x600 the panes are too small to read (at 640x480 the plots' titles ran into each
   // other and the timeline's buttons were cut off): a smaller picture is a larger one scaled.
-  if (shot.width < kSmallestPicture.width || shot.height < kSmallestPicture.height ||
-      shot.width > kLargestPictureSide || shot.height > kLargestPictureSide)
-    throw Error("--size must be between 960x600 and 8192x8192");
+  // 8192 is a side every Vulkan device can render.
+  constexpr long long kSmallestWidth = 960, kSmallestHeight = 600, kLargestSide = 8192;
+  if (width < kSmallestWidth || height < kSmallestHeight || width > kLargestSide || height > kLargestSide)
+    throw Error("--size must be between 960x600 and 8192x8192, not '" + std::to_string(width) + "x" +
+                std::to_string(height) + "'");
+}
+
+void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
+                      RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
+  requirePictureSize(shot.width, shot.height);
   OffscreenRenderer renderer(shot.width, shot.height, shot.validation);
   {
     Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result),
@@ -139,6 +145,7 @@ void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
 
 FrameTimes benchmarkScrub(const std::string& meshName, const RemeshOptions& options,
                           RemeshResult result, int width, int height, int frames, bool scrub) {
+  requirePictureSize(width, height);
   OffscreenRenderer renderer(width, height, false);
   Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result));
   FrameTimes times;

@@ -9,13 +9,9 @@
 
 namespace lloydscope {
 
-// The sizes a picture may have: under 960x600 the panes are too small to read; 8192 is a side
-// every Vulkan device can render.
-struct PictureSize {
-  int width, height;
-};
-constexpr PictureSize kSmallestPicture{960, 600};
-constexpr int kLargestPictureSide = 8192;
+// Throws Error("--size must be between 960x600 and 8192x8192, not 'WxH'") for a picture size
+// outside them (renderScreenshot() and benchmarkScrub() take no other).
+void requirePictureSize(long long width, long long height);
 
 struct ScreenshotOptions {
   ExportJob picture;  // the PNG (or numbered PNGs), the pane, the iterations

@@ -235,10 +235,7 @@ void parseSize(const std::string& text, int& width, int& height) {
   char rest;
   if (std::sscanf(text.c_str(), "%lldx%lld%c", &w, &h, &rest) != 2)
     throw Error("--size must look like 1280x800, not '" + text + "'");
-  if (w < kSmallestPicture.width || h < kSmallestPicture.height || w > kLargestPictureSide || h > kLargestPictureSide)
-    throw Error("--size must be between " + std::to_string(kSmallestPicture.width) + "x" +
-                std::to_string(kSmallestPicture.height) + " and " + std::to_string(kLargestPictureSide) + "x" +
-                std::to_string(kLargestPictureSide) + ", not '" + text + "'");
+  requirePictureSize(w, h);
   width = static_cast<int>(w);
   height = static_cast<int>(h);
 }
