@@ -30,8 +30,7 @@ Run remeshAt(const Mesh& input, double edgeLength, int iterations) {
 }  // namespace
 
 IsotropicResult isotropicRemesh(const Mesh& input, const IsotropicOptions& options) {
-  // Equilateral triangles of side L, about two per vertex: A = 2 V (sqrt(3)/4) L^2.
-  double length = std::sqrt(2.0 * surfaceArea(input) / (std::sqrt(3.0) * options.vertices));
+  double length = equilateralEdgeLength(surfaceArea(input), options.vertices);
   IsotropicResult best;
   double bestError = INFINITY;
   for (int run = 0; run < options.maxSearch; ++run) {

@@ -1,6 +1,7 @@
 #include "mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace lloydscope {
@@ -61,6 +62,8 @@ double surfaceArea(const Mesh& mesh) {
     area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
   return area;
 }
+
+double equilateralEdgeLength(double area, int vertices) { return std::sqrt(2.0 * area / (std::sqrt(3.0) * vertices)); }
 
 double loopLength(const Mesh& mesh, const std::vector<int>& loop) {
   double length = 0;

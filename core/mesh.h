@@ -58,6 +58,9 @@ double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
 Vec3 faceNormal(const Mesh& mesh, const Triangle& t);  // not unit: its length is twice the area
 double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas
 double loopLength(const Mesh& mesh, const std::vector<int>& loop);  // closed: last to first too
+// The edge length of an equilateral mesh of `vertices` vertices covering `area`: it has about
+// 2 `vertices` triangles of area (sqrt 3 / 4) h^2.
+double equilateralEdgeLength(double area, int vertices);
 // Appends `part`'s vertices and triangles to `to` (as another component).
 void append(Mesh& to, const Mesh& part);
 double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c);  // signed, > 0 if CCW

@@ -673,10 +673,10 @@ constexpr double kLargestMeasurableCoordinate = 1e150;
 void checkFinite(const std::vector<Vec3>& points, const std::string& name, int base) {
   for (size_t i = 0; i < points.size(); ++i) {
     if (!points[i].allFinite()) fail(name, "vertex " + str(i + base) + " has a non-finite coordinate");
-    if (points[i].cwiseAbs().maxCoeff() > kLargestMeasurableCoordinate) {
-      std::ostringstream largest;
-      largest << points[i].cwiseAbs().maxCoeff();
-      fail(name, "vertex " + str(i + base) + " has a coordinate of " + largest.str() +
+    if (const double largest = points[i].cwiseAbs().maxCoeff(); largest > kLargestMeasurableCoordinate) {
+      std::ostringstream text;
+      text << largest;
+      fail(name, "vertex " + str(i + base) + " has a coordinate of " + text.str() +
                      ", too large to measure in double precision (lengths overflow past 1e+150)");
     }
   }

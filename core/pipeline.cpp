@@ -477,17 +477,20 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   const Charts charts = splitIntoCharts(mesh, asked, charting);
   if (charts.charts.size() < 2) throw Error(name + ": one chart covers it");
   const double area = surfaceArea(mesh);
-  const double spacing = std::sqrt(2.0 * area / (std::sqrt(3.0) * asked));
+  const double spacing = equilateralEdgeLength(area, asked);
   result.ms.cut = stage.lap();
   result.charts = static_cast<int>(charts.charts.size());
   result.cut.seamEdges = charts.seamEdges;
   result.converged = true;
   // Each chart's share of the area, and half its seams' samples (each seam is sampled on both
   // sides) and its nodes'.
+  std::vector<double> areas;
   std::vector<int> counts;
-  for (const Chart& chart : charts.charts)
-    counts.push_back(std::max(1, static_cast<int>(std::lround(asked * surfaceArea(chart.mesh) / area +
-                                                              0.5 * chart.seamLength / spacing + chart.nodeSamples))));
+  for (const Chart& chart : charts.charts) {
+    areas.push_back(surfaceArea(chart.mesh));
+    counts.push_back(std::max(1, static_cast<int>(std::lround(asked * areas.back() / area + 0.5 * chart.seamLength / spacing +
+                                                              chart.nodeSamples))));
+  }
   // Seams far longer than the vertices asked span (charts up a spike a million times as tall as
   // wide) run away with the run, as a border does (core/sites).
   const long long total = std::accumulate(counts.begin(), counts.end(), 0LL);
@@ -502,7 +505,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
     const std::string chartName =
         name + " (chart " + std::to_string(i + 1) + " of " + std::to_string(charts.charts.size()) + ")";
     validateMesh(chart.mesh, chartName);
-    const double chartArea = surfaceArea(chart.mesh);
+    const double chartArea = areas[i];
     RemeshOptions o = options;
     o.simplifyTo = 0;
     o.sites.count = counts[i];
@@ -813,7 +816,7 @@ void requireRemeshableSize(const Mesh& input, const Topology& topology, int vert
   double borderLength = 0;
   for (const std::vector<int>& loop : topology.boundaryLoops) borderLength += loopLength(input, loop);
   vertices = std::max(vertices, kSmallestRemeshedShare);
-  const double spacing = std::sqrt(2.0 * area / (std::sqrt(3.0) * vertices));
+  const double spacing = equilateralEdgeLength(area, vertices);
   if (borderLength > static_cast<double>(kMostBorderPerVertex) * vertices * spacing)
     throw Error(name + ": " + std::to_string(vertices) + " vertices are too few for it: at their spacing its border alone takes " +
                 std::to_string(static_cast<long long>(std::ceil(borderLength / spacing))) + " (over " +

@@ -280,9 +280,7 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
     return sites;
   }
   const int count = options.count > 0 ? options.count : mesh.vertexCount();
-  // An equilateral mesh of N vertices has about 2N triangles of area (sqrt 3 / 4) h^2.
-  const double spacing = options.spacing > 0 ? options.spacing
-                                             : std::sqrt(2.0 * surfaceArea(mesh) / (std::sqrt(3.0) * count));
+  const double spacing = options.spacing > 0 ? options.spacing : equilateralEdgeLength(surfaceArea(mesh), count);
   sites.fixed = resampleBorder(mesh, param, spacing, options, sites.fixedPoints);
   // Fewer than three samples: a border far shorter than the surface is wide (a small hole in a
   // closed surface, a spike or a fold inside a small border), nothing to triangulate.
