@@ -228,14 +228,15 @@ bool isSupportedOffKeyword(std::string_view keyword) {
   return std::find(std::begin(kKeywords), std::end(kKeywords), keyword) != std::end(kKeywords);
 }
 
-int offCount(const std::string& path, int line, std::string_view token, const char* what) {
+// A count in a header (OFF's counts, a PLY element's), `what` naming it.
+int headerCount(const std::string& path, int line, std::string_view token, const std::string& what) {
   long long value;
   if (!parseInteger(token, value)) {
-    fail(path, "bad header: " + atLine(line) + std::string(what) + " count " + shown(token) +
+    fail(path, "bad header: " + atLine(line) + what + " count " + shown(token) +
                    " is not an integer");
   }
   if (value < 0 || value > INT_MAX) {
-    fail(path, "bad header: " + atLine(line) + std::string(what) + " count " + str(value) +
+    fail(path, "bad header: " + atLine(line) + what + " count " + str(value) +
                    " is impossible");
   }
   return static_cast<int>(value);
@@ -309,9 +310,9 @@ RawMesh readOff(const std::string& path, std::string_view text) {
     fail(path, "bad header: " + atLine(lines.lineNumber()) +
                    "expected 'vertices faces edges' counts, found " + plural(counts.size(), "value", "values"));
   }
-  const int nv = offCount(path, lines.lineNumber(), counts[0], "vertex");
-  const int nf = offCount(path, lines.lineNumber(), counts[1], "face");
-  if (counts.size() == 3) offCount(path, lines.lineNumber(), counts[2], "edge");  // unused, but must be sane
+  const int nv = headerCount(path, lines.lineNumber(), counts[0], "vertex");
+  const int nf = headerCount(path, lines.lineNumber(), counts[1], "face");
+  if (counts.size() == 3) headerCount(path, lines.lineNumber(), counts[2], "edge");  // unused, but must be sane
   RawMesh raw;
   reservePoints(raw, nv, text.size() - lines.position(), 6);  // "0 0 0\n"
   for (int i = 0; i < nv; ++i) {
@@ -508,10 +509,8 @@ PlyHeader readPlyHeader(const std::string& path, std::string_view text) {
       else fail(path, "bad header: " + atLine(line) + "unknown format " + shown(tokens[1]));
       sawFormat = true;
     } else if (keyword == "element") {
-      long long count;
-      if (tokens.size() != 3 || !parseInteger(tokens[2], count) || count < 0 || count > INT_MAX) {
-        fail(path, "bad header: " + atLine(line) + "expected 'element <name> <count>'");
-      }
+      if (tokens.size() != 3) fail(path, "bad header: " + atLine(line) + "expected 'element <name> <count>'");
+      const int count = headerCount(path, line, tokens[2], "element " + shown(tokens[1]));
       header.elements.push_back({std::string(tokens[1]), count, {}});
     } else if (keyword == "property") {
       if (header.elements.empty()) fail(path, "bad header: " + atLine(line) + "property before any element");

@@ -375,6 +375,13 @@ TEST(MeshIoErrors, BadHeader) {
   expectFileError("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n",
                   "unknown property type");
   expectFileError("noend.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", "end_header");
+  // A count past what a file can hold is named as the OFF header's is.
+  expectFileError("count.ply", "ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\nend_header\n",
+                  "line 3: element 'vertex' count 99999999999 is impossible");
+  expectFileError("negative.ply", "ply\nformat ascii 1.0\nelement face -3\nend_header\n",
+                  "line 3: element 'face' count -3 is impossible");
+  expectFileError("text_count.ply", "ply\nformat ascii 1.0\nelement face many\nend_header\n",
+                  "line 3: element 'face' count 'many' is not an integer");
   expectFileError("noz.ply",
                   "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                   "element face 0\nproperty list uchar int vertex_indices\nend_header\n0 0\n",
