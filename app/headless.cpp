@@ -110,13 +110,22 @@ class OffscreenRenderer {
 
 }  // namespace
 
+namespace {
+// Under 960x600 the panes are too small to read (at 640x480 the plots' titles ran into each
+// other and the timeline's buttons were cut off): a smaller picture is a larger one scaled.
+// 8192 is a side every Vulkan device can render.
+constexpr long long kSmallestWidth = 960, kSmallestHeight = 600, kLargestSide = 8192;
+}  // namespace
+
+std::string pictureSizes() {
+  const std::string largest = std::to_string(kLargestSide);
+  return "between " + std::to_string(kSmallestWidth) + "x" + std::to_string(kSmallestHeight) + " and " + largest + "x" +
+         largest;
+}
+
 void requirePictureSize(long long width, long long height) {
-  // Under 960x600 the panes are too small to read (at 640x480 the plots' titles ran into each
-  // other and the timeline's buttons were cut off): a smaller picture is a larger one scaled.
-  // 8192 is a side every Vulkan device can render.
-  constexpr long long kSmallestWidth = 960, kSmallestHeight = 600, kLargestSide = 8192;
   if (width < kSmallestWidth || height < kSmallestHeight || width > kLargestSide || height > kLargestSide)
-    throw Error("--size must be between 960x600 and 8192x8192, not '" + std::to_string(width) + "x" +
+    throw Error("--size must be " + pictureSizes() + ", not '" + std::to_string(width) + "x" +
                 std::to_string(height) + "'");
 }
 

@@ -9,8 +9,11 @@
 
 namespace lloydscope {
 
-// Throws Error("--size must be between 960x600 and 8192x8192, not 'WxH'") for a picture size
-// outside them (renderScreenshot() and benchmarkScrub() take no other).
+// The picture sizes taken: "between 960x600 and 8192x8192".
+std::string pictureSizes();
+
+// Throws Error("--size must be between 960x600 and 8192x8192, not 'WxH'") for a picture size outside
+// them (renderScreenshot() and benchmarkScrub() take no other).
 void requirePictureSize(long long width, long long height);
 
 struct ScreenshotOptions {

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 
 namespace lloydscope {
@@ -165,6 +166,8 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
     runNotes_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
                 "largest chart (on its own); the input and final columns and \"show the final result\" "
                 "are the whole surface. " + runNotes_;
+  } else if (result_.chartTrial) {
+    noteFirst(chartTrialText(result_));  // kept as one disk, and why
   }
   if (result_.components > 1) {
     if (input_) input_ = largestComponent(*input_);  // what the panes show, and Restart steps
@@ -696,14 +699,20 @@ void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
 void Inspector::handleKeys() {
   ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;
-  const int step = io.KeyShift ? 10 : 1;
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) setIteration(iteration_ - step);
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) setIteration(iteration_ + step);
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) setIteration(0);
+  // During a lesson the keys move through its stages (the lesson sets the iteration each
+  // frame); otherwise through the iterations.
+  const auto go = [&](long by) {
+    if (lesson_.playing()) lesson_.skip(by);
+    else setIteration(static_cast<int>(std::clamp<long>(iteration_ + by, 0, std::numeric_limits<int>::max())));
+  };
+  const long step = io.KeyShift ? 10 : 1, all = std::numeric_limits<int>::max();
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) go(-step);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) go(step);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) go(-all);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) go(all);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) selection_.clear();
   if (letterPressed('P')) presentation_ = !presentation_;
   if (letterPressed('L')) toggleLesson();
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) setIteration(replay_->iterationCount() - 1);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) togglePlay();
 }
 
@@ -1099,13 +1108,40 @@ const std::vector<std::pair<Vec2, Vec2>>& Inspector::cellEdges() {
   return cellEdges_;
 }
 
+namespace {
+// Items separated by two spaces ("dots: sites  rings: centroids"), one line after another as
+// many as fit in `width` pixels, never split inside an item.
+std::string wrapItems(const std::string& items, float width) {
+  std::string wrapped, line;
+  size_t start = 0;
+  while (start < items.size()) {
+    const size_t end = std::min(items.find("  ", start), items.size());
+    const std::string item = items.substr(start, end - start);
+    const std::string longer = line.empty() ? item : line + "  " + item;
+    if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
+      wrapped += line + "\n";
+      line = item;
+    } else {
+      line = longer;
+    }
+    start = end + 2;
+  }
+  return wrapped + line;
+}
+}  // namespace
+
 void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   beginPane("2D parameter domain", pos, size, kCanvasPaneFlags);
   const auto [p0, extent] = canvasArea();
   ImGui::InvisibleButton("canvas2d", extent, ImGuiButtonFlags_MouseButtonLeft);
   ImGuiIO& io = ImGui::GetIO();
-  // The domain fits above the legend's line (in large type it covered the domain's foot).
-  const float legend = ImGui::GetFontSize() + 10, fitHeight = std::max(1.0f, extent.y - legend);
+  // The domain fits above the legend (in large type it covered the domain's foot), which takes
+  // two lines where the pane is narrower than it (960x600).
+  const Layers shown = layers();
+  const bool seams = !replay_->seams().empty() || !replay_->recording().sharedSeams.empty();
+  const std::string legend = wrapItems(domainLegend(shown.sites2D, shown.centroids2D, seams), extent.x - 16);
+  const float legendHeight = ImGui::CalcTextSize(legend.c_str()).y;
+  const float fitHeight = std::max(1.0f, extent.y - legendHeight - 10);
   const float base = 0.92f * std::min(extent.x, fitHeight);
   const ImVec2 center(p0.x + extent.x / 2 + pan2D_.x, p0.y + fitHeight / 2 + pan2D_.y);
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
@@ -1155,10 +1191,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   if (fill_ != CellFill::None)
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, format("%.2e", fillRange_[1]).c_str(),
                  format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
-  const Layers shown = layers();
-  const bool seams = !replay_->seams().empty() || !replay_->recording().sharedSeams.empty();
-  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - ImGui::GetFontSize() - 5), rgb(0.1f, 0.1f, 0.1f),
-              domainLegend(shown.sites2D, shown.centroids2D, seams).c_str());
+  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), rgb(0.1f, 0.1f, 0.1f), legend.c_str());
   dl->PopClipRect();
   ImGui::End();
 }
@@ -1472,10 +1505,14 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SliderFloat("it/s", &playSpeed_, 1.0f, 60.0f, "%.0f");
   const IterationRecord& it = replay_->recording().iterations[iteration_];
   // Numbered from 0: "of 159" read as one fewer than the 160 iterations the controls pane counts.
-  ImGui::Text("iteration %d (0-%d)   energy %.6e   max move %.2e   %.1f%% moving   %s"
-              "keys: <- -> (Shift: 10), Home, End, Space",
-              iteration_, last, it.energy, it.maxDisplacement, 100.0 * it.fractionMoving,
-              showTimings_ ? format("%.1f ms   ", it.milliseconds).c_str() : "");
+  // The keys' reminder is left out where the line would not fit (960x600).
+  char status[256];
+  std::snprintf(status, sizeof status, "iteration %d (0-%d)   energy %.6e   max move %.2e   %.1f%% moving   %s",
+                iteration_, last, it.energy, it.maxDisplacement, 100.0 * it.fractionMoving,
+                showTimings_ ? format("%.1f ms   ", it.milliseconds).c_str() : "");
+  const std::string withKeys = std::string(status) + "keys: <- -> (Shift: 10), Home, End, Space";
+  const bool fits = ImGui::CalcTextSize(withKeys.c_str()).x <= ImGui::GetContentRegionAvail().x;
+  ImGui::TextUnformatted(fits ? withKeys.c_str() : status);
   ImGui::End();
 }
 

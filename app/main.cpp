@@ -209,9 +209,9 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                "result meeting more of the quality bars kept; where both meet them, the closer to the "
                "input; else the larger average smallest angle)");
   cmd.add_flag("--full-input", r.fullInput,
-               "Remesh a large input as it is (by default, one with more than 10 vertices per vertex "
-               "asked, 5 over 10,000, is simplified to that many first; the last steps and the distances "
-               "are against the input itself either way)");
+               "Remesh a large input as it is (by default it is simplified first to 10 vertices per "
+               "vertex asked, but to no more than 10,000 or 5 per vertex asked, whichever is larger; "
+               "the last steps and the distances are against the input itself either way)");
   cmd.add_flag("--no-fidelity", r.noFidelity, "Skip the Hausdorff/RMS measurement");
   addRepairFlag(cmd, r.repair);
   cmd.option_defaults()->group("Options");
@@ -328,7 +328,7 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--camera", shot.view.camera,
                          "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
                          "the point x y z looked at (the inspector's Copy view)");
-  inspectCmd->add_option("--size", size, "Picture size WxH, 960x600 or more (default 1280x800)");
+  inspectCmd->add_option("--size", size, "Picture size WxH, " + pictureSizes() + " (default 1280x800)");
   inspectCmd->add_flag("--validation", shot.validation,
                        "Enable the Vulkan validation layer; fail if it reports anything");
   bool noTimings = false;
@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
   int frames = 100;
   benchCmd->add_option("input", br.input, "Mesh")->required();
   benchCmd->add_option("--frames", frames, "Frames to time")->check(wholeNumber(1, kMostFrames));
-  benchCmd->add_option("--size", size, "Frame size WxH, 960x600 or more (default 1280x800)");
+  benchCmd->add_option("--size", size, "Frame size WxH, " + pictureSizes() + " (default 1280x800)");
   addRemeshOptions(*benchCmd, br);
 
   std::string metricsMesh, metricsReference;

@@ -1,5 +1,6 @@
 #include "lesson.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace lloydscope {
@@ -74,6 +75,13 @@ void LessonPlayer::advance(float seconds) {
     }
     ++next_;
   }
+}
+
+void LessonPlayer::skip(long steps) {
+  if (!playing()) return;
+  const long last = static_cast<long>(plan_.size()) - 1;
+  next_ = static_cast<size_t>(std::clamp(static_cast<long>(next_) + steps, 0L, last));
+  clock_ = 0;
 }
 
 Caption caption(Stage stage, const CaptionFacts& f) {

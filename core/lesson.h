@@ -44,7 +44,8 @@ struct LessonStep {
 std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations = 3);
 
 // Plays a plan: advance() by the frame's seconds times a speed factor. Paused, it stays on its
-// step (a lecturer stops at a stage to work one cell's numbers with the class).
+// step (a lecturer stops at a stage to work one cell's numbers with the class); skip() goes
+// back or on by whole steps, paused or not, each shown from its start.
 class LessonPlayer {
  public:
   void start(std::vector<LessonStep> plan);
@@ -53,6 +54,7 @@ class LessonPlayer {
   void togglePause() { paused_ = !paused_; }
   bool paused() const { return paused_; }
   void advance(float seconds);
+  void skip(long steps);  // clamped to the first and the last step
   const LessonStep& current() const { return plan_.at(next_); }
 
  private:

@@ -539,6 +539,9 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
   const CliRun help = runCli("remesh --help");
   EXPECT_EQ(help.code, 0);
   EXPECT_NE(help.out.find("--max-iterations"), std::string::npos);
+  // The picture sizes' help says both limits, as the refusal does.
+  for (const char* command : {"inspect --help", "bench-frames --help"})
+    EXPECT_NE(runCli(command).out.find("between 960x600 and 8192x8192"), std::string::npos) << command;
 }
 
 // A run that needs more memory than the process may have ends with one line saying so, not an

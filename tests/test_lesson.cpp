@@ -1,6 +1,8 @@
 #include "lesson.h"
 #include "test_support.h"
 
+#include <limits>
+
 using namespace lloydscope;
 
 TEST(Lesson, PlanTellsThePipelineInOrder) {
@@ -56,6 +58,32 @@ TEST(Lesson, APausedLessonStaysOnItsStage) {
   player.togglePause();
   player.start(lessonPlan(4, 1));
   EXPECT_FALSE(player.paused());
+}
+
+// The arrow keys during a lesson: a whole step back or on, from its start, paused or not;
+// Home and End skip past either end and stop there.
+TEST(Lesson, SkipGoesBackAndOnByWholeSteps) {
+  LessonPlayer player;
+  player.skip(1);  // no lesson: nothing to do
+  EXPECT_FALSE(player.playing());
+  player.start(lessonPlan(4, 1));
+  player.skip(1);
+  EXPECT_EQ(player.current().stage, Stage::Parameterize);
+  player.advance(3.9f);  // Parameterize shown from its start: 4 s
+  EXPECT_EQ(player.current().stage, Stage::Parameterize);
+  player.skip(-5);
+  EXPECT_EQ(player.current().stage, Stage::Load);
+  player.togglePause();
+  player.skip(5);  // paused: Parameterize; Voronoi, Centroids, Move at iteration 0; Move at 1
+  EXPECT_EQ(player.current().stage, Stage::Move);
+  EXPECT_EQ(player.current().iteration, 1);
+  EXPECT_TRUE(player.paused());
+  player.advance(1000.0f);
+  EXPECT_EQ(player.current().iteration, 1);
+  player.skip(std::numeric_limits<int>::max());
+  EXPECT_EQ(player.current().stage, Stage::Result);
+  player.skip(-std::numeric_limits<int>::max());
+  EXPECT_EQ(player.current().stage, Stage::Load);
 }
 
 TEST(Lesson, StagesRevealOneLayerAtATime) {
