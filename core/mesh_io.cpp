@@ -852,6 +852,9 @@ void checkVertexFans(const Mesh& mesh, const std::string& name, const Numbering&
 // the inside vertices it allowed at the same position (coincidentVertices()).
 std::vector<std::pair<int, int>> checkSurface(const Mesh& mesh, const std::string& name,
                                               const Numbering& numbering) {
+  // What a file holds was checked for faces as it was read; this is for what a repair left
+  // (faces all of zero area, all collapsed away).
+  if (mesh.triangles.empty()) fail(name, "no faces remain (all were dropped or of zero area)");
   // A face on two vertices at the same position has zero area: said as such first.
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle& f = mesh.triangles[t];

@@ -563,6 +563,21 @@ TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
   }
 }
 
+// A mesh whose faces all have zero area leaves nothing to repair into: refused as it is read,
+// and the refusal does not say the repair fixes it (bench --repair subdivided the empty mesh
+// for ever; metrics, simplify and remesh took it).
+TEST(MeshIoErrors, NothingLeftAfterTheRepairIsRefused) {
+  const char* collinear = "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n3 1 3 2\n";
+  const std::string path = writeFile("collinear.off", collinear);
+  try {
+    readMesh(path, ReadOptions{true});
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no faces remain (all were dropped or of zero area) (left after the repair)"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(readError(path).find("--repair"), std::string::npos) << readError(path);
+}
+
 TEST(MeshIoErrors, NonManifoldEdge) {
   expectFileError("fin.off",
                   "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
