@@ -2,6 +2,7 @@
 
 #include "files.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -122,6 +123,31 @@ std::string encodePayload(const Recording& r) {
   return std::move(w.bytes());
 }
 
+// What the replay takes for granted, which a file of the right size and checksum may still
+// break (made by another program, or edited): each broke it with a crash.
+void checkContents(const Recording& r, const std::string& path) {
+  const auto damaged = [&](const std::string& why) { throw Error(path + ": damaged recording (" + why + ")"); };
+  const auto allFinite = [](const auto& values) {
+    return std::all_of(values.begin(), values.end(), [](const auto& v) { return v.allFinite(); });
+  };
+  if (r.iterations.empty()) damaged("no iterations");
+  if (r.input.triangles.empty()) damaged("no triangles");
+  if (!allFinite(r.input.points) || !allFinite(r.uv) || !allFinite(r.fixedSites))
+    damaged("a coordinate is not a finite number");
+  if (!std::isfinite(r.distanceThreshold) || !std::isfinite(r.percentThreshold))
+    damaged("a threshold is not a finite number");
+  double area = 0;
+  for (const Triangle& t : r.input.triangles) area += std::abs(triangleArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]));
+  if (!(area > 0)) damaged("its parameter domain has no area");
+  for (const auto& corners : r.density)
+    for (double d : corners)
+      if (!std::isfinite(d) || d < 0) damaged("a density is negative or not a finite number");
+  const size_t sites = r.iterations.front().sites.size();
+  if (!r.movableVertex.empty() && r.movableVertex.size() != sites) damaged("its sites' vertices are not one per site");
+  for (int v : r.movableVertex)
+    if (v < -1 || v >= r.input.vertexCount()) damaged("a site's vertex is out of range");
+}
+
 Recording decodePayload(Reader& in, const std::string& path) {
   Recording r;
   r.settings = in.getString();
@@ -173,6 +199,7 @@ Recording decodePayload(Reader& in, const std::string& path) {
       throw Error(path + ": damaged recording (iterations differ in their number of sites)");
   }
   if (!in.done()) throw Error(path + ": damaged recording (unexpected data after the end)");
+  checkContents(r, path);
   return r;
 }
 

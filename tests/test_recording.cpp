@@ -3,6 +3,8 @@
 #include "test_support.h"
 
 #include <cstdio>
+#include <functional>
+#include <limits>
 
 using namespace lloydscope;
 
@@ -72,6 +74,39 @@ TEST(Recording, ABorderOfFewerThanThreeSitesIsRefused) {
   const std::string path = test::tempPath("two_border_sites.lsrec");
   saveRecording(r, path);
   expectError(path, "fewer than 3 border sites");
+}
+
+// A file of the right size and checksum may still hold what no run records (another program
+// wrote it, or it was edited): each of these crashed the replay (a segfault, a double free
+// in the cells, a floating-point trap in CGAL) and is refused as damage.
+TEST(Recording, ContentsNoRunRecordsAreRefused) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::pair<std::function<void(Recording&)>, std::string>> edits = {
+      {[](Recording& r) { r.iterations.clear(); }, "no iterations"},
+      {[](Recording& r) { r.input.triangles.clear(), r.density.clear(); }, "no triangles"},
+      {[&](Recording& r) { r.uv[3].x() = nan; }, "a coordinate is not a finite number"},
+      {[&](Recording& r) { r.input.points[0].z() = nan; }, "a coordinate is not a finite number"},
+      {[&](Recording& r) { r.fixedSites[1].y() = nan; }, "a coordinate is not a finite number"},
+      {[](Recording& r) { std::fill(r.uv.begin(), r.uv.end(), Vec2(0, 0)); }, "its parameter domain has no area"},
+      {[&](Recording& r) { r.density[5][1] = nan; }, "a density is negative or not a finite number"},
+      {[](Recording& r) { r.density[5][1] = -1; }, "a density is negative or not a finite number"},
+      {[&](Recording& r) { r.distanceThreshold = nan; }, "a threshold is not a finite number"},
+      {[](Recording& r) { r.movableVertex.pop_back(); }, "its sites' vertices are not one per site"},
+      {[](Recording& r) { r.movableVertex[0] = r.input.vertexCount(); }, "a site's vertex is out of range"},
+      {[](Recording& r) { r.movableVertex[0] = -2; }, "a site's vertex is out of range"}};
+  const std::string path = test::tempPath("edited.lsrec");
+  for (const auto& [edit, why] : edits) {
+    Recording r = sphereCapRun().recording;
+    edit(r);
+    saveRecording(r, path);
+    SCOPED_TRACE(why);
+    expectError(path, "damaged recording (" + why + ")");
+  }
+  // Sites without an input vertex (-1) are what a run with a first pass records.
+  Recording r = sphereCapRun().recording;
+  std::fill(r.movableVertex.begin(), r.movableVertex.end(), -1);
+  saveRecording(r, path);
+  EXPECT_NO_THROW(loadRecording(path));
 }
 
 TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {
