@@ -148,6 +148,8 @@ void runBench(const BenchOptions& options) {
   // Every model read (and validated), and the CSV's folder checked, before any is run: a bad
   // one fails in a moment, not after minutes of the others' work.
   requireWritable(options.csv);
+  for (const std::string& path : models)
+    if (sameFile(options.csv, path)) throw Error(options.csv + ": --csv would replace the input mesh; give it another name");
   if (!options.saveInputs.empty()) makeFolder(options.saveInputs);
   std::vector<Mesh> meshes;
   for (const std::string& path : models) {

@@ -75,13 +75,8 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
 // The recording, the output and the input are three files: --record onto the input or the
 // output replaced it with a recording, silently.
 void refuseSameFile(const RemeshArgs& a) {
-  auto same = [](const std::string& x, const std::string& y) {
-    std::error_code ignored;
-    return !x.empty() && !y.empty() &&
-           std::filesystem::weakly_canonical(x, ignored) == std::filesystem::weakly_canonical(y, ignored);
-  };
-  if (same(a.record, a.input)) throw Error(a.record + ": --record would replace the input mesh; give it another name");
-  if (same(a.record, a.output)) throw Error(a.record + ": --record and --output name the same file; give them two");
+  if (sameFile(a.record, a.input)) throw Error(a.record + ": --record would replace the input mesh; give it another name");
+  if (sameFile(a.record, a.output)) throw Error(a.record + ": --record and --output name the same file; give them two");
 }
 
 Mesh load(const std::string& path, bool repair) {

@@ -8,21 +8,32 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace lloydscope {
 
 namespace {
 
-std::string temporaryOf(const std::string& path) { return path + ".tmp"; }
+// Where a write goes: through a link to its target (renaming onto the link replaced it with a
+// file and left the target as it was).
+std::filesystem::path targetOf(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_symlink(path, error)) {
+    std::filesystem::path target = std::filesystem::weakly_canonical(path, error);
+    if (!error) return target;
+  }
+  return path;
+}
 
-// Says why "<path>.tmp" could not be made: a missing folder by its name (the user never typed
-// the temporary's), else the system's reason.
-[[noreturn]] void cannotMake(const std::string& path, const std::string& temporary) {
+// Says why no file could be made in the target's folder: a missing folder by its name, else the
+// system's reason.
+[[noreturn]] void cannotMake(const std::string& path, const std::filesystem::path& folder) {
   const std::string reason = std::strerror(errno);
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   std::error_code ignored;
-  if (!folder.empty() && !std::filesystem::exists(folder, ignored))
+  if (!std::filesystem::exists(folder, ignored))
     throw Error(path + ": cannot write: there is no folder " + folder.string());
-  throw Error(path + ": cannot write " + temporary + " (" + reason + ")");
+  throw Error(path + ": cannot write in " + folder.string() + " (" + reason + ")");
 }
 
 void requireNotAFolder(const std::string& path) {
@@ -30,14 +41,35 @@ void requireNotAFolder(const std::string& path) {
   if (std::filesystem::is_directory(path, ignored)) throw Error(path + ": cannot write: it is a folder");
 }
 
+// A new empty file beside `target`, of a name no other writer takes (mkstemp): a fixed
+// "<path>.tmp" deleted a user's file of that name, two runs writing one output shared it, and
+// with a name near the system's limit it was too long. It gets the target's permissions, or
+// those a new file gets (mkstemp's are private).
+std::string makeTemporary(const std::string& path, const std::filesystem::path& target) {
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+  std::string name = (folder / ".lloydscope-XXXXXX").string();
+  const int fd = mkstemp(name.data());
+  if (fd < 0) cannotMake(path, folder);
+  struct stat existing;
+  const mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, stat(target.c_str(), &existing) == 0 ? existing.st_mode & 07777 : 0666 & ~mask);
+  close(fd);
+  return name;
+}
+
 }  // namespace
 
 void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
   requireNotAFolder(path);
-  const std::string temporary = temporaryOf(path);
+  const std::filesystem::path target = targetOf(path);
+  const std::string temporary = makeTemporary(path, target);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) cannotMake(path, temporary);
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw Error(path + ": cannot write " + temporary);
+    }
     try {
       write(out);
     } catch (...) {  // out of memory, say: no half-written temporary stays
@@ -51,7 +83,7 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
       throw Error(path + ": cannot write " + temporary + " (disk full?)");
     }
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+  if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
     throw Error(path + ": cannot write: renaming " + temporary + " onto it failed (" + reason + ")");
@@ -60,12 +92,17 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
 
 void requireWritable(const std::string& path) {
   requireNotAFolder(path);
-  const std::string temporary = temporaryOf(path);
-  std::error_code ignored;
-  // writeAtomically's own name: one already there (a run stopped before its rename) stays until then
-  const bool there = std::filesystem::exists(temporary, ignored);
-  if (!std::ofstream(temporary, std::ios::binary | std::ios::app)) cannotMake(path, temporary);
-  if (!there) std::remove(temporary.c_str());
+  std::remove(makeTemporary(path, targetOf(path)).c_str());
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return false;
+  // weakly_canonical leaves a relative name of no file as it is ("x.off" against "/abs/x.off").
+  const auto resolved = [](const std::string& path) {
+    std::error_code ignored;
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(path, ignored), ignored);
+  };
+  return resolved(a) == resolved(b);
 }
 
 void makeFolder(const std::string& path) {

@@ -10,15 +10,20 @@
 
 namespace lloydscope {
 
-// Writes `path` through "<path>.tmp", renamed onto it once complete: a file already there is
-// replaced whole or not at all. `write` fills the stream (binary). Throws Error("<path>: cannot
-// write ...") saying why.
+// Writes `path` through a temporary of its own beside it (".lloydscope-XXXXXX"), renamed onto
+// it once complete: a file already there is replaced whole or not at all, keeping its
+// permissions; a link is written through, to its target. `write` fills the stream (binary).
+// Throws Error("<path>: cannot write ...") saying why.
 void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
-// Throws the Error writeAtomically would end with where "<path>.tmp" cannot be made (no such
+// Throws the Error writeAtomically would end with where its temporary cannot be made (no such
 // folder, no permission) or `path` is a folder: checked before a run that may take minutes.
 // Leaves nothing behind.
 void requireWritable(const std::string& path);
+
+// Whether two names (non-empty) are one file, there or not yet: "x.off", "./x.off", "sub/../x.off"
+// and its absolute path are, and so are a link and its target.
+bool sameFile(const std::string& a, const std::string& b);
 
 // Makes the folder `path` and the folders above it where missing. Throws Error("<path>: cannot
 // make the folder (why)") where it cannot be made or is a file.

@@ -44,7 +44,8 @@ struct Recording {
 // solver, say): the iterations of that run, to compare convergence curves.
 std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options);
 
-// Written to "<path>.tmp" and renamed, so an existing file is replaced whole or not at all.
+// Written through a temporary and renamed (writeAtomically), so an existing file is replaced
+// whole or not at all.
 void saveRecording(const Recording& recording, const std::string& path);
 // The largest recording read: 5000 iterations of 100,000 sites at 8 bytes a site. (A link to
 // /dev/zero is read that far, into as much memory, before it is refused.)

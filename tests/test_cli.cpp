@@ -303,8 +303,8 @@ TEST(Cli, ARecordingRefusesRemeshingOptions) {
   EXPECT_EQ(runCli("inspect " + rec + " --iteration 1 --screenshot " + test::tempPath("fine.png")).code, 0);
 }
 
-// --record onto the input or the output replaced it with a recording (exit 0); a folder given
-// as a recording was an "internal error" (exit 2).
+// --record onto the input or the output replaced it with a recording (exit 0), as did bench's
+// --csv onto an input; a folder given as a recording was an "internal error" (exit 2).
 TEST(Cli, ARecordingNeitherReplacesTheInputNorTheOutputNorReadsAFolder) {
   const std::string mesh = test::tempPath("keep_me.off"), out = test::tempPath("keep_out.off");
   test::writeText(mesh, test::readText(test::assetPath("jittered_grid.off")));
@@ -317,6 +317,19 @@ TEST(Cli, ARecordingNeitherReplacesTheInputNorTheOutputNorReadsAFolder) {
   EXPECT_EQ(r.err, "lloydscope: " + out + ": --record and --output name the same file; give them two\n");
   EXPECT_EQ(test::readText(mesh), test::readText(test::assetPath("jittered_grid.off")));
   EXPECT_EQ(test::readText(out), kTriangle);
+  // The same new file named two ways, the output written first and then replaced by the
+  // recording: a bare name of no file yet was not resolved against the folder it is in.
+  const std::string here = test::emptyFolder("two_spellings");
+  const int status = std::system(("cd " + here + " && " + std::string(LLOYDSCOPE_CLI) + " remesh " + mesh +
+                                  " --max-iterations 2 --no-fidelity -o new.off --record " + here +
+                                  "/new.off >/dev/null 2>/dev/null").c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+  EXPECT_TRUE(test::filesIn(here).empty());
+  // bench's CSV onto one of its inputs replaced the mesh with the table.
+  r = runCli("bench " + mesh + " --sizes 100 --no-reference --csv " + mesh);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + mesh + ": --csv would replace the input mesh; give it another name\n");
+  EXPECT_EQ(test::readText(mesh), test::readText(test::assetPath("jittered_grid.off")));
   const std::string folder = test::tempPath("folder.lsrec");
   std::filesystem::create_directory(folder);
   r = runCli("info " + folder);

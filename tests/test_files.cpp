@@ -24,10 +24,9 @@ std::string errorOf(F f) {
 }  // namespace
 
 TEST(Files, RequireWritableSaysWhyBeforehandAndLeavesNothingBehind) {
-  const std::string fine = test::tempPath("fine.off");
-  EXPECT_EQ(errorOf([&] { requireWritable(fine); }), "");
-  EXPECT_FALSE(exists(fine));
-  EXPECT_FALSE(exists(fine + ".tmp"));
+  const std::string here = test::emptyFolder("writable");
+  EXPECT_EQ(errorOf([&] { requireWritable(here + "/fine.off"); }), "");
+  EXPECT_TRUE(test::filesIn(here).empty());
 
   const std::string missing = test::tempPath("no_such_folder") + "/x.off";
   const std::string why = errorOf([&] { requireWritable(missing); });
@@ -43,7 +42,8 @@ TEST(Files, RequireWritableSaysWhyBeforehandAndLeavesNothingBehind) {
 }
 
 TEST(Files, WriteAtomicallyReplacesAFileWholeOrNotAtAll) {
-  const std::string path = test::tempPath("whole.txt");
+  const std::string here = test::emptyFolder("whole");
+  const std::string path = here + "/whole.txt";
   writeAtomically(path, [](std::ostream& out) { out << "first"; });
   EXPECT_EQ(test::readText(path), "first");
   writeAtomically(path, [](std::ostream& out) { out << "second"; });
@@ -57,8 +57,37 @@ TEST(Files, WriteAtomicallyReplacesAFileWholeOrNotAtAll) {
   });
   EXPECT_EQ(why.rfind(path + ": cannot write", 0), 0u) << why;
   EXPECT_EQ(test::readText(path), "second");
-  EXPECT_FALSE(exists(path + ".tmp"));
-  std::filesystem::remove(path);
+  EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"whole.txt"});  // no temporary stays
+}
+
+// The temporary is a name of its own beside the file: a user's "<name>.tmp" was deleted, and a
+// name near the system's limit (255) could not take ".tmp". The file keeps its permissions, and
+// a link is written through to its target, not replaced by a file.
+TEST(Files, WriteAtomicallyTouchesNoOtherFileAndKeepsLinksAndPermissions) {
+  namespace fs = std::filesystem;
+  const std::string here = test::emptyFolder("atomic");
+  test::writeText(here + "/out.off.tmp", "precious");
+  writeAtomically(here + "/out.off", [](std::ostream& out) { out << "mesh"; });
+  EXPECT_EQ(test::readText(here + "/out.off.tmp"), "precious");
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"out.off", "out.off.tmp"}));
+
+  const std::string longName = here + "/" + std::string(250, 'n') + ".off";  // 254 characters
+  EXPECT_EQ(errorOf([&] { requireWritable(longName); }), "");
+  writeAtomically(longName, [](std::ostream& out) { out << "long"; });
+  EXPECT_EQ(test::readText(longName), "long");
+
+  fs::create_directory(here + "/real");
+  test::writeText(here + "/real/target.off", "old");
+  fs::create_symlink("real/target.off", here + "/link.off");
+  writeAtomically(here + "/link.off", [](std::ostream& out) { out << "new"; });
+  EXPECT_TRUE(fs::is_symlink(here + "/link.off"));
+  EXPECT_EQ(test::readText(here + "/real/target.off"), "new");
+
+  fs::permissions(here + "/out.off", fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  writeAtomically(here + "/out.off", [](std::ostream& out) { out << "again"; });
+  EXPECT_EQ(fs::status(here + "/out.off").permissions(), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  // A new file is readable as any the user makes (mkstemp's own are private).
+  EXPECT_NE(fs::status(longName).permissions() & fs::perms::others_read, fs::perms::none);
 }
 
 TEST(Files, MakeFolderMakesTheFoldersAboveAndRefusesAFile) {

@@ -2,6 +2,7 @@
 // format, and a crude fuzz test (random bytes and cut-off files must give an Error, not a crash).
 
 #include "mesh_io.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -295,9 +296,9 @@ TEST(MeshIo, RemovesUnreferencedVerticesWithANote) {
 void expectRoundTrip(const std::string& name) {
   SCOPED_TRACE(name);
   const Mesh mesh = awkwardMesh();
-  const std::string path = tempPath(name);
+  const std::string folder = test::emptyFolder("round_" + name), path = folder + "/" + name;
   writeMesh(mesh, path);
-  EXPECT_FALSE(fs::exists(path + ".tmp"));
+  EXPECT_EQ(test::filesIn(folder), std::vector<std::string>{name});  // no temporary stays
   const ReadResult result = readMesh(path);
   EXPECT_TRUE(result.notes.empty());
   EXPECT_EQ(result.mesh.triangles, mesh.triangles);
@@ -323,19 +324,20 @@ TEST(MeshIo, WriteFailuresSayCannotWriteAndLeaveNoTemporaryFile) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()).rfind(missingDir + ": cannot write", 0), 0u) << e.what();
   }
-  const std::string badExtension = tempPath("out.stl");
+  const std::string folder = test::emptyFolder("write_failures");
+  const std::string badExtension = folder + "/out.stl";
   try {
     writeMesh(awkwardMesh(), badExtension);
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()).rfind(badExtension + ": cannot write", 0), 0u) << e.what();
   }
-  EXPECT_FALSE(fs::exists(badExtension + ".tmp"));
-  // Renaming onto a directory fails after the temporary file was written: it must be removed.
-  const std::string directory = tempPath("a_directory.off");
+  EXPECT_TRUE(test::filesIn(folder).empty());
+  // Writing onto a directory is refused, leaving no temporary.
+  const std::string directory = folder + "/a_directory.off";
   fs::create_directories(directory + "/inside");
   EXPECT_THROW(writeMesh(awkwardMesh(), directory), Error);
-  EXPECT_FALSE(fs::exists(directory + ".tmp"));
+  EXPECT_EQ(test::filesIn(folder), std::vector<std::string>{"a_directory.off"});
 }
 
 // ------------------------------------------------------------------ one test per kind of error

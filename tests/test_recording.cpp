@@ -186,11 +186,11 @@ TEST(Recording, OtherVersion) {
 }
 
 TEST(Recording, SavingReplacesTheFileWholeAndLeavesNoTemporary) {
-  const std::string path = test::tempPath("replace.lsrec");
+  const std::string folder = test::emptyFolder("replace"), path = folder + "/replace.lsrec";
   test::writeText(path, "old contents");
   saveRecording(sphereCapRun().recording, path);
   EXPECT_NO_THROW(loadRecording(path));
-  EXPECT_FALSE(std::ifstream(path + ".tmp").good());
+  EXPECT_EQ(test::filesIn(folder), std::vector<std::string>{"replace.lsrec"});
 }
 
 TEST(Recording, SavingToAnUnwritablePlaceKeepsNothingHalfWritten) {

@@ -11,9 +11,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -196,6 +198,22 @@ inline Mesh sector(double degrees, const std::function<double(double, double)>& 
 // CTest runs test processes in parallel: every process gets names of its own.
 inline std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "lloydscope_" + std::to_string(getpid()) + "_" + name;
+}
+
+// A folder of this process's own, made empty: what a write leaves in it can be listed.
+inline std::string emptyFolder(const std::string& name) {
+  const std::string folder = tempPath(name);
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+// The names of the files in `folder`, sorted.
+inline std::vector<std::string> filesIn(const std::string& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 inline void writeText(const std::string& path, const std::string& text) {
