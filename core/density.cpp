@@ -142,14 +142,19 @@ Density computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
     case DensityKind::Area:
       return areaDensity(mesh, uv);
     case DensityKind::Curvature: {
+      // The density is scaled to a mean of 1 in the end, so only alpha : beta and the floor
+      // matter: alpha and beta are taken as weights of at most 1, and 1 / psi relative to its
+      // mean, so that large ones (1e200) overflow nothing (they made every density NaN).
       const Curvature c = computeCurvature(mesh);
+      const double largest = std::max(options.alpha, options.beta);
+      const double alpha = largest > 0 ? options.alpha / largest : 0, beta = largest > 0 ? options.beta / largest : 0;
       std::vector<double> inverseSize(mesh.points.size());  // 1 / psi(v)
       for (size_t v = 0; v < inverseSize.size(); ++v)
-        inverseSize[v] = options.alpha * std::abs(c.gaussian[v]) +
-                         options.beta * c.mean[v] * c.mean[v];
+        inverseSize[v] = alpha * std::abs(c.gaussian[v]) + beta * c.mean[v] * c.mean[v];
       const double mean =
           std::accumulate(inverseSize.begin(), inverseSize.end(), 0.0) / inverseSize.size();
-      for (double& d : inverseSize) d += options.floor * mean + 1e-300;
+      // (x + floor) / (1 + floor), x of mean 1: 1 / psi plus the floor times its mean, scaled.
+      for (double& d : inverseSize) d = ((mean > 0 ? d / mean : 1.0) + options.floor) / (1 + options.floor);
       Density density =
           options.curvatureTimesArea ? areaDensity(mesh, uv) : Density(mesh.triangles.size(), {1.0, 1.0, 1.0});
       for (size_t t = 0; t < density.size(); ++t)

@@ -250,6 +250,30 @@ TEST(Density, ALargerCurvatureFloorIsMoreUniform) {
   EXPECT_GT(mild, 1.5);
 }
 
+// Only alpha : beta and the floor shape the density (it is scaled to a mean of 1): weights of
+// 1e200 give what weights of 1 give, and a floor of 1e300 the area density. Both made every
+// density NaN (the run said "converged" after one iteration, 3.8 degrees).
+TEST(Density, LargeCurvatureWeightsOverflowNothing) {
+  const Mesh mesh = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  const Parameterization p = parameterize(mesh, {}, "bumpy");
+  const auto density = [&](double alpha, double beta, double floor) {
+    DensityOptions options{DensityKind::Curvature};
+    options.alpha = alpha, options.beta = beta, options.floor = floor;
+    return computeDensity(mesh, p.uv, options);
+  };
+  const Density ones = density(1, 2, 0.1), huge = density(1e200, 2e200, 0.1), flat = density(1, 1, 1e300);
+  const Density area = areaDensity(mesh, p.uv);
+  double areaMean = 0;  // the area density is not scaled: compare shapes
+  for (const auto& corners : area) areaMean += corners[0];
+  areaMean /= area.size();
+  for (size_t t = 0; t < ones.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_TRUE(std::isfinite(huge[t][k]) && std::isfinite(flat[t][k])) << t;
+      EXPECT_NEAR(huge[t][k], ones[t][k], 1e-9 * ones[t][k]) << t;
+      EXPECT_NEAR(flat[t][k] / flat[0][0], area[t][k] / area[0][0], 1e-9 * area[t][k] / area[0][0]) << t;
+    }
+}
+
 // Quadric simplification leaves slivers that LSCM flips almost for free: the mushroom's LSCM
 // folds 17 triangles. The local mean-value repair unfolds them.
 TEST(Parameterization, LscmFoldsAreRepairedLocally) {
