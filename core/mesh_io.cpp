@@ -925,19 +925,74 @@ std::vector<std::pair<int, int>> checkOrRepair(ReadResult& result, const std::st
 
 // ------------------------------------------------------------------------------ triangulation
 
+// Splits polygon v[0..n) by ear clipping in the plane of its `normal`, for a polygon no fan from
+// a corner splits (concave: an L, a C, a spiral). False where no ear is left to clip: the
+// polygon crosses itself. Quadratic or worse in n: kMostClippedCorners at most.
+constexpr size_t kMostClippedCorners = 1000;  // a 1000-gon: 0.1 s
+
+bool clipEars(const long long* v, size_t n, const std::vector<Vec3>& points, const Vec3& normal,
+              std::vector<Triangle>& out) {
+  const auto p = [&](size_t i) -> const Vec3& { return points[v[i]]; };
+  const auto turn = [&](size_t a, size_t b, size_t c) { return (p(b) - p(a)).cross(p(c) - p(a)).dot(normal); };
+  std::vector<size_t> prev(n), next(n);
+  for (size_t i = 0; i < n; ++i) prev[i] = (i + n - 1) % n, next[i] = (i + 1) % n;
+  // An ear: a convex corner whose triangle holds no other corner (on its sides included).
+  const auto isEar = [&](size_t b) {
+    const size_t a = prev[b], c = next[b];
+    if (turn(a, b, c) <= 0) return false;
+    for (size_t q = next[c]; q != a; q = next[q]) {
+      if (p(q) == p(a) || p(q) == p(b) || p(q) == p(c)) continue;
+      if (turn(a, b, q) >= 0 && turn(b, c, q) >= 0 && turn(c, a, q) >= 0) return false;
+    }
+    return true;
+  };
+  std::vector<Triangle> ears;
+  size_t b = 0, left = n, tried = 0;
+  const auto corner = [&](size_t i) { return static_cast<int>(v[i]); };
+  while (left > 3) {
+    if (!isEar(b)) {
+      b = next[b];
+      if (++tried > left) return false;
+      continue;
+    }
+    ears.push_back({corner(prev[b]), corner(b), corner(next[b])});
+    next[prev[b]] = next[b];
+    prev[next[b]] = prev[b];
+    b = prev[b];
+    --left;
+    tried = 0;
+  }
+  if (turn(prev[b], b, next[b]) <= 0) return false;
+  ears.push_back({corner(prev[b]), corner(b), corner(next[b])});
+  out.insert(out.end(), ears.begin(), ears.end());
+  return true;
+}
+
 // Splits polygon v[0..n) into a fan from the corner that makes its smallest triangle largest
 // (areas signed along the polygon's Newell normal). Any fan of a strictly convex polygon is
 // fine, but corners on a straight side need the right start; star-shaped polygons get a fan
-// from their kernel when one of their corners is in it.
-void triangulatePolygon(const long long* v, size_t n, const std::vector<Vec3>& points,
-                        std::vector<Triangle>& out) {
+// from their kernel when one of their corners is in it, other polygons are clipped ear by ear
+// (a spiral's best fan turned three triangles over, a C's had one of zero area). Returns what
+// is wrong with a polygon it cannot split ("" where it could).
+std::string triangulatePolygon(const long long* v, size_t n, const std::vector<Vec3>& points,
+                               std::vector<Triangle>& out) {
   if (n == 3) {  // keep triangles exactly as the file has them
     out.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2])});
-    return;
+    return "";
   }
   const auto p = [&](size_t i) -> const Vec3& { return points[v[i % n]]; };
-  Vec3 normal = Vec3::Zero();
-  for (size_t i = 0; i < n; ++i) normal += p(i).cross(p(i + 1));
+  Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
+  for (size_t i = 0; i < n; ++i) {
+    normal += p(i).cross(p(i + 1));
+    centre += p(i) / static_cast<double>(n);
+  }
+  // A bow tie's two halves cancel in its normal; corners all on a line span nothing (their fan
+  // is refused after reading for its zero area).
+  double spanned = 0;
+  for (size_t i = 0; i < n; ++i) spanned += (p(i) - centre).cross(p(i + 1) - centre).norm();
+  const std::string crosses = "is a polygon that crosses itself (no split of it into triangles keeps them all "
+                              "facing one way)";
+  if (spanned > 0 && normal.norm() <= 1e-12 * spanned) return crosses;
 
   // Trying every start is quadratic; huge polygons only try a few hundred evenly spaced ones.
   const size_t step = std::max<size_t>(1, n / 256);
@@ -953,10 +1008,18 @@ void triangulatePolygon(const long long* v, size_t n, const std::vector<Vec3>& p
       bestStart = s;
     }
   }
+  // Ear clipping where no fan will do; a fan with a triangle of zero area (corners on a line)
+  // is refused as such by the checks after reading.
+  if (bestSmallest <= 0 && n <= kMostClippedCorners && clipEars(v, n, points, normal, out)) return "";
+  if (bestSmallest < 0)
+    return n <= kMostClippedCorners ? crosses
+                                    : "is a concave polygon of " + str(n) + " corners, more than are split here (" +
+                                          str(kMostClippedCorners) + "): split it into triangles first";
   for (size_t i = 1; i + 1 < n; ++i) {
     out.push_back({static_cast<int>(v[bestStart]), static_cast<int>(v[(bestStart + i) % n]),
                    static_cast<int>(v[(bestStart + i + 1) % n])});
   }
+  return "";
 }
 
 // ------------------------------------------------------------------------------ file handling
@@ -1060,7 +1123,8 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
       continue;
     }
     if (n > 3) ++polygons;
-    triangulatePolygon(v, n, raw.points, result.mesh.triangles);
+    if (const std::string problem = triangulatePolygon(v, n, raw.points, result.mesh.triangles); !problem.empty())
+      fail(path, "face " + str(f + raw.base) + " " + problem);
     faceOfTriangle.resize(result.mesh.triangles.size(), f);
   }
   if (repeating > 0)

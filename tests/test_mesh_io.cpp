@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -246,6 +247,45 @@ TEST(MeshIo, ConvexPolygonWithStraightCornerGetsNoZeroAreaTriangle) {
   EXPECT_EQ(result.mesh.faceCount(), 3);
   ASSERT_EQ(result.notes.size(), 1u);
   EXPECT_EQ(result.notes[0], path + ": 1 polygon with more than 3 vertices was triangulated");
+}
+
+// A concave polygon no fan from one of its corners splits is clipped ear by ear: a spiral's
+// best fan turned three of its triangles over (their areas added to 14, not 10), a C's had one
+// of zero area ("face 1 has zero area"). A polygon that crosses itself is refused by name.
+TEST(MeshIo, AConcavePolygonIsSplitIntoTrianglesAllFacingOneWay) {
+  const auto splitArea = [](const Mesh& m) {
+    double signedArea = 0, unsignedArea = 0;
+    for (const Triangle& t : m.triangles) {
+      const double z = (m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]).z() / 2;
+      signedArea += z;
+      unsignedArea += std::abs(z);
+    }
+    EXPECT_NEAR(signedArea, unsignedArea, 1e-12);  // all facing one way
+    return signedArea;
+  };
+  const std::string spiral = writeFile(
+      "spiral.obj", "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 1 4 0\nv 1 2 0\nv 2 2 0\nv 2 3 0\nv 3 3 0\nv 3 1 0\nv 0 1 0\n"
+                    "f 1 2 3 4 5 6 7 8 9 10\n");
+  const Mesh spiralMesh = readMesh(spiral).mesh;
+  EXPECT_EQ(spiralMesh.faceCount(), 8);
+  EXPECT_NEAR(splitArea(spiralMesh), 10, 1e-12);
+  const std::string c = writeFile("c.obj", "v 0 0 0\nv 3 0 0\nv 3 1 0\nv 1 1 0\nv 1 2 0\nv 3 2 0\nv 3 3 0\nv 0 3 0\n"
+                                           "f 1 2 3 4 5 6 7 8\n");
+  EXPECT_NEAR(splitArea(readMesh(c).mesh), 7, 1e-12);
+  expectFileError("bowtie.obj", "v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n",
+                  "face 1 is a polygon that crosses itself");
+  expectFileError("crossing.obj", "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 1 4 0\nv 3 -1 0\nf 1 2 3 4 5\n",
+                  "face 1 is a polygon that crosses itself");
+  // A concave polygon past what is clipped here: refused, not split into faces turned over.
+  std::string star;
+  const int corners = 1002;
+  for (int i = 0; i < corners; ++i) {
+    const double angle = 2 * M_PI * i / corners, radius = i % 2 ? 1.5 : 1.0;
+    star += "v " + std::to_string(radius * std::cos(angle)) + " " + std::to_string(radius * std::sin(angle)) + " 0\n";
+  }
+  star += "f";
+  for (int i = 1; i <= corners; ++i) star += " " + std::to_string(i);
+  expectFileError("star.obj", star + "\n", "face 1 is a concave polygon of 1002 corners, more than are split here (1000)");
 }
 
 TEST(MeshIo, ReadsAsciiPlyWithExtraPropertiesAndElements) {
