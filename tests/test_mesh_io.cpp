@@ -492,6 +492,12 @@ TEST(MeshIoErrors, NonFiniteCoordinate) {
   // Finite, but their squares are not ("face 0 has zero area", before).
   expectFileError("huge.off", "OFF\n3 1 0\n0 0 0\n1e308 0 0\n0 -1e308 0\n3 0 1 2\n",
                   "vertex 1 has a coordinate of 1e+308, too large to measure in double precision (lengths overflow past 1e+150)");
+  // Nor those of a mesh so small that its lengths to the fourth underflow ("face 0 has zero
+  // area", before); one merely small is read.
+  expectFileError("tiny.off", "OFF\n3 1 0\n0 0 0\n1e-100 0 0\n0 1e-100 0\n3 0 1 2\n",
+                  "the mesh is 1.41421e-100 across (its bounding box's diagonal), too small to measure in double "
+                  "precision (lengths to the fourth underflow under 1e-75); scale it up");
+  EXPECT_EQ(readMesh(writeFile("small.off", "OFF\n3 1 0\n0 0 0\n1e-70 0 0\n0 1e-70 0\n3 0 1 2\n")).mesh.faceCount(), 1);
 }
 
 TEST(MeshIoErrors, FaceIndexOutOfRange) {
