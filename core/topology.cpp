@@ -106,9 +106,9 @@ std::string Topology::describe() const {
   if (components == 0) return "an empty mesh";
   if (components > 1) return std::to_string(components) + " connected components";
   const int loops = static_cast<int>(boundaryLoops.size());
-  if (loops == 0) return "closed surface of genus " + std::to_string(genus);
+  if (loops == 0) return "a closed surface of genus " + std::to_string(genus);
   if (loops == 1 && genus == 0) return "a topological disk";
-  return "genus " + std::to_string(genus) + " surface with " + plural(loops, "boundary loop", "boundary loops");
+  return "a genus " + std::to_string(genus) + " surface with " + plural(loops, "boundary loop", "boundary loops");
 }
 
 Topology analyzeTopology(const Mesh& mesh) {
@@ -162,12 +162,9 @@ std::vector<Mesh> splitComponents(const Mesh& mesh) {
 void requireDisk(const Mesh& mesh, const std::string& name) {
   const Topology topology = analyzeTopology(mesh);
   if (topology.isDisk()) return;
-  // describe() gives "closed surface of genus 1", "2 connected components", "an empty mesh" ...
-  std::string what;
-  if (topology.components == 0) what = "it is " + topology.describe();
-  else if (topology.components > 1) what = "it has " + topology.describe();
-  else what = "it is a " + topology.describe();
-  throw Error(name + ": not a topological disk: " + what);
+  // describe() gives "a closed surface of genus 1", "2 connected components", "an empty mesh" ...
+  throw Error(name + ": not a topological disk: " + (topology.components > 1 ? "it has " : "it is ") +
+              topology.describe());
 }
 
 }  // namespace lloydscope

@@ -110,7 +110,7 @@ TEST(Topology, TetrahedronIsClosedGenusZero) {
   EXPECT_EQ(t.genus, 0);
   EXPECT_TRUE(t.boundaryLoops.empty());
   EXPECT_FALSE(t.isDisk());
-  EXPECT_EQ(t.describe(), "closed surface of genus 0");
+  EXPECT_EQ(t.describe(), "a closed surface of genus 0");
   EXPECT_EQ(requireDiskError(mesh, "tet.off"), "tet.off: not a topological disk: it is a closed surface of genus 0");
 }
 
@@ -126,7 +126,7 @@ TEST(Topology, SquareAnnulusHasTwoBoundaryLoops) {
   std::sort(sizes.begin(), sizes.end());
   EXPECT_EQ(sizes, (std::vector<size_t>{4, 12}));
   EXPECT_FALSE(t.isDisk());
-  EXPECT_EQ(t.describe(), "genus 0 surface with 2 boundary loops");
+  EXPECT_EQ(t.describe(), "a genus 0 surface with 2 boundary loops");
   EXPECT_EQ(requireDiskError(mesh, "annulus.obj"),
             "annulus.obj: not a topological disk: it is a genus 0 surface with 2 boundary loops");
 }
@@ -185,7 +185,7 @@ TEST(Topology, TorusIsClosedGenusOne) {
   EXPECT_EQ(t.eulerCharacteristic, 16 - 48 + 32);
   EXPECT_EQ(t.genus, 1);
   EXPECT_TRUE(t.boundaryLoops.empty());
-  EXPECT_EQ(t.describe(), "closed surface of genus 1");
+  EXPECT_EQ(t.describe(), "a closed surface of genus 1");
   EXPECT_EQ(requireDiskError(mesh, "torus.off"), "torus.off: not a topological disk: it is a closed surface of genus 1");
 }
 
@@ -197,7 +197,7 @@ TEST(Topology, TorusWithAHoleKeepsItsGenus) {
   EXPECT_EQ(t.genus, 1);
   ASSERT_EQ(t.boundaryLoops.size(), 1u);
   EXPECT_EQ(t.boundaryLoops[0].size(), 4u);
-  EXPECT_EQ(t.describe(), "genus 1 surface with 1 boundary loop");
+  EXPECT_EQ(t.describe(), "a genus 1 surface with 1 boundary loop");
 }
 
 TEST(Topology, EmptyMesh) {
