@@ -888,10 +888,11 @@ std::vector<std::pair<int, int>> checkSurface(const Mesh& mesh, const std::strin
 
 // ------------------------------------------------------------------------------------- repair
 
-// Repairs result.mesh, notes what changed, and numbers from 0 what it renumbered.
-void repairInto(ReadResult& result, const std::string& path, Numbering& numbering) {
+// Repairs result.mesh, notes what changed, and numbers from 0 what it renumbered. Returns
+// whether it changed the mesh.
+bool repairInto(ReadResult& result, const std::string& path, Numbering& numbering) {
   RepairResult repaired = repairMesh(result.mesh);
-  if (!repaired.changed()) return;
+  if (!repaired.changed()) return false;
   std::vector<std::string> changes;
   const int welded = repaired.weldedVertices;
   if (welded > 0) changes.push_back(plural(welded, "vertex", "vertices") + " welded to another at the same position");
@@ -908,6 +909,7 @@ void repairInto(ReadResult& result, const std::string& path, Numbering& numberin
   result.notes.push_back(note);
   result.mesh = std::move(repaired.mesh);
   numbering = Numbering{};  // the file's numbers no longer apply
+  return true;
 }
 
 // checkSurface() on what was read. What it refuses is repaired if `repair` asks, checked again
@@ -918,11 +920,14 @@ std::vector<std::pair<int, int>> checkOrRepair(ReadResult& result, const std::st
     return checkSurface(result.mesh, path, numbering);
   } catch (const Error& e) {
     if (repair) {
-      repairInto(result, path, numbering);
+      const bool renumbered = repairInto(result, path, numbering);
       try {
         return checkSurface(result.mesh, path, numbering);
       } catch (const Error& left) {
-        throw Error(std::string(left.what()) + " (left after the repair)");
+        // A vertex the repair split (a Moebius strip's) has a number the file does not.
+        throw Error(std::string(left.what()) + " (left after the repair" +
+                    (renumbered && !result.mesh.triangles.empty() ? ", which numbered the vertices and faces anew, from 0)"
+                                                                  : ")"));
       }
     }
     try {

@@ -609,6 +609,27 @@ TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
     EXPECT_NE(std::string(e.what()).find("same position on a border (an unwelded seam or a crack) (left after the repair)"),
               std::string::npos) << e.what();
   }
+  // A Moebius strip: the repair turns its faces one way by splitting two vertices, whose copies
+  // have numbers the file does not (it said "vertices 2 and 12" of a file of 12).
+  std::string moebius = "OFF\n12 12 0\n";
+  for (int i = 0; i < 6; ++i)
+    for (double w : {0.3, -0.3}) {
+      const double u = 2 * M_PI * i / 6, r = 1 + w * std::cos(u / 2);
+      moebius += std::to_string(r * std::cos(u)) + " " + std::to_string(r * std::sin(u)) + " " +
+                 std::to_string(w * std::sin(u / 2)) + "\n";
+    }
+  for (int i = 0; i < 6; ++i) {
+    const int t = 2 * i, b = 2 * i + 1, nextT = i < 5 ? t + 2 : 1, nextB = i < 5 ? b + 2 : 0;  // the twist
+    moebius += "3 " + std::to_string(t) + " " + std::to_string(b) + " " + std::to_string(nextB) + "\n3 " +
+               std::to_string(t) + " " + std::to_string(nextB) + " " + std::to_string(nextT) + "\n";
+  }
+  try {
+    readMesh(writeFile("moebius.off", moebius), ReadOptions{true});
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("(left after the repair, which numbered the vertices and faces anew, from 0)"),
+              std::string::npos) << e.what();
+  }
 }
 
 // A mesh whose faces all have zero area leaves nothing to repair into: refused as it is read,
