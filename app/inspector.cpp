@@ -365,6 +365,10 @@ void Inspector::pinTriangle(int triangle) {
     selection_.toggleTriangle(triangle);
 }
 
+void Inspector::pinWorstTriangle() {
+  if (const int worst = worstTriangle(replay_->view(iteration_).output); worst >= 0) pinTriangle(worst);
+}
+
 void Inspector::pick2D(const Vec2& uv) {
   const IterationView& view = replay_->view(iteration_);
   if (pickTriangles2D_) selection_.toggleTriangle(triangleAtUV(view, uv));
@@ -453,6 +457,7 @@ void OpeningView::applyTo(Inspector& inspector) const {
   if (fill) inspector.setFill(*fill);
   for (int cell : cells) inspector.pinCell(cell);
   for (int triangle : triangles) inspector.pinTriangle(triangle);
+  if (worstTriangle) inspector.pinWorstTriangle();
   if (!camera.empty()) inspector.setCamera(camera);
   inspector.setPresentation(presentation);
   inspector.showStage(stage);
@@ -825,6 +830,9 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     ImGui::SameLine();
     ImGui::RadioButton("triangle", &pick, 1);
     pickTriangles2D_ = pick == 1;
+    if (ImGui::Button("Pin the worst triangle")) pinWorstTriangle();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The triangle with the smallest angle in this iteration's result (--select-worst)");
     selection_.detailsPanel(replay_->recording(), replay_->domain(), replay_->view(iteration_));
   }
   ImGui::Separator();

@@ -60,6 +60,7 @@ struct ExportRequest {
 struct OpeningView {
   int iteration = -1;                 // -1: the last
   std::vector<int> cells, triangles;  // pinned
+  bool worstTriangle = false;         // pin the triangle with the smallest angle too
   std::string camera;                 // "yaw pitch distance x y z"; empty: fit to the mesh
   bool presentation = false;          // classroom mode
   std::optional<Stage> stage;         // show this stage of the lesson, with its caption
@@ -110,6 +111,7 @@ class Inspector {
   // there is no such one.
   void pinCell(int cell);
   void pinTriangle(int triangle);
+  void pinWorstTriangle();  // of the result at the current iteration
   // The 3D camera as one line of text ("yaw pitch distance x y z"), to save and restore a view.
   std::string cameraText() const;
   void setCamera(const std::string& text);  // throws Error on a malformed line

@@ -308,6 +308,8 @@ int main(int argc, char** argv) {
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
                          "Pin this triangle of the result (repeatable)")
       ->check(wholeNumber(0));
+  inspectCmd->add_flag("--select-worst", shot.view.worstTriangle,
+                       "Pin the triangle with the smallest angle in the result at the iteration shown");
   std::string fill;
   inspectCmd->add_option("--fill", fill,
                          "What colours the 2D cells: none, mass, area, energy, distance (site to "

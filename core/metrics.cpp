@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <thread>
 
@@ -26,6 +27,17 @@ double smallestAngleDeg(const Vec3& a, const Vec3& b, const Vec3& c) {
   if (bc <= ab && bc <= ca) return angleDeg(a, b, c);
   if (ca <= ab) return angleDeg(b, c, a);
   return angleDeg(c, a, b);
+}
+
+int worstTriangle(const Mesh& mesh) {
+  int worst = -1;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < mesh.faceCount(); ++t) {
+    const Triangle& f = mesh.triangles[t];
+    const double angle = smallestAngleDeg(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]);
+    if (angle < smallest) smallest = angle, worst = t;
+  }
+  return worst;
 }
 
 QualityMetrics measureQuality(const Mesh& mesh) {

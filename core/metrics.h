@@ -46,4 +46,8 @@ std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& 
 // millions of triangles (10-15% of their time at 1000 vertices).
 double smallestAngleDeg(const Vec3& a, const Vec3& b, const Vec3& c);
 
+// The triangle with the smallest angle of the mesh (the first of equals), -1 for none: the one
+// to look at first when a result is worse than it should be.
+int worstTriangle(const Mesh& mesh);
+
 }  // namespace lloydscope

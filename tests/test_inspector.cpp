@@ -370,6 +370,25 @@ TEST(Inspector, TheFinalResultShowsWhereItStraysFarthest) {
   EXPECT_GT(redIn3D(readPng(final)), 20);
 }
 
+// --select-worst (the button "Pin the worst triangle") pins the triangle with the smallest angle
+// at the iteration shown: its details, in the pin's teal, fill the selection section.
+TEST(Inspector, PinsTheWorstTriangle) {
+  const auto teal = [](const std::string& args, const std::string& name) {
+    const std::string png = test::tempPath(name);
+    EXPECT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --iteration 0 " + args, png), 0);
+    const Picture p = readPng(png);
+    int count = 0;
+    for (int y = 0; y < p.height; ++y)
+      for (int x = 0; x < 270; ++x) {
+        const unsigned char* c = p.at(x, y);
+        count += c[0] < 40 && std::abs(c[1] - 140) < 30 && std::abs(c[2] - 115) < 30;
+      }
+    return count;
+  };
+  EXPECT_EQ(teal("", "no_worst.png"), 0);
+  EXPECT_GT(teal("--select-worst", "worst.png"), 20);
+}
+
 // The pixels of the notes' text colour, brown, in the left pane above the selection's controls
 // of a 960x600 picture of `mesh`.
 int brownNotePixels(const std::string& mesh, const std::string& png) {

@@ -77,6 +77,22 @@ TEST(Quality, TheSmallestAngleIsOppositeTheShortestEdge) {
   }
 }
 
+// The triangle to look at first: the one with the smallest angle, wherever it is.
+TEST(Quality, TheWorstTriangleIsTheOneWithTheSmallestAngle) {
+  Mesh m = test::grid(6);
+  EXPECT_EQ(worstTriangle(Mesh{}), -1);
+  const int sliver = 17;
+  m.points[m.triangles[sliver][0]] += 0.9 * (m.points[m.triangles[sliver][1]] - m.points[m.triangles[sliver][0]]);
+  const int worst = worstTriangle(m);
+  ASSERT_GE(worst, 0);
+  const auto smallest = [&](int t) {
+    const Triangle& f = m.triangles[t];
+    return smallestAngleDeg(m.points[f[0]], m.points[f[1]], m.points[f[2]]);
+  };
+  for (int t = 0; t < m.faceCount(); ++t) EXPECT_LE(smallest(worst), smallest(t)) << t;
+  EXPECT_NEAR(smallest(worst), measureQuality(m).minAngle, 1e-9);
+}
+
 TEST(Fidelity, IdenticalSurfacesAreAtDistanceZero) {
   const Fidelity f = measureFidelity(test::grid(4), test::grid(4));
   EXPECT_NEAR(f.hausdorffPercent, 0.0, 1e-12);
