@@ -2,12 +2,14 @@
 
 #include "mesh.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -41,21 +43,24 @@ void requireNotAFolder(const std::string& path) {
   if (std::filesystem::is_directory(path, ignored)) throw Error(path + ": cannot write: it is a folder");
 }
 
-// A new empty file beside `target`, of a name no other writer takes (mkstemp): a fixed
+// A new empty file beside `target`, of a name no other writer takes (made with O_EXCL): a fixed
 // "<path>.tmp" deleted a user's file of that name, two runs writing one output shared it, and
 // with a name near the system's limit it was too long. It gets the target's permissions, or
-// those a new file gets (mkstemp's are private).
+// those any new file gets (the umask's).
 std::string makeTemporary(const std::string& path, const std::filesystem::path& target) {
   const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-  std::string name = (folder / ".lloydscope-XXXXXX").string();
-  const int fd = mkstemp(name.data());
-  if (fd < 0) cannotMake(path, folder);
-  struct stat existing;
-  const mode_t mask = umask(0);
-  umask(mask);
-  fchmod(fd, stat(target.c_str(), &existing) == 0 ? existing.st_mode & 07777 : 0666 & ~mask);
-  close(fd);
-  return name;
+  static std::atomic<unsigned> made{0};
+  for (;;) {
+    const std::string name =
+        (folder / (".lloydscope-" + std::to_string(getpid()) + "-" + std::to_string(made++))).string();
+    const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);
+    if (fd < 0 && errno == EEXIST) continue;  // another's, left by a run that was killed
+    if (fd < 0) cannotMake(path, folder);
+    struct stat existing;
+    if (stat(target.c_str(), &existing) == 0) fchmod(fd, existing.st_mode & 07777);
+    close(fd);
+    return name;
+  }
 }
 
 }  // namespace

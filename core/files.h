@@ -10,7 +10,7 @@
 
 namespace lloydscope {
 
-// Writes `path` through a temporary of its own beside it (".lloydscope-XXXXXX"), renamed onto
+// Writes `path` through a temporary of its own beside it (".lloydscope-<pid>-<n>"), renamed onto
 // it once complete: a file already there is replaced whole or not at all, keeping its
 // permissions; a link is written through, to its target. `write` fills the stream (binary).
 // Throws Error("<path>: cannot write ...") saying why.
