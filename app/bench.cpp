@@ -63,11 +63,20 @@ Row isotropicRow(const std::string& model, int size, const Mesh& input) {
   return row;
 }
 
-// A free-text CSV field: quoted, inner quotes doubled.
+// A CSV field: quoted where it holds a comma, a quote or a line break (a model's file name may),
+// inner quotes doubled.
 std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
+}
+
+// A markdown table cell: '|' escaped, line breaks made spaces (a model's file name may hold them).
+std::string cell(const std::string& text) {
+  std::string escaped;
+  for (char c : text) escaped += c == '|' ? std::string("\\|") : c == '\n' || c == '\r' ? std::string(" ") : std::string(1, c);
+  return escaped;
 }
 
 std::string name(const std::string& path) {
@@ -81,7 +90,7 @@ double milliseconds(std::chrono::steady_clock::time_point since) {
 
 // The defaults' row of the stage table: the input's size, the time of each stage, CGAL's.
 std::string stageTimesRow(const Row& row, const Row& peer) {
-  std::string line = "| " + row.model + " | " + std::to_string(row.size) + " | " + std::to_string(row.before.vertices) +
+  std::string line = "| " + cell(row.model) + " | " + std::to_string(row.size) + " | " + std::to_string(row.before.vertices) +
                      " | " + std::to_string(row.before.faces) + " | ";
   if (!row.failed.empty()) {  // the stages' and the total's cells left empty
     line += "failed |";
@@ -151,6 +160,21 @@ void runBench(const BenchOptions& options) {
   for (const std::string& path : models)
     if (sameFile(options.csv, path)) throw Error(options.csv + ": --csv would replace the input mesh; give it another name");
   if (!options.saveInputs.empty()) makeFolder(options.saveInputs);
+  const auto savedInput = [&](const std::string& path, int size) {
+    return options.saveInputs + "/" + name(path) + "_" + std::to_string(size) + ".off";
+  };
+  // A prepared input saved onto a model of the run (a_30.off, saving a.off at 30), or two models
+  // of one name saved onto each other: refused before any work.
+  if (!options.saveInputs.empty())
+    for (const std::string& path : models)
+      for (int size : options.sizes)
+        for (const std::string& other : models) {
+          const std::string saved = savedInput(path, size);
+          if (sameFile(saved, other))
+            throw Error(saved + ": --save-inputs would replace the input mesh " + other + "; save them elsewhere");
+          if (other != path && name(other) == name(path))
+            throw Error(path + " and " + other + ": --save-inputs would save both as " + saved + "; rename one");
+        }
   std::vector<Mesh> meshes;
   for (const std::string& path : models) {
     ReadResult read = readMesh(path, ReadOptions{options.repair});
@@ -166,7 +190,7 @@ void runBench(const BenchOptions& options) {
     for (int size : options.sizes) {
       const Mesh input = options.asIs ? model : benchInput(model, size, path);
       if (!options.saveInputs.empty())
-        writeMesh(input, options.saveInputs + "/" + name(path) + "_" + std::to_string(size) + ".off");
+        writeMesh(input, savedInput(path, size));
       const Row peer = isotropicRow(name(path), size, input);
       RemeshOptions defaults;  // a prepared input has the size already
       if (options.asIs) defaults.sites.count = size;
@@ -175,7 +199,7 @@ void runBench(const BenchOptions& options) {
       for (const auto& [flags, variant] : variants(defaults, options))
         rows.push_back(lloydscopeRow(name(path), size, "lloydscope " + flags, input, variant));
       rows.push_back(peer);
-      verdicts << "| " << name(path) << " | " << size << " | "
+      verdicts << "| " << cell(name(path)) << " | " << size << " | "
                << (best.failed.empty() ? format("%.2f", best.milliseconds / peer.milliseconds) : "-")
                << " | "
                << verdict(best, peer) << " |\n";
@@ -189,10 +213,10 @@ void runBench(const BenchOptions& options) {
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
     if (!r.failed.empty())
-      std::cout << "| " << r.model << " | " << r.size << " | " << r.method << " | failed: "
-                << r.failed << " |||||||||\n";
+      std::cout << "| " << cell(r.model) << " | " << r.size << " | " << r.method << " | failed: "
+                << cell(r.failed) << " |||||||||\n";
     else
-      std::cout << "| " << r.model << " | " << r.size << " | " << r.method << " | "
+      std::cout << "| " << cell(r.model) << " | " << r.size << " | " << r.method << " | "
               << r.after.vertices << " | " << r.after.faces << " | " << r.iterations << " | "
               << format("%.0f", r.milliseconds) << " | "
               << format("%.1f", r.before.irregularBoundaryAware) << " -> "
@@ -223,7 +247,7 @@ void runBench(const BenchOptions& options) {
          "avg_min_angle_after,under30_percent,hausdorff_percent,rms_percent,ms_simplify,ms_cut,ms_resample,"
          "ms_parameterize,ms_density,ms_sites,ms_lloyd,ms_remesh,ms_other_way,failed\n";
   for (const Row& r : rows)
-    csv << r.model << "," << r.size << "," << r.method << "," << r.after.vertices << ","
+    csv << csvField(r.model) << "," << r.size << "," << r.method << "," << r.after.vertices << ","
         << r.after.faces << "," << r.before.vertices << "," << r.before.faces << "," << r.iterations << ","
         << r.milliseconds << ","
         << r.before.irregularBoundaryAware << "," << r.after.irregularBoundaryAware << ","
@@ -245,9 +269,12 @@ void runStepBench(const BenchOptions& options) {
   const std::string path = options.models.empty()
                                ? std::string(LLOYDSCOPE_SOURCE_DIR) + "/assets/bumpy_disk.off"
                                : options.models.front();
-  const Mesh input = readMesh(path).mesh;
-  const std::string file = options.csv + ".lsrec";  // what recording every iteration costs
-  requireWritable(file);
+  ReadResult read = readMesh(path, ReadOptions{options.repair});
+  for (const std::string& note : read.notes) std::cerr << "note: " << note << "\n";
+  const Mesh input = std::move(read.mesh);
+  // What recording every iteration costs, in a file of its own: "<csv>.lsrec" replaced and then
+  // deleted a user's file of that name (or wrote through a link of that name).
+  const std::string file = newTemporaryFile(".lsrec");
   Recording recording;
   std::cout << "| sites | density | threads | median ms per iteration | µs per site, median | "
                "µs per site, best |\n|---|---|---|---|---|---|\n";

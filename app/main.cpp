@@ -79,6 +79,17 @@ void refuseSameFile(const RemeshArgs& a) {
   if (sameFile(a.record, a.output)) throw Error(a.record + ": --record and --output name the same file; give them two");
 }
 
+// An error as it is printed: one line, a line break in a file name or a value shown as \n.
+std::string oneLine(const std::string& message) {
+  std::string line;
+  for (char c : message) line += c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
+  return line;
+}
+
+// JSON as the commands print it; bytes of a file name that are not UTF-8 become U+FFFD (they
+// made dump() throw, an "internal error" after the run's files were written).
+std::string printable(const nlohmann::json& j) { return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace); }
+
 Mesh load(const std::string& path, bool repair) {
   ReadResult read = readMesh(path, ReadOptions{repair});
   for (const std::string& note : read.notes) std::cerr << "note: " << note << "\n";
@@ -96,7 +107,7 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   if (!a.output.empty()) writeMesh(result.output, a.output);
   if (!a.record.empty()) saveRecording(result.recording, a.record);
   if (a.json)
-    std::cout << toJson(result, options).dump(2) << "\n";
+    std::cout << printable(toJson(result, options)) << "\n";
   else
     std::cout << remeshReport(result, options);
   return 0;
@@ -140,6 +151,10 @@ CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) 
       bounded ? std::to_string(low) + ".." + std::to_string(high) : ">= " + std::to_string(low));
 }
 const CLI::Validator kPositiveCount = wholeNumber(1);
+constexpr int kMostIterations = 100000;
+// A file to write: `-o ''` (an unset variable) was taken as no file, and the run wrote nothing.
+const CLI::Validator kFileName(
+    [](std::string& text) -> std::string { return text.empty() ? "expected a file name, not an empty one" : ""; }, "FILE");
 // The vertices a run is asked for (core/sites); the most relaxation passes it polishes with
 // (the default is 3) and frames bench-frames times: more is a slip of the keyboard that would
 // run for hours.
@@ -181,8 +196,10 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
+  // Every iteration is recorded: a run that never converges (--distance-threshold 1e-300) grew
+  // by 30 MB a second up to its limit (2147483647 was taken).
   cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
-      ->check(kPositiveCount);
+      ->check(wholeNumber(1, kMostIterations));
   cmd.add_option("--distance-threshold", r.distanceThreshold,
                  "a site farther than this from its centroid (a fraction of the domain's size) is still "
                  "moving (default 1e-6)")
@@ -247,14 +264,17 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
     result.recording = loadRecording(in);
     try {
       options = optionsFromSettings(result.recording.settings);
+      // Older recordings: as asked. The input's own map (where no other held) is no method to ask for.
+      const std::string used = settingValue(result.recording.settings, "param-used");
+      result.paramUsed = used.empty()                                ? options.param.method
+                         : used == toString(ParamMethod::Given) ? ParamMethod::Given
+                                                                     : parseParamMethod(used);
     } catch (const Error& e) {
       throw Error(in + ": damaged recording (" + e.what() + ")");
     }
     result.before = measureQuality(result.recording.input);
     result.iterations = static_cast<int>(result.recording.iterations.size());
     result.converged = result.recording.converged();
-    const std::string used = settingValue(result.recording.settings, "param-used");
-    result.paramUsed = used.empty() ? options.param.method : parseParamMethod(used);  // older recordings: as asked
     return result;
   }
   Mesh mesh = load(in, a.repair);
@@ -281,8 +301,8 @@ int main(int argc, char** argv) {
   RemeshArgs r;
   CLI::App* remeshCmd = app.add_subcommand("remesh", "Remesh a disk-topology triangle mesh");
   remeshCmd->add_option("input", r.input, "Input mesh (OFF, OBJ or PLY)")->required();
-  remeshCmd->add_option("-o,--output", r.output, "Output mesh (OFF, OBJ or PLY)");
-  remeshCmd->add_option("--record", r.record, "Save every Lloyd iteration to this file");
+  remeshCmd->add_option("-o,--output", r.output, "Output mesh (OFF, OBJ or PLY)")->check(kFileName);
+  remeshCmd->add_option("--record", r.record, "Save every Lloyd iteration to this file")->check(kFileName);
   remeshCmd->add_flag("--json", r.json, "Print the results as one JSON object");
   addRemeshOptions(*remeshCmd, r);
 
@@ -294,7 +314,7 @@ int main(int argc, char** argv) {
                  "headless to a PNG and exit");
   inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (remesh --record, .lsrec)")
       ->required();
-  inspectCmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit");
+  inspectCmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);
   std::string pane = "window", iterations;
   inspectCmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots");
   inspectCmd->add_option("--iterations", iterations,
@@ -352,7 +372,7 @@ int main(int argc, char** argv) {
                            "Meshes (default: CGAL's disk samples in data/cgal)");
   peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)")
       ->check(kVerticesAsked);
-  peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)");
+  peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)")->check(kFileName);
   peerBenchCmd->add_option("--save-inputs", benchOptions.saveInputs,
                            "Also write each prepared input to DIR/<model>_<size>.off");
   peerBenchCmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
@@ -369,7 +389,7 @@ int main(int argc, char** argv) {
   CLI::App* simplifyCmd = app.add_subcommand(
       "simplify", "Quadric edge collapse (Garland-Heckbert) to a target size, boundary in place");
   simplifyCmd->add_option("input", simplifyIn, "Mesh (OFF, OBJ, PLY)")->required();
-  simplifyCmd->add_option("-o,--output", simplifyOut, "Where to write the result")->required();
+  simplifyCmd->add_option("-o,--output", simplifyOut, "Where to write the result")->required()->check(kFileName);
   auto* target = simplifyCmd->add_option_group("target", "one of");
   target->add_option("--vertices", simplifyTarget.vertices, "Target number of vertices")->check(kPositiveCount);
   target->add_option("--faces", simplifyTarget.faces, "Target number of faces")->check(kPositiveCount);
@@ -400,7 +420,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-    std::cerr << "lloydscope: " << e.what() << " (--help lists the options)\n";
+    std::cerr << "lloydscope: " << oneLine(e.what()) << " (--help lists the options)\n";
     return 1;
   }
   if (app.get_subcommands().empty()) {  // plain `lloydscope`: the inspector on the default mesh
@@ -412,7 +432,7 @@ int main(int argc, char** argv) {
       RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
       return runWindow(ir.input, options, std::move(result), false, std::move(input));
     } catch (const std::exception& e) {
-      std::cerr << "lloydscope: " << e.what() << "\n";
+      std::cerr << "lloydscope: " << oneLine(e.what()) << "\n";
       return 1;
     }
   }
@@ -449,7 +469,7 @@ int main(int argc, char** argv) {
         long long first = 0, last = 0;
         char rest;
         if (std::sscanf(iterations.c_str(), "%lld:%lld%c", &first, &last, &rest) != 2 || first < 0 ||
-            last > std::numeric_limits<int>::max())  // 0:4294967296 wrapped to 0:0
+            first > std::numeric_limits<int>::max() || last > std::numeric_limits<int>::max())  // 0:4294967296 wrapped to 0:0
           throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
         shot.picture.first = static_cast<int>(first);
         shot.picture.last = static_cast<int>(last);
@@ -497,7 +517,7 @@ int main(int argc, char** argv) {
       if (metricsJson) {
         nlohmann::json j = toJson(quality);
         if (withReference) j["fidelity"] = toJson(fidelity);
-        std::cout << j.dump(2) << "\n";
+        std::cout << printable(j) << "\n";
       } else {
         std::cout << metricsReport(quality, withReference ? &fidelity : nullptr);
       }
@@ -506,22 +526,22 @@ int main(int argc, char** argv) {
     if (infoCmd->parsed()) {
       const Recording recording = loadRecording(recordingPath);
       if (infoJson)
-        std::cout << recordingSummary(recording).dump(2) << "\n";
+        std::cout << printable(recordingSummary(recording)) << "\n";
       else
         std::cout << recordingReport(recording);
       return 0;
     }
   } catch (const Error& e) {
-    std::cerr << "lloydscope: " << e.what() << "\n";
+    std::cerr << "lloydscope: " << oneLine(e.what()) << "\n";
     return 1;
   } catch (const gpu::GpuError& e) {
-    std::cerr << "lloydscope: " << e.what() << "\n";
+    std::cerr << "lloydscope: " << oneLine(e.what()) << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "lloydscope: out of memory: fewer vertices asked, or a smaller input, need less\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "lloydscope: internal error: " << e.what() << "\n";
+    std::cerr << "lloydscope: internal error: " << oneLine(e.what()) << "\n";
     return 2;
   }
   return 0;

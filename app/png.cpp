@@ -3,6 +3,7 @@
 #include "files.h"
 #include "mesh.h"
 
+#include <cctype>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -39,7 +40,9 @@ void writePng(const std::string& path, const unsigned char* pixels, int width, i
 }
 
 void requirePngPath(const std::string& path) {
-  if (path.size() < 5 || path.compare(path.size() - 4, 4, ".png") != 0)
+  std::string ending = path.size() < 5 ? "" : path.substr(path.size() - 4);  // .png, .PNG as mesh names take either
+  for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ending != ".png")
     throw Error(path + ": exports are PNG files (end the name with .png)");
   requireWritable(path);
 }

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -38,10 +39,55 @@ std::filesystem::path targetOf(const std::string& path) {
   throw Error(path + ": cannot write in " + folder.string() + " (" + reason + ")");
 }
 
-void requireNotAFolder(const std::string& path) {
+// A folder, no name or one longer than a file name may be: refused before any run (a long
+// name failed only at the end, after the minutes of work it was to save).
+void requireFileName(const std::string& path) {
+  if (path.empty()) throw Error("cannot write a file of no name (an empty name was given)");
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) throw Error(path + ": cannot write: it is a folder");
+  const std::string name = std::filesystem::path(path).filename().string();
+  const long longest = pathconf(std::filesystem::path(path).has_parent_path()
+                                    ? std::filesystem::path(path).parent_path().c_str() : ".", _PC_NAME_MAX);
+  if (longest > 0 && static_cast<long>(name.size()) > longest)
+    throw Error(path + ": cannot write: its name is " + std::to_string(name.size()) +
+                " bytes long, more than a file name may be here (" + std::to_string(longest) + ")");
 }
+
+// A device, a pipe or a socket (or a link to one: /dev/null, /dev/stdout) is written into as it
+// is: renaming a temporary onto it replaced it with a plain file (as root, /dev/null itself).
+bool isSpecialFile(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);  // through links
+  return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+         !std::filesystem::is_directory(status);
+}
+
+// The temporary being written, removed if the run is interrupted (Ctrl+C, kill) before it is
+// renamed: one slot, as the program writes one file at a time.
+char inFlight[4096];
+volatile std::sig_atomic_t haveInFlight = 0;
+
+extern "C" void removeInFlightAndDie(int signal) {
+  if (haveInFlight) unlink(inFlight);
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+class InFlight {
+ public:
+  explicit InFlight(const std::string& temporary) {
+    static const bool installed = [] {
+      for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, removeInFlightAndDie);
+      return true;
+    }();
+    (void)installed;
+    if (temporary.size() < sizeof inFlight) {
+      std::memcpy(inFlight, temporary.c_str(), temporary.size() + 1);
+      haveInFlight = 1;
+    }
+  }
+  ~InFlight() { haveInFlight = 0; }
+};
 
 // A new empty file beside `target`, of a name no other writer takes (made with O_EXCL): a fixed
 // "<path>.tmp" deleted a user's file of that name, two runs writing one output shared it, and
@@ -66,9 +112,17 @@ std::string makeTemporary(const std::string& path, const std::filesystem::path& 
 }  // namespace
 
 void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  requireNotAFolder(path);
+  requireFileName(path);
+  if (isSpecialFile(path)) {
+    std::ofstream out(path, std::ios::binary);
+    if (out) write(out);
+    out.close();
+    if (!out) throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
+    return;
+  }
   const std::filesystem::path target = targetOf(path);
   const std::string temporary = makeTemporary(path, target);
+  const InFlight removedIfInterrupted(temporary);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) {
@@ -96,8 +150,29 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
 }
 
 void requireWritable(const std::string& path) {
-  requireNotAFolder(path);
+  requireFileName(path);
+  if (isSpecialFile(path)) {
+    if (!std::ofstream(path, std::ios::binary | std::ios::app))
+      throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
+    return;
+  }
   std::remove(makeTemporary(path, targetOf(path)).c_str());
+}
+
+std::string newTemporaryFile(const std::string& suffix) {
+  std::error_code error;
+  const std::filesystem::path folder = std::filesystem::temp_directory_path(error);
+  if (error) throw Error("cannot find a folder for temporary files (" + error.message() + ")");
+  static std::atomic<unsigned> made{0};
+  for (;;) {
+    const std::string name =
+        (folder / ("lloydscope-" + std::to_string(getpid()) + "-" + std::to_string(made++) + suffix)).string();
+    const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (fd < 0 && errno == EEXIST) continue;
+    if (fd < 0) throw Error(name + ": cannot make a temporary file (" + std::strerror(errno) + ")");
+    close(fd);
+    return name;
+  }
 }
 
 bool sameFile(const std::string& a, const std::string& b) {

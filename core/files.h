@@ -21,6 +21,10 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
 // Leaves nothing behind.
 void requireWritable(const std::string& path);
 
+// A new empty file of a name of its own in the system's temporary folder (TMPDIR, else /tmp),
+// ending in `suffix`, for the caller to use and remove. Throws Error where none can be made.
+std::string newTemporaryFile(const std::string& suffix);
+
 // Whether two names (non-empty) are one file, there or not yet: "x.off", "./x.off", "sub/../x.off"
 // and its absolute path are, and so are a link and its target.
 bool sameFile(const std::string& a, const std::string& b);

@@ -448,6 +448,62 @@ TEST(Cli, BenchTimesLloydIterations) {
     EXPECT_NE(table.find(row), std::string::npos) << table;  // under 8 bytes a site
 }
 
+// The recording whose cost the step bench measures is a temporary of its own: it was
+// "<csv>.lsrec", replacing and then deleting a user's file of that name.
+TEST(Cli, BenchTimingLloydIterationsTouchesNoFileOfTheUser) {
+  const std::string here = test::emptyFolder("step_bench"), csv = here + "/step.csv";
+  test::writeText(csv + ".lsrec", "precious");
+  const CliRun r = runCli("bench --lloyd-step 20 " + test::assetPath("sphere_cap.off") + " --csv " + csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(test::readText(csv + ".lsrec"), "precious");
+  EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"step.csv.lsrec"});
+}
+
+// A model's file name goes into the markdown and the CSV as it is only where it breaks neither:
+// a comma split its CSV row into one column more, a '|' its markdown row, a line break both.
+TEST(Cli, BenchTablesHoldAnyModelName) {
+  const std::string here = test::emptyFolder("odd_names"), model = here + "/c,o|m\"a.off";
+  test::writeText(model, test::readText(test::assetPath("jittered_grid.off")));
+  const std::string csv = here + "/b.csv";
+  const CliRun r = runCli("bench '" + model + "' --as-is --sizes 100 --no-reference --csv " + csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("| c,o\\|m\"a | 100 | lloydscope |"), std::string::npos) << r.out;
+  const std::string rows = test::readText(csv);
+  EXPECT_NE(rows.find("\n\"c,o|m\"\"a\",100,lloydscope,"), std::string::npos) << rows;
+  // --save-inputs onto a model of the run is refused before any work.
+  test::writeText(here + "/a.off", test::readText(test::assetPath("jittered_grid.off")));
+  test::writeText(here + "/a_100.off", test::readText(test::assetPath("sphere_cap.off")));
+  const CliRun saved = runCli("bench " + here + "/a.off " + here + "/a_100.off --sizes 100 --as-is --no-reference "
+                              "--save-inputs " + here + " --csv " + csv);
+  EXPECT_EQ(saved.code, 1);
+  EXPECT_NE(saved.err.find("--save-inputs would replace the input mesh"), std::string::npos) << saved.err;
+  EXPECT_EQ(test::readText(here + "/a_100.off"), test::readText(test::assetPath("sphere_cap.off")));
+}
+
+// A file name that is not UTF-8 goes into --json's strings (here the charts' failure) with
+// U+FFFD for its bad bytes: dump() threw, an "internal error" (exit 2) after the files were
+// written.
+TEST(Cli, JsonTakesAFileNameThatIsNotUtf8) {
+  const std::string femur = test::cgalSample("femur.off");
+  SKIP_UNLESS_EXTRACTED(femur);
+  const std::string odd = test::tempPath("fe\xffmur.off");
+  test::writeText(odd, test::readText(femur));
+  const CliRun r = runCli("remesh '" + odd + "' --sites 500 --no-fidelity --json -o " + test::tempPath("femur_out.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j.dump().find("fe\xef\xbf\xbdmur"), std::string::npos) << j.dump();  // U+FFFD
+}
+
+// A run whose map fell back to the input's own (no method holds a tetrahedron cut open) records
+// "param-used=input-map", which inspect refused to read back as an unknown parameterization.
+TEST(Cli, ARecordingOfTheInputsOwnMapOpens) {
+  const std::string tet = test::tempPath("tet.off"), rec = test::tempPath("tet.lsrec");
+  test::writeText(tet, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  ASSERT_EQ(runCli("remesh " + tet + " --record " + rec + " -o " + test::tempPath("tet_out.off")).code, 0);
+  const CliRun r = runCli("inspect " + rec + " --size 960x600 --screenshot " + test::tempPath("tet.PNG"));
+  EXPECT_EQ(r.code, 0) << r.err;  // and a .PNG is a PNG, as a mesh's .OFF is an OFF
+}
+
 TEST(Cli, BenchNamesAMissingModel) {
   const CliRun r = runCli("bench /nonexistent/model.off --csv " + test::tempPath("never.csv"));
   EXPECT_NE(r.code, 0);
@@ -524,7 +580,7 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
   const std::vector<std::pair<std::string, std::string>> mistakes = {
       {"remesh " + mesh + " --bogus", "--bogus"},
       {"remesh", "input"},
-      {"remesh " + mesh + " --max-iterations abc", "expected a whole number >= 1, not 'abc'"},
+      {"remesh " + mesh + " --max-iterations abc", "expected a whole number from 1 to 100000, not 'abc'"},
       {"remesh " + mesh + " --sites 1.5", "expected a whole number from 20 to 1000000, not '1.5'"},
       {"remesh " + mesh + " --polish -2", "expected a whole number from -1 to 100, not '-2'"},
       {"remesh " + mesh + " --sites 0x20", "expected a whole number from 20 to 1000000, not '0x20'"},  // was 32
@@ -534,6 +590,17 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --size 4294968256x600 --screenshot x.png", "--size must be between 960x600 and 8192x8192"},
       {"inspect " + mesh + " --size 1280x800x --screenshot x.png", "--size must look like 1280x800, not '1280x800x'"},
       {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
+      {"inspect " + mesh + " --iterations 99999999999999999999:1 --screenshot x.png", "expected FIRST:LAST"},
+      // No file name (an unset variable): the run went on and wrote nothing.
+      {"remesh " + mesh + " -o ''", "--output: expected a file name, not an empty one"},
+      {"remesh " + mesh + " --record ''", "--record: expected a file name, not an empty one"},
+      {"bench " + mesh + " --csv ''", "--csv: expected a file name, not an empty one"},
+      {"inspect " + mesh + " --screenshot ''", "--screenshot: expected a file name, not an empty one"},
+      // Every iteration is recorded: a run that never converges grew by 30 MB a second.
+      {"remesh " + mesh + " --max-iterations 2000000000", "--max-iterations: expected a whole number from 1 to 100000"},
+      // A line break in a file name or a value stays on the error's one line.
+      {"metrics 'bad\nname.off'", "bad\\nname.off: no such file"},
+      {"remesh " + mesh + " --solver 'x\ny'", "unknown solver 'x\\ny'"},
       {"inspect " + mesh + " --select-cell 99999999999 --screenshot x.png", "--select-cell: expected a whole number >= 0, not '99999999999'"},
       {"inspect " + mesh + " --select-triangle -1 --screenshot x.png", "--select-triangle: expected a whole number >= 0, not '-1'"},
       // bench's sizes as --sites (--lloyd-step 214748365 wrapped round in the border check and

@@ -2,9 +2,14 @@
 #include "mesh.h"
 #include "test_support.h"
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace lloydscope;
 
@@ -88,6 +93,47 @@ TEST(Files, WriteAtomicallyTouchesNoOtherFileAndKeepsLinksAndPermissions) {
   EXPECT_EQ(fs::status(here + "/out.off").permissions(), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   // A new file is readable as any the user makes (mkstemp's own are private).
   EXPECT_NE(fs::status(longName).permissions() & fs::perms::others_read, fs::perms::none);
+}
+
+// A pipe (or a device, or a link to one) is written into, not replaced by a plain file: as root
+// `--record /dev/null` replaced /dev/null itself.
+TEST(Files, ASpecialFileIsWrittenIntoNotReplaced) {
+  namespace fs = std::filesystem;
+  const std::string here = test::emptyFolder("special"), fifo = here + "/pipe.off", link = here + "/link.off";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0666), 0);
+  fs::create_symlink("pipe.off", link);
+  const int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);  // so that writing does not wait
+  ASSERT_GE(reader, 0);
+  EXPECT_EQ(errorOf([&] { requireWritable(link); }), "");
+  writeAtomically(link, [](std::ostream& out) { out << "mesh"; });
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(fs::is_symlink(link));
+  char got[16] = {};
+  EXPECT_EQ(read(reader, got, sizeof got), 4);
+  EXPECT_EQ(std::string(got), "mesh");
+  close(reader);
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"link.off", "pipe.off"}));  // no temporary
+}
+
+// No name, or one longer than the system takes, is refused before a run, not after it.
+TEST(Files, ANameNoFileCanHaveIsRefusedBeforehand) {
+  EXPECT_EQ(errorOf([] { requireWritable(""); }), "cannot write a file of no name (an empty name was given)");
+  const std::string here = test::emptyFolder("long_names"), name = here + "/" + std::string(300, 'n') + ".off";
+  EXPECT_EQ(errorOf([&] { requireWritable(name); }),
+            name + ": cannot write: its name is 304 bytes long, more than a file name may be here (255)");
+}
+
+// Interrupted while writing (Ctrl+C), the run leaves no temporary behind, and the file as it was.
+TEST(Files, AnInterruptedWriteLeavesNoTemporary) {
+  const std::string here = test::emptyFolder("interrupted"), path = here + "/out.off";
+  test::writeText(path, "old");
+  EXPECT_EXIT(writeAtomically(path, [](std::ostream& out) {
+                out << "half" << std::flush;
+                std::raise(SIGINT);
+              }),
+              ::testing::KilledBySignal(SIGINT), "");
+  EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"out.off"});
+  EXPECT_EQ(test::readText(path), "old");
 }
 
 TEST(Files, MakeFolderMakesTheFoldersAboveAndRefusesAFile) {
