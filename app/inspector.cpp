@@ -448,16 +448,20 @@ void Inspector::exported(const std::string& error) {
 }
 
 void OpeningView::applyTo(Inspector& inspector) const {
-  const int count = inspector.iterationCount();
-  if (iteration >= count)  // it showed the last one, as if that had been asked
-    throw Error("iteration " + std::to_string(iteration) + " does not exist (" + std::to_string(count) +
-                " recorded, numbered from 0)");
-  if (iteration >= 0) inspector.setIteration(iteration);
-  inspector.showFinal(final);
-  if (fill) inspector.setFill(*fill);
-  for (int cell : cells) inspector.pinCell(cell);
-  for (int triangle : triangles) inspector.pinTriangle(triangle);
-  if (worstTriangle) inspector.pinWorstTriangle();
+  try {
+    const int count = inspector.iterationCount();
+    if (iteration >= count)  // it showed the last one, as if that had been asked
+      throw Error("iteration " + std::to_string(iteration) + " does not exist (" + std::to_string(count) +
+                  " recorded, numbered from 0)");
+    if (iteration >= 0) inspector.setIteration(iteration);
+    inspector.showFinal(final);
+    if (fill) inspector.setFill(*fill);
+    for (int cell : cells) inspector.pinCell(cell);
+    for (int triangle : triangles) inspector.pinTriangle(triangle);
+    if (worstTriangle) inspector.pinWorstTriangle();
+  } catch (const Error& e) {  // an iteration, a cell or a triangle the file has none of
+    throw Error(inspector.meshName() + ": " + e.what());
+  }
   if (!camera.empty()) inspector.setCamera(camera);
   inspector.setPresentation(presentation);
   inspector.showStage(stage);

@@ -107,6 +107,7 @@ class Inspector {
   void showTimings(bool show) { showTimings_ = show; }
   int iteration() const { return iteration_; }
   int iterationCount() const { return replay_->iterationCount(); }
+  const std::string& meshName() const { return meshName_; }  // the file, not where it lives
   // Pins a cell, or a triangle of the current iteration's result; throws Error (one line) if
   // there is no such one.
   void pinCell(int cell);

@@ -145,9 +145,10 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
   const std::string mesh = test::assetPath("sphere_cap.off");
   const std::string out = test::tempPath("never.png"), err = test::tempPath("select.err");
   for (const auto& [args, says] : std::vector<std::pair<std::string, std::string>>{
-           {"--select-cell 500", "cell 500 does not exist"},
+           {"--select-cell 500", "sphere_cap.off: cell 500 does not exist"},
            {"--select-triangle -1", "--select-triangle: expected a whole number >= 0, not '-1'"},
-           {"--iteration 5000", "iteration 5000 does not exist"},  // it showed the last one, as if asked
+           {"--iteration 5000", "sphere_cap.off: iteration 5000 does not exist"},  // it showed the last one, as if asked
+           {"--select-triangle 5000", "sphere_cap.off: triangle 5000 does not exist"},
            {"--camera 'one two'", "camera"},
            {"--camera '0 0 -1 0 0 0'", "camera"}}) {
     EXPECT_EQ(run("inspect " + mesh + " --screenshot " + out + " " + args + " 2> " + err), 1) << args;
