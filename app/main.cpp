@@ -538,7 +538,13 @@ int main(int argc, char** argv) {
     std::cerr << "lloydscope: " << oneLine(e.what()) << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "lloydscope: out of memory: fewer vertices asked, or a smaller input, need less\n";
+    // The file the command was working on, as every other error names it.
+    std::string file;
+    for (const std::string* input : {&r.input, &ir.input, &br.input, &simplifyIn, &metricsMesh, &recordingPath})
+      if (file.empty()) file = *input;
+    if (file.empty() && !benchOptions.models.empty()) file = benchOptions.models.front();
+    std::cerr << "lloydscope: " << (file.empty() ? "" : oneLine(file) + ": ")
+              << "out of memory: fewer vertices asked, or a smaller input, need less\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "lloydscope: internal error: " << oneLine(e.what()) << "\n";

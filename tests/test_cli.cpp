@@ -641,5 +641,6 @@ TEST(Cli, RunningOutOfMemoryIsAOneLineError) {
   const int status = std::system(("export MALLOC_ARENA_MAX=1; ulimit -v " + limit + "; " + std::string(LLOYDSCOPE_CLI) +
                                   " " + args + " >/dev/null 2>" + err).c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
-  EXPECT_EQ(test::readText(err), "lloydscope: out of memory: fewer vertices asked, or a smaller input, need less\n");
+  EXPECT_EQ(test::readText(err), "lloydscope: " + test::assetPath("jittered_grid.off") +
+                                     ": out of memory: fewer vertices asked, or a smaller input, need less\n");
 }
