@@ -1312,9 +1312,12 @@ struct PlotTitle {
 // other runs' (empty: none).
 int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colour,
          const std::vector<std::vector<double>>& others, const std::vector<ImU32>& otherColours,
-         bool logScale, double threshold, int current, const ImVec2& size) {
+         bool logScale, double threshold, int current, const ImVec2& asked) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  // In a window narrower than the left pane (300x200) the plots get no room: ImGui aborts on
+  // a button of no size.
+  const ImVec2 size(std::max(asked.x, 2.0f), std::max(asked.y, 2.0f));
   ImGui::InvisibleButton(heading.full, size);
   const bool active = ImGui::IsItemActive();
   auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };
