@@ -989,20 +989,34 @@ void Inspector::fileControls() {
     try {
       stopRun();
       ReadResult read = readMesh(meshPath_, ReadOptions{repairOnOpen_});
+      std::optional<Mesh> previous = std::move(input_);
+      const std::string previousName = meshName_;
+      const QualityMetrics previousBefore = result_.before;
       input_ = std::move(read.mesh);
       settings_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
       meshName_ = meshPath_;
       meshName_ = meshName_.substr(meshName_.find_last_of('/') + 1);
       result_.before = measureQuality(*input_);
       startSession();
+      if (!session_) {
+        // The last run stays on show, under its own name: the new mesh's name and numbers beside
+        // its panes said they were the new mesh's.
+        const std::string why = runNotes_;
+        input_ = std::move(previous);
+        meshName_ = previousName;
+        result_.before = previousBefore;
+        runNotes_.clear();
+        throw Error(why + "; still showing " + meshName_);
+      }
       for (const std::string& note : read.notes) noteFirst(note);
       startRun();
       message_.clear();  // an earlier file's error or save
     } catch (const Error& e) {
       message_ = e.what();
-      const std::string flag = "(--repair fixes this)";  // the command line's way, not this pane's
-      if (message_.size() > flag.size() && message_.compare(message_.size() - flag.size(), flag.size(), flag) == 0)
-        message_.replace(message_.size() - flag.size(), flag.size(), "(ticking \"repair\" fixes this)");
+      // The command line's ways, not this pane's.
+      for (const auto& [flag, here] : {std::pair<std::string, std::string>{"(--repair fixes this)", "(ticking \"repair\" fixes this)"},
+                                       {"(use --method retriangulate)", "(choose method: retriangulate under Settings)"}})
+        if (const size_t at = message_.find(flag); at != std::string::npos) message_.replace(at, flag.size(), here);
     }
   }
   ImGui::SetNextItemWidth(-1);
