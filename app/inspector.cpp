@@ -78,13 +78,13 @@ bool letterPressed(char letter) {
 constexpr ImGuiWindowFlags kCanvasPaneFlags =
     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
 
+// A size a button may take: ImGui aborts on one of no size, which a pane with no room left
+// (a window narrower than the left pane, 300x200) gives.
+ImVec2 drawable(ImVec2 size) { return ImVec2(std::max(size.x, 2.0f), std::max(size.y, 2.0f)); }
+
 // The rest of the pane as a drawing area: its top-left corner and size.
 std::pair<ImVec2, ImVec2> canvasArea() {
-  const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  ImVec2 extent = ImGui::GetContentRegionAvail();
-  extent.x = std::max(extent.x, 2.0f);
-  extent.y = std::max(extent.y, 2.0f);
-  return {p0, extent};
+  return {ImGui::GetCursorScreenPos(), drawable(ImGui::GetContentRegionAvail())};
 }
 
 void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, const char* bottom,
@@ -1329,9 +1329,7 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
          bool logScale, double threshold, int current, const ImVec2& asked) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  // In a window narrower than the left pane (300x200) the plots get no room: ImGui aborts on
-  // a button of no size.
-  const ImVec2 size(std::max(asked.x, 2.0f), std::max(asked.y, 2.0f));
+  const ImVec2 size = drawable(asked);
   ImGui::InvisibleButton(heading.full, size);
   const bool active = ImGui::IsItemActive();
   auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };

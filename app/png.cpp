@@ -3,7 +3,6 @@
 #include "files.h"
 #include "mesh.h"
 
-#include <cctype>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -40,9 +39,7 @@ void writePng(const std::string& path, const unsigned char* pixels, int width, i
 }
 
 void requirePngPath(const std::string& path) {
-  std::string ending = path.size() < 5 ? "" : path.substr(path.size() - 4);  // .png, .PNG as mesh names take either
-  for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ending != ".png")
+  if (lowercaseExtension(path) != ".png")  // .png or .PNG, as meshes take .off or .OFF
     throw Error(path + ": exports are PNG files (end the name with .png)");
   requireWritable(path);
 }

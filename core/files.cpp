@@ -3,6 +3,7 @@
 #include "mesh.h"
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -45,9 +46,9 @@ void requireFileName(const std::string& path) {
   if (path.empty()) throw Error("cannot write a file of no name (an empty name was given)");
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) throw Error(path + ": cannot write: it is a folder");
-  const std::string name = std::filesystem::path(path).filename().string();
-  const long longest = pathconf(std::filesystem::path(path).has_parent_path()
-                                    ? std::filesystem::path(path).parent_path().c_str() : ".", _PC_NAME_MAX);
+  const std::filesystem::path file(path);
+  const std::string name = file.filename().string();
+  const long longest = pathconf(file.has_parent_path() ? file.parent_path().c_str() : ".", _PC_NAME_MAX);
   if (longest > 0 && static_cast<long>(name.size()) > longest)
     throw Error(path + ": cannot write: its name is " + std::to_string(name.size()) +
                 " bytes long, more than a file name may be here (" + std::to_string(longest) + ")");
@@ -89,24 +90,32 @@ class InFlight {
   ~InFlight() { haveInFlight = 0; }
 };
 
-// A new empty file beside `target`, of a name no other writer takes (made with O_EXCL): a fixed
-// "<path>.tmp" deleted a user's file of that name, two runs writing one output shared it, and
-// with a name near the system's limit it was too long. It gets the target's permissions, or
-// those any new file gets (the umask's).
-std::string makeTemporary(const std::string& path, const std::filesystem::path& target) {
-  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+// Makes "<folder>/<stem><pid>-<n><suffix>" with O_EXCL, the next n where one is taken (another
+// run's, killed before it could remove it), with `mode` (less the umask). Sets `name`; returns
+// the open descriptor, or -1 with errno set.
+int createUnique(const std::filesystem::path& folder, const std::string& stem, const std::string& suffix,
+                 mode_t mode, std::string& name) {
   static std::atomic<unsigned> made{0};
   for (;;) {
-    const std::string name =
-        (folder / (".lloydscope-" + std::to_string(getpid()) + "-" + std::to_string(made++))).string();
-    const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);
-    if (fd < 0 && errno == EEXIST) continue;  // another's, left by a run that was killed
-    if (fd < 0) cannotMake(path, folder);
-    struct stat existing;
-    if (stat(target.c_str(), &existing) == 0) fchmod(fd, existing.st_mode & 07777);
-    close(fd);
-    return name;
+    name = (folder / (stem + std::to_string(getpid()) + "-" + std::to_string(made++) + suffix)).string();
+    const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL, mode);
+    if (fd >= 0 || errno != EEXIST) return fd;
   }
+}
+
+// A new empty file beside `target`, of a name no other writer takes: a fixed "<path>.tmp"
+// deleted a user's file of that name, two runs writing one output shared it, and with a name
+// near the system's limit it was too long. It gets the target's permissions, or those any new
+// file gets (the umask's).
+std::string makeTemporary(const std::string& path, const std::filesystem::path& target) {
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+  std::string name;
+  const int fd = createUnique(folder, ".lloydscope-", "", 0666, name);
+  if (fd < 0) cannotMake(path, folder);
+  struct stat existing;
+  if (stat(target.c_str(), &existing) == 0) fchmod(fd, existing.st_mode & 07777);
+  close(fd);
+  return name;
 }
 
 }  // namespace
@@ -163,16 +172,17 @@ std::string newTemporaryFile(const std::string& suffix) {
   std::error_code error;
   const std::filesystem::path folder = std::filesystem::temp_directory_path(error);
   if (error) throw Error("cannot find a folder for temporary files (" + error.message() + ")");
-  static std::atomic<unsigned> made{0};
-  for (;;) {
-    const std::string name =
-        (folder / ("lloydscope-" + std::to_string(getpid()) + "-" + std::to_string(made++) + suffix)).string();
-    const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
-    if (fd < 0 && errno == EEXIST) continue;
-    if (fd < 0) throw Error(name + ": cannot make a temporary file (" + std::strerror(errno) + ")");
-    close(fd);
-    return name;
-  }
+  std::string name;
+  const int fd = createUnique(folder, "lloydscope-", suffix, 0600, name);
+  if (fd < 0) throw Error(name + ": cannot make a temporary file (" + std::strerror(errno) + ")");
+  close(fd);
+  return name;
+}
+
+std::string lowercaseExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
 }
 
 bool sameFile(const std::string& a, const std::string& b) {

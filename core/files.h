@@ -25,6 +25,9 @@ void requireWritable(const std::string& path);
 // ending in `suffix`, for the caller to use and remove. Throws Error where none can be made.
 std::string newTemporaryFile(const std::string& suffix);
 
+// `path`'s extension in lower case (".off" for "x.OFF"; "" for none): formats are told by it.
+std::string lowercaseExtension(const std::string& path);
+
 // Whether two names (non-empty) are one file, there or not yet: "x.off", "./x.off", "sub/../x.off"
 // and its absolute path are, and so are a link and its target.
 bool sameFile(const std::string& a, const std::string& b);

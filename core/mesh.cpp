@@ -41,15 +41,17 @@ void append(Mesh& to, const Mesh& part) {
   for (Triangle t : part.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
 }
 
-std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh) {
-  if (mesh.points.empty()) return {Vec3::Zero(), Vec3::Zero()};
-  Vec3 lo = mesh.points.front(), hi = lo;
-  for (const Vec3& p : mesh.points) {
+std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points) {
+  if (points.empty()) return {Vec3::Zero(), Vec3::Zero()};
+  Vec3 lo = points.front(), hi = lo;
+  for (const Vec3& p : points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
   return {lo, hi};
 }
+
+std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh) { return boundingBox(mesh.points); }
 
 double boundingBoxDiagonal(const Mesh& mesh) {
   const auto [lo, hi] = boundingBox(mesh);
@@ -60,6 +62,12 @@ double surfaceArea(const Mesh& mesh) {
   double area = 0;
   for (const Triangle& t : mesh.triangles)
     area += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  return area;
+}
+
+double mapArea(const Mesh& mesh, const std::vector<Vec2>& uv) {
+  double area = 0;
+  for (const Triangle& t : mesh.triangles) area += std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]));
   return area;
 }
 

@@ -46,6 +46,7 @@ struct Rings {
 
 // Lowest and highest corner of the axis-aligned bounding box (zeros for an empty mesh).
 std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh);
+std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points);
 // Length of its diagonal.
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
@@ -57,6 +58,8 @@ double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b);
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
 Vec3 faceNormal(const Mesh& mesh, const Triangle& t);  // not unit: its length is twice the area
 double surfaceArea(const Mesh& mesh);  // the sum of its triangles' areas
+// The area its triangles cover in the plane of `uv` (a map of it), each counted unsigned.
+double mapArea(const Mesh& mesh, const std::vector<Vec2>& uv);
 double loopLength(const Mesh& mesh, const std::vector<int>& loop);  // closed: last to first too
 // The edge length of an equilateral mesh of `vertices` vertices covering `area`: it has about
 // 2 `vertices` triangles of area (sqrt 3 / 4) h^2.

@@ -13,7 +13,6 @@
 #include "repair.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <climits>
@@ -60,12 +59,6 @@ std::string shown(std::string_view token) {
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
 
 bool onlySpace(std::string_view text) { return std::all_of(text.begin(), text.end(), isSpace); }
-
-std::string lowercaseExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 std::string unknownExtension(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
@@ -681,9 +674,7 @@ void checkMeasurable(const std::vector<Vec3>& points, const std::string& name, i
                      ", too large to measure in double precision (lengths overflow past 1e+150)");
     }
   }
-  if (points.empty()) return;
-  Vec3 lo = points[0], hi = points[0];
-  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const auto [lo, hi] = boundingBox(points);
   if (const double size = (hi - lo).norm(); size > 0 && size < kSmallestMeasurableSize) {
     std::ostringstream text;
     text << "the mesh is " << size << " across (its bounding box's diagonal), too small to measure in double "

@@ -136,9 +136,7 @@ void checkContents(const Recording& r, const std::string& path) {
     damaged("a coordinate is not a finite number");
   if (!std::isfinite(r.distanceThreshold) || !std::isfinite(r.percentThreshold))
     damaged("a threshold is not a finite number");
-  double area = 0;
-  for (const Triangle& t : r.input.triangles) area += std::abs(triangleArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]));
-  if (!(area > 0)) damaged("its parameter domain has no area");
+  if (!(mapArea(r.input, r.uv) > 0)) damaged("its parameter domain has no area");
   for (const auto& corners : r.density)
     for (double d : corners)
       if (!std::isfinite(d) || d < 0) damaged("a density is negative or not a finite number");

@@ -115,9 +115,7 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
   const int n = static_cast<int>(loop.size());
   const std::vector<double> angles = angleSums(mesh);
   // The spacing in the map, on average over it.
-  double mapArea = 0;
-  for (const Triangle& t : mesh.triangles) mapArea += std::abs(triangleArea(param.uv[t[0]], param.uv[t[1]], param.uv[t[2]]));
-  const double uvSpacing = spacing * std::sqrt(mapArea / surfaceArea(mesh));
+  const double uvSpacing = spacing * std::sqrt(mapArea(mesh, param.uv) / surfaceArea(mesh));
   std::vector<double> position(n + 1, 0.0);  // 3D arc length from loop[0]
   for (int i = 0; i < n; ++i)
     position[i + 1] = position[i] + (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i]]).norm();
