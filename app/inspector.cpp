@@ -184,7 +184,10 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   if (fonts->Fonts.Size > 1) presentationFont_ = fonts->Fonts[1];
 }
 
-Inspector::~Inspector() { stopRun(); }
+Inspector::~Inspector() {
+  stopComparing();
+  stopRun();
+}
 
 void Inspector::noteFirst(const std::string& text) {
   if (!text.empty()) runNotes_ = text + (runNotes_.empty() ? "" : ". " + runNotes_);
@@ -210,18 +213,42 @@ ImVec4 solverColour(CvtSolver solver) {
 }
 }  // namespace
 
-void Inspector::compareSolvers() {
-  comparisons_.clear();
+std::vector<Inspector::Comparison> Inspector::relaxWithOtherSolvers(const std::atomic<bool>* stop) const {
+  std::vector<Comparison> runs;
   for (CvtSolver solver : otherSolvers(options_.lloyd.solver)) {
     LloydOptions o = options_.lloyd;
     o.solver = solver;
     o.distanceThreshold = replay_->recording().distanceThreshold;
     o.percentThreshold = replay_->recording().percentThreshold;
-    comparisons_.push_back({solver, relaxAgain(replay_->recording(), o)});
+    runs.push_back({solver, relaxAgain(replay_->recording(), o, stop)});
   }
+  return runs;
+}
+
+void Inspector::compareSolvers() {
+  stopComparing();
+  comparisons_ = relaxWithOtherSolvers(nullptr);
+}
+
+void Inspector::startComparing() {
+  stopComparing();
+  comparisons_.clear();
+  stopComparing_ = false;
+  comparingDone_ = false;
+  comparer_ = std::thread([this] {
+    compared_ = relaxWithOtherSolvers(&stopComparing_);
+    comparingDone_ = true;
+  });
+}
+
+void Inspector::stopComparing() {
+  stopComparing_ = true;
+  if (comparer_.joinable()) comparer_.join();
+  compared_.clear();
 }
 
 void Inspector::openReplay(Recording recording) {
+  stopComparing();
   comparisons_.clear();  // of another run
   replay_ = std::make_unique<Replay>(std::move(recording));
   uploadedIteration_ = measuredIteration_ = edgesIteration_ = -1;
@@ -270,6 +297,7 @@ void Inspector::forgetResult() {
 
 void Inspector::startRun() {
   if (!session_ || !workerDone_ || session_->finished()) return;
+  stopComparing();  // the run appends to the replay the comparison reads
   stopRequested_ = false;
   workerDone_ = false;
   worker_ = std::thread([this] {
@@ -574,7 +602,17 @@ void Inspector::uploadMesh() {
   uploadedMethod_ = replay_->method();
 }
 
+bool Inspector::animating() const {
+  return playing_ || (lesson_.playing() && !lesson_.paused()) || !workerDone_ ||
+         worker_.joinable() || comparer_.joinable() || exportJob_ || fitPending_;
+}
+
 void Inspector::frame() {
+  if (comparingDone_ && comparer_.joinable()) {
+    comparer_.join();
+    comparisons_ = std::move(compared_);
+    compared_.clear();
+  }
   collectIterations();
   if (session_ && workerDone_ && worker_.joinable()) {
     worker_.join();
@@ -582,8 +620,11 @@ void Inspector::frame() {
     if (session_->finished()) finishSession();
   }
   handleKeys();
+  // The window sleeps while nothing moves: the frame that starts playback may come long after
+  // the last one, and must not jump ahead by that time.
+  const float elapsed = std::min(ImGui::GetIO().DeltaTime, 0.1f);
   if (playing_) {
-    playClock_ += ImGui::GetIO().DeltaTime * playSpeed_;
+    playClock_ += elapsed * playSpeed_;
     while (playClock_ >= 1.0f) {
       playClock_ -= 1.0f;
       if (iteration_ + 1 >= replay_->iterationCount()) playing_ = false;
@@ -591,7 +632,7 @@ void Inspector::frame() {
     }
   }
   if (lesson_.playing()) {
-    lesson_.advance(ImGui::GetIO().DeltaTime * playSpeed_ / 10.0f);  // 10 it/s: a lecture's pace
+    lesson_.advance(elapsed * playSpeed_ / 10.0f);  // 10 it/s: a lecture's pace
     setIteration(lesson_.current().iteration);
     stage_ = lesson_.current().stage;
   }
@@ -822,10 +863,14 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     ImGui::PopStyleColor();
   }
   const std::vector<CvtSolver> others = otherSolvers(options_.lloyd.solver);
-  const std::string compare =
-      std::string("Compare with ") + toString(others[0]) + " and " + toString(others[1]);
-  if (workerDone_ && ImGui::Button(compare.c_str()))
-    compareSolvers();  // their curves join the convergence plots
+  const std::string withOthers = std::string("with ") + toString(others[0]) + " and " + toString(others[1]);
+  if (comparer_.joinable()) {  // their curves join the convergence plots when done
+    ImGui::BeginDisabled();
+    ImGui::Button(("Comparing " + withOthers + "...").c_str());
+    ImGui::EndDisabled();
+  } else if (workerDone_ && ImGui::Button(("Compare " + withOthers).c_str())) {
+    startComparing();
+  }
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pick = pickTriangles2D_ ? 1 : 0;
     ImGui::TextUnformatted("2D click pins a");
@@ -1499,6 +1544,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   const bool canStep = session_ && !running && !session_->finished();
   if (!canStep) ImGui::BeginDisabled();
   if (ImGui::Button("Step")) {
+    stopComparing();
     replay_->append(session_->step());
     setIteration(replay_->iterationCount() - 1);
     if (session_->finished()) finishSession();

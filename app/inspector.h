@@ -95,13 +95,17 @@ class Inspector {
   }
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
+  // The next frame differs from this one without input: a run, playback, a lesson playing, an
+  // export or a comparison under way. The window waits for events otherwise.
+  bool animating() const;
   // The CPU work of the current iteration's panes (its cells, lifted mesh, metrics and cell
   // edges), cached for frame(). Front ends call it while the previous frame renders: on two
   // cores, scrubbing then overlaps the geometry with lavapipe's rasterization.
   void prepare();
   void setIteration(int k);
-  // Relaxes the run's start again with the other solver (Lloyd for L-BFGS, L-BFGS for Lloyd)
-  // and draws its curves beside the run's in the convergence pane. Blocks while it runs.
+  // Relaxes the run's start again with the other solvers (Lloyd and Newton for L-BFGS, ...)
+  // and draws their curves beside the run's in the convergence pane. Blocks while they run
+  // (the window's Compare button runs them on a thread of their own).
   void compareSolvers();
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }
@@ -189,6 +193,15 @@ class Inspector {
     std::vector<IterationRecord> iterations;
   };
   std::vector<Comparison> comparisons_;  // the other solvers', if compared
+  // The other solvers' runs from the start of the run on show; `stop` ends them early.
+  std::vector<Comparison> relaxWithOtherSolvers(const std::atomic<bool>* stop) const;
+  // The Compare button's runs take seconds: they go on a thread of their own, which sets
+  // comparingDone_; frame() then shows their curves.
+  void startComparing();
+  void stopComparing();  // before the replay changes: the runs read its first iteration
+  std::thread comparer_;
+  std::atomic<bool> stopComparing_{false}, comparingDone_{false};
+  std::vector<Comparison> compared_;
   char meshPath_[512] = {}, recordingPath_[512] = {};
   CanvasRenderer canvas_;
   // What the 2D pane's geometry was built for: rebuilt when any of it changes.

@@ -1,6 +1,7 @@
 #include "window.h"
 
 #include "fonts.h"
+#include "frame_pacing.h"
 #include "gpu.h"
 #include "inspector.h"
 #include "png.h"
@@ -10,7 +11,9 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <vector>
 
 namespace lloydscope {
@@ -150,6 +153,61 @@ void saveExport(Inspector& inspector, const Swapchain& chain, const gpu::Buffer&
   }
 }
 
+// What the window's callbacks collect between frames (the window's user pointer).
+struct WindowEvents {
+  FramePacer pacer;
+  KeyQueue keys;
+};
+
+WindowEvents& eventsOf(GLFWwindow* window) {
+  return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window));
+}
+
+// Installed before ImGui's backend, which calls them before its own (mouse buttons, scroll,
+// characters, focus); the rest it does not install. Any of them wakes the window.
+void noteInput(GLFWwindow* window) { eventsOf(window).pacer.input(); }
+void watchInput(GLFWwindow* window) {
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { noteInput(w); });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { noteInput(w); });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { noteInput(w); });
+  glfwSetWindowRefreshCallback(window, noteInput);
+}
+
+// Replaces ImGui's key callback (after its backend is set up): keys reach it through the queue,
+// frame by frame (KeyQueue).
+void queueKeys(GLFWwindow* window) {
+  static_assert(GLFW_RELEASE == int(KeyAction::Release) && GLFW_PRESS == int(KeyAction::Press) &&
+                GLFW_REPEAT == int(KeyAction::Repeat));
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
+    eventsOf(w).keys.push({key, scancode, static_cast<KeyAction>(action), mods});
+    noteInput(w);
+  });
+}
+
+void deliverKeys(GLFWwindow* window) {
+  for (const KeyEvent& e : eventsOf(window).keys.takeFrame())
+    ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, static_cast<int>(e.action), e.mods);
+}
+
+// A key or mouse button held: ImGui repeats keys and drags by its own clock, between events.
+bool inputHeld() {
+  const ImGuiIO& io = ImGui::GetIO();
+  return std::any_of(std::begin(io.KeysDown), std::end(io.KeysDown), [](bool d) { return d; }) ||
+         std::any_of(std::begin(io.MouseDown), std::end(io.MouseDown), [](bool d) { return d; });
+}
+
+// Draws at once while anything moves or input is settling; otherwise sleeps until an event.
+void awaitNextFrame(GLFWwindow* window, const Inspector& inspector) {
+  WindowEvents& events = eventsOf(window);
+  const double wait = events.pacer.wait(inspector.animating() || !events.keys.empty() || inputHeld());
+  if (wait > 0) glfwWaitEventsTimeout(wait);
+  else glfwPollEvents();
+}
+
 }  // namespace
 
 void requireDisplay() {
@@ -184,10 +242,14 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     Swapchain chain;
     chain.create(gpu, surface, pass, format, window);
 
+    WindowEvents events;
+    glfwSetWindowUserPointer(window, &events);
+    watchInput(window);
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
     ImGui::StyleColorsLight();
     ImGui_ImplGlfw_InitForVulkan(window, true);
+    queueKeys(window);
     addInspectorFonts();
     gpu::initImGuiRenderer(gpu, pass, static_cast<uint32_t>(chain.images.size()));
 
@@ -209,10 +271,13 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
       Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
       view.applyTo(inspector);
       while (!glfwWindowShouldClose(window)) {
-        glfwPollEvents();
+        awaitNextFrame(window, inspector);
         int w, h;
         glfwGetFramebufferSize(window, &w, &h);
-        if (w == 0 || h == 0) continue;  // minimized
+        if (w == 0 || h == 0) {  // minimized: nothing to draw until it is shown again
+          glfwWaitEventsTimeout(FramePacer::kIdleWaitSeconds);
+          continue;
+        }
         if (static_cast<uint32_t>(w) != chain.extent.width ||
             static_cast<uint32_t>(h) != chain.extent.height) {
           chain.destroy(gpu);
@@ -226,6 +291,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
           chain.create(gpu, surface, pass, format, window);
           continue;
         }
+        deliverKeys(window);
         ImGui_ImplVulkan_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();

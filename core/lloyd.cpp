@@ -240,8 +240,10 @@ bool LloydSolver::converged() const {
          100.0 * iterations_.back().fractionMoving < options_.percentThreshold;
 }
 
-void LloydSolver::run() {
-  while (!converged() && static_cast<int>(iterations_.size()) < options_.maxIterations) step();
+void LloydSolver::run(const std::atomic<bool>* stop) {
+  while (!converged() && static_cast<int>(iterations_.size()) < options_.maxIterations &&
+         !(stop && *stop))
+    step();
 }
 
 const char* toString(CvtSolver solver) {

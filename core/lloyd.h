@@ -6,6 +6,7 @@
 
 #include <string>
 #include <cstdint>
+#include <atomic>
 #include <vector>
 
 namespace lloydscope {
@@ -79,8 +80,9 @@ class LloydSolver {
   // sites: to their centroids (Lloyd) or by one L-BFGS step with a backtracking line search.
   const IterationRecord& step();
   bool converged() const;
-  // Steps until converged() or options.maxIterations iterations were recorded.
-  void run();
+  // Steps until converged() or options.maxIterations iterations were recorded, or `stop` is
+  // set (from another thread).
+  void run(const std::atomic<bool>* stop = nullptr);
 
   void setThreads(int threads) { options_.threads = threads; }  // LloydOptions::threads
   const std::vector<Vec2>& fixedSites() const { return fixed_; }

@@ -210,12 +210,13 @@ std::vector<BoundedCell> Recording::cells(const Domain& domain, int iteration,
                       hints);
 }
 
-std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options) {
+std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options,
+                                        const std::atomic<bool>* stop) {
   if (recording.iterations.empty()) return {};
   const Domain domain = recording.domain();
   LloydSolver solver(domain, recording.fixedSites, recording.iterations.front().sites.unpack(),
                      options);
-  solver.run();
+  solver.run(stop);
   return solver.takeIterations();
 }
 

@@ -5,6 +5,7 @@
 #include "lloyd.h"
 #include "remesh.h"
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -41,8 +42,11 @@ struct Recording {
 };
 
 // The recorded run's start (its first iteration's sites), relaxed again with `options` (another
-// solver, say): the iterations of that run, to compare convergence curves.
-std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options);
+// solver, say): the iterations of that run, to compare convergence curves. `stop`, when set
+// (from another thread), ends it after the iteration under way: the iterations so far. The
+// recording is read before the first iteration only.
+std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options,
+                                        const std::atomic<bool>* stop = nullptr);
 
 // Written through a temporary and renamed (writeAtomically), so an existing file is replaced
 // whole or not at all.

@@ -2,9 +2,12 @@
 #include "pipeline.h"
 #include "test_support.h"
 
+#include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <thread>
 
 using namespace lloydscope;
 
@@ -213,4 +216,27 @@ TEST(Recording, RelaxAgainWithAnotherSolverStartsWhereTheRunStarted) {
   for (size_t k = 1; k < again.size(); ++k) EXPECT_LE(again[k].energy, again[k - 1].energy + 1e-15);
   // L-BFGS got lower in fewer iterations.
   EXPECT_LT(r.iterations.back().energy, again.back().energy);
+}
+
+// The inspector's Compare button relaxes on a thread of its own, and stops it when the run on
+// show changes.
+TEST(Recording, RelaxAgainStopsWhenAskedFromAnotherThread) {
+  RemeshOptions o;
+  o.measureFidelity = false;
+  const Recording r = remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, o, "cap").recording;
+  LloydOptions never;  // plain Lloyd to a threshold it never meets
+  never.solver = CvtSolver::Lloyd;
+  never.distanceThreshold = 1e-300;
+  never.maxIterations = 100000;
+  std::atomic<bool> stop{true};
+  EXPECT_TRUE(relaxAgain(r, never, &stop).empty());
+  stop = false;
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    stop = true;
+  });
+  const size_t iterations = relaxAgain(r, never, &stop).size();
+  stopper.join();
+  EXPECT_GT(iterations, 0u);
+  EXPECT_LT(iterations, 100000u);
 }

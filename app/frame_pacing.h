@@ -1,0 +1,51 @@
+// When the window draws a frame, and which key events each frame sees. Idle (no input, nothing
+// moving) the window waits for events instead of drawing: an inspector left open beside a
+// lecture's slides costs no CPU.
+#pragma once
+
+#include <deque>
+#include <vector>
+
+namespace lloydscope {
+
+class FramePacer {
+ public:
+  // ImGui shows a click's effect (a button's action, a header opening, a hover's highlight) a
+  // frame or two after the event: so many frames are drawn after any input before waiting.
+  static constexpr int kSettleFrames = 3;
+  // The longest wait: a text field's caret still blinks.
+  static constexpr double kIdleWaitSeconds = 0.5;
+
+  void input() { settle_ = kSettleFrames; }
+  // How long to wait for events before the next frame; 0: draw it at once. `busy`: the next
+  // frame differs without input (a run, playback, a lesson, an export).
+  double wait(bool busy);
+
+ private:
+  int settle_ = kSettleFrames;  // the first frames draw the window
+};
+
+// GLFW's values, which the window forwards to ImGui as they are.
+enum class KeyAction { Release = 0, Press = 1, Repeat = 2 };
+
+struct KeyEvent {
+  int key = 0, scancode = 0;
+  KeyAction action = KeyAction::Press;
+  int mods = 0;
+};
+
+// ImGui 1.86 reads each key as held or not once a frame, so a key pressed and released between
+// two frames (a quick tap: under 60 ms, a frame's time under lavapipe) was never seen, nor a
+// release and the next press of a key tapped again. Queued here, each frame takes the events
+// in order up to the second change of one key (pressed, released), which waits for the next.
+class KeyQueue {
+ public:
+  void push(const KeyEvent& event) { queue_.push_back(event); }
+  std::vector<KeyEvent> takeFrame();
+  bool empty() const { return queue_.empty(); }
+
+ private:
+  std::deque<KeyEvent> queue_;
+};
+
+}  // namespace lloydscope
