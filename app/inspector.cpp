@@ -151,6 +151,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
+  if (input_) inputTopology_ = analyzeTopology(*input_);  // before a chart or component stands for it
   if (!result_.resampleDropped.empty())
     runNotes_ = withoutResamplingText(result_.resampleDropped);
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
@@ -257,7 +258,7 @@ void Inspector::openReplay(Recording recording) {
   fitCamera();
 }
 
-void Inspector::startSession() {
+bool Inspector::startSession() {
   stopRun();
   forgetResult();
   options_ = settings_;  // the Settings pane's, from now on the run's
@@ -278,9 +279,14 @@ void Inspector::startSession() {
     Recording header = session_->header();
     header.iterations.push_back(session_->iterationRecord(0));
     openReplay(std::move(header));
+    // No site to move (a domain its border samples fill): the run is over, Step and Run have
+    // nothing to do, and the result is ready.
+    if (session_->finished()) finishSession();
+    return true;
   } catch (const Error& e) {
     session_.reset();
     runNotes_ = e.what();
+    return false;
   }
 }
 
@@ -709,6 +715,12 @@ void Inspector::toggleLesson() {
 CaptionFacts Inspector::captionFacts() {
   CaptionFacts f;
   f.mesh = meshName_;
+  if (inputTopology_) {  // a recording opened alone holds the disk only
+    f.surface = inputTopology_->describe();
+    f.disk = inputTopology_->isDisk();
+  }
+  f.seamEdges = result_.cut.seamEdges;
+  f.charts = result_.charts;
   f.input = result_.before;
   f.cleanedUp = finalShown();
   f.result = f.cleanedUp ? result_.after : currentQuality();
@@ -850,7 +862,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   else if (session_)
     ImGui::TextWrapped("Stopped at %d iteration%s: Step or Run goes on", iterations, plural);
   else
-    ImGui::Text("Final: %d iterations, %s", iterations,
+    ImGui::Text("Final: %d iteration%s, %s", iterations, plural,
                 replay_->recording().converged() ? "converged" : "not converged");
   ImGui::TextWrapped("%s", shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr).c_str());
   if (showTimings_ && !session_ && result_.ms.total > 0)  // a recording opened alone has no times
@@ -1037,19 +1049,21 @@ void Inspector::fileControls() {
       std::optional<Mesh> previous = std::move(input_);
       const std::string previousName = meshName_;
       const QualityMetrics previousBefore = result_.before;
+      const std::optional<Topology> previousTopology = inputTopology_;
       input_ = std::move(read.mesh);
+      inputTopology_ = analyzeTopology(*input_);
       settings_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
       meshName_ = meshPath_;
       meshName_ = meshName_.substr(meshName_.find_last_of('/') + 1);
       result_.before = measureQuality(*input_);
-      startSession();
-      if (!session_) {
+      if (!startSession()) {
         // The last run stays on show, under its own name: the new mesh's name and numbers beside
         // its panes said they were the new mesh's.
         const std::string why = runNotes_;
         input_ = std::move(previous);
         meshName_ = previousName;
         result_.before = previousBefore;
+        inputTopology_ = previousTopology;
         runNotes_.clear();
         throw Error(why + "; still showing " + meshName_);
       }

@@ -9,6 +9,7 @@
 #include "lesson.h"
 #include "replay.h"
 #include "selection.h"
+#include "topology.h"
 
 #include <glm/mat4x4.hpp>
 #include <imgui.h>
@@ -151,7 +152,8 @@ class Inspector {
   void settingsControls();
   void fileControls();
   // Live runs: a session steps on a worker thread; its iterations reach the replay here.
-  void startSession();
+  // False where no run could start (runNotes_ says why).
+  bool startSession();
   // Puts `text` (if any) before the run's notes so far.
   void noteFirst(const std::string& text);
   // Before a new run or recording: the last run's result, and its notes, are not shown with it.
@@ -181,6 +183,7 @@ class Inspector {
   RemeshResult result_;
   std::unique_ptr<Replay> replay_;
   std::optional<Mesh> input_;
+  std::optional<Topology> inputTopology_;  // of the mesh opened, before a chart stood for it
   std::unique_ptr<RemeshSession> session_;
   std::thread worker_;
   std::atomic<bool> stopRequested_{false}, workerDone_{true};

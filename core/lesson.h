@@ -67,6 +67,11 @@ class LessonPlayer {
 // The numbers a caption quotes.
 struct CaptionFacts {
   std::string mesh;
+  // What the input is (Topology::describe) and how it was opened up: seam edges cut (or slit
+  // into a disk), or charts flattened one by one.
+  std::string surface = "a topological disk";
+  bool disk = true;
+  int seamEdges = 0, charts = 0;
   QualityMetrics input, result;
   std::string param, border, solver, method;  // as the settings name them
   bool firstPass = false;  // the map is of a rough first remeshing, whose vertices are the first sites

@@ -139,6 +139,35 @@ TEST(Lesson, TheResultCaptionSaysWhetherItIsCleanedUp) {
   EXPECT_NE(c.numbers.find("→ 19%"), std::string::npos) << c.numbers;
 }
 
+// The first caption says what the input is and how it was opened into a disk: it said "a
+// topological disk" for the closed eight too.
+TEST(Lesson, TheLoadCaptionSaysWhatTheSurfaceIsAndHowItWasOpened) {
+  CaptionFacts facts;
+  EXPECT_EQ(caption(Stage::Load, facts).formula, "The input: a triangle mesh of a topological disk.");
+  facts.surface = "a closed surface of genus 2";
+  facts.disk = false;
+  facts.seamEdges = 40;
+  EXPECT_EQ(caption(Stage::Load, facts).formula,
+            "The input: a triangle mesh of a closed surface of genus 2, cut open along seams "
+            "(purple) into a topological disk.");
+  facts.charts = 5;
+  EXPECT_NE(caption(Stage::Load, facts).formula.find("split into 5 charts"), std::string::npos);
+  CaptionFacts slit;
+  slit.seamEdges = 12;
+  EXPECT_NE(caption(Stage::Load, slit).formula.find("slit along seams"), std::string::npos);
+}
+
+// "Nearly equilateral" only where the result's numbers say so (relocate on a closed surface,
+// or an early iteration, can be worse than the input).
+TEST(Lesson, TheResultCaptionClaimsNearlyEquilateralOnlyWhenItIs) {
+  CaptionFacts facts;
+  facts.method = "retriangulate";
+  facts.result.avgMinAngle = 54.8;
+  EXPECT_NE(caption(Stage::Result, facts).formula.find("nearly equilateral"), std::string::npos);
+  facts.result.avgMinAngle = 31.0;
+  EXPECT_EQ(caption(Stage::Result, facts).formula.find("nearly equilateral"), std::string::npos);
+}
+
 // The map of a run with the first pass is the rough remeshing's, and the caption says so: it
 // is why the sites start evenly spread.
 TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
