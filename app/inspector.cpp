@@ -87,6 +87,15 @@ std::pair<ImVec2, ImVec2> canvasArea() {
   return {ImGui::GetCursorScreenPos(), drawable(ImGui::GetContentRegionAvail())};
 }
 
+// Dark text on a light box: over the 2D cells or a zoomed 3D mesh, a dark label on dark
+// triangles could not be read.
+void boxedText(ImDrawList* dl, ImVec2 where, const char* text) {
+  const ImVec2 extent = ImGui::CalcTextSize(text);
+  dl->AddRectFilled(ImVec2(where.x - 2, where.y), ImVec2(where.x + extent.x + 2, where.y + extent.y),
+                    IM_COL32(255, 255, 255, 220));
+  dl->AddText(where, rgb(0.1f, 0.1f, 0.1f), text);
+}
+
 void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, const char* bottom,
                   const std::function<ImU32(float)>& color) {
   const float width = 12.0f;
@@ -98,15 +107,8 @@ void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, cons
   }
   dl->AddRect(at, ImVec2(at.x + width, at.y + height), rgb(0.2f, 0.2f, 0.2f));
   const float font = ImGui::GetFontSize();
-  // On a light box: over the 2D cells, a dark label on dark cells could not be read.
-  auto label = [&](ImVec2 where, const char* text) {
-    const ImVec2 extent = ImGui::CalcTextSize(text);
-    dl->AddRectFilled(ImVec2(where.x - 2, where.y), ImVec2(where.x + extent.x + 2, where.y + extent.y),
-                      IM_COL32(255, 255, 255, 220));
-    dl->AddText(where, rgb(0.1f, 0.1f, 0.1f), text);
-  };
-  label(ImVec2(at.x + width + 4, at.y - 0.45f * font), top);
-  label(ImVec2(at.x + width + 4, at.y + height - 0.6f * font), bottom);
+  boxedText(dl, ImVec2(at.x + width + 4, at.y - 0.45f * font), top);
+  boxedText(dl, ImVec2(at.x + width + 4, at.y + height - 0.6f * font), bottom);
 }
 
 void drawMeshCallback(const ImDrawList*, const ImDrawCmd* cmd) {
@@ -256,6 +258,12 @@ void Inspector::openReplay(Recording recording) {
   canvasKey_ = CanvasKey{};
   iteration_ = std::max(0, replay_->iterationCount() - 1);
   fitCamera();
+  fit2D();  // another domain: the last one's zoom showed a corner of it, or nothing
+}
+
+void Inspector::fit2D() {
+  zoom2D_ = 1.0f;
+  pan2D_ = ImVec2(0, 0);
 }
 
 bool Inspector::startSession() {
@@ -465,9 +473,11 @@ Pane parsePane(const std::string& name) {
 void Inspector::startExport(ExportJob job) {
   requirePngPath(job.path);
   const int count = replay_->iterationCount();
-  if (job.first >= 0 && (job.last < job.first || job.last >= count))
-    throw Error("iterations " + std::to_string(job.first) + ":" + std::to_string(job.last) +
-                ": expected FIRST:LAST within 0:" + std::to_string(count - 1));
+  const std::string range = "iterations " + std::to_string(job.first) + ":" + std::to_string(job.last);
+  if (job.first >= 0 && job.last < job.first)
+    throw Error(range + ": FIRST comes after LAST (the pictures go from FIRST up to LAST)");
+  if (job.first >= 0 && job.last >= count)
+    throw Error(range + ": expected FIRST:LAST within 0:" + std::to_string(count - 1));
   exportNext_ = job.first >= 0 ? job.first : iteration_;
   exportJob_ = std::move(job);
 }
@@ -1181,7 +1191,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
       : shown.input3D ? (input_ ? "input mesh" : "the mesh that was parameterized")
                       : "result at iteration " + std::to_string(iteration_) + " (" +
                             toString(replay_->method()) + ")";
-  dl->AddText(ImVec2(p0.x + 8, p0.y + 4), rgb(0.1f, 0.1f, 0.1f), label.c_str());
+  boxedText(dl, ImVec2(p0.x + 8, p0.y + 4), label.c_str());
   ImGui::End();
 }
 
@@ -1234,6 +1244,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     pan2D_.y += io.MouseDelta.y;
   }
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) zoom2D_ *= std::pow(1.15f, io.MouseWheel);
+  if (ImGui::IsItemHovered() && letterPressed('F')) fit2D();
   const float scale = base * zoom2D_;
   auto screen = [&](const Vec2& uv) {
     return ImVec2(center.x + static_cast<float>(uv.x() - 0.5) * scale,
@@ -1276,7 +1287,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   if (fill_ != CellFill::None)
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, format("%.2e", fillRange_[1]).c_str(),
                  format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
-  dl->AddText(ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), rgb(0.1f, 0.1f, 0.1f), legend.c_str());
+  boxedText(dl, ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), legend.c_str());
   dl->PopClipRect();
   ImGui::End();
 }

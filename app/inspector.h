@@ -169,6 +169,7 @@ class Inspector {
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks  // of the current iteration's result, cached
   void fitCamera();
+  void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;
   // The 3D view's view-projection matrix (Vulkan clip space) and eye, for a pane this size.
   std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent) const;

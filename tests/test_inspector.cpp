@@ -195,6 +195,9 @@ TEST(Inspector, ExportErrorsAreOneLine) {
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
   }
   EXPECT_TRUE(readPng(test::tempPath("x.png")).rgba.empty());
+  // A reversed range is told so: it was told the valid range, which 5:2 is within.
+  EXPECT_EQ(run("inspect " + mesh + " --screenshot " + test::tempPath("x.png") + " --iterations 5:2 2> " + err), 1);
+  EXPECT_NE(test::readText(err).find("5:2: FIRST comes after LAST"), std::string::npos) << test::readText(err);
 }
 
 TEST(Inspector, PresentationModeShowsTheLessonStage) {
