@@ -86,6 +86,18 @@ std::string oneLine(const std::string& message) {
   return line;
 }
 
+// What to add to a command-line error where a file's name starts with '-': CLI11 takes it
+// for an option, and said only "mesh is required".
+std::string dashedFileHint(int argc, char** argv) {
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    std::error_code ignored;
+    if (arg.size() > 1 && arg[0] == '-' && std::filesystem::exists(arg, ignored))
+      return "; '" + arg + "' was read as an option: write ./" + arg + " for the file";
+  }
+  return {};
+}
+
 // JSON as the commands print it; bytes of a file name that are not UTF-8 become U+FFFD (they
 // made dump() throw, an "internal error" after the run's files were written).
 std::string printable(const nlohmann::json& j) { return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace); }
@@ -420,7 +432,8 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-    std::cerr << "lloydscope: " << oneLine(e.what()) << " (--help lists the options)\n";
+    std::cerr << "lloydscope: " << oneLine(e.what() + dashedFileHint(argc, argv))
+              << " (--help lists the options)\n";
     return 1;
   }
   if (app.get_subcommands().empty()) {  // plain `lloydscope`: the inspector on the default mesh

@@ -624,6 +624,21 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
     EXPECT_NE(runCli(command).out.find("between 960x600 and 8192x8192"), std::string::npos) << command;
 }
 
+// A file whose name starts with '-' is taken for an option by the command line; the error says
+// how to name it (it said only "mesh is required").
+TEST(Cli, AFileNamedLikeAnOptionIsToldHowToNameIt) {
+  const std::string folder = test::emptyFolder("dashed");
+  std::filesystem::copy_file(test::assetPath("jittered_grid.off"), folder + "/-lead.off");
+  const std::string err = folder + "/err";
+  const std::string cli = "cd " + folder + " && " + LLOYDSCOPE_CLI;
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " metrics -lead.off 2> err").c_str())), 1);
+  const std::string message = test::readText(err);
+  EXPECT_NE(message.find("'-lead.off' was read as an option: write ./-lead.off for the file"), std::string::npos)
+      << message;
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " metrics ./-lead.off > /dev/null").c_str())), 0);
+}
+
 // A run that needs more memory than the process may have ends with one line saying so, not an
 // internal error.
 TEST(Cli, RunningOutOfMemoryIsAOneLineError) {
