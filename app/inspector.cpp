@@ -931,7 +931,13 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   settingsControls();
   fileControls();
   exportControls();
-  if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+  if (!message_.empty()) {
+    ImGui::TextWrapped("%s", message_.c_str());
+    // A new message is scrolled into view: with Files or Export open it fell below the window
+    // (1280x800), and a failed Open mesh looked like nothing at all.
+    if (message_ != scrolledToMessage_) ImGui::SetScrollHereY(1.0f);
+  }
+  scrolledToMessage_ = message_;
   ImGui::End();
 }
 

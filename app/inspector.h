@@ -191,6 +191,7 @@ class Inspector {
   std::mutex pendingMutex_;
   std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
   std::string message_;                   // what the last file action did, or its error: under the controls
+  std::string scrolledToMessage_;         // the message the controls pane was last scrolled to
   std::string runNotes_;                  // how the result was made, or why its run failed: under the table
   struct Comparison {  // another solver's run from the same first sites
     CvtSolver solver;
