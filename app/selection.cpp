@@ -111,7 +111,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
         ImGui::TableNextColumn();
         ImGui::TextWrapped("%s", label.c_str());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(value.c_str());
+        ImGui::TextWrapped("%s", value.c_str());
       }
       ImGui::EndTable();
     }
@@ -125,18 +125,24 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
                        d.fixed ? "fixed, border" : "movable");
     ImGui::SameLine();
     if (ImGui::SmallButton("unpin")) unpinCell = cell;
-    row("site s", "%.5f %.5f", d.site.x(), d.site.y());
-    row("centroid c", "%.5f %.5f", d.centroid.x(), d.centroid.y());
+    // Seven digits: a class checks c by hand from the sums below, and a site 3e-5 from its
+    // centroid (late iterations) was lost in five.
+    row("site s", "%.6f %.6f", d.site.x(), d.site.y());
+    row("centroid c", "%.6f %.6f", d.centroid.x(), d.centroid.y());
     row("s, 3D", "%.3f %.3f %.3f", d.site3D.x(), d.site3D.y(), d.site3D.z());
     row("c, 3D", "%.3f %.3f %.3f", d.centroid3D.x(), d.centroid3D.y(), d.centroid3D.z());
     row("area, UV", "%.4e", d.area);
     row("area, surface", "%.4e", d.surfaceArea);
-    row("A = 1/2 sum c_i", "%.4e", d.shoelaceArea);
-    row("sum (x_i+x_i+1)c_i", "%.4e", d.shoelaceSums.x());
-    row("sum (y_i+y_i+1)c_i", "%.4e", d.shoelaceSums.y());
-    row("M = int rho", "%.4e", d.mass);
-    row("int x rho", "%.3e %.3e", d.moment.x(), d.moment.y());
-    if (d.mass > 0) row("c = int x rho/M", "%.5f %.5f", d.moment.x() / d.mass, d.moment.y() / d.mass);
+    row("A = 1/2 sum c_i", "%.6e", d.shoelaceArea);
+    row("sum (x_i+x_i+1)c_i", "%.6e", d.shoelaceSums.x());
+    row("sum (y_i+y_i+1)c_i", "%.6e", d.shoelaceSums.y());
+    if (d.shoelaceArea > 0)  // the unweighted centroid: c itself with a uniform density
+      row("sums / 6A", "%.6f %.6f", d.shoelaceSums.x() / (6 * d.shoelaceArea),
+          d.shoelaceSums.y() / (6 * d.shoelaceArea));
+    row("M = int rho", "%.6e", d.mass);
+    row("int x rho, u", "%.6e", d.moment.x());  // a row each: two in one were cut off at 960 px
+    row("int x rho, v", "%.6e", d.moment.y());
+    if (d.mass > 0) row("c = int x rho/M", "%.6f %.6f", d.moment.x() / d.mass, d.moment.y() / d.mass);
     else row("c = int x rho/M", "%s", "- (no mass)");
     row("E=int rho|x-s|^2", "%.3e", d.energy);
     row("|c - s|", "%.3e", d.toCentroid);
