@@ -216,21 +216,23 @@ ImVec4 solverColour(CvtSolver solver) {
 }
 }  // namespace
 
-std::vector<Inspector::Comparison> Inspector::relaxWithOtherSolvers(const std::atomic<bool>* stop) const {
+std::vector<Inspector::Comparison> Inspector::relaxWithOtherSolvers(const Recording& recording,
+                                                                    const LloydOptions& run,
+                                                                    const std::atomic<bool>* stop) {
   std::vector<Comparison> runs;
-  for (CvtSolver solver : otherSolvers(options_.lloyd.solver)) {
-    LloydOptions o = options_.lloyd;
+  for (CvtSolver solver : otherSolvers(run.solver)) {
+    LloydOptions o = run;
     o.solver = solver;
-    o.distanceThreshold = replay_->recording().distanceThreshold;
-    o.percentThreshold = replay_->recording().percentThreshold;
-    runs.push_back({solver, relaxAgain(replay_->recording(), o, stop)});
+    o.distanceThreshold = recording.distanceThreshold;
+    o.percentThreshold = recording.percentThreshold;
+    runs.push_back({solver, relaxAgain(recording, o, stop)});
   }
   return runs;
 }
 
 void Inspector::compareSolvers() {
   stopComparing();
-  comparisons_ = relaxWithOtherSolvers(nullptr);
+  comparisons_ = relaxWithOtherSolvers(replay_->recording(), options_.lloyd, nullptr);
 }
 
 void Inspector::startComparing() {
@@ -238,8 +240,10 @@ void Inspector::startComparing() {
   comparisons_.clear();
   stopComparing_ = false;
   comparingDone_ = false;
-  comparer_ = std::thread([this] {
-    compared_ = relaxWithOtherSolvers(&stopComparing_);
+  // The settings are copied (Restart changes options_); the recording stays until
+  // stopComparing(), which everything that changes the replay calls first.
+  comparer_ = std::thread([this, &recording = replay_->recording(), run = options_.lloyd] {
+    compared_ = relaxWithOtherSolvers(recording, run, &stopComparing_);
     comparingDone_ = true;
   });
 }
@@ -267,6 +271,7 @@ void Inspector::fit2D() {
 }
 
 bool Inspector::startSession() {
+  stopComparing();
   stopRun();
   forgetResult();
   options_ = settings_;  // the Settings pane's, from now on the run's

@@ -198,8 +198,10 @@ class Inspector {
     std::vector<IterationRecord> iterations;
   };
   std::vector<Comparison> comparisons_;  // the other solvers', if compared
-  // The other solvers' runs from the start of the run on show; `stop` ends them early.
-  std::vector<Comparison> relaxWithOtherSolvers(const std::atomic<bool>* stop) const;
+  // The other solvers' runs from the start of `recording`, whose run used `run`; `stop` ends
+  // them early.
+  static std::vector<Comparison> relaxWithOtherSolvers(const Recording& recording, const LloydOptions& run,
+                                                       const std::atomic<bool>* stop);
   // The Compare button's runs take seconds: they go on a thread of their own, which sets
   // comparingDone_; frame() then shows their curves.
   void startComparing();

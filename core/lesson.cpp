@@ -122,7 +122,7 @@ Caption caption(Stage stage, const CaptionFacts& f) {
     case Stage::Voronoi:
       c.formula = "Each site sᵢ owns the points nearer to it than to any other site, clipped "
                   "to the domain: its Voronoi cell Vᵢ.";
-      c.numbers = cell ? format("Cell %d: area A = ½ Σ (xⱼ yⱼ₊₁ − xⱼ₊₁ yⱼ) = %.3e, "
+      c.numbers = cell ? format("Cell %d: area A = ½ Σ (xⱼ yⱼ₊₁ − xⱼ₊₁ yⱼ) = %.6e, "
                                 "%d neighbours", cell->index, cell->shoelaceArea, cell->neighbours)
                        : format("Iteration %d of %d. Pin a cell to see its numbers.", f.iteration,
                                 f.iterations - 1);
@@ -130,8 +130,11 @@ Caption caption(Stage stage, const CaptionFacts& f) {
     case Stage::Centroids:
       c.formula = "Each cell's centroid weighs its points by the density: "
                   "cᵢ = ∫ x ρ dA / ∫ ρ dA (rings).";
-      c.numbers = cell ? format("Cell %d: M = ∫ ρ dA = %.3e, ∫ x ρ dA = (%.3e, %.3e), "
-                                "c = (%.5f, %.5f)", cell->index, cell->mass, cell->moment.x(),
+      // Seven digits, as the Selection table: with four, the class's M and moment gave a c
+      // that differed from the one quoted in its fifth digit.
+      // The quotient on a line of its own: at 960 px the one line broke inside a number.
+      c.numbers = cell ? format("Cell %d: M = ∫ ρ dA = %.6e, ∫ x ρ dA = (%.6e, %.6e)\n"
+                                "c = ∫ x ρ dA / M = (%.6f, %.6f)", cell->index, cell->mass, cell->moment.x(),
                                 cell->moment.y(), cell->centroid.x(), cell->centroid.y())
                        : format("Iteration %d: energy E = Σ ∫ ρ |x − sᵢ|² dA = %.4e",
                                 f.iteration, f.energy);
