@@ -13,14 +13,18 @@ double FramePacer::wait(bool busy) {
   return kIdleWaitSeconds;
 }
 
-std::vector<KeyEvent> KeyQueue::takeFrame() {
-  std::vector<KeyEvent> frame;
+std::vector<InputEvent> InputQueue::takeFrame() {
+  std::vector<InputEvent> frame;
   std::vector<int> changed;  // keys pressed or released in this frame
+  bool pressed = false;      // a key press was taken in this frame
   while (!queue_.empty()) {
-    const KeyEvent& next = queue_.front();
-    if (next.action != KeyAction::Repeat) {
+    const InputEvent& next = queue_.front();
+    if (next.action == InputAction::Character) {
+      if (pressed) break;
+    } else if (next.action != InputAction::Repeat) {
       if (std::find(changed.begin(), changed.end(), next.key) != changed.end()) break;
       changed.push_back(next.key);
+      pressed = pressed || next.action == InputAction::Press;
     }
     frame.push_back(next);
     queue_.pop_front();

@@ -1,6 +1,6 @@
-// When the window draws a frame, and which key events each frame sees. Idle (no input, nothing
-// moving) the window waits for events instead of drawing: an inspector left open beside a
-// lecture's slides costs no CPU.
+// When the window draws a frame, and which input events each frame sees. Idle (no input,
+// nothing moving) the window waits for events instead of drawing: an inspector left open
+// beside a lecture's slides costs no CPU.
 #pragma once
 
 #include <deque>
@@ -25,27 +25,29 @@ class FramePacer {
   int settle_ = kSettleFrames;  // the first frames draw the window
 };
 
-// GLFW's values, which the window forwards to ImGui as they are.
-enum class KeyAction { Release = 0, Press = 1, Repeat = 2 };
+// GLFW's key actions, which the window forwards to ImGui as they are, and a typed character.
+enum class InputAction { Release = 0, Press = 1, Repeat = 2, Character = 3 };
 
-struct KeyEvent {
-  int key = 0, scancode = 0;
-  KeyAction action = KeyAction::Press;
-  int mods = 0;
+struct InputEvent {
+  InputAction action = InputAction::Press;
+  int key = 0, scancode = 0, mods = 0;  // of a key
+  unsigned character = 0;               // a Unicode code point, of a Character
 };
 
 // ImGui 1.86 reads each key as held or not once a frame, so a key pressed and released between
 // two frames (a quick tap: under 60 ms, a frame's time under lavapipe) was never seen, nor a
-// release and the next press of a key tapped again. Queued here, each frame takes the events
-// in order up to the second change of one key (pressed, released), which waits for the next.
-class KeyQueue {
+// release and the next press of a key tapped again; and a text field applies a frame's
+// characters before its keys (Backspace, Backspace, x typed in one frame deleted the x).
+// Queued here, each frame takes the events in order up to the second change of one key
+// (pressed, released) or a character after a key press, which wait for the next frame.
+class InputQueue {
  public:
-  void push(const KeyEvent& event) { queue_.push_back(event); }
-  std::vector<KeyEvent> takeFrame();
+  void push(const InputEvent& event) { queue_.push_back(event); }
+  std::vector<InputEvent> takeFrame();
   bool empty() const { return queue_.empty(); }
 
  private:
-  std::deque<KeyEvent> queue_;
+  std::deque<InputEvent> queue_;
 };
 
 }  // namespace lloydscope

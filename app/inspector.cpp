@@ -71,6 +71,8 @@ void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
 // ImGui 1.86 names only a few letter keys; the platform's key codes for letters are
 // consecutive (GLFW's are), so the others are found from A's.
 bool letterPressed(char letter) {
+  // Typed into a text field (a mesh's name), a letter is not a command: F reset the views.
+  if (ImGui::GetIO().WantTextInput) return false;
   return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + (letter - 'A'), false);
 }
 
@@ -164,6 +166,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   settings_ = options_;
   noteFirst(firstPassTrialText(result_));
   noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
+  inputCharts_ = result_.charts;
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
     runNotes_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
@@ -221,6 +224,7 @@ std::vector<Inspector::Comparison> Inspector::relaxWithOtherSolvers(const Record
                                                                     const std::atomic<bool>* stop) {
   std::vector<Comparison> runs;
   for (CvtSolver solver : otherSolvers(run.solver)) {
+    if (stop && *stop) break;
     LloydOptions o = run;
     o.solver = solver;
     o.distanceThreshold = recording.distanceThreshold;
@@ -242,9 +246,15 @@ void Inspector::startComparing() {
   comparingDone_ = false;
   // The settings are copied (Restart changes options_); the recording stays until
   // stopComparing(), which everything that changes the replay calls first.
+  comparingError_.clear();
   comparer_ = std::thread([this, &recording = replay_->recording(), run = options_.lloyd] {
-    compared_ = relaxWithOtherSolvers(recording, run, &stopComparing_);
+    try {
+      compared_ = relaxWithOtherSolvers(recording, run, &stopComparing_);
+    } catch (const std::exception& e) {  // out of memory, say: said in the window, as a file error is
+      comparingError_ = e.what();
+    }
     comparingDone_ = true;
+    if (wake_) wake_();  // the window may be waiting for events: the curves are news
   });
 }
 
@@ -252,6 +262,7 @@ void Inspector::stopComparing() {
   stopComparing_ = true;
   if (comparer_.joinable()) comparer_.join();
   compared_.clear();
+  comparingError_.clear();
 }
 
 void Inspector::openReplay(Recording recording) {
@@ -270,37 +281,35 @@ void Inspector::fit2D() {
   pan2D_ = ImVec2(0, 0);
 }
 
-bool Inspector::startSession() {
+void Inspector::startSession(const Mesh& input, const std::string& name) {
   stopComparing();
   stopRun();
+  // Made before anything on show changes: where it fails, the last run stays as it was.
+  std::unique_ptr<RemeshSession> session;
+  std::string notes;
+  try {
+    session = std::make_unique<RemeshSession>(input, settings_, name);
+  } catch (const Error& e) {
+    if (!usesResampling(settings_)) throw;
+    // As remesh() does: without the first pass where it makes the run fail.
+    session = std::make_unique<RemeshSession>(input, withoutResampling(settings_), name);
+    notes = withoutResamplingText(problemOf(e, name));
+  }
+  session->step();  // the panes need one iteration to show
   forgetResult();
   options_ = settings_;  // the Settings pane's, from now on the run's
-  try {
-    try {
-      session_ = std::make_unique<RemeshSession>(*input_, options_, meshName_);
-    } catch (const Error& e) {
-      if (!usesResampling(options_)) throw;
-      // As remesh() does: without the first pass where it makes the run fail.
-      session_ = std::make_unique<RemeshSession>(*input_, withoutResampling(options_), meshName_);
-      runNotes_ = withoutResamplingText(problemOf(e, meshName_));
-    }
-    result_.paramUsed = session_->paramUsed();
-    result_.distortion = session_->distortion();
-    // The 2D pane shows the simplified input's map.
-    noteFirst(coarseInputText(session_->coarseInput(), input_->vertexCount()));
-    session_->step();  // the panes need one iteration to show
-    Recording header = session_->header();
-    header.iterations.push_back(session_->iterationRecord(0));
-    openReplay(std::move(header));
-    // No site to move (a domain its border samples fill): the run is over, Step and Run have
-    // nothing to do, and the result is ready.
-    if (session_->finished()) finishSession();
-    return true;
-  } catch (const Error& e) {
-    session_.reset();
-    runNotes_ = e.what();
-    return false;
-  }
+  session_ = std::move(session);
+  runNotes_ = notes;
+  result_.paramUsed = session_->paramUsed();
+  result_.distortion = session_->distortion();
+  // The 2D pane shows the simplified input's map.
+  noteFirst(coarseInputText(session_->coarseInput(), input.vertexCount()));
+  Recording header = session_->header();
+  header.iterations.push_back(session_->iterationRecord(0));
+  openReplay(std::move(header));
+  // No site to move (a domain its border samples fill): the run is over, Step and Run have
+  // nothing to do, and the result is ready.
+  if (session_->finished()) finishSession();
 }
 
 // A new run or recording: nothing of the last run's result (its final column, distances,
@@ -488,7 +497,7 @@ void Inspector::startExport(ExportJob job) {
 }
 
 void Inspector::exported(const std::string& error) {
-  if (exportRequest_) message_ = error.empty() ? "saved " + exportRequest_->path : error;
+  if (exportRequest_) showMessage(error.empty() ? "saved " + exportRequest_->path : error);
   exportRequest_.reset();
   if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last)
     ++exportNext_;
@@ -623,15 +632,25 @@ void Inspector::uploadMesh() {
   uploadedMethod_ = replay_->method();
 }
 
+void Inspector::showMessage(std::string text) {
+  // The command line's ways, not the window's.
+  for (const auto& [flag, here] : {std::pair<std::string, std::string>{"(--repair fixes this)", "(ticking \"repair\" fixes this)"},
+                                   {"(use --method retriangulate)", "(choose method: retriangulate under Settings)"}})
+    if (const size_t at = text.find(flag); at != std::string::npos) text.replace(at, flag.size(), here);
+  message_ = std::move(text);
+  ++messageCount_;  // the same error twice is news too
+}
+
 bool Inspector::animating() const {
-  return playing_ || (lesson_.playing() && !lesson_.paused()) || !workerDone_ ||
-         worker_.joinable() || comparer_.joinable() || exportJob_ || fitPending_;
+  return playing_ || (lesson_.playing() && !lesson_.paused() && !lesson_.atLastStep()) ||
+         !workerDone_ || worker_.joinable() || exportJob_ || fitPending_;
 }
 
 void Inspector::frame() {
   if (comparingDone_ && comparer_.joinable()) {
     comparer_.join();
-    comparisons_ = std::move(compared_);
+    if (comparingError_.empty()) comparisons_ = std::move(compared_);
+    else showMessage("Compare: " + comparingError_);
     compared_.clear();
   }
   collectIterations();
@@ -641,9 +660,9 @@ void Inspector::frame() {
     if (session_->finished()) finishSession();
   }
   handleKeys();
-  // The window sleeps while nothing moves: the frame that starts playback may come long after
-  // the last one, and must not jump ahead by that time.
-  const float elapsed = std::min(ImGui::GetIO().DeltaTime, 0.1f);
+  // The window sleeps while nothing moves: a frame after such a wait (the one that starts
+  // playback or the lesson) must not jump ahead by the time it slept.
+  const float elapsed = animatedLastFrame_ ? ImGui::GetIO().DeltaTime : 0.0f;
   if (playing_) {
     playClock_ += elapsed * playSpeed_;
     while (playClock_ >= 1.0f) {
@@ -696,6 +715,7 @@ void Inspector::frame() {
   plotsPane(ImVec2(left, plotsTop), ImVec2(display.x - left, plotsHeight));
   timelinePane(ImVec2(left, plotsTop + plotsHeight), ImVec2(display.x - left, timelineHeight));
   if (bigFont) ImGui::PopFont();
+  animatedLastFrame_ = animating();
 }
 
 bool Inspector::finalShown() const {
@@ -734,8 +754,9 @@ CaptionFacts Inspector::captionFacts() {
     f.surface = inputTopology_->describe();
     f.disk = inputTopology_->isDisk();
   }
-  f.seamEdges = result_.cut.seamEdges;
-  f.charts = result_.charts;
+  // A live run (after Restart) has no result yet: its replay has the seams.
+  f.seamEdges = std::max<int>(result_.cut.seamEdges, replay_->seams().size());
+  f.charts = inputCharts_;
   f.input = result_.before;
   f.cleanedUp = finalShown();
   f.result = f.cleanedUp ? result_.after : currentQuality();
@@ -895,7 +916,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     ImGui::BeginDisabled();
     ImGui::Button(("Comparing " + withOthers + "...").c_str());
     ImGui::EndDisabled();
-  } else if (workerDone_ && ImGui::Button(("Compare " + withOthers).c_str())) {
+  } else if (workerDone_ && !worker_.joinable() && ImGui::Button(("Compare " + withOthers).c_str())) {
     startComparing();
   }
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -940,9 +961,9 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     ImGui::TextWrapped("%s", message_.c_str());
     // A new message is scrolled into view: with Files or Export open it fell below the window
     // (1280x800), and a failed Open mesh looked like nothing at all.
-    if (message_ != scrolledToMessage_) ImGui::SetScrollHereY(1.0f);
+    if (messageCount_ != scrolledToMessage_) ImGui::SetScrollHereY(1.0f);
   }
-  scrolledToMessage_ = message_;
+  scrolledToMessage_ = messageCount_;
   ImGui::End();
 }
 
@@ -957,7 +978,7 @@ void Inspector::cameraControls() {
       setCamera(text ? text : "");
       message_.clear();
     } catch (const Error& e) {
-      message_ = e.what();
+      showMessage(e.what());
     }
   }
 }
@@ -972,9 +993,9 @@ void Inspector::exportControls() {
   auto start = [&](ExportJob job) {
     try {
       startExport(std::move(job));
-      message_ = std::string("saving ") + exportPath_;
+      showMessage(std::string("saving ") + exportPath_);
     } catch (const Error& e) {
-      message_ = e.what();
+      showMessage(e.what());
     }
   };
   if (ImGui::Button("Save this iteration")) start({exportPath_, pane});
@@ -1067,36 +1088,26 @@ void Inspector::fileControls() {
     try {
       stopRun();
       ReadResult read = readMesh(meshPath_, ReadOptions{repairOnOpen_});
-      std::optional<Mesh> previous = std::move(input_);
-      const std::string previousName = meshName_;
-      const QualityMetrics previousBefore = result_.before;
-      const std::optional<Topology> previousTopology = inputTopology_;
-      input_ = std::move(read.mesh);
-      inputTopology_ = analyzeTopology(*input_);
+      std::string name = meshPath_;
+      name = name.substr(name.find_last_of('/') + 1);
       settings_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
-      meshName_ = meshPath_;
-      meshName_ = meshName_.substr(meshName_.find_last_of('/') + 1);
-      result_.before = measureQuality(*input_);
-      if (!startSession()) {
-        // The last run stays on show, under its own name: the new mesh's name and numbers beside
-        // its panes said they were the new mesh's.
-        const std::string why = runNotes_;
-        input_ = std::move(previous);
-        meshName_ = previousName;
-        result_.before = previousBefore;
-        inputTopology_ = previousTopology;
-        runNotes_.clear();
-        throw Error(why + "; still showing " + meshName_);
+      try {
+        startSession(read.mesh, name);
+      } catch (const Error& e) {
+        // The last run stays on show, under its own name (the new mesh's name and numbers
+        // beside its panes said they were the new mesh's).
+        throw Error(std::string(e.what()) + "; still showing " + meshName_);
       }
+      input_ = std::move(read.mesh);
+      meshName_ = name;
+      inputTopology_ = analyzeTopology(*input_);
+      inputCharts_ = 0;  // a session makes one run, of one disk
+      result_.before = measureQuality(*input_);
       for (const std::string& note : read.notes) noteFirst(note);
       startRun();
       message_.clear();  // an earlier file's error or save
     } catch (const Error& e) {
-      message_ = e.what();
-      // The command line's ways, not this pane's.
-      for (const auto& [flag, here] : {std::pair<std::string, std::string>{"(--repair fixes this)", "(ticking \"repair\" fixes this)"},
-                                       {"(use --method retriangulate)", "(choose method: retriangulate under Settings)"}})
-        if (const size_t at = message_.find(flag); at != std::string::npos) message_.replace(at, flag.size(), here);
+      showMessage(e.what());
     }
   }
   ImGui::SetNextItemWidth(-1);
@@ -1105,9 +1116,9 @@ void Inspector::fileControls() {
     try {
       stopRun();
       saveRecording(replay_->recording(), recordingPath_);
-      message_ = std::string("saved ") + recordingPath_;
+      showMessage(std::string("saved ") + recordingPath_);
     } catch (const Error& e) {
-      message_ = e.what();
+      showMessage(e.what());
     }
   }
   ImGui::SameLine();
@@ -1117,12 +1128,14 @@ void Inspector::fileControls() {
       Recording r = loadRecording(recordingPath_);
       session_.reset();
       input_.reset();
+      inputTopology_.reset();  // the recording holds its disk only
+      inputCharts_ = 0;
       result_.before = measureQuality(r.input);
       forgetResult();
       openReplay(std::move(r));
       message_.clear();
     } catch (const Error& e) {
-      message_ = e.what();
+      showMessage(e.what());
     }
   }
 }
@@ -1574,7 +1587,13 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   const bool running = !workerDone_;
   if (!input_) ImGui::BeginDisabled();
-  if (ImGui::Button("Restart")) startSession();  // from initial sites, with the settings
+  if (ImGui::Button("Restart")) {  // from initial sites, with the settings
+    try {
+      startSession(*input_, meshName_);
+    } catch (const Error& e) {
+      showMessage(e.what());
+    }
+  }
   if (!input_) ImGui::EndDisabled();
   ImGui::SameLine();
   const bool canStep = session_ && !running && !session_->finished();

@@ -99,6 +99,9 @@ class Inspector {
   // The next frame differs from this one without input: a run, playback, a lesson playing, an
   // export or a comparison under way. The window waits for events otherwise.
   bool animating() const;
+  // Called from another thread when something the window shows is ready (the comparison's
+  // curves): the window draws a frame though it waits for input.
+  void setWake(std::function<void()> wake) { wake_ = std::move(wake); }
   // The CPU work of the current iteration's panes (its cells, lifted mesh, metrics and cell
   // edges), cached for frame(). Front ends call it while the previous frame renders: on two
   // cores, scrubbing then overlaps the geometry with lavapipe's rasterization.
@@ -152,8 +155,9 @@ class Inspector {
   void settingsControls();
   void fileControls();
   // Live runs: a session steps on a worker thread; its iterations reach the replay here.
-  // False where no run could start (runNotes_ says why).
-  bool startSession();
+  // Starts one of `input` with the Settings pane's settings and shows it; throws Error where
+  // none can start, leaving the run on show as it was.
+  void startSession(const Mesh& input, const std::string& name);
   // Puts `text` (if any) before the run's notes so far.
   void noteFirst(const std::string& text);
   // Before a new run or recording: the last run's result, and its notes, are not shown with it.
@@ -185,13 +189,15 @@ class Inspector {
   std::unique_ptr<Replay> replay_;
   std::optional<Mesh> input_;
   std::optional<Topology> inputTopology_;  // of the mesh opened, before a chart stood for it
+  int inputCharts_ = 0;  // > 0: the panes and Restart follow the largest of so many charts
   std::unique_ptr<RemeshSession> session_;
   std::thread worker_;
   std::atomic<bool> stopRequested_{false}, workerDone_{true};
   std::mutex pendingMutex_;
   std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
   std::string message_;                   // what the last file action did, or its error: under the controls
-  std::string scrolledToMessage_;         // the message the controls pane was last scrolled to
+  int messageCount_ = 0, scrolledToMessage_ = 0;  // messages shown; the last the pane scrolled to
+  void showMessage(std::string text);
   std::string runNotes_;                  // how the result was made, or why its run failed: under the table
   struct Comparison {  // another solver's run from the same first sites
     CvtSolver solver;
@@ -209,6 +215,9 @@ class Inspector {
   std::thread comparer_;
   std::atomic<bool> stopComparing_{false}, comparingDone_{false};
   std::vector<Comparison> compared_;
+  std::string comparingError_;  // why the comparison failed, if it did
+  std::function<void()> wake_;  // the window's: draw a frame even if no input comes
+  bool animatedLastFrame_ = false;
   char meshPath_[512] = {}, recordingPath_[512] = {};
   CanvasRenderer canvas_;
   // What the 2D pane's geometry was built for: rebuilt when any of it changes.

@@ -91,6 +91,7 @@ std::string oneLine(const std::string& message) {
 std::string dashedFileHint(int argc, char** argv) {
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
+    if (arg == "--") break;  // what follows is read as names already
     std::error_code ignored;
     if (arg.size() > 1 && arg[0] == '-' && std::filesystem::exists(arg, ignored))
       return "; '" + arg + "' was read as an option: write ./" + arg + " for the file";

@@ -125,8 +125,8 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
                        d.fixed ? "fixed, border" : "movable");
     ImGui::SameLine();
     if (ImGui::SmallButton("unpin")) unpinCell = cell;
-    // Seven digits: a class checks c by hand from the sums below, and a site 3e-5 from its
-    // centroid (late iterations) was lost in five.
+    // Six decimals, and seven digits for the sums, the mass and the moment: a class checks c
+    // by hand from them, and from five digits the quotient differed from c in its last one.
     row("site s", "%.6f %.6f", d.site.x(), d.site.y());
     row("centroid c", "%.6f %.6f", d.centroid.x(), d.centroid.y());
     row("s, 3D", "%.3f %.3f %.3f", d.site3D.x(), d.site3D.y(), d.site3D.z());

@@ -156,20 +156,19 @@ void saveExport(Inspector& inspector, const Swapchain& chain, const gpu::Buffer&
 // What the window's callbacks collect between frames (the window's user pointer).
 struct WindowEvents {
   FramePacer pacer;
-  KeyQueue keys;
+  InputQueue input;
 };
 
 WindowEvents& eventsOf(GLFWwindow* window) {
   return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window));
 }
 
-// Installed before ImGui's backend, which calls them before its own (mouse buttons, scroll,
-// characters, focus); the rest it does not install. Any of them wakes the window.
+// Installed before ImGui's backend, which calls those it installs too (mouse buttons, scroll,
+// focus, the cursor entering) before its own. Any of them wakes the window.
 void noteInput(GLFWwindow* window) { eventsOf(window).pacer.input(); }
 void watchInput(GLFWwindow* window) {
   glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { noteInput(w); });
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
-  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { noteInput(w); });
   glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
   glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
   glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
@@ -177,20 +176,26 @@ void watchInput(GLFWwindow* window) {
   glfwSetWindowRefreshCallback(window, noteInput);
 }
 
-// Replaces ImGui's key callback (after its backend is set up): keys reach it through the queue,
-// frame by frame (KeyQueue).
+// Replaces ImGui's key and character callbacks (after its backend is set up): keys and
+// characters reach it through the queue, frame by frame (InputQueue).
 void queueKeys(GLFWwindow* window) {
-  static_assert(GLFW_RELEASE == int(KeyAction::Release) && GLFW_PRESS == int(KeyAction::Press) &&
-                GLFW_REPEAT == int(KeyAction::Repeat));
+  static_assert(GLFW_RELEASE == int(InputAction::Release) && GLFW_PRESS == int(InputAction::Press) &&
+                GLFW_REPEAT == int(InputAction::Repeat));
   glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
-    eventsOf(w).keys.push({key, scancode, static_cast<KeyAction>(action), mods});
+    eventsOf(w).input.push({static_cast<InputAction>(action), key, scancode, mods});
+    noteInput(w);
+  });
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int c) {
+    eventsOf(w).input.push({InputAction::Character, 0, 0, 0, c});
     noteInput(w);
   });
 }
 
 void deliverKeys(GLFWwindow* window) {
-  for (const KeyEvent& e : eventsOf(window).keys.takeFrame())
-    ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, static_cast<int>(e.action), e.mods);
+  for (const InputEvent& e : eventsOf(window).input.takeFrame()) {
+    if (e.action == InputAction::Character) ImGui_ImplGlfw_CharCallback(window, e.character);
+    else ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, static_cast<int>(e.action), e.mods);
+  }
 }
 
 // A key or mouse button held: ImGui repeats keys and drags by its own clock, between events.
@@ -200,10 +205,14 @@ bool inputHeld() {
          std::any_of(std::begin(io.MouseDown), std::end(io.MouseDown), [](bool d) { return d; });
 }
 
-// Draws at once while anything moves or input is settling; otherwise sleeps until an event.
+// Draws at once while anything moves or input is settling; otherwise, or minimized (nothing to
+// draw until it is shown again), sleeps until an event.
 void awaitNextFrame(GLFWwindow* window, const Inspector& inspector) {
   WindowEvents& events = eventsOf(window);
-  const double wait = events.pacer.wait(inspector.animating() || !events.keys.empty() || inputHeld());
+  int w, h;
+  glfwGetFramebufferSize(window, &w, &h);
+  const bool busy = inspector.animating() || !events.input.empty() || inputHeld();
+  const double wait = w == 0 || h == 0 ? FramePacer::kIdleWaitSeconds : events.pacer.wait(busy);
   if (wait > 0) glfwWaitEventsTimeout(wait);
   else glfwPollEvents();
 }
@@ -230,6 +239,8 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     glfwTerminate();
     throw Error("cannot open a window on this display");
   }
+  WindowEvents events;  // the callbacks' until the window is gone
+  glfwSetWindowUserPointer(window, &events);
   {
     gpu::Context gpu(surfaceExtensions(), true, validation);
     VkSurfaceKHR surface;
@@ -242,8 +253,6 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     Swapchain chain;
     chain.create(gpu, surface, pass, format, window);
 
-    WindowEvents events;
-    glfwSetWindowUserPointer(window, &events);
     watchInput(window);
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
@@ -269,15 +278,13 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     {
       gpu::Buffer pixels;  // frames read back for exports
       Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
+      inspector.setWake(glfwPostEmptyEvent);  // thread-safe: ends a glfwWaitEventsTimeout
       view.applyTo(inspector);
       while (!glfwWindowShouldClose(window)) {
         awaitNextFrame(window, inspector);
         int w, h;
         glfwGetFramebufferSize(window, &w, &h);
-        if (w == 0 || h == 0) {  // minimized: nothing to draw until it is shown again
-          glfwWaitEventsTimeout(FramePacer::kIdleWaitSeconds);
-          continue;
-        }
+        if (w == 0 || h == 0) continue;  // minimized
         if (static_cast<uint32_t>(w) != chain.extent.width ||
             static_cast<uint32_t>(h) != chain.extent.height) {
           chain.destroy(gpu);

@@ -53,6 +53,8 @@ class LessonPlayer {
   bool playing() const { return !plan_.empty(); }
   void togglePause() { paused_ = !paused_; }
   bool paused() const { return paused_; }
+  // On its last step, which stays on screen until the lesson is ended: nothing moves.
+  bool atLastStep() const { return playing() && next_ + 1 == plan_.size(); }
   void advance(float seconds);
   void skip(long steps);  // clamped to the first and the last step
   const LessonStep& current() const { return plan_.at(next_); }

@@ -637,6 +637,9 @@ TEST(Cli, AFileNamedLikeAnOptionIsToldHowToNameIt) {
       << message;
   EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
   EXPECT_EQ(WEXITSTATUS(std::system((cli + " metrics ./-lead.off > /dev/null").c_str())), 0);
+  // After --, a name is read as one: another mistake is not blamed on it.
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " metrics --bogus -- -lead.off 2> err").c_str())), 1);
+  EXPECT_EQ(test::readText(err).find("read as an option"), std::string::npos) << test::readText(err);
 }
 
 // A run that needs more memory than the process may have ends with one line saying so, not an

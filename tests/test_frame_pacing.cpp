@@ -5,69 +5,86 @@
 namespace lloydscope {
 namespace {
 
-KeyEvent press(int key) { return {key, 0, KeyAction::Press, 0}; }
-KeyEvent release(int key) { return {key, 0, KeyAction::Release, 0}; }
+InputEvent press(int key) { return {InputAction::Press, key}; }
+InputEvent release(int key) { return {InputAction::Release, key}; }
+InputEvent character(unsigned c) { return {InputAction::Character, 0, 0, 0, c}; }
 
-std::vector<std::pair<int, KeyAction>> keysOf(const std::vector<KeyEvent>& events) {
-  std::vector<std::pair<int, KeyAction>> keys;
-  for (const KeyEvent& e : events) keys.emplace_back(e.key, e.action);
+std::vector<std::pair<int, InputAction>> keysOf(const std::vector<InputEvent>& events) {
+  std::vector<std::pair<int, InputAction>> keys;
+  for (const InputEvent& e : events) keys.emplace_back(e.key, e.action);
   return keys;
 }
 
-using Keys = std::vector<std::pair<int, KeyAction>>;
+using Keys = std::vector<std::pair<int, InputAction>>;
 
-TEST(KeyQueue, ATapBetweenTwoFramesIsSeenPressedThenReleased) {
-  KeyQueue queue;
+TEST(InputQueue, ATapBetweenTwoFramesIsSeenPressedThenReleased) {
+  InputQueue queue;
   queue.push(press(262));
   queue.push(release(262));
-  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, KeyAction::Press}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, InputAction::Press}}));
   EXPECT_FALSE(queue.empty());
-  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, KeyAction::Release}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, InputAction::Release}}));
   EXPECT_TRUE(queue.empty());
   EXPECT_TRUE(queue.takeFrame().empty());
 }
 
-TEST(KeyQueue, AModifierIsStillHeldWhenTheKeyItChangesIsSeen) {
+TEST(InputQueue, AModifierIsStillHeldWhenTheKeyItChangesIsSeen) {
   // Shift+Right tapped between two frames: the frame that sees Right pressed sees Shift held.
-  KeyQueue queue;
-  for (const KeyEvent& e : {press(340), press(262), release(262), release(340)}) queue.push(e);
-  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{340, KeyAction::Press}, {262, KeyAction::Press}}));
-  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, KeyAction::Release}, {340, KeyAction::Release}}));
+  InputQueue queue;
+  for (const InputEvent& e : {press(340), press(262), release(262), release(340)}) queue.push(e);
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{340, InputAction::Press}, {262, InputAction::Press}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, InputAction::Release}, {340, InputAction::Release}}));
 }
 
-TEST(KeyQueue, TwoTapsOfOneKeyTakeFourFrames) {
-  KeyQueue queue;
-  for (const KeyEvent& e : {press(32), release(32), press(32), release(32)}) queue.push(e);
+TEST(InputQueue, TwoTapsOfOneKeyTakeFourFrames) {
+  InputQueue queue;
+  for (const InputEvent& e : {press(32), release(32), press(32), release(32)}) queue.push(e);
   int frames = 0, presses = 0;
   while (!queue.empty()) {
     ++frames;
-    for (const KeyEvent& e : queue.takeFrame()) presses += e.action == KeyAction::Press;
+    for (const InputEvent& e : queue.takeFrame()) presses += e.action == InputAction::Press;
   }
   EXPECT_EQ(frames, 4);  // press | release | press | release: each frame sees the key change
   // once, so ImGui sees the second press too
   EXPECT_EQ(presses, 2);
 }
 
-TEST(KeyQueue, ATapArrivingWhileTheLastOneIsReleasedWaitsForTheNextFrame) {
+TEST(InputQueue, ATapArrivingWhileTheLastOneIsReleasedWaitsForTheNextFrame) {
   // The first press was seen by an earlier frame; its release and the next press arrive
   // together: one frame sees the key up, the next sees it down again.
-  KeyQueue queue;
+  InputQueue queue;
   queue.push(press(262));
   queue.takeFrame();
-  for (const KeyEvent& e : {release(262), press(262), release(262)}) queue.push(e);
-  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, KeyAction::Release}}));
-  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, KeyAction::Press}}));
-  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, KeyAction::Release}}));
+  for (const InputEvent& e : {release(262), press(262), release(262)}) queue.push(e);
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, InputAction::Release}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, InputAction::Press}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{262, InputAction::Release}}));
 }
 
-TEST(KeyQueue, AReleaseOfAKeyPressedEarlierAndRepeatsPassAtOnce) {
-  KeyQueue queue;
+TEST(InputQueue, AReleaseOfAKeyPressedEarlierAndRepeatsPassAtOnce) {
+  InputQueue queue;
   queue.push(press(65));
   EXPECT_EQ(queue.takeFrame().size(), 1u);
-  queue.push({65, 0, KeyAction::Repeat, 0});
-  queue.push({65, 0, KeyAction::Repeat, 0});
+  queue.push({InputAction::Repeat, 65});
+  queue.push({InputAction::Repeat, 65});
   queue.push(release(65));
   EXPECT_EQ(queue.takeFrame().size(), 3u);
+  EXPECT_TRUE(queue.empty());
+}
+
+// A text field applies a frame's characters before its keys: typed "Backspace, Backspace, x"
+// in one frame, the x was written, then deleted.
+TEST(InputQueue, ACharacterAfterAKeyPressWaitsForTheNextFrame) {
+  InputQueue queue;
+  for (const InputEvent& e : {character('a'), press(259), release(259), press(259), release(259), character('x')})
+    queue.push(e);
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{0, InputAction::Character}, {259, InputAction::Press}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{259, InputAction::Release}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{259, InputAction::Press}}));
+  // No key pressed in this frame: the x may come with the release.
+  const std::vector<InputEvent> last = queue.takeFrame();
+  EXPECT_EQ(keysOf(last), (Keys{{259, InputAction::Release}, {0, InputAction::Character}}));
+  EXPECT_EQ(last.at(1).character, unsigned('x'));
   EXPECT_TRUE(queue.empty());
 }
 

@@ -35,11 +35,15 @@ TEST(Lesson, PlayerAdvancesAndStopsOnTheResult) {
   EXPECT_EQ(player.current().stage, Stage::Parameterize);
   player.advance(4.0f + 3.0f);  // past parameterize and the first Voronoi
   EXPECT_EQ(player.current().stage, Stage::Centroids);
+  EXPECT_FALSE(player.atLastStep());
   player.advance(1000.0f);
   EXPECT_TRUE(player.playing());
   EXPECT_EQ(player.current().stage, Stage::Result);
   EXPECT_EQ(player.current().iteration, 3);
+  // Nothing moves any more: the window may sleep on the result beside the slides.
+  EXPECT_TRUE(player.atLastStep());
   player.stop();
+  EXPECT_FALSE(player.atLastStep());
   EXPECT_FALSE(player.playing());
 }
 
