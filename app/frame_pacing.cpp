@@ -4,30 +4,27 @@
 
 namespace lloydscope {
 
-double FramePacer::wait(bool busy) {
+double FramePacer::wait(bool busy, bool typing) {
   if (busy) return 0;
   if (settle_ > 0) {
     --settle_;
     return 0;
   }
-  return kIdleWaitSeconds;
+  return typing ? kCaretBlinkSeconds : kUntilInput;
 }
 
 std::vector<InputEvent> InputQueue::takeFrame() {
   std::vector<InputEvent> frame;
   std::vector<int> changed;  // keys pressed or released in this frame
-  bool pressed = false;      // a key press was taken in this frame
   while (!queue_.empty()) {
-    const InputEvent& next = queue_.front();
-    if (next.action == InputAction::Character) {
-      if (pressed) break;
-    } else if (next.action != InputAction::Repeat) {
+    const InputEvent next = queue_.front();
+    if (next.action == InputAction::Release || next.action == InputAction::Press) {
       if (std::find(changed.begin(), changed.end(), next.key) != changed.end()) break;
       changed.push_back(next.key);
-      pressed = pressed || next.action == InputAction::Press;
     }
     frame.push_back(next);
     queue_.pop_front();
+    if (next.action == InputAction::Press) break;  // the last of its frame
   }
   return frame;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deque>
+#include <limits>
 #include <vector>
 
 namespace lloydscope {
@@ -13,13 +14,15 @@ class FramePacer {
   // ImGui shows a click's effect (a button's action, a header opening, a hover's highlight) a
   // frame or two after the event: so many frames are drawn after any input before waiting.
   static constexpr int kSettleFrames = 3;
-  // The longest wait: a text field's caret still blinks.
-  static constexpr double kIdleWaitSeconds = 0.5;
+  // While a text field takes typing, a frame at least so often: its caret blinks.
+  static constexpr double kCaretBlinkSeconds = 0.5;
+  static constexpr double kUntilInput = std::numeric_limits<double>::infinity();
 
   void input() { settle_ = kSettleFrames; }
-  // How long to wait for events before the next frame; 0: draw it at once. `busy`: the next
-  // frame differs without input (a run, playback, a lesson, an export).
-  double wait(bool busy);
+  // How long to wait for events before the next frame: 0 to draw it at once, kUntilInput for
+  // as long as none comes. `busy`: the next frame differs without input (a run, playback, a
+  // lesson, an export); `typing`: a text field is active.
+  double wait(bool busy, bool typing);
 
  private:
   int settle_ = kSettleFrames;  // the first frames draw the window
@@ -36,10 +39,11 @@ struct InputEvent {
 
 // ImGui 1.86 reads each key as held or not once a frame, so a key pressed and released between
 // two frames (a quick tap: under 60 ms, a frame's time under lavapipe) was never seen, nor a
-// release and the next press of a key tapped again; and a text field applies a frame's
-// characters before its keys (Backspace, Backspace, x typed in one frame deleted the x).
-// Queued here, each frame takes the events in order up to the second change of one key
-// (pressed, released) or a character after a key press, which wait for the next frame.
+// release and the next press of a key tapped again, nor a chord whose modifier was released
+// in the frame that saw the key pressed (Shift+Right read as Right); and a text field applies
+// a frame's characters before its keys (Backspace, Backspace, x typed in one frame deleted the
+// x). Queued here, each frame takes the events in order up to the first key press, which ends
+// it, or the second change of one key (pressed, released), which waits for the next frame.
 class InputQueue {
  public:
   void push(const InputEvent& event) { queue_.push_back(event); }

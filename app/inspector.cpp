@@ -957,7 +957,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   settingsControls();
   fileControls();
   exportControls();
-  if (!message_.empty()) {
+  // Not in an export's pictures: the next picture showed the last one's "saved ...".
+  if (!message_.empty() && !exporting()) {
     ImGui::TextWrapped("%s", message_.c_str());
     // A new message is scrolled into view: with Files or Export open it fell below the window
     // (1280x800), and a failed Open mesh looked like nothing at all.
@@ -1540,8 +1541,9 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   Curves others;
   std::vector<ImU32> otherColours;
   if (!comparisons_.empty()) {  // which curve is which
-    ImGui::TextColored(solverColour(options_.lloyd.solver), "%s, this run: %d iterations",
-                       toString(options_.lloyd.solver), replay_->iterationCount());
+    ImGui::TextColored(solverColour(options_.lloyd.solver), "%s, this run: %d iteration%s",
+                       toString(options_.lloyd.solver), replay_->iterationCount(),
+                       replay_->iterationCount() == 1 ? "" : "s");
     for (size_t k = 0; k < comparisons_.size(); ++k) {
       const Comparison& c = comparisons_[k];
       others.add(c.iterations);

@@ -11,9 +11,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
-#include <algorithm>
 #include <cstdlib>
-#include <iterator>
 #include <vector>
 
 namespace lloydscope {
@@ -198,22 +196,26 @@ void deliverKeys(GLFWwindow* window) {
   }
 }
 
-// A key or mouse button held: ImGui repeats keys and drags by its own clock, between events.
-bool inputHeld() {
+// A key held other than a modifier: ImGui repeats it by its own clock, between events (a held
+// mouse button or Shift changes nothing until the pointer moves).
+bool keyHeld() {
   const ImGuiIO& io = ImGui::GetIO();
-  return std::any_of(std::begin(io.KeysDown), std::end(io.KeysDown), [](bool d) { return d; }) ||
-         std::any_of(std::begin(io.MouseDown), std::end(io.MouseDown), [](bool d) { return d; });
+  for (int key = 0; key < IM_ARRAYSIZE(io.KeysDown); ++key)
+    if (io.KeysDown[key] && !(key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER)) return true;
+  return false;
 }
 
 // Draws at once while anything moves or input is settling; otherwise, or minimized (nothing to
-// draw until it is shown again), sleeps until an event.
+// draw until it is shown again), sleeps until an event (a thread's glfwPostEmptyEvent too).
 void awaitNextFrame(GLFWwindow* window, const Inspector& inspector) {
   WindowEvents& events = eventsOf(window);
   int w, h;
   glfwGetFramebufferSize(window, &w, &h);
-  const bool busy = inspector.animating() || !events.input.empty() || inputHeld();
-  const double wait = w == 0 || h == 0 ? FramePacer::kIdleWaitSeconds : events.pacer.wait(busy);
-  if (wait > 0) glfwWaitEventsTimeout(wait);
+  const bool busy = inspector.animating() || !events.input.empty() || keyHeld();
+  const double wait = w == 0 || h == 0 ? FramePacer::kUntilInput
+                                       : events.pacer.wait(busy, ImGui::GetIO().WantTextInput);
+  if (wait == FramePacer::kUntilInput) glfwWaitEvents();
+  else if (wait > 0) glfwWaitEventsTimeout(wait);
   else glfwPollEvents();
 }
 
