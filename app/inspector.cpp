@@ -912,13 +912,15 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   }
   const std::vector<CvtSolver> others = otherSolvers(options_.lloyd.solver);
   const std::string withOthers = std::string("with ") + toString(others[0]) + " and " + toString(others[1]);
-  if (comparer_.joinable()) {  // their curves join the convergence plots when done
-    ImGui::BeginDisabled();
-    ImGui::Button(("Comparing " + withOthers + "...").c_str());
-    ImGui::EndDisabled();
-  } else if (workerDone_ && !worker_.joinable() && ImGui::Button(("Compare " + withOthers).c_str())) {
+  // Their curves join the convergence plots when done. During a run the button waits (it was
+  // hidden, and a class did not know it was there).
+  const bool comparing = comparer_.joinable(), running = !workerDone_ || worker_.joinable();
+  if (comparing || running) ImGui::BeginDisabled();
+  if (ImGui::Button(((comparing ? "Comparing " : "Compare ") + withOthers + (comparing ? "..." : "")).c_str()))
     startComparing();
-  }
+  if (comparing || running) ImGui::EndDisabled();
+  if (running && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("After the run: Stop it, or let it finish");
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pick = pickTriangles2D_ ? 1 : 0;
     ImGui::TextUnformatted("2D click pins a");

@@ -280,7 +280,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     {
       gpu::Buffer pixels;  // frames read back for exports
       Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
-      inspector.setWake(glfwPostEmptyEvent);  // thread-safe: ends a glfwWaitEventsTimeout
+      inspector.setWake(glfwPostEmptyEvent);  // thread-safe: ends the wait for events
       view.applyTo(inspector);
       while (!glfwWindowShouldClose(window)) {
         awaitNextFrame(window, inspector);
