@@ -3,6 +3,7 @@
 // beside a lecture's slides costs no CPU.
 #pragma once
 
+#include <algorithm>
 #include <deque>
 #include <limits>
 #include <vector>
@@ -18,7 +19,8 @@ class FramePacer {
   static constexpr double kCaretBlinkSeconds = 0.5;
   static constexpr double kUntilInput = std::numeric_limits<double>::infinity();
 
-  void input() { settle_ = kSettleFrames; }
+  // Draws `frames` more before waiting again (at least).
+  void input(int frames = kSettleFrames) { settle_ = std::max(settle_, frames); }
   // How long to wait for events before the next frame: 0 to draw it at once, kUntilInput for
   // as long as none comes. `busy`: the next frame differs without input (a run, playback, a
   // lesson, an export); `typing`: a text field is active.
@@ -47,7 +49,11 @@ struct InputEvent {
 class InputQueue {
  public:
   void push(const InputEvent& event) { queue_.push_back(event); }
-  std::vector<InputEvent> takeFrame();
+  // `typing`: a text field takes the characters, and their keys (letters, digits, punctuation
+  // without Ctrl, Alt or Super) pass with no frame of their own: one a character, typing ran
+  // behind a fast typist, and a click overtook the characters still queued (half a file name
+  // went to the next field clicked).
+  std::vector<InputEvent> takeFrame(bool typing = false);
   bool empty() const { return queue_.empty(); }
 
  private:

@@ -441,7 +441,11 @@ void Inspector::hoverTooltip2D(const Vec2& uv) {
                                      ? " (fixed border site)" : "");
   ImGui::Text("area %.3e  mass %.3e", c.area, c.mass);
   ImGui::Text("site to centroid %.2e", (c.centroid - view.sites[cell]).norm());
-  ImGui::TextDisabled("click to pin");
+  const bool pinned = std::find(selection_.cells().begin(), selection_.cells().end(), cell) !=
+                      selection_.cells().end();
+  ImGui::TextDisabled("%s", pickTriangles2D_ ? "click to pin or unpin the triangle here"
+                            : pinned         ? "click to unpin"
+                                             : "click to pin");
   ImGui::EndTooltip();
 }
 
@@ -641,9 +645,12 @@ void Inspector::showMessage(std::string text) {
   ++messageCount_;  // the same error twice is news too
 }
 
-bool Inspector::animating() const {
-  return playing_ || (lesson_.playing() && !lesson_.paused() && !lesson_.atLastStep()) ||
-         !workerDone_ || worker_.joinable() || exportJob_ || fitPending_;
+double Inspector::secondsToChange() const {
+  if (!workerDone_ || worker_.joinable() || exportJob_ || fitPending_) return 0;
+  double seconds = std::numeric_limits<double>::infinity();
+  if (playing_) seconds = std::max(0.0f, 1.0f - playClock_) / playSpeed_;
+  if (lesson_.playing()) seconds = std::min<double>(seconds, lesson_.secondsToNextStep() / (playSpeed_ / 10.0f));
+  return seconds;
 }
 
 void Inspector::frame() {
@@ -895,6 +902,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   const char* plural = iterations == 1 ? "" : "s";
   if (session_ && !workerDone_)
     ImGui::Text("Running: %d iteration%s so far", iterations, plural);
+  else if (session_ && session_->finished())  // for the frame before finishSession() (a second)
+    ImGui::TextWrapped("Done after %d iteration%s: the clean-up on the surface follows", iterations, plural);
   else if (session_)
     ImGui::TextWrapped("Stopped at %d iteration%s: Step or Run goes on", iterations, plural);
   else

@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -96,9 +97,11 @@ class Inspector {
   }
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
-  // The next frame differs from this one without input: a run, playback, a lesson playing, an
-  // export or a comparison under way. The window waits for events otherwise.
-  bool animating() const;
+  // Seconds until the picture changes without input: 0 while a run or an export goes on, the
+  // time to playback's next iteration or the lesson's next step, infinity where nothing moves
+  // on its own. The window waits for input until then.
+  double secondsToChange() const;
+  bool animating() const { return secondsToChange() < std::numeric_limits<double>::infinity(); }
   // Called from another thread when something the window shows is ready (the comparison's
   // curves): the window draws a frame though it waits for input.
   void setWake(std::function<void()> wake) { wake_ = std::move(wake); }

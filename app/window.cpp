@@ -11,6 +11,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -190,7 +191,7 @@ void queueKeys(GLFWwindow* window) {
 }
 
 void deliverKeys(GLFWwindow* window) {
-  for (const InputEvent& e : eventsOf(window).input.takeFrame()) {
+  for (const InputEvent& e : eventsOf(window).input.takeFrame(ImGui::GetIO().WantTextInput)) {
     if (e.action == InputAction::Character) ImGui_ImplGlfw_CharCallback(window, e.character);
     else ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, static_cast<int>(e.action), e.mods);
   }
@@ -205,18 +206,27 @@ bool keyHeld() {
   return false;
 }
 
-// Draws at once while anything moves or input is settling; otherwise, or minimized (nothing to
-// draw until it is shown again), sleeps until an event (a thread's glfwPostEmptyEvent too).
+// Draws at once while a run goes on or input is settling; otherwise sleeps until an event (a
+// thread's glfwPostEmptyEvent too) or the picture's next change (playback's next iteration,
+// the lesson's next step), which gets a frame more to settle. Minimized, there is nothing to
+// draw until it is shown again.
 void awaitNextFrame(GLFWwindow* window, const Inspector& inspector) {
   WindowEvents& events = eventsOf(window);
   int w, h;
   glfwGetFramebufferSize(window, &w, &h);
-  const bool busy = inspector.animating() || !events.input.empty() || keyHeld();
-  const double wait = w == 0 || h == 0 ? FramePacer::kUntilInput
-                                       : events.pacer.wait(busy, ImGui::GetIO().WantTextInput);
-  if (wait == FramePacer::kUntilInput) glfwWaitEvents();
-  else if (wait > 0) glfwWaitEventsTimeout(wait);
-  else glfwPollEvents();
+  const double change = inspector.secondsToChange();
+  const bool busy = change == 0 || !events.input.empty() || keyHeld();
+  const double wait = w == 0 || h == 0
+                          ? FramePacer::kUntilInput
+                          : std::min(events.pacer.wait(busy, ImGui::GetIO().WantTextInput), change);
+  if (wait == FramePacer::kUntilInput) {
+    glfwWaitEvents();
+  } else if (wait > 0) {
+    glfwWaitEventsTimeout(wait);
+    if (wait == change) events.pacer.input(1);
+  } else {
+    glfwPollEvents();
+  }
 }
 
 }  // namespace

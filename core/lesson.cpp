@@ -1,6 +1,7 @@
 #include "lesson.h"
 
 #include <algorithm>
+#include <limits>
 #include <cstdio>
 
 namespace lloydscope {
@@ -75,6 +76,11 @@ void LessonPlayer::advance(float seconds) {
     }
     ++next_;
   }
+}
+
+float LessonPlayer::secondsToNextStep() const {
+  if (!playing() || paused_ || atLastStep()) return std::numeric_limits<float>::infinity();
+  return std::max(0.0f, plan_[next_].seconds - clock_);
 }
 
 void LessonPlayer::skip(long steps) {

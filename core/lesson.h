@@ -55,6 +55,9 @@ class LessonPlayer {
   bool paused() const { return paused_; }
   // On its last step, which stays on screen until the lesson is ended: nothing moves.
   bool atLastStep() const { return playing() && next_ + 1 == plan_.size(); }
+  // How much more advance() the current step takes before the next one shows (in its
+  // seconds; infinite on the last step, or paused): until then the picture stays.
+  float secondsToNextStep() const;
   void advance(float seconds);
   void skip(long steps);  // clamped to the first and the last step
   const LessonStep& current() const { return plan_.at(next_); }

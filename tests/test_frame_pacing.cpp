@@ -98,6 +98,32 @@ TEST(InputQueue, ACharacterAfterAKeyPressWaitsForTheNextFrame) {
   EXPECT_TRUE(queue.empty());
 }
 
+// Typed into a text field, a name comes in one frame, however fast: a click right after it
+// no longer overtakes the characters still queued. Backspace still waits its turn.
+TEST(InputQueue, TypingTakesTheCharactersOfAWholeWordInOneFrame) {
+  InputQueue queue;
+  for (unsigned c : {'a', 'a', 'b'}) {
+    const int key = static_cast<int>(c - 'a' + 65);
+    for (const InputEvent& e : {press(key), character(c), release(key)}) queue.push(e);
+  }
+  queue.push(press(259));
+  queue.push(release(259));
+  const std::vector<InputEvent> frame = queue.takeFrame(true);
+  EXPECT_EQ(frame.size(), 10u);  // the three letters' nine events and Backspace's press
+  EXPECT_EQ(frame.back().key, 259);
+  EXPECT_EQ(keysOf(queue.takeFrame(true)), (Keys{{259, InputAction::Release}}));
+  // Not typing, the letters are commands (L, P, F): a frame each.
+  for (const InputEvent& e : {press(76), character('l'), release(76), press(80)}) queue.push(e);
+  EXPECT_EQ(keysOf(queue.takeFrame(false)), (Keys{{76, InputAction::Press}}));
+  // Ctrl+A typed selects all: a command, not a letter.
+  InputQueue chord;
+  chord.push(press(341));
+  chord.push({InputAction::Press, 65, 0, 0x2});
+  chord.push({InputAction::Release, 65, 0, 0x2});
+  EXPECT_EQ(keysOf(chord.takeFrame(true)), (Keys{{341, InputAction::Press}}));
+  EXPECT_EQ(keysOf(chord.takeFrame(true)), (Keys{{65, InputAction::Press}}));
+}
+
 TEST(FramePacer, DrawsWhileBusyAndAFewFramesAfterInputThenWaits) {
   FramePacer pacer;
   for (int k = 0; k < FramePacer::kSettleFrames; ++k) EXPECT_EQ(pacer.wait(false, false), 0);

@@ -36,12 +36,18 @@ TEST(Lesson, PlayerAdvancesAndStopsOnTheResult) {
   player.advance(4.0f + 3.0f);  // past parameterize and the first Voronoi
   EXPECT_EQ(player.current().stage, Stage::Centroids);
   EXPECT_FALSE(player.atLastStep());
+  // The window sleeps until the next step shows.
+  EXPECT_FLOAT_EQ(player.secondsToNextStep(), player.current().seconds - 0.1f);  // 0.1 s into Centroids
+  player.togglePause();
+  EXPECT_EQ(player.secondsToNextStep(), std::numeric_limits<float>::infinity());
+  player.togglePause();
   player.advance(1000.0f);
   EXPECT_TRUE(player.playing());
   EXPECT_EQ(player.current().stage, Stage::Result);
   EXPECT_EQ(player.current().iteration, 3);
   // Nothing moves any more: the window may sleep on the result beside the slides.
   EXPECT_TRUE(player.atLastStep());
+  EXPECT_EQ(player.secondsToNextStep(), std::numeric_limits<float>::infinity());
   player.stop();
   EXPECT_FALSE(player.atLastStep());
   EXPECT_FALSE(player.playing());
