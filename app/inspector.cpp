@@ -666,9 +666,10 @@ void Inspector::frame() {
     collectIterations();
     if (session_->finished()) finishSession();
   }
-  handleKeys();
-  // The window sleeps while nothing moves: a frame after such a wait (the one that starts
-  // playback or the lesson) must not jump ahead by the time it slept.
+  // The time since the last frame goes to what was playing then, before the keys change it:
+  // the window sleeps between a lesson's steps, and a stage skipped to got the time it had
+  // slept on the last one. A frame after one that did not animate (the one that starts
+  // playback) counts none: it must not jump ahead by the time the window slept.
   const float elapsed = animatedLastFrame_ ? ImGui::GetIO().DeltaTime : 0.0f;
   if (playing_) {
     playClock_ += elapsed * playSpeed_;
@@ -678,8 +679,9 @@ void Inspector::frame() {
       else setIteration(iteration_ + 1);
     }
   }
+  if (lesson_.playing()) lesson_.advance(elapsed * playSpeed_ / 10.0f);  // 10 it/s: a lecture's pace
+  handleKeys();
   if (lesson_.playing()) {
-    lesson_.advance(elapsed * playSpeed_ / 10.0f);  // 10 it/s: a lecture's pace
     setIteration(lesson_.current().iteration);
     stage_ = lesson_.current().stage;
   }

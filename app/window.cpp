@@ -156,27 +156,34 @@ void saveExport(Inspector& inspector, const Swapchain& chain, const gpu::Buffer&
 struct WindowEvents {
   FramePacer pacer;
   InputQueue input;
+  bool mouseDown[ImGuiMouseButton_COUNT] = {};  // as the queue has delivered the buttons
 };
+
+// Mouse buttons go through the queue as keys of their own, below GLFW's (-1 is its unknown key).
+int mouseKey(int button) { return -2 - button; }
 
 WindowEvents& eventsOf(GLFWwindow* window) {
   return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window));
 }
 
-// Installed before ImGui's backend, which calls those it installs too (mouse buttons, scroll,
-// focus, the cursor entering) before its own. Any of them wakes the window.
+// Installed before ImGui's backend, which calls those it installs too (scroll, focus, the
+// cursor entering) before its own. Any of them wakes the window.
 void noteInput(GLFWwindow* window) { eventsOf(window).pacer.input(); }
 void watchInput(GLFWwindow* window) {
-  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { noteInput(w); });
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
-  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int focused) {
+    if (!focused) std::fill(std::begin(eventsOf(w).mouseDown), std::end(eventsOf(w).mouseDown), false);
+    noteInput(w);
+  });
   glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
   glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
   glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { noteInput(w); });
   glfwSetWindowRefreshCallback(window, noteInput);
 }
 
-// Replaces ImGui's key and character callbacks (after its backend is set up): keys and
-// characters reach it through the queue, frame by frame (InputQueue).
+// Replaces ImGui's key, character and mouse button callbacks (after its backend is set up):
+// they reach it through the queue, frame by frame and in order (InputQueue): a click no longer
+// overtakes keys typed before it.
 void queueKeys(GLFWwindow* window) {
   static_assert(GLFW_RELEASE == int(InputAction::Release) && GLFW_PRESS == int(InputAction::Press) &&
                 GLFW_REPEAT == int(InputAction::Repeat));
@@ -188,13 +195,27 @@ void queueKeys(GLFWwindow* window) {
     eventsOf(w).input.push({InputAction::Character, 0, 0, 0, c});
     noteInput(w);
   });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {
+    if (button < 0 || button >= ImGuiMouseButton_COUNT) return;
+    eventsOf(w).input.push({action == GLFW_PRESS ? InputAction::Press : InputAction::Release, mouseKey(button), 0, mods});
+    noteInput(w);
+  });
 }
 
-void deliverKeys(GLFWwindow* window) {
-  for (const InputEvent& e : eventsOf(window).input.takeFrame(ImGui::GetIO().WantTextInput)) {
+void deliverInput(GLFWwindow* window) {
+  WindowEvents& events = eventsOf(window);
+  for (const InputEvent& e : events.input.takeFrame(ImGui::GetIO().WantTextInput)) {
     if (e.action == InputAction::Character) ImGui_ImplGlfw_CharCallback(window, e.character);
+    else if (e.key <= mouseKey(0)) events.mouseDown[mouseKey(0) - e.key] = e.action == InputAction::Press;
     else ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, static_cast<int>(e.action), e.mods);
   }
+}
+
+// After ImGui_ImplGlfw_NewFrame(), which reads the buttons as they are now: as the queue has
+// delivered them instead.
+void holdMouseButtons(GLFWwindow* window) {
+  const WindowEvents& events = eventsOf(window);
+  std::copy(std::begin(events.mouseDown), std::end(events.mouseDown), ImGui::GetIO().MouseDown);
 }
 
 // A key held other than a modifier: ImGui repeats it by its own clock, between events (a held
@@ -310,9 +331,10 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
           chain.create(gpu, surface, pass, format, window);
           continue;
         }
-        deliverKeys(window);
+        deliverInput(window);
         ImGui_ImplVulkan_NewFrame();
         ImGui_ImplGlfw_NewFrame();
+        holdMouseButtons(window);
         ImGui::NewFrame();
         inspector.frame();
         ImGui::Render();

@@ -124,6 +124,21 @@ TEST(InputQueue, TypingTakesTheCharactersOfAWholeWordInOneFrame) {
   EXPECT_EQ(keysOf(chord.takeFrame(true)), (Keys{{65, InputAction::Press}}));
 }
 
+// A click right after editing keys typed fast (the mouse buttons go through the queue as keys
+// below GLFW's): it came before the last character, which then went to the next field.
+TEST(InputQueue, AClickWaitsForTheKeysTypedBeforeIt) {
+  InputQueue queue;
+  const int left = 263, s = 83, mouse = -2;
+  for (const InputEvent& e : {press(left), release(left), press(s), character('S'), release(s),
+                              press(mouse), release(mouse)})
+    queue.push(e);
+  EXPECT_EQ(keysOf(queue.takeFrame(true)), (Keys{{left, InputAction::Press}}));
+  EXPECT_EQ(keysOf(queue.takeFrame(true)),
+            (Keys{{left, InputAction::Release}, {s, InputAction::Press}, {0, InputAction::Character},
+                  {s, InputAction::Release}, {mouse, InputAction::Press}}));
+  EXPECT_EQ(keysOf(queue.takeFrame(true)), (Keys{{mouse, InputAction::Release}}));
+}
+
 TEST(FramePacer, DrawsWhileBusyAndAFewFramesAfterInputThenWaits) {
   FramePacer pacer;
   for (int k = 0; k < FramePacer::kSettleFrames; ++k) EXPECT_EQ(pacer.wait(false, false), 0);
