@@ -70,10 +70,15 @@ void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
 
 // ImGui 1.86 names only a few letter keys; the platform's key codes for letters are
 // consecutive (GLFW's are), so the others are found from A's.
+// Keys are the inspector's commands, unless a text field takes them (F typed into a mesh's
+// name reset the views) or a list is open (L over the cell fill list started the lesson).
+bool keysAreCommands() {
+  return !ImGui::GetIO().WantTextInput &&
+         !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+}
+
 bool letterPressed(char letter) {
-  // Typed into a text field (a mesh's name), a letter is not a command: F reset the views.
-  if (ImGui::GetIO().WantTextInput) return false;
-  return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + (letter - 'A'), false);
+  return keysAreCommands() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + (letter - 'A'), false);
 }
 
 // Panes that are one drawing area: a scroll bar would only eat into it.
@@ -805,7 +810,7 @@ void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
 
 void Inspector::handleKeys() {
   ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
+  if (!keysAreCommands()) return;
   // During a lesson the keys move through its stages (the lesson sets the iteration each
   // frame); otherwise through the iterations.
   const auto go = [&](long by) {
