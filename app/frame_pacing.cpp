@@ -35,6 +35,9 @@ std::vector<InputEvent> InputQueue::takeFrame(bool typing) {
       queue_.pop_front();
       continue;
     }
+    const bool afterCharacters =
+        std::any_of(frame.begin(), frame.end(), [](const InputEvent& e) { return e.action == InputAction::Character; });
+    if (isMouseKey(next.key) && next.action == InputAction::Press && afterCharacters) break;
     if (next.action == InputAction::Release || next.action == InputAction::Press) {
       if (std::find(changed.begin(), changed.end(), next.key) != changed.end()) break;
       changed.push_back(next.key);

@@ -30,13 +30,20 @@ class FramePacer {
   int settle_ = kSettleFrames;  // the first frames draw the window
 };
 
-// GLFW's key actions, which the window forwards to ImGui as they are, and a typed character.
-enum class InputAction { Release = 0, Press = 1, Repeat = 2, Character = 3 };
+// GLFW's key actions (for keys and mouse buttons), which the window forwards to ImGui as they
+// are, a typed character and a turn of the mouse wheel.
+enum class InputAction { Release = 0, Press = 1, Repeat = 2, Character = 3, Scroll = 4 };
+
+// The window's mouse buttons are keys below GLFW's (-1 is its unknown key): the queue's rules
+// for keys keep their presses and releases in order with the keys'.
+constexpr int mouseKey(int button) { return -2 - button; }
+constexpr bool isMouseKey(int key) { return key <= mouseKey(0); }
 
 struct InputEvent {
   InputAction action = InputAction::Press;
-  int key = 0, scancode = 0, mods = 0;  // of a key
+  int key = 0, scancode = 0, mods = 0;  // of a key or mouse button
   unsigned character = 0;               // a Unicode code point, of a Character
+  double x = 0, y = 0;  // where the pointer was, of a mouse button; the wheel's turn, of a Scroll
 };
 
 // ImGui 1.86 reads each key as held or not once a frame, so a key pressed and released between
@@ -45,14 +52,15 @@ struct InputEvent {
 // in the frame that saw the key pressed (Shift+Right read as Right); and a text field applies
 // a frame's characters before its keys (Backspace, Backspace, x typed in one frame deleted the
 // x). Queued here, each frame takes the events in order up to the first key press, which ends
-// it, or the second change of one key (pressed, released), which waits for the next frame.
+// it, or the second change of one key (pressed, released), which waits for the next frame; a
+// click after characters waits too (a field clicked in a frame takes that frame's characters,
+// and the end of a name typed fast went to the next field clicked).
 class InputQueue {
  public:
   void push(const InputEvent& event) { queue_.push_back(event); }
   // `typing`: a text field takes the characters, and their keys (letters, digits, punctuation
   // without Ctrl, Alt or Super) pass with no frame of their own: one a character, typing ran
-  // behind a fast typist, and a click overtook the characters still queued (half a file name
-  // went to the next field clicked).
+  // behind a fast typist.
   std::vector<InputEvent> takeFrame(bool typing = false);
   bool empty() const { return queue_.empty(); }
 

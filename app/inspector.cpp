@@ -68,8 +68,6 @@ void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
   ImGui::Begin(name, nullptr, kPaneFlags | extra);
 }
 
-// ImGui 1.86 names only a few letter keys; the platform's key codes for letters are
-// consecutive (GLFW's are), so the others are found from A's.
 // Keys are the inspector's commands, unless a text field takes them (F typed into a mesh's
 // name reset the views) or a list is open (L over the cell fill list started the lesson).
 bool keysAreCommands() {
@@ -77,6 +75,8 @@ bool keysAreCommands() {
          !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
 }
 
+// ImGui 1.86 names only a few letter keys; the platform's key codes for letters are
+// consecutive (GLFW's are), so the others are found from A's.
 bool letterPressed(char letter) {
   return keysAreCommands() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + (letter - 'A'), false);
 }
@@ -1650,7 +1650,8 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::SliderInt("##iteration", &k, 0, last, "iteration %d")) setIteration(k);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(speedWidth);
-  ImGui::SliderFloat("it/s", &playSpeed_, 1.0f, 60.0f, "%.0f");
+  // Clamped: Ctrl+click typed 0 or less, which stopped playback or ran the lesson backwards.
+  ImGui::SliderFloat("it/s", &playSpeed_, 1.0f, 60.0f, "%.0f", ImGuiSliderFlags_AlwaysClamp);
   const IterationRecord& it = replay_->recording().iterations[iteration_];
   // Numbered from 0: "of 159" read as one fewer than the 160 iterations the controls pane counts.
   // The keys' reminder is left out where the line would not fit (960x600).

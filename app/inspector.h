@@ -97,7 +97,8 @@ class Inspector {
   }
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
-  // Seconds until the picture changes without input: 0 while a run or an export goes on, the
+  // Seconds until the picture changes without input: 0 while a run, an export or the first
+  // view's fit goes on, the
   // time to playback's next iteration or the lesson's next step, infinity where nothing moves
   // on its own. The window waits for input until then.
   double secondsToChange() const;

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 #include <vector>
 
 namespace lloydscope {
@@ -157,33 +158,27 @@ struct WindowEvents {
   FramePacer pacer;
   InputQueue input;
   bool mouseDown[ImGuiMouseButton_COUNT] = {};  // as the queue has delivered the buttons
+  std::optional<ImVec2> clickedAt;  // where the pointer was at this frame's last button event
 };
-
-// Mouse buttons go through the queue as keys of their own, below GLFW's (-1 is its unknown key).
-int mouseKey(int button) { return -2 - button; }
 
 WindowEvents& eventsOf(GLFWwindow* window) {
   return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window));
 }
 
-// Installed before ImGui's backend, which calls those it installs too (scroll, focus, the
-// cursor entering) before its own. Any of them wakes the window.
+// Installed before ImGui's backend, which calls those it installs too (focus, the cursor
+// entering) before its own. Any of them wakes the window.
 void noteInput(GLFWwindow* window) { eventsOf(window).pacer.input(); }
 void watchInput(GLFWwindow* window) {
-  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
-  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int focused) {
-    if (!focused) std::fill(std::begin(eventsOf(w).mouseDown), std::end(eventsOf(w).mouseDown), false);
-    noteInput(w);
-  });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
   glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { noteInput(w); });
   glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { noteInput(w); });
   glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { noteInput(w); });
   glfwSetWindowRefreshCallback(window, noteInput);
 }
 
-// Replaces ImGui's key, character and mouse button callbacks (after its backend is set up):
-// they reach it through the queue, frame by frame and in order (InputQueue): a click no longer
-// overtakes keys typed before it.
+// Replaces ImGui's key, character, mouse button and wheel callbacks (after its backend is set
+// up): they reach it through the queue, frame by frame and in order (InputQueue). GLFW sends
+// the buttons' releases when the window loses focus, through the queue too.
 void queueKeys(GLFWwindow* window) {
   static_assert(GLFW_RELEASE == int(InputAction::Release) && GLFW_PRESS == int(InputAction::Press) &&
                 GLFW_REPEAT == int(InputAction::Repeat));
@@ -197,25 +192,44 @@ void queueKeys(GLFWwindow* window) {
   });
   glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {
     if (button < 0 || button >= ImGuiMouseButton_COUNT) return;
-    eventsOf(w).input.push({action == GLFW_PRESS ? InputAction::Press : InputAction::Release, mouseKey(button), 0, mods});
+    InputEvent click{action == GLFW_PRESS ? InputAction::Press : InputAction::Release, mouseKey(button), 0, mods};
+    glfwGetCursorPos(w, &click.x, &click.y);  // where it was clicked, not where it is when delivered
+    eventsOf(w).input.push(click);
+    noteInput(w);
+  });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double x, double y) {
+    InputEvent wheel{InputAction::Scroll};
+    wheel.x = x;
+    wheel.y = y;
+    eventsOf(w).input.push(wheel);
     noteInput(w);
   });
 }
 
 void deliverInput(GLFWwindow* window) {
   WindowEvents& events = eventsOf(window);
+  events.clickedAt.reset();
   for (const InputEvent& e : events.input.takeFrame(ImGui::GetIO().WantTextInput)) {
-    if (e.action == InputAction::Character) ImGui_ImplGlfw_CharCallback(window, e.character);
-    else if (e.key <= mouseKey(0)) events.mouseDown[mouseKey(0) - e.key] = e.action == InputAction::Press;
-    else ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, static_cast<int>(e.action), e.mods);
+    if (e.action == InputAction::Character) {
+      ImGui_ImplGlfw_CharCallback(window, e.character);
+    } else if (e.action == InputAction::Scroll) {
+      ImGui_ImplGlfw_ScrollCallback(window, e.x, e.y);
+    } else if (isMouseKey(e.key)) {
+      events.mouseDown[mouseKey(0) - e.key] = e.action == InputAction::Press;
+      events.clickedAt = ImVec2(static_cast<float>(e.x), static_cast<float>(e.y));
+    } else {
+      ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, static_cast<int>(e.action), e.mods);
+    }
   }
 }
 
-// After ImGui_ImplGlfw_NewFrame(), which reads the buttons as they are now: as the queue has
-// delivered them instead.
+// After ImGui_ImplGlfw_NewFrame(), which reads the buttons and the pointer as they are now:
+// the buttons as the queue has delivered them, and the pointer where the last was clicked.
 void holdMouseButtons(GLFWwindow* window) {
   const WindowEvents& events = eventsOf(window);
-  std::copy(std::begin(events.mouseDown), std::end(events.mouseDown), ImGui::GetIO().MouseDown);
+  ImGuiIO& io = ImGui::GetIO();
+  std::copy(std::begin(events.mouseDown), std::end(events.mouseDown), io.MouseDown);
+  if (events.clickedAt) io.MousePos = *events.clickedAt;
 }
 
 // A key held other than a modifier: ImGui repeats it by its own clock, between events (a held

@@ -128,15 +128,26 @@ TEST(InputQueue, TypingTakesTheCharactersOfAWholeWordInOneFrame) {
 // below GLFW's): it came before the last character, which then went to the next field.
 TEST(InputQueue, AClickWaitsForTheKeysTypedBeforeIt) {
   InputQueue queue;
-  const int left = 263, s = 83, mouse = -2;
+  const int left = 263, s = 83, mouse = mouseKey(0);
   for (const InputEvent& e : {press(left), release(left), press(s), character('S'), release(s),
                               press(mouse), release(mouse)})
     queue.push(e);
   EXPECT_EQ(keysOf(queue.takeFrame(true)), (Keys{{left, InputAction::Press}}));
+  // The press waits for a frame of its own: a field clicked in a frame takes its characters.
   EXPECT_EQ(keysOf(queue.takeFrame(true)),
             (Keys{{left, InputAction::Release}, {s, InputAction::Press}, {0, InputAction::Character},
-                  {s, InputAction::Release}, {mouse, InputAction::Press}}));
+                  {s, InputAction::Release}}));
+  EXPECT_EQ(keysOf(queue.takeFrame(true)), (Keys{{mouse, InputAction::Press}}));
   EXPECT_EQ(keysOf(queue.takeFrame(true)), (Keys{{mouse, InputAction::Release}}));
+}
+
+// The wheel goes through the queue too, in order with the clicks, and ends no frame.
+TEST(InputQueue, TheWheelKeepsItsPlaceAfterAClick) {
+  InputQueue queue;
+  for (const InputEvent& e : {press(mouseKey(0)), release(mouseKey(0)), InputEvent{InputAction::Scroll}})
+    queue.push(e);
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{mouseKey(0), InputAction::Press}}));
+  EXPECT_EQ(keysOf(queue.takeFrame()), (Keys{{mouseKey(0), InputAction::Release}, {0, InputAction::Scroll}}));
 }
 
 TEST(FramePacer, DrawsWhileBusyAndAFewFramesAfterInputThenWaits) {
