@@ -28,6 +28,7 @@ bool typedKey(const InputEvent& e) {
 std::vector<InputEvent> InputQueue::takeFrame(bool typing) {
   std::vector<InputEvent> frame;
   std::vector<int> changed;  // keys pressed or released in this frame
+  bool characters = false;   // typed characters taken in this frame
   while (!queue_.empty()) {
     const InputEvent next = queue_.front();
     if (typing && typedKey(next)) {
@@ -35,15 +36,14 @@ std::vector<InputEvent> InputQueue::takeFrame(bool typing) {
       queue_.pop_front();
       continue;
     }
-    const bool afterCharacters =
-        std::any_of(frame.begin(), frame.end(), [](const InputEvent& e) { return e.action == InputAction::Character; });
-    if (isMouseKey(next.key) && next.action == InputAction::Press && afterCharacters) break;
+    if (isMouseKey(next.key) && next.action == InputAction::Press && characters) break;
     if (next.action == InputAction::Release || next.action == InputAction::Press) {
       if (std::find(changed.begin(), changed.end(), next.key) != changed.end()) break;
       changed.push_back(next.key);
     }
     frame.push_back(next);
     queue_.pop_front();
+    characters = characters || next.action == InputAction::Character;
     if (next.action == InputAction::Press) break;  // the last of its frame
   }
   return frame;

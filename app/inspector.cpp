@@ -68,6 +68,9 @@ void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
   ImGui::Begin(name, nullptr, kPaneFlags | extra);
 }
 
+// The file a path names, without the folders: what the header and the captions call a mesh.
+std::string fileNameOf(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+
 // Keys are the inspector's commands, unless a text field takes them (F typed into a mesh's
 // name reset the views) or a list is open (L over the cell fill list started the lesson).
 bool keysAreCommands() {
@@ -155,7 +158,7 @@ Mesh largestComponent(const Mesh& mesh) {
 Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
                      RemeshOptions options, RemeshResult result, std::optional<Mesh> input)
     : gpu_(gpu), renderer_(gpu, renderPass),
-      meshName_(meshName.substr(meshName.find_last_of('/') + 1)),  // the file, not where it lives
+      meshName_(fileNameOf(meshName)),
       options_(std::move(options)), slitDisksAsked_(options_.slitDisks), result_(std::move(result)),
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
       canvas_(gpu, renderPass) {
@@ -411,8 +414,7 @@ void Inspector::pinCell(int cell) {
   if (cell < 0 || cell >= count)
     throw Error("cell " + std::to_string(cell) + " does not exist (" + std::to_string(count) +
                 " sites, numbered from 0)");
-  if (std::find(selection_.cells().begin(), selection_.cells().end(), cell) == selection_.cells().end())
-    selection_.toggleCell(cell);
+  selection_.pinCell(cell);
 }
 
 void Inspector::pinTriangle(int triangle) {
@@ -421,9 +423,7 @@ void Inspector::pinTriangle(int triangle) {
     throw Error("triangle " + std::to_string(triangle) + " does not exist (" +
                 std::to_string(count) + " in the result at iteration " +
                 std::to_string(iteration_) + ")");
-  if (std::find(selection_.triangles().begin(), selection_.triangles().end(), triangle) ==
-      selection_.triangles().end())
-    selection_.toggleTriangle(triangle);
+  selection_.pinTriangle(triangle);
 }
 
 void Inspector::pinWorstTriangle() {
@@ -446,11 +446,9 @@ void Inspector::hoverTooltip2D(const Vec2& uv) {
                                      ? " (fixed border site)" : "");
   ImGui::Text("area %.3e  mass %.3e", c.area, c.mass);
   ImGui::Text("site to centroid %.2e", (c.centroid - view.sites[cell]).norm());
-  const bool pinned = std::find(selection_.cells().begin(), selection_.cells().end(), cell) !=
-                      selection_.cells().end();
-  ImGui::TextDisabled("%s", pickTriangles2D_ ? "click to pin or unpin the triangle here"
-                            : pinned         ? "click to unpin"
-                                             : "click to pin");
+  ImGui::TextDisabled("%s", pickTriangles2D_             ? "click to pin or unpin the triangle here"
+                            : selection_.cellPinned(cell) ? "click to unpin"
+                                                          : "click to pin");
   ImGui::EndTooltip();
 }
 
@@ -1107,8 +1105,7 @@ void Inspector::fileControls() {
     try {
       stopRun();
       ReadResult read = readMesh(meshPath_, ReadOptions{repairOnOpen_});
-      std::string name = meshPath_;
-      name = name.substr(name.find_last_of('/') + 1);
+      const std::string name = fileNameOf(meshPath_);
       settings_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
       try {
         startSession(read.mesh, name);

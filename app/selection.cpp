@@ -8,11 +8,18 @@ namespace lloydscope {
 
 namespace {
 
+bool pinned(const std::vector<int>& pins, int index) {
+  return std::find(pins.begin(), pins.end(), index) != pins.end();
+}
+
 void toggle(std::vector<int>& pins, int index) {
   if (index < 0) return;
-  const auto found = std::find(pins.begin(), pins.end(), index);
-  if (found != pins.end()) pins.erase(found);
+  if (pinned(pins, index)) pins.erase(std::find(pins.begin(), pins.end(), index));
   else pins.push_back(index);
+}
+
+void pin(std::vector<int>& pins, int index) {
+  if (!pinned(pins, index)) toggle(pins, index);
 }
 
 }  // namespace
@@ -26,6 +33,9 @@ ImU32 Selection::triangleColor(float alpha) {
 
 void Selection::toggleCell(int cell) { toggle(cells_, cell); }
 void Selection::toggleTriangle(int triangle) { toggle(triangles_, triangle); }
+void Selection::pinCell(int cell) { pin(cells_, cell); }
+void Selection::pinTriangle(int triangle) { pin(triangles_, triangle); }
+bool Selection::cellPinned(int cell) const { return pinned(cells_, cell); }
 void Selection::clear() {
   cells_.clear();
   triangles_.clear();

@@ -21,6 +21,10 @@ class Selection {
   // Pins the index, or unpins it if it was pinned.
   void toggleCell(int cell);
   void toggleTriangle(int triangle);
+  // Pins the index, if it is not pinned already.
+  void pinCell(int cell);
+  void pinTriangle(int triangle);
+  bool cellPinned(int cell) const;
   void clear();
   bool empty() const { return cells_.empty() && triangles_.empty(); }
   const std::vector<int>& cells() const { return cells_; }
