@@ -66,7 +66,7 @@ void checkScene(const std::string& name, const std::string& args, std::string in
         ++differing;
         break;
       }
-  EXPECT_LE(differing, actual.rgba.size() / 4 / 200) << name << ": " << differing << " pixels differ";
+  EXPECT_LE(differing, actual.rgba.size() / 4 / 200) << name << ": " << differing << " pixels differ from the snapshot; this run's picture: " << actualPath;
 }
 
 }  // namespace

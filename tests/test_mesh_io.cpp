@@ -14,21 +14,13 @@
 #include <fstream>
 #include <random>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace lloydscope {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string tempPath(const std::string& name) {
-  // Per process: CTest runs the tests in parallel.
-  const fs::path dir =
-      fs::path(::testing::TempDir()) / ("lloydscope_mesh_io_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return (dir / name).string();
-}
+using test::tempPath;
 
 std::string writeFile(const std::string& name, const std::string& content) {
   const std::string path = tempPath(name);

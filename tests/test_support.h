@@ -195,10 +195,22 @@ inline Mesh sector(double degrees, const std::function<double(double, double)>& 
   });
 }
 
-// CTest runs test processes in parallel: every process gets names of its own.
-inline std::string tempPath(const std::string& name) {
-  return ::testing::TempDir() + "lloydscope_" + std::to_string(getpid()) + "_" + name;
+// The folder a test process writes in: its own, as CTest runs test processes in parallel. It is
+// removed when the process ends with no test failed; a failed test's files stay for a look.
+inline const std::string& processFolder() {
+  struct Folder {
+    std::string path = ::testing::TempDir() + "lloydscope_" + std::to_string(getpid()) + "/";
+    Folder() { std::filesystem::create_directories(path); }
+    ~Folder() {
+      std::error_code ignored;
+      if (!::testing::UnitTest::GetInstance()->Failed()) std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Folder folder;
+  return folder.path;
 }
+
+inline std::string tempPath(const std::string& name) { return processFolder() + name; }
 
 // A folder of this process's own, made empty: what a write leaves in it can be listed.
 inline std::string emptyFolder(const std::string& name) {

@@ -1,0 +1,15 @@
+# Runs some of the tests that write files with their temporary folder set to an empty one
+# (TEST_TMPDIR), and fails if they pass but leave anything in it.
+set(folder "${FOLDER}")
+file(REMOVE_RECURSE "${folder}")
+file(MAKE_DIRECTORY "${folder}")
+set(ENV{TEST_TMPDIR} "${folder}")
+execute_process(COMMAND "${TESTS}" "--gtest_filter=${FILTER}" RESULT_VARIABLE failed OUTPUT_QUIET)
+if(failed)
+  message(FATAL_ERROR "the tests ${FILTER} failed")
+endif()
+file(GLOB left RELATIVE "${folder}" "${folder}/*")
+if(left)
+  message(FATAL_ERROR "the tests ${FILTER} passed but left ${left} in ${folder}")
+endif()
+file(REMOVE_RECURSE "${folder}")
