@@ -60,12 +60,13 @@ std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations) {
 
 void LessonPlayer::start(std::vector<LessonStep> plan) {
   plan_ = std::move(plan);
-  next_ = 0;
+  next_ = shown_ = 0;
   clock_ = 0;
   paused_ = false;
 }
 
 void LessonPlayer::advance(float seconds) {
+  shown_ = next_;
   if (!playing() || paused_) return;
   clock_ += seconds;
   while (clock_ >= plan_[next_].seconds) {
@@ -86,7 +87,7 @@ float LessonPlayer::secondsToNextStep() const {
 void LessonPlayer::skip(long steps) {
   if (!playing()) return;
   const long last = static_cast<long>(plan_.size()) - 1;
-  next_ = static_cast<size_t>(std::clamp(static_cast<long>(next_) + steps, 0L, last));
+  next_ = shown_ = static_cast<size_t>(std::clamp(static_cast<long>(shown_) + steps, 0L, last));
   clock_ = 0;
 }
 

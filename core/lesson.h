@@ -58,13 +58,17 @@ class LessonPlayer {
   // How much more advance() the current step takes before the next one shows (in its
   // seconds; infinite on the last step, or paused): until then the picture stays.
   float secondsToNextStep() const;
+  // A frame's time: called once a frame, before its keys' skip().
   void advance(float seconds);
-  void skip(long steps);  // clamped to the first and the last step
+  // From the step on screen (the one before this frame's advance(): a step that came due in
+  // the frame of a key press was never shown, and → skipped it), clamped to the first and the
+  // last step.
+  void skip(long steps);
   const LessonStep& current() const { return plan_.at(next_); }
 
  private:
   std::vector<LessonStep> plan_;
-  size_t next_ = 0;
+  size_t next_ = 0, shown_ = 0;
   float clock_ = 0;
   bool paused_ = false;
 };

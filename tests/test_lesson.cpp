@@ -96,6 +96,26 @@ TEST(Lesson, SkipGoesBackAndOnByWholeSteps) {
   EXPECT_EQ(player.current().stage, Stage::Load);
 }
 
+// A step that comes due in the frame of a key press was never on screen: → goes to it, ←
+// back from the step shown (the window, asleep until the next step, wakes for both at once).
+TEST(Lesson, SkipGoesFromTheStepOnScreen) {
+  LessonPlayer player;
+  player.start(lessonPlan(4, 1));
+  player.advance(3.9f);
+  EXPECT_EQ(player.current().stage, Stage::Load);
+  player.advance(0.2f);  // Parameterize comes due in this frame, and → is pressed in it
+  player.skip(1);
+  EXPECT_EQ(player.current().stage, Stage::Parameterize);
+  player.advance(4.1f);  // Voronoi comes due, and ← is pressed
+  player.skip(-1);
+  EXPECT_EQ(player.current().stage, Stage::Load);
+  player.advance(0.0f);
+  player.skip(1);  // two presses in two frames: two steps on
+  player.advance(0.0f);
+  player.skip(1);
+  EXPECT_EQ(player.current().stage, Stage::Voronoi);
+}
+
 TEST(Lesson, StagesRevealOneLayerAtATime) {
   const Layers load = layersFor(Stage::Load), voronoi = layersFor(Stage::Voronoi),
                centroids = layersFor(Stage::Centroids), move = layersFor(Stage::Move),
