@@ -14,12 +14,20 @@ std::string format(const char* pattern, double value) {
 }
 
 std::vector<std::string> tickLabels(double lo, double hi, int steps) {
-  constexpr int kFewest = 3, kMost = 12;
+  constexpr int kMostDecimals = 12;
+  const double largest = std::max(std::abs(lo), std::abs(hi));
+  const int leading = largest > 0 && std::isfinite(largest) ? static_cast<int>(std::floor(std::log10(largest))) : 0;
+  // Scientific where fixed decimals would start with zeros or run long: one exponent for all.
+  const bool scientific = leading < -2 || leading >= 5;
+  const double unit = scientific ? std::pow(10.0, leading) : 1.0;
+  const std::string suffix = scientific ? "e" + std::to_string(leading) : "";
   std::vector<std::string> labels;
-  for (int digits = kFewest; digits <= kMost; ++digits) {
+  // Three significant digits at least (0.25 must not read 0.2), more where labels repeat.
+  for (int decimals = std::max(0, 2 - (scientific ? 0 : leading)); decimals <= kMostDecimals; ++decimals) {
+    const std::string pattern = "%." + std::to_string(decimals) + "f";
     labels.clear();
     for (int i = 0; i <= steps; ++i)
-      labels.push_back(format(("%." + std::to_string(digits) + "g").c_str(), lo + (hi - lo) * i / std::max(steps, 1)));
+      labels.push_back(format(pattern.c_str(), (lo + (hi - lo) * i / std::max(steps, 1)) / unit) + suffix);
     if (std::adjacent_find(labels.begin(), labels.end()) == labels.end()) break;
   }
   return labels;

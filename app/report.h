@@ -13,9 +13,11 @@ namespace lloydscope {
 // One number in a printf pattern ("%.1f").
 std::string format(const char* pattern, double value);
 
-// Labels of `steps` + 1 evenly spaced ticks from `lo` to `hi` on a plot's axis, each with as
-// few significant digits (three at least) as keep every label apart from its neighbours: the
-// CVT energy of a converging run spans 2% or less, where three digits repeat.
+// Labels of `steps` + 1 evenly spaced ticks from `lo` to `hi` on a plot's axis, all with the
+// same number of decimals, the fewest that keep every label apart from its neighbours (the CVT
+// energy of a converging run spans 2% or less, where three digits repeat). Values under 10^-2
+// or from 10^5 on are written with one exponent for all: 2.017e-4 .. 2.035e-4 (as %g wrote
+// them, 0.0002017 .. 0.000203 .. 0.0002035, they differed in length and were hard to read).
 std::vector<std::string> tickLabels(double lo, double hi, int steps);
 // The step between labelled ticks along `count` iterations: 1, 2 or 5 times a power of ten, the
 // smallest that labels at most six of them and no more than `fitting` (how many labels fit side

@@ -141,9 +141,19 @@ TEST(Report, TheTimeLineCountsTheRuns) {
 // the label 1.16e-05 three times on CGAL's eight. Labels take the digits that tell them apart.
 TEST(Report, TickLabelsTakeTheDigitsThatTellThemApart) {
   EXPECT_EQ(tickLabels(1.147e-5, 1.169e-5, 4),
-            (std::vector<std::string>{"1.147e-05", "1.153e-05", "1.158e-05", "1.163e-05", "1.169e-05"}));
+            (std::vector<std::string>{"1.147e-5", "1.152e-5", "1.158e-5", "1.163e-5", "1.169e-5"}));
   EXPECT_EQ(tickLabels(0, 100, 4), (std::vector<std::string>{"0", "25", "50", "75", "100"}));
-  EXPECT_EQ(tickLabels(5, 5, 0), (std::vector<std::string>{"5"}));
+  EXPECT_EQ(tickLabels(5, 5, 0), (std::vector<std::string>{"5.00"}));
+}
+
+// The sphere cap's energy axis read 0.0002017, 0.0002022, 0.0002026, 0.000203, 0.0002035: the
+// labels of one axis have one form and one length.
+TEST(Report, TickLabelsOfOneAxisHaveOneForm) {
+  EXPECT_EQ(tickLabels(2.0172e-4, 2.0351e-4, 4),
+            (std::vector<std::string>{"2.017e-4", "2.022e-4", "2.026e-4", "2.031e-4", "2.035e-4"}));
+  EXPECT_EQ(tickLabels(0, 1, 4), (std::vector<std::string>{"0.00", "0.25", "0.50", "0.75", "1.00"}));
+  EXPECT_EQ(tickLabels(0, 2e6, 2), (std::vector<std::string>{"0.00e6", "1.00e6", "2.00e6"}));
+  EXPECT_EQ(tickLabels(-3e-4, 0, 1), (std::vector<std::string>{"-3.00e-4", "0.00e-4"}));
 }
 
 // Steps of 1, 2 or 5 times a power of ten: six labels at most, and no more than fit.
