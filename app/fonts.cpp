@@ -1,5 +1,7 @@
 #include "fonts.h"
 
+#include "report.h"
+
 #include <imgui.h>
 
 #include <fstream>
@@ -22,6 +24,17 @@ void addInspectorFonts() {
   io.Fonts->AddFontFromFileTTF(font, 13.0f, &merged, maths);
   io.Fonts->AddFontFromFileTTF(font, 21.0f, nullptr, latin);  // presentation mode's
   io.Fonts->AddFontFromFileTTF(font, 21.0f, &merged, maths);
+}
+
+void wrappedText(const std::string& text) {
+  const auto measure = [](const std::string& line) { return ImGui::CalcTextSize(line.c_str()).x; };
+  // One item of several lines: as tight as ImGui's own wrapped lines (an item a line would add
+  // the spacing between items under each).
+  std::string lines;
+  for (const std::string& line : wrapAtSpaces(text, ImGui::GetContentRegionAvail().x, measure))
+    lines += line + "\n";
+  lines.pop_back();  // wrapAtSpaces gives one line at least
+  ImGui::TextUnformatted(lines.c_str());
 }
 
 }  // namespace lloydscope

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "fonts.h"
 #include "mesh_io.h"
 #include "png.h"
 #include "report.h"
@@ -801,7 +802,7 @@ void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   ImGui::TextWrapped("%s", c.formula.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.15f, 0.5f, 1.0f));
-  ImGui::TextWrapped("%s", c.numbers.c_str());
+  wrappedText(c.numbers);
   ImGui::PopStyleColor();
   ImGui::End();
 }
@@ -836,10 +837,10 @@ void Inspector::togglePlay() {
 
 void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   beginPane("Lloydscope", pos, size);
-  ImGui::TextWrapped("Mesh: %s", meshName_.c_str());
-  ImGui::TextWrapped("Parameterization: %s (%s border), density: %s, solver: %s",
-                     toString(result_.paramUsed), toString(options_.param.border),
-                     toString(options_.density.kind), toString(options_.lloyd.solver));
+  wrappedText("Mesh: " + meshName_);
+  wrappedText(std::string("Parameterization: ") + toString(result_.paramUsed) + " (" +
+              toString(options_.param.border) + " border), density: " + toString(options_.density.kind) +
+              ", solver: " + toString(options_.lloyd.solver));
   ImGui::Text("Sites: %zu fixed, %zu movable", replay_->recording().fixedSites.size(),
               replay_->recording().iterations.empty()
                   ? size_t(0)
@@ -863,11 +864,10 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   const bool showFinal = finalResult.vertices > 0;
   // A recording holds the mesh its map is of (a first remeshing of the input, say), not the input.
   const char* first = input_ ? "Input" : "Mapped";
-  ImGui::TextWrapped("%s", (std::string(input_ ? "Input" : "The mesh the map is of (a recording holds no input)") +
-                            (showFinal ? ", the current iteration's result and the final one, after the clean-up "
-                                         "(the report's Table II)"
-                                       : " and the current iteration's result (the report's Table II)"))
-                               .c_str());
+  wrappedText(std::string(input_ ? "Input" : "The mesh the map is of (a recording holds no input)") +
+              (showFinal ? ", the current iteration's result and the final one, after the clean-up "
+                           "(the report's Table II)"
+                         : " and the current iteration's result (the report's Table II)"));
   const QualityMetrics& current = currentQuality();
   const std::string iterationHeader = "It. " + std::to_string(iteration_);
   if (ImGui::BeginTable("metrics", showFinal ? 4 : 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
@@ -908,20 +908,20 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   if (session_ && !workerDone_)
     ImGui::Text("Running: %d iteration%s so far", iterations, plural);
   else if (session_ && session_->finished())  // for the frame before finishSession() (a second)
-    ImGui::TextWrapped("Done after %d iteration%s: the clean-up on the surface follows", iterations, plural);
+    wrappedText("Done after " + std::to_string(iterations) + " iteration" + plural + ": the clean-up on the surface follows");
   else if (session_)
-    ImGui::TextWrapped("Stopped at %d iteration%s: Step or Run goes on", iterations, plural);
+    wrappedText("Stopped at " + std::to_string(iterations) + " iteration" + plural + ": Step or Run goes on");
   else
     ImGui::Text("Final: %d iteration%s, %s", iterations, plural,
                 replay_->recording().converged() ? "converged" : "not converged");
-  ImGui::TextWrapped("%s", shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr).c_str());
+  wrappedText(shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr));
   if (showTimings_ && !session_ && result_.ms.total > 0)  // a recording opened alone has no times
     ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
   // How this result was made (trials, a simplified input) or why its run failed: beside the
   // numbers it explains, not under the controls.
   if (!runNotes_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.45f, 0.2f, 0.0f, 1.0f));
-    ImGui::TextWrapped("%s", runNotes_.c_str());
+    wrappedText(runNotes_);
     ImGui::PopStyleColor();
   }
   const std::vector<CvtSolver> others = otherSolvers(options_.lloyd.solver);
@@ -975,7 +975,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   exportControls();
   // Not in an export's pictures: the next picture showed the last one's "saved ...".
   if (!message_.empty() && !exporting()) {
-    ImGui::TextWrapped("%s", message_.c_str());
+    wrappedText(message_);
     // A new message is scrolled into view: with Files or Export open it fell below the window
     // (1280x800), and a failed Open mesh looked like nothing at all.
     if (messageCount_ != scrolledToMessage_) ImGui::SetScrollHereY(1.0f);
@@ -1077,7 +1077,7 @@ void Inspector::settingsControls() {
   settings_.lloyd.maxIterations = std::max(1, settings_.lloyd.maxIterations);
   // Wrapped: the pane is narrower than the line (it ran past its edge).
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("then Restart below the plots: the run on screen keeps its own settings until then");
+  wrappedText("then Restart below the plots: the run on screen keeps its own settings until then");
   ImGui::PopStyleColor();
 }
 

@@ -33,6 +33,28 @@ std::vector<std::string> tickLabels(double lo, double hi, int steps) {
   return labels;
 }
 
+std::vector<std::string> wrapAtSpaces(const std::string& text, float width,
+                                      const std::function<float(const std::string&)>& measure) {
+  std::vector<std::string> lines;
+  std::istringstream paragraphs(text);
+  for (std::string paragraph; std::getline(paragraphs, paragraph);) {
+    std::istringstream words(paragraph);
+    std::string line;
+    for (std::string word; words >> word;) {
+      const std::string longer = line.empty() ? word : line + " " + word;
+      if (!line.empty() && measure(longer) > width) {
+        lines.push_back(line);
+        line = word;
+      } else {
+        line = longer;
+      }
+    }
+    lines.push_back(line);
+  }
+  if (lines.empty()) lines.emplace_back();  // "": one empty line
+  return lines;
+}
+
 int tickStep(int count, int fitting) {
   const double rough = std::max(1.0, static_cast<double>(count) / std::clamp(fitting, 1, 6));
   const double power = std::pow(10, std::floor(std::log10(rough)));

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,12 @@ std::vector<std::string> tickLabels(double lo, double hi, int steps);
 // smallest that labels at most six of them and no more than `fitting` (how many labels fit side
 // by side). Steps of 20 along 230 iterations ran "100120140..." together.
 int tickStep(int count, int fitting);
+
+// `text` in lines no wider than `width` by `measure`, broken at spaces and at its own line
+// breaks only: ImGui 1.86 also breaks after '.' and ',', inside numbers ("Hausdorff 1." then
+// "906%" on the next line). A word wider than the line has a line of its own; one line at least.
+std::vector<std::string> wrapAtSpaces(const std::string& text, float width,
+                                      const std::function<float(const std::string&)>& measure);
 
 nlohmann::json toJson(const QualityMetrics& m);
 nlohmann::json toJson(const Fidelity& f);

@@ -1,5 +1,7 @@
 #include "selection.h"
 
+#include "fonts.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -94,8 +96,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
                              const IterationView& view) {
   if (empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, "
-                       "Escape clears all.");
+    wrappedText("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, Escape clears all.");
     ImGui::PopStyleColor();
     return;
   }
@@ -119,9 +120,9 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
       for (const auto& [label, value] : rows) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", label.c_str());
+        wrappedText(label);
         ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", value.c_str());
+        wrappedText(value);
       }
       ImGui::EndTable();
     }

@@ -156,6 +156,19 @@ TEST(Report, TickLabelsOfOneAxisHaveOneForm) {
   EXPECT_EQ(tickLabels(-3e-4, 0, 1), (std::vector<std::string>{"-3.00e-4", "0.00e-4"}));
 }
 
+// The inspector's notes broke "Hausdorff 1.906%" after "1.": lines break at spaces only.
+TEST(Report, TextWrapsAtSpacesNotInsideNumbers) {
+  const auto characters = [](const std::string& s) { return static_cast<float>(s.size()); };
+  EXPECT_EQ(wrapAtSpaces("the closer kept: Hausdorff 1.906% slit, 2.300% whole", 28, characters),
+            (std::vector<std::string>{"the closer kept: Hausdorff", "1.906% slit, 2.300% whole"}));
+  EXPECT_EQ(wrapAtSpaces("c = (0.858774, 0.295003)", 16, characters),
+            (std::vector<std::string>{"c = (0.858774,", "0.295003)"}));
+  // Its own line breaks stay; a word wider than the line is not split.
+  EXPECT_EQ(wrapAtSpaces("one\n\nunbreakable_word two", 8, characters),
+            (std::vector<std::string>{"one", "", "unbreakable_word", "two"}));
+  EXPECT_EQ(wrapAtSpaces("", 8, characters), (std::vector<std::string>{""}));
+}
+
 // Steps of 1, 2 or 5 times a power of ten: six labels at most, and no more than fit.
 TEST(Report, TickStepsLabelNoMoreThanFit) {
   EXPECT_EQ(tickStep(230, 20), 50);   // 0 50 100 150 200 (steps of 20 ran together)
