@@ -1,6 +1,6 @@
 #include "headless.h"
 
-#include "fonts.h"
+#include "text.h"
 #include "gpu.h"
 #include "inspector.h"
 #include "png.h"

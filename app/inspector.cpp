@@ -5,7 +5,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "fonts.h"
+#include "keys.h"
+#include "text.h"
 #include "mesh_io.h"
 #include "png.h"
 #include "report.h"
@@ -71,13 +72,6 @@ void beginPane(const char* name, const ImVec2& pos, const ImVec2& size,
 
 // The file a path names, without the folders: what the header and the captions call a mesh.
 std::string fileNameOf(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
-
-// Keys are the inspector's commands, unless a text field takes them (F typed into a mesh's
-// name reset the views) or a list is open (L over the cell fill list started the lesson).
-bool keysAreCommands() {
-  return !ImGui::GetIO().WantTextInput &&
-         !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
-}
 
 // ImGui 1.86 names only a few letter keys; the platform's key codes for letters are
 // consecutive (GLFW's are), so the others are found from A's.
@@ -809,7 +803,7 @@ void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
 
 void Inspector::handleKeys() {
   ImGuiIO& io = ImGui::GetIO();
-  if (!keysAreCommands()) return;
+  if (closeListOnEscape() || !keysAreCommands()) return;
   // During a lesson the keys move through its stages (the lesson sets the iteration each
   // frame); otherwise through the iterations.
   const auto go = [&](long by) {

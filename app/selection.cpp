@@ -1,6 +1,6 @@
 #include "selection.h"
 
-#include "fonts.h"
+#include "text.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,6 +1,7 @@
 #include "window.h"
 
-#include "fonts.h"
+#include "keys.h"
+#include "text.h"
 #include "frame_pacing.h"
 #include "gpu.h"
 #include "inspector.h"
@@ -209,7 +210,7 @@ void queueKeys(GLFWwindow* window) {
 void deliverInput(GLFWwindow* window) {
   WindowEvents& events = eventsOf(window);
   events.clickedAt.reset();
-  for (const InputEvent& e : events.input.takeFrame(ImGui::GetIO().WantTextInput)) {
+  for (const InputEvent& e : events.input.takeFrame(textFieldActive())) {
     if (e.action == InputAction::Character) {
       ImGui_ImplGlfw_CharCallback(window, e.character);
     } else if (e.action == InputAction::Scroll) {
@@ -253,7 +254,7 @@ void awaitNextFrame(GLFWwindow* window, const Inspector& inspector) {
   const bool busy = change == 0 || !events.input.empty() || keyHeld();
   const double wait = w == 0 || h == 0
                           ? FramePacer::kUntilInput
-                          : std::min(events.pacer.wait(busy, ImGui::GetIO().WantTextInput), change);
+                          : std::min(events.pacer.wait(busy, textFieldActive()), change);
   if (wait == FramePacer::kUntilInput) {
     glfwWaitEvents();
   } else if (wait > 0) {

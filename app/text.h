@@ -1,6 +1,6 @@
-// The inspector's fonts: ImGui's own small one, with the captions' Greek and maths merged in,
-// and a large one for presentations; and its wrapped text. Apart from the inspector so that the
-// tests can check them without a window or a GPU.
+// How the inspector writes: its fonts (ImGui's own small one, with the captions' Greek and maths
+// merged in, and a large one for presentations) and its wrapped text. Apart from the inspector so
+// that the tests can check them without a window or a GPU.
 #pragma once
 
 #include <string>

@@ -1,7 +1,7 @@
 // Every character the inspector's lesson captions use has a glyph in both of its fonts: the
 // small one it draws with outside presentation mode, and the presentation one. (Outside
 // presentation mode a caption read "c? = ? x ? dA": the small font stopped at Latin-1.)
-#include "fonts.h"
+#include "text.h"
 #include "lesson.h"
 
 #include <gtest/gtest.h>
