@@ -51,7 +51,7 @@ void CanvasGeometry::point(const Vec2& at, float radius, MarkerShape shape, uint
 }
 
 CanvasRenderer::CanvasRenderer(gpu::Context& gpu, VkRenderPass renderPass)
-    : gpu_(gpu), points_(gpu, renderPass) {
+    : gpu_(gpu), points_(gpu, renderPass, false) {
   const std::vector<VkVertexInputAttributeDescription> attributes = {
       {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, position)},
       {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(CanvasVertex, pixelOffset)},

@@ -14,14 +14,14 @@ Marker marker(const Vec3& at, float diameter, MarkerShape shape, uint32_t color)
           color};
 }
 
-MarkerRenderer::MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass) : gpu_(gpu) {
+MarkerRenderer::MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass, bool depthTest) : gpu_(gpu) {
   pipeline_ = gpu::createPipeline(gpu.device, renderPass,
                       {marker_vert, sizeof(marker_vert), marker_frag, sizeof(marker_frag),
                        {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Marker, position)},
                         {1, 0, VK_FORMAT_R32_SFLOAT, offsetof(Marker, diameter)},
                         {2, 0, VK_FORMAT_R32_SFLOAT, offsetof(Marker, shape)},
                         {3, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(Marker, color)}},
-                       sizeof(Marker), VK_PRIMITIVE_TOPOLOGY_POINT_LIST, false,
+                       sizeof(Marker), VK_PRIMITIVE_TOPOLOGY_POINT_LIST, depthTest,
                        sizeof(float) * 16});
 }
 

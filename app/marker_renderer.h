@@ -25,7 +25,9 @@ Marker marker(const Vec3& at, float diameter, MarkerShape shape, uint32_t color)
 
 class MarkerRenderer {
  public:
-  MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass);
+  // `depthTest`: marks behind what was drawn before them are hidden (the 3D view's, behind the
+  // surface); without it every mark shows (the 2D pane's).
+  MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass, bool depthTest);
   ~MarkerRenderer();
   MarkerRenderer(const MarkerRenderer&) = delete;
   MarkerRenderer& operator=(const MarkerRenderer&) = delete;

@@ -27,7 +27,8 @@ class MeshRenderer {
 
   // One colour per triangle (linear RGB, 0..1).
   void upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors);
-  // Marks on the surface (the lifted sites), drawn on top of the mesh.
+  // Marks on the surface (the lifted sites), drawn over the mesh where they are in sight (sites
+  // on the far side showed through it: a ring of dots across the mushroom's cap).
   void uploadMarkers(const std::vector<Marker>& markers) { markers_.upload(markers); }
   void draw(VkCommandBuffer cmd, const MeshDraw& draw) const;
 

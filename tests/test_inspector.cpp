@@ -74,6 +74,11 @@ void checkScene(const std::string& name, const std::string& args, std::string in
 TEST(Inspector, FirstIteration) { checkScene("inspector_iteration0.png", "--iteration 0"); }
 TEST(Inspector, SecondIteration) { checkScene("inspector_iteration1.png", "--iteration 1"); }
 TEST(Inspector, LastIteration) { checkScene("inspector_last.png", ""); }
+// The cap from low at its side: the sites on its far half are behind the near half and must
+// not show through it (rows of dots across the dome; a ring across the mushroom's cap).
+TEST(Inspector, SitesBehindTheSurfaceAreHidden) {
+  checkScene("inspector_hidden_sites.png", "--pane 3d --camera '0.6 0.12 2.2 0 0 0.75'");
+}
 // The run's L-BFGS curves (blue), plain Lloyd's (grey) and Newton's (purple) from the same start.
 TEST(Inspector, ComparesTheSolversCurves) {
   checkScene("inspector_compared.png", "--compare-solvers --pane plots");
