@@ -768,7 +768,7 @@ CaptionFacts Inspector::captionFacts() {
   f.cleanedUp = finalShown();
   f.result = f.cleanedUp ? result_.after : currentQuality();
   f.param = toString(result_.paramUsed);
-  f.border = toString(options_.param.border);
+  f.border = borderPhrase(result_.paramUsed, options_.param.border);
   f.solver = toString(options_.lloyd.solver);
   f.method = toString(replay_->method());
   f.firstPass = usesResampling(options_) && result_.resampleDropped.empty() &&
@@ -833,8 +833,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   beginPane("Lloydscope", pos, size);
   wrappedText("Mesh: " + meshName_);
   wrappedText(std::string("Parameterization: ") + toString(result_.paramUsed) + " (" +
-              toString(options_.param.border) + " border), density: " + toString(options_.density.kind) +
-              ", solver: " + toString(options_.lloyd.solver));
+              borderPhrase(result_.paramUsed, options_.param.border) + "), density: " +
+              toString(options_.density.kind) + ", solver: " + toString(options_.lloyd.solver));
   ImGui::Text("Sites: %zu fixed, %zu movable", replay_->recording().fixedSites.size(),
               replay_->recording().iterations.empty()
                   ? size_t(0)

@@ -116,7 +116,7 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                          f.input.minAngle, f.input.avgMinAngle);
       break;
     case Stage::Parameterize:
-      c.formula = format("The %s map flattens %s onto the plane (%s border): every "
+      c.formula = format("The %s map flattens %s onto the plane (%s): every "
                          "point of the surface gets coordinates (u, v).",
                          f.param.c_str(),
                          f.firstPass ? "a rough first remeshing of the disk (its vertices are the first sites)" : "the disk",

@@ -512,6 +512,12 @@ const char* toString(ParamMethod method) {
 
 const char* toString(Border border) { return border == Border::Square ? "square" : "circle"; }
 
+std::string borderPhrase(ParamMethod used, Border border) {
+  if (used == ParamMethod::Lscm) return "free border";
+  if (used == ParamMethod::Given) return "border of the input's map";
+  return std::string(toString(border)) + " border";
+}
+
 ParamMethod parseParamMethod(const std::string& text) {
   for (ParamMethod m : {ParamMethod::Auto, ParamMethod::Authalic, ParamMethod::Conformal, ParamMethod::MeanValue,
                         ParamMethod::Tutte, ParamMethod::Lscm})

@@ -56,6 +56,10 @@ std::vector<Vec2> conformalMap(const Mesh& disk, const std::string& name);
 
 const char* toString(ParamMethod method);
 const char* toString(Border border);
+// The border of the map `used` made: "free border" (LSCM), "border of the input's map" (Given),
+// else "circle border" or "square border" as `border` says. (The inspector called LSCM's map
+// "circle border", its setting for the other methods, beside a map that is no circle.)
+std::string borderPhrase(ParamMethod used, Border border);
 ParamMethod parseParamMethod(const std::string& text);  // throws Error on unknown names
 Border parseBorder(const std::string& text);
 

@@ -55,6 +55,15 @@ TEST(Parameterization, CircleBorderPutsTheBorderOnACircle) {
   for (int v : p.boundaryLoop) EXPECT_NEAR((p.uv[v] - Vec2(0.5, 0.5)).norm(), 0.5, 1e-9);
 }
 
+// The inspector said "lscm (circle border)" beside LSCM's map, whose border is free: the
+// circle is the setting of the fixed-border methods.
+TEST(Parameterization, TheBorderPhraseSaysWhatTheMapUsedHas) {
+  EXPECT_EQ(borderPhrase(ParamMethod::Lscm, Border::Circle), "free border");
+  EXPECT_EQ(borderPhrase(ParamMethod::Conformal, Border::Circle), "circle border");
+  EXPECT_EQ(borderPhrase(ParamMethod::Authalic, Border::Square), "square border");
+  EXPECT_EQ(borderPhrase(ParamMethod::Given, Border::Circle), "border of the input's map");
+}
+
 TEST(Parameterization, BoundaryLoopIsCounterClockwiseInUV) {
   const Parameterization p = parameterize(test::grid(5), {}, "g");
   double area = 0;
