@@ -1436,43 +1436,11 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   const ImVec2 size = drawable(asked);
   ImGui::InvisibleButton(heading.full, size);
   const bool active = ImGui::IsItemActive();
-  auto transform = [&](double v) { return logScale ? std::log10(std::max(v, 1e-300)) : v; };
-  double lo = INFINITY, hi = -INFINITY;
+  const PlotAxis axis = plotAxis(values, others, threshold, logScale);
+  const std::vector<std::string>& labels = axis.labels;
+  const int ticks = static_cast<int>(labels.size()) - 1;
   size_t longest = values.size();
-  auto extend = [&](const std::vector<double>& series) {
-    longest = std::max(longest, series.size());
-    for (double v : series)
-      if (!logScale || v > 0) {
-        lo = std::min(lo, transform(v));
-        hi = std::max(hi, transform(v));
-      }
-  };
-  extend(values);
-  for (const std::vector<double>& series : others) extend(series);
-  if (threshold > 0) {
-    // Half a decade under the threshold on a log axis: at 10^-6, rounded down to a decade, the
-    // green line lay on the plot's bottom edge and read as the axis.
-    lo = std::min(lo, transform(threshold) - (logScale ? 0.5 : 0.0));
-    hi = std::max(hi, transform(threshold));
-  }
-  if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;  // nothing to plot (yet)
-  if (!(hi > lo)) {  // one value (a first iteration): a range around it, not from it to it + 1
-    const double spread = lo != 0 ? 0.01 * std::abs(lo) : 1.0;
-    lo -= spread;
-    hi += spread;
-  }
-  if (logScale) {
-    lo = std::floor(lo);
-    hi = std::ceil(hi);
-  }
-  // Y ticks: every power of ten on a log axis, five steps on a linear one; the plot starts
-  // right of the widest label.
-  const int ticks = logScale ? static_cast<int>(hi - lo) : 4;
-  std::vector<std::string> labels;
-  if (logScale)
-    for (int i = 0; i <= ticks; ++i) labels.push_back("1e" + std::to_string(static_cast<int>(std::lround(lo + i))));
-  else
-    labels = tickLabels(lo, hi, ticks);
+  for (const std::vector<double>& series : others) longest = std::max(longest, series.size());
   float widest = 0;
   for (const std::string& label : labels) widest = std::max(widest, ImGui::CalcTextSize(label.c_str()).x);
   const float font = ImGui::GetFontSize();  // 13 px, or larger when presenting
@@ -1488,13 +1456,13 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   if (values.empty()) return -1;
   const int n = static_cast<int>(longest);
   auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
-  auto y = [&](double v) { return b.y - static_cast<float>((transform(v) - lo) / (hi - lo)) * (b.y - a.y); };
+  auto y = [&](double v) { return b.y - static_cast<float>(axis.position(v)) * (b.y - a.y); };
   // Every tick's line, but only every `every`-th label where they would overlap (a short plot:
   // presentation mode's large font on a projector's 1024x768 printed them over each other).
-  const float spacing = (b.y - a.y) / std::max(ticks, 1);
+  const float spacing = static_cast<float>(1 - 2 * PlotAxis::kMargin) * (b.y - a.y) / std::max(ticks, 1);
   const int every = std::max(1, static_cast<int>(std::ceil(font / std::max(spacing, 1.0f))));
   for (int i = 0; i <= ticks; ++i) {
-    const float ty = b.y - static_cast<float>(i) * spacing;
+    const float ty = b.y - static_cast<float>(PlotAxis::kMargin) * (b.y - a.y) - static_cast<float>(i) * spacing;
     dl->AddLine(ImVec2(a.x - 4, ty), ImVec2(b.x, ty), rgb(0.9f, 0.9f, 0.9f));
     if (i % every == 0) dl->AddText(ImVec2(p0.x + 2, ty - 0.5f * font), rgb(0.3f, 0.3f, 0.3f), labels[i].c_str());
   }
@@ -1509,14 +1477,13 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   if (threshold > 0) dl->AddLine(ImVec2(a.x, y(threshold)), ImVec2(b.x, y(threshold)), rgb(0.2f, 0.6f, 0.2f), 1.5f);
   auto polyline = [&](const std::vector<double>& series, ImU32 colour) {
     std::vector<ImVec2> line;
-    for (size_t k = 0; k < series.size(); ++k)
-      if (!logScale || series[k] > 0) line.emplace_back(x(static_cast<double>(k)), y(series[k]));
+    for (size_t k = 0; k < series.size(); ++k) line.emplace_back(x(static_cast<double>(k)), y(series[k]));
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, 1.5f);
   };
   for (size_t k = 0; k < others.size(); ++k) polyline(others[k], otherColours[k]);
   polyline(values, colour);
   dl->AddLine(ImVec2(x(current), a.y), ImVec2(x(current), b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
-  if (current < static_cast<int>(values.size()) && (!logScale || values[current] > 0))
+  if (current < static_cast<int>(values.size()))
     dl->AddCircleFilled(ImVec2(x(current), y(values[current])), 4.0f, rgb(0.85f, 0.3f, 0.1f));
   dl->PopClipRect();
   if (active) {

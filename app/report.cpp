@@ -55,6 +55,54 @@ std::vector<std::string> wrapAtSpaces(const std::string& text, float width,
   return lines;
 }
 
+double PlotAxis::position(double value) const {
+  const double onTicks = log && value <= 0 ? 0.0  // the row of zeros
+                                           : ((log ? std::log10(value) : value) - lo) / (hi - lo);
+  return kMargin + (1 - 2 * kMargin) * onTicks;
+}
+
+PlotAxis plotAxis(const std::vector<double>& values, const std::vector<std::vector<double>>& others,
+                  double threshold, bool log) {
+  PlotAxis axis;
+  axis.log = log;
+  double lo = INFINITY, hi = -INFINITY;
+  bool zeros = false;
+  const auto extend = [&](const std::vector<double>& series) {
+    for (double v : series) {
+      if (log && v <= 0) {
+        zeros = true;
+        continue;
+      }
+      lo = std::min(lo, log ? std::log10(v) : v);
+      hi = std::max(hi, log ? std::log10(v) : v);
+    }
+  };
+  extend(values);
+  for (const std::vector<double>& series : others) extend(series);
+  if (threshold > 0) {
+    lo = std::min(lo, log ? std::log10(threshold) - 0.5 : threshold);
+    hi = std::max(hi, log ? std::log10(threshold) : threshold);
+  }
+  if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;  // nothing to plot (yet)
+  if (!(hi > lo)) {  // one value (a first iteration): a range around it, not from it to it + 1
+    const double spread = lo != 0 ? 0.01 * std::abs(lo) : 1.0;
+    lo -= spread;
+    hi += spread;
+  }
+  if (!log) {
+    axis.lo = lo;
+    axis.hi = hi;
+    axis.labels = tickLabels(lo, hi, 4);
+    return axis;
+  }
+  axis.lo = std::floor(lo) - (zeros ? 1 : 0);
+  axis.hi = std::ceil(hi);
+  for (int decade = static_cast<int>(axis.lo); decade <= static_cast<int>(axis.hi); ++decade)
+    axis.labels.push_back("1e" + std::to_string(decade));
+  if (zeros) axis.labels.front() = "0";
+  return axis;
+}
+
 int tickStep(int count, int fitting) {
   const double rough = std::max(1.0, static_cast<double>(count) / std::clamp(fitting, 1, 6));
   const double power = std::pow(10, std::floor(std::log10(rough)));

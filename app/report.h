@@ -20,6 +20,25 @@ std::string format(const char* pattern, double value);
 // or from 10^5 on are written with one exponent for all: 2.017e-4 .. 2.035e-4 (as %g wrote
 // them, 0.0002017 .. 0.000203 .. 0.0002035, they differed in length and were hard to read).
 std::vector<std::string> tickLabels(double lo, double hi, int steps);
+// A plot's y axis over a run's values and other runs': its range, its ticks' labels (bottom to top, evenly
+// spaced) and where a value sits on it. On a log axis every power of ten is a tick, and values
+// of 0 or less (the last iteration of a run with no site still moving) sit on a row of their
+// own under the lowest decade, labelled 0: left out, the curve ended above the threshold it
+// had reached. A threshold (> 0) is inside the range, half a decade over its bottom on a log
+// axis (on it, the green line read as the axis). The lowest and the highest tick keep a
+// margin from the plot's frame: a curve along it (100% moving all along, the last energy)
+// read as the frame, in grey (Lloyd's colour) not at all.
+struct PlotAxis {
+  static constexpr double kMargin = 0.04;  // of the plot's height, under and over the ticks
+  bool log = false;
+  double lo = 0, hi = 1;  // the lowest tick and the highest; log10 of them on a log axis
+  std::vector<std::string> labels;  // one per tick, evenly spaced from lo to hi
+  // 0 at the bottom of the plot, 1 at its top.
+  double position(double value) const;
+};
+PlotAxis plotAxis(const std::vector<double>& values, const std::vector<std::vector<double>>& others,
+                  double threshold, bool log);
+
 // The step between labelled ticks along `count` iterations: 1, 2 or 5 times a power of ten, the
 // smallest that labels at most six of them and no more than `fitting` (how many labels fit side
 // by side). Steps of 20 along 230 iterations ran "100120140..." together.

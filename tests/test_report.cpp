@@ -169,6 +169,29 @@ TEST(Report, TextWrapsAtSpacesNotInsideNumbers) {
   EXPECT_EQ(wrapAtSpaces("", 8, characters), (std::vector<std::string>{""}));
 }
 
+// A run whose last iteration had no site still moving: 0 % cannot sit on a log axis. It was
+// left out, and the % moving curve ended at 9.4 %, over the 5 % threshold the run had met.
+TEST(Report, ZerosOnALogAxisHaveARowOfTheirOwn) {
+  const PlotAxis axis = plotAxis({100, 50, 9.4, 0}, {}, 5, true);
+  EXPECT_EQ(axis.labels, (std::vector<std::string>{"0", "1e0", "1e1", "1e2"}));
+  // The ticks keep a margin from the frame (PlotAxis::kMargin).
+  const auto onFrame = [](double onTicks) { return PlotAxis::kMargin + (1 - 2 * PlotAxis::kMargin) * onTicks; };
+  EXPECT_DOUBLE_EQ(axis.position(0), onFrame(0));
+  EXPECT_DOUBLE_EQ(axis.position(1), onFrame(1.0 / 3));
+  EXPECT_DOUBLE_EQ(axis.position(100), onFrame(1));
+  EXPECT_GT(axis.position(0), 0.0);
+  EXPECT_LT(axis.position(100), 1.0);
+  // Without zeros the lowest decade is the bottom; the threshold half a decade over it.
+  const PlotAxis plain = plotAxis({100, 50, 9.4}, {{20, 3}}, 5, true);
+  EXPECT_EQ(plain.labels, (std::vector<std::string>{"1e0", "1e1", "1e2"}));
+  EXPECT_DOUBLE_EQ(plain.position(10), 0.5);
+  // A linear axis: five labels from the smallest value to the largest.
+  const PlotAxis energy = plotAxis({2.0351e-4, 2.0172e-4}, {}, 0, false);
+  EXPECT_EQ(energy.labels.front(), "2.017e-4");
+  EXPECT_EQ(energy.labels.size(), 5u);
+  EXPECT_DOUBLE_EQ(energy.position(2.0172e-4), onFrame(0));
+}
+
 // Steps of 1, 2 or 5 times a power of ten: six labels at most, and no more than fit.
 TEST(Report, TickStepsLabelNoMoreThanFit) {
   EXPECT_EQ(tickStep(230, 20), 50);   // 0 50 100 150 200 (steps of 20 ran together)
