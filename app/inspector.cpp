@@ -1318,12 +1318,25 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
                     rgb(0.15f, 0.15f, 0.15f), 2.0f);
       }
   selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale);
-  if (fill_ != CellFill::None)
-    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, format("%.2e", fillRange_[1]).c_str(),
-                 format("%.2e", fillRange_[0]).c_str(), [](float t) { return quantityColor(t); });
+  if (fill_ != CellFill::None) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4));
   boxedText(dl, ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), legend.c_str());
   dl->PopClipRect();
   ImGui::End();
+}
+
+// What the cells' colours mean: the quantity, and its colour bar (or its one value).
+void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at) const {
+  constexpr const char* kNames[] = {"", "mass M = ∫ ρ dA", "area in (u, v)", "energy ∫ ρ |x - s|² dA",
+                                    "distance |c - s|", "moved since k-1"};
+  const float font = ImGui::GetFontSize();
+  const std::string name = std::string(kNames[static_cast<int>(fill_)]) + (fillScale_.log ? " (log scale)" : "");
+  if (fillScale_.flat()) {
+    boxedText(dl, at, (name + ": " + format("%.2e", fillScale_.lo) + " for every cell").c_str());
+    return;
+  }
+  boxedText(dl, at, name.c_str());
+  drawColorBar(dl, ImVec2(at.x, at.y + 1.5f * font + 0.5f), 90, format("%.2e", fillScale_.hi).c_str(),
+               format("%.2e", fillScale_.lo).c_str(), [](float t) { return quantityColor(t); });
 }
 
 CanvasGeometry Inspector::buildCanvas(float scale) {
@@ -1353,16 +1366,11 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
     // They are grey, outside the scale, for the two quantities of the sites' moves.
     const bool movableOnly = fill_ == CellFill::ToCentroid || fill_ == CellFill::Moved;
     const size_t first = movableOnly ? fixedCount : 0;
-    double lo = INFINITY, hi = -INFINITY;
-    for (size_t i = first; i < view.cells.size(); ++i) {
-      lo = std::min(lo, quantity(i));
-      hi = std::max(hi, quantity(i));
-    }
-    fillRange_[0] = lo;
-    fillRange_[1] = hi;
+    std::vector<double> values;
+    for (size_t i = first; i < view.cells.size(); ++i) values.push_back(quantity(i));
+    fillScale_ = fillScale(values);
     for (size_t i = 0; i < view.cells.size(); ++i) {
-      const float t = hi > lo ? static_cast<float>((quantity(i) - lo) / (hi - lo)) : 0.5f;
-      const ImU32 color = i < first ? rgb(0.85f, 0.85f, 0.85f) : quantityColor(t, 0.85f);
+      const ImU32 color = i < first ? rgb(0.85f, 0.85f, 0.85f) : quantityColor(fillScale_.at(quantity(i)), 0.85f);
       for (const CellPiece& piece : view.cells[i].pieces)
         for (size_t k = 1; k + 1 < piece.polygon.size(); ++k)
           g.fill(piece.polygon[0], piece.polygon[k], piece.polygon[k + 1], color);
@@ -1370,7 +1378,10 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   }
   // A projector washes colours out: darker lines, stronger colours, bigger marks.
   const bool strong = presentation_;
-  const ImU32 triangleColor = strong ? rgb(0.62f, 0.64f, 0.7f) : rgb(0.82f, 0.84f, 0.88f);
+  // Over a fill, the light triangles were the brightest lines in the pane: faint there.
+  const bool filled = fill_ != CellFill::None && layers().cells2D;
+  const ImU32 triangleColor = strong ? rgb(0.62f, 0.64f, 0.7f, filled ? 0.4f : 1.0f)
+                                     : rgb(0.82f, 0.84f, 0.88f, filled ? 0.3f : 1.0f);
   const ImU32 edgeColor = strong ? rgb(0.0f, 0.1f, 0.45f) : rgb(0.2f, 0.35f, 0.7f);
   const ImU32 orange = strong ? rgb(0.95f, 0.25f, 0.0f) : rgb(0.85f, 0.3f, 0.1f);
   const ImU32 siteColor = strong ? rgb(0.0f, 0.0f, 0.0f) : rgb(0.1f, 0.15f, 0.45f);

@@ -6,6 +6,7 @@
 #include "canvas_renderer.h"
 #include "mesh_renderer.h"
 #include "pipeline.h"
+#include "report.h"
 #include "lesson.h"
 #include "replay.h"
 #include "selection.h"
@@ -237,7 +238,8 @@ class Inspector {
     }
   };
   CanvasKey canvasKey_;
-  double fillRange_[2] = {0, 0};
+  FillScale fillScale_;  // of the cells' fill, as the canvas was last built
+  void fillLegend(ImDrawList* dl, const ImVec2& at) const;
   int iteration_ = 0;
   int uploadedIteration_ = -1, measuredIteration_ = -1;
   RemeshMethod uploadedMethod_ = RemeshMethod::Retriangulate;

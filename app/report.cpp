@@ -103,6 +103,22 @@ PlotAxis plotAxis(const std::vector<double>& values, const std::vector<std::vect
   return axis;
 }
 
+float FillScale::at(double value) const {
+  if (flat()) return 0.0f;
+  const double t = log ? std::log(std::max(value, lo) / lo) / std::log(hi / lo) : (value - lo) / (hi - lo);
+  return static_cast<float>(std::clamp(t, 0.0, 1.0));
+}
+
+FillScale fillScale(const std::vector<double>& values) {
+  FillScale scale;
+  if (values.empty()) return scale;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  scale.lo = *lo;
+  scale.hi = *hi;
+  scale.log = scale.lo > 0 && scale.hi > 100 * scale.lo;
+  return scale;
+}
+
 int tickStep(int count, int fitting) {
   const double rough = std::max(1.0, static_cast<double>(count) / std::clamp(fitting, 1, 6));
   const double power = std::pow(10, std::floor(std::log10(rough)));

@@ -39,6 +39,18 @@ struct PlotAxis {
 PlotAxis plotAxis(const std::vector<double>& values, const std::vector<std::vector<double>>& others,
                   double threshold, bool log);
 
+// How a cell fill's values map to colours (0 the lowest colour, 1 the highest): linear from
+// the smallest value to the largest, or over their logarithms where all are positive and the
+// largest is over 100 times the smallest (one cell of the camel head, 3·10⁶ times the
+// smallest mass, left every other cell the lowest colour).
+struct FillScale {
+  double lo = 0, hi = 0;
+  bool log = false;
+  bool flat() const { return !(hi > lo); }  // every value the same (moved, at iteration 0)
+  float at(double value) const;             // 0 where flat
+};
+FillScale fillScale(const std::vector<double>& values);
+
 // The step between labelled ticks along `count` iterations: 1, 2 or 5 times a power of ten, the
 // smallest that labels at most six of them and no more than `fitting` (how many labels fit side
 // by side). Steps of 20 along 230 iterations ran "100120140..." together.

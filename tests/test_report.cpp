@@ -192,6 +192,24 @@ TEST(Report, ZerosOnALogAxisHaveARowOfTheirOwn) {
   EXPECT_DOUBLE_EQ(energy.position(2.0172e-4), onFrame(0));
 }
 
+// The camel head's masses spanned 2.7e-8 to 8.8e-2: on a linear scale every cell but one had
+// the lowest colour. Over a factor 100 the scale is logarithmic.
+TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
+  const FillScale masses = fillScale({1e-3, 2e-3, 1e-3, 8.8e-2, 1e-5});
+  EXPECT_TRUE(masses.log);
+  EXPECT_FLOAT_EQ(masses.at(1e-5), 0.0f);
+  EXPECT_FLOAT_EQ(masses.at(8.8e-2), 1.0f);
+  EXPECT_GT(masses.at(1e-3), 0.4f);  // the bulk in the middle, not at the bottom
+  const FillScale areas = fillScale({1.0, 3.0, 2.0});
+  EXPECT_FALSE(areas.log);
+  EXPECT_FLOAT_EQ(areas.at(2.0), 0.5f);
+  // Every value the same (how far each site moved, at iteration 0): flat, the lowest colour.
+  const FillScale moved = fillScale({0.0, 0.0, 0.0});
+  EXPECT_TRUE(moved.flat());
+  EXPECT_FLOAT_EQ(moved.at(0.0), 0.0f);
+  EXPECT_FALSE(fillScale({0.0, 5.0, 1e4}).log);  // a 0 has no logarithm
+}
+
 // Steps of 1, 2 or 5 times a power of ten: six labels at most, and no more than fit.
 TEST(Report, TickStepsLabelNoMoreThanFit) {
   EXPECT_EQ(tickStep(230, 20), 50);   // 0 50 100 150 200 (steps of 20 ran together)
