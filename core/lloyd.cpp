@@ -112,7 +112,11 @@ bool LloydSolver::lineSearch(const Evaluation& current, const std::vector<double
     for (size_t i = 0; i < x.size(); ++i)
       trial[i] = snapToGrid(x[i] + step * Vec2(direction[2 * i], direction[2 * i + 1]));
     next = evaluate(trial);
-    if (next.energy <= current.energy + kArmijo * step * slope) return true;
+    // A site the step takes out of the domain has an empty cell, a zero gradient and no way
+    // back: the cow's L-BFGS run left up to five stranded beyond the border, unlifted. Such a
+    // step is shortened as one that does not descend enough.
+    if (next.energy <= current.energy + kArmijo * step * slope && next.emptyCells() <= current.emptyCells())
+      return true;
   }
   return false;
 }

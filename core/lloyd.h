@@ -6,6 +6,7 @@
 
 #include <string>
 #include <cstdint>
+#include <algorithm>
 #include <atomic>
 #include <vector>
 
@@ -97,6 +98,8 @@ class LloydSolver {
     std::vector<double> masses;
     std::vector<double> areas;                    // Newton's only
     std::vector<std::vector<EdgeMoments>> edges;  // Newton's only
+    // Sites whose cell is empty: out of the domain (or on another site).
+    size_t emptyCells() const { return static_cast<size_t>(std::count(masses.begin(), masses.end(), 0.0)); }
   };
   Evaluation evaluate(const std::vector<Vec2>& movable);
   // Armijo backtracking from the movable sites along `direction` (u, v per site), whose
