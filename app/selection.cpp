@@ -3,6 +3,7 @@
 #include "text.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -22,6 +23,18 @@ void toggle(std::vector<int>& pins, int index) {
 
 void pin(std::vector<int>& pins, int index) {
   if (!pinned(pins, index)) toggle(pins, index);
+}
+
+// A pinned triangle, filled and outlined, and ringed: a sliver of the result is a few pixels,
+// and the worst triangle pinned could not be found in either view.
+void drawPinnedTriangle(ImDrawList* dl, const ImVec2 (&corners)[3], float fillAlpha) {
+  dl->AddTriangleFilled(corners[0], corners[1], corners[2], Selection::triangleColor(fillAlpha));
+  dl->AddPolyline(corners, 3, Selection::triangleColor(), ImDrawFlags_Closed, 2.5f);
+  const ImVec2 centre((corners[0].x + corners[1].x + corners[2].x) / 3,
+                      (corners[0].y + corners[1].y + corners[2].y) / 3);
+  float radius = 14.0f;
+  for (const ImVec2& c : corners) radius = std::max(radius, std::hypot(c.x - centre.x, c.y - centre.y) + 6.0f);
+  dl->AddCircle(centre, radius, Selection::triangleColor(), 32, 2.5f);
 }
 
 }  // namespace
@@ -63,8 +76,7 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
     const Triangle& t = view.output.triangles[triangle];
     const ImVec2 corners[3] = {screen(view.outputUV[t[0]]), screen(view.outputUV[t[1]]),
                                screen(view.outputUV[t[2]])};
-    dl->AddTriangleFilled(corners[0], corners[1], corners[2], triangleColor(0.35f));
-    dl->AddPolyline(corners, 3, triangleColor(), ImDrawFlags_Closed, 2.5f);
+    drawPinnedTriangle(dl, corners, 0.35f);
   }
 }
 
@@ -87,8 +99,7 @@ void Selection::draw3D(ImDrawList* dl, const Recording& recording, const Domain&
     bool visible = true;
     for (int k = 0; k < 3; ++k) visible = visible && screen(view.output.points[t[k]], corners[k]);
     if (!visible) continue;
-    dl->AddTriangleFilled(corners[0], corners[1], corners[2], triangleColor(0.45f));
-    dl->AddPolyline(corners, 3, triangleColor(), ImDrawFlags_Closed, 2.5f);
+    drawPinnedTriangle(dl, corners, 0.45f);
   }
 }
 
