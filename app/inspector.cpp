@@ -765,6 +765,7 @@ CaptionFacts Inspector::captionFacts() {
   f.seamEdges = std::max<int>(result_.cut.seamEdges, replay_->seams().size());
   f.charts = inputCharts_;
   f.input = result_.before;
+  f.inputIsMapped = !input_;
   f.cleanedUp = finalShown();
   f.result = f.cleanedUp ? result_.after : currentQuality();
   f.param = toString(result_.paramUsed);

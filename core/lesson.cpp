@@ -178,9 +178,11 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                         // Said only where the numbers below bear it out.
                         (f.result.avgMinAngle >= kNearlyEquilateral ? ": a new mesh of nearly equilateral triangles."
                                                                     : ": a new mesh.");
-      c.numbers = format("%d vertices; irregular %.0f%% → %.0f%%; smallest angle %.1f° → "
+      c.numbers = format("%d vertices; %sirregular %.0f%% → %.0f%%; smallest angle %.1f° → "
                          "%.1f°; average smallest angle %.1f° → %.1f°",
-                         f.result.vertices, f.input.irregularPercent, f.result.irregularPercent,
+                         f.result.vertices,
+                         f.inputIsMapped ? "from the mesh that was parameterized (a recording holds no input): " : "",
+                         f.input.irregularPercent, f.result.irregularPercent,
                          f.input.minAngle, f.result.minAngle, f.input.avgMinAngle,
                          f.result.avgMinAngle);
       break;

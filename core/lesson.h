@@ -86,6 +86,9 @@ struct CaptionFacts {
   std::string border = "free border";  // the map's (borderPhrase)
   bool firstPass = false;  // the map is of a rough first remeshing, whose vertices are the first sites
   bool cleanedUp = false;  // `result` is the final one, after the clean-up on the surface
+  // `input` is the mesh that was parameterized, not the one opened (a recording holds no
+  // input; its map's mesh may be a first remeshing, as good as the result)
+  bool inputIsMapped = false;
   Distortion distortion;
   int iteration = 0, iterations = 0;
   double energy = 0, maxMove = 0, percentMoving = 0;

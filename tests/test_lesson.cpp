@@ -199,6 +199,17 @@ TEST(Lesson, TheResultCaptionClaimsNearlyEquilateralOnlyWhenItIs) {
   EXPECT_EQ(caption(Stage::Result, facts).formula.find("nearly equilateral"), std::string::npos);
 }
 
+// A recording holds the mesh that was parameterized (a first remeshing, as regular as the
+// result), not the input: "irregular 33% → 34%" under "a new mesh of nearly equilateral
+// triangles" read as the result being worse than the input.
+TEST(Lesson, TheResultCaptionSaysWhatARecordingComparesWith) {
+  CaptionFacts facts;
+  facts.method = "retriangulate";
+  EXPECT_EQ(caption(Stage::Result, facts).numbers.find("parameterized"), std::string::npos);
+  facts.inputIsMapped = true;
+  EXPECT_NE(caption(Stage::Result, facts).numbers.find("from the mesh that was parameterized"), std::string::npos);
+}
+
 // The map of a run with the first pass is the rough remeshing's, and the caption says so: it
 // is why the sites start evenly spread.
 TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
