@@ -190,7 +190,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   iteration_ = replay_->iterationCount() - 1;
   fitCamera();
   ImFontAtlas* fonts = ImGui::GetIO().Fonts;
-  if (fonts->Fonts.Size > 1) presentationFont_ = fonts->Fonts[1];
+  for (int k = 1; k < std::min(fonts->Fonts.Size, 3); ++k) presentationFonts_[k - 1] = fonts->Fonts[k];
 }
 
 Inspector::~Inspector() {
@@ -684,9 +684,14 @@ void Inspector::frame() {
     stage_ = lesson_.current().stage;
   }
   if (exportJob_ && exportJob_->first >= 0) setIteration(exportNext_);
-  const bool bigFont = presentation_ && presentationFont_;
-  if (bigFont) ImGui::PushFont(presentationFont_);
-  ImGui::GetIO().FontGlobalScale = presentation_ && !bigFont ? 1.6f : 1.0f;
+  // Presentation mode's type grows with the window: the font drawn nearest the size, scaled to it.
+  const float textSize = presentationTextSize(ImGui::GetIO().DisplaySize.y);
+  ImFont* presentationFont = presentationFonts_[presentationFonts_[1] && textSize > 31.5f ? 1 : 0];
+  const bool bigFont = presentation_ && presentationFont;
+  if (bigFont) ImGui::PushFont(presentationFont);
+  ImGui::GetIO().FontGlobalScale = !presentation_ ? 1.0f
+                                   : bigFont      ? textSize / presentationFont->FontSize
+                                                  : 1.6f * textSize / 21.0f;  // ImGui's own font, 13 px
   // Presentation: no controls pane, a taller timeline; a lesson stage adds its caption on top.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float line = ImGui::GetTextLineHeightWithSpacing();

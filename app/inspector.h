@@ -274,7 +274,7 @@ class Inspector {
   // The timeline's iteration slider has a row of its own: the buttons left it too little room
   // in the last frame (a narrow window, or presentation mode's large font).
   bool timelineWrapped_ = false;
-  ImFont* presentationFont_ = nullptr;  // null: the default font, scaled
+  ImFont* presentationFonts_[2] = {};  // 21 and 42 px; null: the default font, scaled
   std::optional<Stage> stage_;
   LessonPlayer lesson_;
   float zoom2D_ = 1.0f;

@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <fstream>
 
 namespace lloydscope {
@@ -22,9 +23,13 @@ void addInspectorFonts() {
   ImFontConfig merged;
   merged.MergeMode = true;
   io.Fonts->AddFontFromFileTTF(font, 13.0f, &merged, maths);
-  io.Fonts->AddFontFromFileTTF(font, 21.0f, nullptr, latin);  // presentation mode's
-  io.Fonts->AddFontFromFileTTF(font, 21.0f, &merged, maths);
+  for (float size : {21.0f, 42.0f}) {  // presentation mode's
+    io.Fonts->AddFontFromFileTTF(font, size, nullptr, latin);
+    io.Fonts->AddFontFromFileTTF(font, size, &merged, maths);
+  }
 }
+
+float presentationTextSize(float height) { return 21.0f * std::max(1.0f, height / 800.0f); }
 
 void wrappedText(const std::string& text) {
   const auto measure = [](const std::string& line) { return ImGui::CalcTextSize(line.c_str()).x; };

@@ -9,7 +9,13 @@ namespace lloydscope {
 
 // Call once after ImGui::CreateContext(), before the font texture is uploaded. Without
 // DejaVu Sans (fonts-dejavu-core) only ImGui's own font is there.
+// Fonts[0] the small one, [1] and [2] presentation mode's at 21 and 42 px (where DejaVu Sans is
+// there): the larger for large windows, so that a projector's type is drawn, not magnified.
 void addInspectorFonts();
+
+// The size of presentation mode's type in a window `height` pixels tall: 21 px up to 800, and
+// the same part of the height above (at 2560x1600 it was a hundredth of the picture).
+float presentationTextSize(float height);
 
 // `text` wrapped to the room left on the line (a pane's or a table cell's), broken at spaces
 // only (wrapAtSpaces): ImGui::TextWrapped broke numbers after their decimal point.

@@ -64,16 +64,23 @@ TEST(Fonts, EveryCaptionCharacterHasAGlyphInBothFonts) {
   unsigned char* pixels = nullptr;
   int width = 0, height = 0;
   atlas->GetTexDataAsRGBA32(&pixels, &width, &height);  // builds the glyphs, on the CPU
-  ASSERT_EQ(atlas->Fonts.Size, 2);
+  ASSERT_EQ(atlas->Fonts.Size, 3);
   int nonAscii = 0;
   for (const std::string& text : everyCaption())
     for (unsigned point : codePoints(text)) {
       if (point < 0x20) continue;
       nonAscii += point > 0x7F;
-      for (ImFont* font : {atlas->Fonts[0], atlas->Fonts[1]})
+      for (ImFont* font : {atlas->Fonts[0], atlas->Fonts[1], atlas->Fonts[2]})
         EXPECT_NE(font->FindGlyphNoFallback(static_cast<ImWchar>(point)), nullptr)
             << "U+" << std::hex << point << " in \"" << text << "\"";
     }
   EXPECT_GT(nonAscii, 0);  // the captions do use Greek and maths
   ImGui::DestroyContext();
+}
+
+// Presentation mode's type was 21 px whatever the window: a hundredth of a 2560x1600 picture.
+TEST(Text, PresentationTypeGrowsWithTheWindow) {
+  EXPECT_FLOAT_EQ(presentationTextSize(600), 21.0f);  // never smaller
+  EXPECT_FLOAT_EQ(presentationTextSize(800), 21.0f);
+  EXPECT_FLOAT_EQ(presentationTextSize(1600), 42.0f);
 }
