@@ -588,10 +588,10 @@ void Inspector::uploadMesh() {
   const Layers shown = layers();
   // The mesh the user opened; from a recording alone, the mesh that was parameterized.
   const bool final = finalShown();
-  const Mesh& mesh = final            ? result_.output
-                     : !shown.input3D ? view.output
-                     : input_         ? *input_
-                                      : replay_->recording().input;
+  const Mesh& mesh = final                        ? result_.output
+                     : !shown.input3D             ? view.output
+                     : input_ && !shown.mapped3D ? *input_
+                                                  : replay_->recording().input;
   std::vector<std::array<float, 3>> colors;
   for (const Triangle& t : mesh.triangles) {
     if (!colorByAngle_) {
@@ -629,6 +629,7 @@ void Inspector::uploadMesh() {
   renderer_.uploadMarkers(sites);
   uploadedIteration_ = iteration_;
   uploadedInput_ = shown.input3D;
+  uploadedMapped_ = shown.mapped3D;
   uploadedSites_ = shown.sites3D;
   uploadedFinal_ = final;
   uploadedMethod_ = replay_->method();
@@ -728,6 +729,11 @@ void Inspector::frame() {
   timelinePane(ImVec2(left, plotsTop + plotsHeight), ImVec2(display.x - left, timelineHeight));
   if (bigFont) ImGui::PopFont();
   animatedLastFrame_ = animating();
+}
+
+bool Inspector::mapIsOfTheInput() const {
+  const Mesh& mapped = replay_->recording().input;
+  return input_ && mapped.points.size() == input_->points.size() && mapped.triangles == input_->triangles;
 }
 
 bool Inspector::finalShown() const {
@@ -1172,7 +1178,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     fitCamera();
 
   const Layers shown = layers();
-  if (uploadedIteration_ != iteration_ || uploadedInput_ != shown.input3D ||
+  if (uploadedIteration_ != iteration_ || uploadedInput_ != shown.input3D || uploadedMapped_ != shown.mapped3D ||
       uploadedSites_ != shown.sites3D || uploadedFinal_ != finalShown() ||
       uploadedMethod_ != replay_->method())
     uploadMesh();
@@ -1228,7 +1234,8 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   const std::string label =
       finalShown()    ? format("final result (red ring: farthest from the input, %.2f%%)",
                                result_.fidelity.hausdorffPercent)
-      : shown.input3D ? (input_ ? "input mesh" : "the mesh that was parameterized")
+      : shown.input3D ? (input_ && (!shown.mapped3D || mapIsOfTheInput()) ? "input mesh"
+                                                                         : "the mesh that was parameterized")
                       : "result at iteration " + std::to_string(iteration_) + " (" +
                             toString(replay_->method()) + ")";
   boxedText(dl, ImVec2(p0.x + 8, p0.y + 4), label.c_str());

@@ -251,9 +251,11 @@ class Inspector {
   };
   std::vector<SeamEdge> seam3D_;  // of the mesh uploaded to the 3D pane
   int edgesIteration_ = -1;
-  bool showInput_ = false, uploadedInput_ = false, uploadedSites_ = false;
+  bool showInput_ = false, uploadedInput_ = false, uploadedMapped_ = false, uploadedSites_ = false;
   bool showFinal_ = false, uploadedFinal_ = false;
-  bool finalShown() const;  // showFinal_, and there is a final result, and no lesson stage
+  bool finalShown() const;
+  // The map is of the mesh opened itself (no first remeshing, cut or simplification).
+  bool mapIsOfTheInput() const;  // showFinal_, and there is a final result, and no lesson stage
   const Mesh& fittedMesh() const;
   bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;
   bool playing_ = false, showTimings_ = true;

@@ -32,6 +32,7 @@ Stage parseStage(const std::string& name) {
 Layers layersFor(Stage stage) {
   Layers l;
   l.input3D = stage != Stage::Result;
+  l.mapped3D = stage != Stage::Load;  // from Parameterize on, the mesh the map is of
   l.sites3D = stage >= Stage::Voronoi;
   l.triangles2D = stage != Stage::Load;
   l.cells2D = stage >= Stage::Voronoi;

@@ -21,11 +21,14 @@ Stage parseStage(const std::string& name);    // throws Error naming the choices
 // What the panes show at a stage: the stages reveal the method one layer at a time.
 struct Layers {
   bool input3D = false;      // the input mesh, not the result
+  // With input3D: the mesh that was parameterized (a rough first remeshing of the input, say),
+  // the one the 2D pane shows flattened, not the input as opened.
+  bool mapped3D = false;
   bool sites3D = false;      // the sites lifted to the surface
   bool triangles2D = false;  // the parameter triangles
   bool cells2D = false, sites2D = false, centroids2D = false, arrows2D = false;
   bool operator==(const Layers& o) const {
-    return input3D == o.input3D && sites3D == o.sites3D && triangles2D == o.triangles2D &&
+    return input3D == o.input3D && mapped3D == o.mapped3D && sites3D == o.sites3D && triangles2D == o.triangles2D &&
            cells2D == o.cells2D && sites2D == o.sites2D && centroids2D == o.centroids2D &&
            arrows2D == o.arrows2D;
   }

@@ -121,8 +121,12 @@ TEST(Lesson, StagesRevealOneLayerAtATime) {
                centroids = layersFor(Stage::Centroids), move = layersFor(Stage::Move),
                result = layersFor(Stage::Result);
   EXPECT_TRUE(load.input3D);
+  EXPECT_FALSE(load.mapped3D);  // the mesh as opened
   EXPECT_FALSE(load.cells2D || load.sites2D || load.triangles2D);
   EXPECT_TRUE(layersFor(Stage::Parameterize).triangles2D);
+  // From Parameterize on, the 3D pane shows the mesh the 2D pane shows flattened (on
+  // nefertiti, the input beside its rough first remeshing's map: two triangulations).
+  EXPECT_TRUE(layersFor(Stage::Parameterize).mapped3D && voronoi.mapped3D && layersFor(Stage::Lift).mapped3D);
   EXPECT_TRUE(voronoi.cells2D && voronoi.sites2D && !voronoi.centroids2D);
   EXPECT_TRUE(centroids.centroids2D && !centroids.arrows2D);
   EXPECT_TRUE(move.arrows2D);
