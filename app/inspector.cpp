@@ -791,6 +791,7 @@ CaptionFacts Inspector::captionFacts() {
   const IterationRecord& it = replay_->recording().iterations[iteration_];
   f.energy = it.energy;
   f.maxMove = it.maxDisplacement;
+  f.arrowScale = arrowScale_;
   f.percentMoving = 100.0 * it.fractionMoving;
   if (!selection_.cells().empty())
     f.cell = describeCell(replay_->recording(), replay_->domain(), replay_->view(iteration_),
@@ -1417,6 +1418,18 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   // Dots a sixth of the site spacing: the cells stay visible between them.
   const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f) *
                   (strong ? 1.3f : 1.0f);
+  // The lesson's Move stage is about the arrows: too short to see, they are drawn longer.
+  arrowScale_ = 1;
+  if (stage_ == Stage::Move) {
+    std::vector<double> lengths;  // in pixels
+    for (size_t i = fixedCount; i < view.sites.size(); ++i)
+      lengths.push_back((view.cells[i].centroid - view.sites[i]).norm() * scale);
+    if (!lengths.empty()) {
+      std::sort(lengths.begin(), lengths.end());
+      arrowScale_ = arrowMagnification(lengths[lengths.size() / 2], lengths.back(),
+                                        scale / std::sqrt(static_cast<double>(view.sites.size()) + 1));
+    }
+  }
   for (size_t i = 0; i < view.sites.size() && shown.sites2D; ++i) {
     const Vec2& s = view.sites[i];
     if (i < fixedCount) {
@@ -1424,13 +1437,14 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
       continue;
     }
     const Vec2& c = view.cells[i].centroid;
-    const Vec2 d = (c - s) * scale;  // in pixels, v up
+    const Vec2 tip = s + arrowScale_ * (c - s);
+    const Vec2 d = (tip - s) * scale;  // in pixels, v up
     const float length = static_cast<float>(d.norm());
     if (shown.arrows2D && length > 1.0f) {
-      g.line(s, c, orange);
+      g.line(s, tip, orange);
       const float ux = static_cast<float>(d.x()) / length, uy = -static_cast<float>(d.y()) / length;
       const float h = std::min(5.0f, 0.5f * length);  // screen y points down: flip v
-      g.markTriangle(c, {0, 0, -h * ux + 0.5f * h * uy, -h * uy - 0.5f * h * ux,
+      g.markTriangle(tip, {0, 0, -h * ux + 0.5f * h * uy, -h * uy - 0.5f * h * ux,
                          -h * ux - 0.5f * h * uy, -h * uy + 0.5f * h * ux},
                      orange);
     }

@@ -239,6 +239,7 @@ class Inspector {
   };
   CanvasKey canvasKey_;
   FillScale fillScale_;  // of the cells' fill, as the canvas was last built
+  double arrowScale_ = 1;  // how much longer the arrows were drawn (the lesson's Move stage)
   void fillLegend(ImDrawList* dl, const ImVec2& at) const;
   int iteration_ = 0;
   int uploadedIteration_ = -1, measuredIteration_ = -1;

@@ -119,6 +119,16 @@ FillScale fillScale(const std::vector<double>& values) {
   return scale;
 }
 
+double arrowMagnification(double typicalPixels, double longestPixels, double spacingPixels) {
+  const double wanted = std::min(spacingPixels / std::max(typicalPixels, 1e-12),
+                                 2 * spacingPixels / std::max(longestPixels, 1e-12));
+  if (!(wanted > 1)) return 1;
+  const double power = std::pow(10, std::floor(std::log10(wanted)));
+  for (double nice : {5.0, 2.0, 1.0})
+    if (nice * power <= wanted) return std::min(nice * power, 1e6);
+  return 1;
+}
+
 int tickStep(int count, int fitting) {
   const double rough = std::max(1.0, static_cast<double>(count) / std::clamp(fitting, 1, 6));
   const double power = std::pow(10, std::floor(std::log10(rough)));

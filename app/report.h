@@ -51,6 +51,12 @@ struct FillScale {
 };
 FillScale fillScale(const std::vector<double>& values);
 
+// How much the lesson's Move stage lengthens its arrows s → c: a typical one (`typical`
+// pixels long) to about a site spacing, the longest to two at most, by 1, 2 or 5 times a power
+// of ten (1 where they are that long already). After the first iterations a move is a fraction
+// of a pixel, under the dots: the stage promised arrows no one could see.
+double arrowMagnification(double typicalPixels, double longestPixels, double spacingPixels);
+
 // The step between labelled ticks along `count` iterations: 1, 2 or 5 times a power of ten, the
 // smallest that labels at most six of them and no more than `fitting` (how many labels fit side
 // by side). Steps of 20 along 230 iterations ran "100120140..." together.

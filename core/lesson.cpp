@@ -159,6 +159,7 @@ Caption caption(Stage stage, const CaptionFacts& f) {
       c.numbers = format("Iteration %d: E = %.4e, largest move %.2e, %.1f%% of sites moved "
                          "more than the threshold",
                          f.iteration, f.energy, f.maxMove, f.percentMoving);
+      if (f.arrowScale > 1) c.numbers += format("; arrows drawn %g times as long", f.arrowScale);
       if (cell)
         c.numbers += format("; cell %d: |c − s| = %.2e", cell->index, cell->toCentroid);
       break;

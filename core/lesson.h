@@ -95,6 +95,7 @@ struct CaptionFacts {
   Distortion distortion;
   int iteration = 0, iterations = 0;
   double energy = 0, maxMove = 0, percentMoving = 0;
+  double arrowScale = 1;  // the Move stage's arrows are drawn so many times as long
   std::optional<CellDetails> cell;  // the first pinned cell, if any
 };
 

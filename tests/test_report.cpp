@@ -210,6 +210,16 @@ TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
   EXPECT_FALSE(fillScale({0.0, 5.0, 1e4}).log);  // a 0 has no logarithm
 }
 
+// The lesson's Move stage: arrows of a fraction of a pixel are drawn longer, by a round
+// factor the caption can quote.
+TEST(Report, ShortArrowsAreMagnifiedByARoundFactor) {
+  EXPECT_EQ(arrowMagnification(0.3, 0.6, 20), 50);     // a typical one to 20 px: 66, 50
+  EXPECT_EQ(arrowMagnification(0.01, 0.02, 20), 2000);  // 2000 exactly
+  EXPECT_EQ(arrowMagnification(0.3, 10, 20), 2);       // the longest to 40 px at most: 4, 2
+  EXPECT_EQ(arrowMagnification(30, 40, 20), 1);        // long enough
+  EXPECT_EQ(arrowMagnification(0, 0, 20), 1e6);        // nothing moves: bounded
+}
+
 // Steps of 1, 2 or 5 times a power of ten: six labels at most, and no more than fit.
 TEST(Report, TickStepsLabelNoMoreThanFit) {
   EXPECT_EQ(tickStep(230, 20), 50);   // 0 50 100 150 200 (steps of 20 ran together)
