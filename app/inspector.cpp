@@ -1475,12 +1475,10 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   ImGui::InvisibleButton(heading.full, size);
   const bool active = ImGui::IsItemActive();
   const PlotAxis axis = plotAxis(values, others, threshold, logScale);
-  const std::vector<std::string>& labels = axis.labels;
-  const int ticks = static_cast<int>(labels.size()) - 1;
   size_t longest = values.size();
   for (const std::vector<double>& series : others) longest = std::max(longest, series.size());
   float widest = 0;
-  for (const std::string& label : labels) widest = std::max(widest, ImGui::CalcTextSize(label.c_str()).x);
+  for (const PlotAxis::Tick& tick : axis.ticks) widest = std::max(widest, ImGui::CalcTextSize(tick.label.c_str()).x);
   const float font = ImGui::GetFontSize();  // 13 px, or larger when presenting
   const float left = std::max(4.5f * font, widest + 8), right = 8, top = font + 5, bottom = font + 9;
   const ImVec2 a(p0.x + left, p0.y + top), b(p0.x + size.x - right, p0.y + size.y - bottom);
@@ -1497,12 +1495,15 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   auto y = [&](double v) { return b.y - static_cast<float>(axis.position(v)) * (b.y - a.y); };
   // Every tick's line, but only every `every`-th label where they would overlap (a short plot:
   // presentation mode's large font on a projector's 1024x768 printed them over each other).
-  const float spacing = static_cast<float>(1 - 2 * PlotAxis::kMargin) * (b.y - a.y) / std::max(ticks, 1);
+  float spacing = b.y - a.y;
+  for (size_t i = 1; i < axis.ticks.size(); ++i)
+    spacing = std::min(spacing, y(axis.ticks[i - 1].value) - y(axis.ticks[i].value));
   const int every = std::max(1, static_cast<int>(std::ceil(font / std::max(spacing, 1.0f))));
-  for (int i = 0; i <= ticks; ++i) {
-    const float ty = b.y - static_cast<float>(PlotAxis::kMargin) * (b.y - a.y) - static_cast<float>(i) * spacing;
+  for (size_t i = 0; i < axis.ticks.size(); ++i) {
+    const float ty = y(axis.ticks[i].value);
     dl->AddLine(ImVec2(a.x - 4, ty), ImVec2(b.x, ty), rgb(0.9f, 0.9f, 0.9f));
-    if (i % every == 0) dl->AddText(ImVec2(p0.x + 2, ty - 0.5f * font), rgb(0.3f, 0.3f, 0.3f), labels[i].c_str());
+    if (i % every == 0)
+      dl->AddText(ImVec2(p0.x + 2, ty - 0.5f * font), rgb(0.3f, 0.3f, 0.3f), axis.ticks[i].label.c_str());
   }
   // X ticks: iterations, as many labels as fit side by side, six at most.
   const float labelWidth = ImGui::CalcTextSize(std::to_string(std::max(n - 1, 0)).c_str()).x + 0.5f * font;

@@ -13,23 +13,45 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
-std::vector<std::string> tickLabels(double lo, double hi, int steps) {
+std::vector<double> roundTicks(double lo, double hi) {
+  if (!(hi > lo)) return {lo};
+  // The smallest step of 1, 2 or 5 times a power of ten that leaves at most six ticks.
+  const double power = std::pow(10, std::floor(std::log10((hi - lo) / 6)));
+  double step = 10 * power;
+  for (double nice : {1.0, 2.0, 5.0})
+    if (std::floor(hi / (nice * power) + 1e-9) - std::ceil(lo / (nice * power) - 1e-9) + 1 <= 6) {
+      step = nice * power;
+      break;
+    }
+  // Counted in steps, a hair's breadth of rounding allowed at either end (9.16e-5 / 2e-7 is
+  // 458.00000000000006).
+  std::vector<double> ticks;
+  for (double k = std::ceil(lo / step - 1e-9); k <= std::floor(hi / step + 1e-9); ++k)
+    ticks.push_back(k == 0 ? 0.0 : k * step);  // no -0
+  return ticks;
+}
+
+std::vector<std::string> tickLabels(const std::vector<double>& values) {
   constexpr int kMostDecimals = 12;
-  const double largest = std::max(std::abs(lo), std::abs(hi));
+  double largest = 0;
+  for (double v : values) largest = std::max(largest, std::abs(v));
   const int leading = largest > 0 && std::isfinite(largest) ? static_cast<int>(std::floor(std::log10(largest))) : 0;
   // Scientific where fixed decimals would start with zeros or run long: one exponent for all.
   const bool scientific = leading < -2 || leading >= 5;
   const double unit = scientific ? std::pow(10.0, leading) : 1.0;
   const std::string suffix = scientific ? "e" + std::to_string(leading) : "";
-  std::vector<std::string> labels;
-  // Three significant digits at least (0.25 must not read 0.2), more where labels repeat.
-  for (int decimals = std::max(0, 2 - (scientific ? 0 : leading)); decimals <= kMostDecimals; ++decimals) {
-    const std::string pattern = "%." + std::to_string(decimals) + "f";
-    labels.clear();
-    for (int i = 0; i <= steps; ++i)
-      labels.push_back(format(pattern.c_str(), (lo + (hi - lo) * i / std::max(steps, 1)) / unit) + suffix);
-    if (std::adjacent_find(labels.begin(), labels.end()) == labels.end()) break;
+  // The fewest decimals that write every value as it is (round values need few), all alike.
+  int decimals = 0;
+  for (; decimals < kMostDecimals; ++decimals) {
+    const double quantum = std::pow(10.0, -decimals);
+    bool exact = true;
+    for (double v : values)
+      exact = exact && std::abs(v / unit - std::round(v / unit / quantum) * quantum) <= 1e-6 * quantum;
+    if (exact) break;
   }
+  const std::string pattern = "%." + std::to_string(decimals) + "f";
+  std::vector<std::string> labels;
+  for (double v : values) labels.push_back(format(pattern.c_str(), v / unit) + suffix);
   return labels;
 }
 
@@ -92,14 +114,16 @@ PlotAxis plotAxis(const std::vector<double>& values, const std::vector<std::vect
   if (!log) {
     axis.lo = lo;
     axis.hi = hi;
-    axis.labels = tickLabels(lo, hi, 4);
+    const std::vector<double> values = roundTicks(lo, hi);
+    const std::vector<std::string> labels = tickLabels(values);
+    for (size_t k = 0; k < values.size(); ++k) axis.ticks.push_back({values[k], labels[k]});
     return axis;
   }
   axis.lo = std::floor(lo) - (zeros ? 1 : 0);
   axis.hi = std::ceil(hi);
   for (int decade = static_cast<int>(axis.lo); decade <= static_cast<int>(axis.hi); ++decade)
-    axis.labels.push_back("1e" + std::to_string(decade));
-  if (zeros) axis.labels.front() = "0";
+    axis.ticks.push_back({std::pow(10.0, decade), "1e" + std::to_string(decade)});
+  if (zeros) axis.ticks.front() = {0.0, "0"};
   return axis;
 }
 

@@ -14,25 +14,31 @@ namespace lloydscope {
 // One number in a printf pattern ("%.1f").
 std::string format(const char* pattern, double value);
 
-// Labels of `steps` + 1 evenly spaced ticks from `lo` to `hi` on a plot's axis, all with the
-// same number of decimals, the fewest that keep every label apart from its neighbours (the CVT
-// energy of a converging run spans 2% or less, where three digits repeat). Values under 10^-2
-// or from 10^5 on are written with one exponent for all: 2.017e-4 .. 2.035e-4 (as %g wrote
-// them, 0.0002017 .. 0.000203 .. 0.0002035, they differed in length and were hard to read).
-std::vector<std::string> tickLabels(double lo, double hi, int steps);
-// A plot's y axis over a run's values and other runs': its range, its ticks' labels (bottom to top, evenly
-// spaced) and where a value sits on it. On a log axis every power of ten is a tick, and values
-// of 0 or less (the last iteration of a run with no site still moving) sit on a row of their
-// own under the lowest decade, labelled 0: left out, the curve ended above the threshold it
-// had reached. A threshold (> 0) is inside the range, half a decade over its bottom on a log
-// axis (on it, the green line read as the axis). The lowest and the highest tick keep a
-// margin from the plot's frame: a curve along it (100% moving all along, the last energy)
-// read as the frame, in grey (Lloyd's colour) not at all.
+// Round values for a linear axis's ticks from `lo` to `hi`: steps of 1, 2 or 5 times a power
+// of ten, six ticks at most (evenly spaced from the smallest value to the largest, the
+// energy axis read 9.26, 9.23, 9.21, 9.18, 9.16e-5: uneven to the eye).
+std::vector<double> roundTicks(double lo, double hi);
+// Labels for tick values, all with the same decimals, the fewest that write each as it is.
+// Values under 10^-2 or from 10^5 on are written with one exponent for all: 2.020e-4 ..
+// 2.035e-4 (as %g wrote them, 0.0002017 .. 0.000203 .. 0.0002035, they differed in length).
+std::vector<std::string> tickLabels(const std::vector<double>& values);
+// A plot's y axis over a run's values and other runs': its range, its ticks and where a value
+// sits on it. A linear axis has round ticks inside the values' range; a log axis has every
+// power of ten, and values of 0 or less (the last iteration of a run with no site still
+// moving) sit on a row of their own under the lowest decade, labelled 0: left out, the curve
+// ended above the threshold it had reached. A threshold (> 0) is inside the range, half a
+// decade over its bottom on a log axis (on it, the green line read as the axis). The range
+// keeps a margin from the plot's frame: a curve along it (100% moving all along, the last
+// energy) read as the frame, in grey (Lloyd's colour) not at all.
 struct PlotAxis {
-  static constexpr double kMargin = 0.04;  // of the plot's height, under and over the ticks
+  static constexpr double kMargin = 0.04;  // of the plot's height, under and over the range
   bool log = false;
-  double lo = 0, hi = 1;  // the lowest tick and the highest; log10 of them on a log axis
-  std::vector<std::string> labels;  // one per tick, evenly spaced from lo to hi
+  double lo = 0, hi = 1;  // the range; log10 of it on a log axis
+  struct Tick {
+    double value;
+    std::string label;
+  };
+  std::vector<Tick> ticks;  // bottom to top
   // 0 at the bottom of the plot, 1 at its top.
   double position(double value) const;
 };
