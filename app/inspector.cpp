@@ -782,6 +782,7 @@ CaptionFacts Inspector::captionFacts() {
   f.param = toString(result_.paramUsed);
   f.border = borderPhrase(result_.paramUsed, options_.param.border);
   f.solver = toString(options_.lloyd.solver);
+  f.density = toString(options_.density.kind);
   f.method = toString(replay_->method());
   f.firstPass = usesResampling(options_) && result_.resampleDropped.empty() &&
                 !(result_.firstPassTrial && result_.firstPassTrial->keptWithout);
@@ -1491,7 +1492,13 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   dl->PopClipRect();
   if (values.empty()) return -1;
   const int n = static_cast<int>(longest);
-  auto x = [&](double k) { return a.x + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x); };
+  // The iterations keep a few pixels from the frame's sides: the last one lay on the right
+  // frame, which hid the last step of every curve (the % curve ended over the green line it had
+  // crossed) and half its dot.
+  const float inset = 0.5f * font;
+  auto x = [&](double k) {
+    return a.x + inset + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x - 2 * inset);
+  };
   auto y = [&](double v) { return b.y - static_cast<float>(axis.position(v)) * (b.y - a.y); };
   // Every tick's line, but only every `every`-th label where they would overlap (a short plot:
   // presentation mode's large font on a projector's 1024x768 printed them over each other).
@@ -1510,7 +1517,11 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   const int step = tickStep(n, static_cast<int>((b.x - a.x) / labelWidth));
   for (int k = 0; k < n; k += step) {
     dl->AddLine(ImVec2(x(k), b.y), ImVec2(x(k), b.y + 4), rgb(0.3f, 0.3f, 0.3f));
-    dl->AddText(ImVec2(x(k) - 6, b.y + 5), rgb(0.3f, 0.3f, 0.3f), std::to_string(k).c_str());
+    // Centred under the tick, but inside the pane (presentation mode's "200" read "20").
+    const std::string label = std::to_string(k);
+    const float width = ImGui::CalcTextSize(label.c_str()).x;
+    const float labelLeft = std::min(x(k) - 0.5f * width, p0.x + size.x - width - 1);
+    dl->AddText(ImVec2(labelLeft, b.y + 5), rgb(0.3f, 0.3f, 0.3f), label.c_str());
   }
   dl->PushClipRect(a, b, true);
   if (threshold > 0) dl->AddLine(ImVec2(a.x, y(threshold)), ImVec2(b.x, y(threshold)), rgb(0.2f, 0.6f, 0.2f), 1.5f);
@@ -1527,7 +1538,7 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   dl->PopClipRect();
   if (active) {
     const float mx = ImGui::GetIO().MousePos.x;
-    return std::clamp(static_cast<int>(std::lround((mx - a.x) / (b.x - a.x) * (n - 1))), 0, n - 1);
+    return std::clamp(static_cast<int>(std::lround((mx - a.x - inset) / (b.x - a.x - 2 * inset) * (n - 1))), 0, n - 1);
   }
   return -1;
 }

@@ -31,7 +31,7 @@ std::vector<std::string> tickLabels(const std::vector<double>& values);
 // keeps a margin from the plot's frame: a curve along it (100% moving all along, the last
 // energy) read as the frame, in grey (Lloyd's colour) not at all.
 struct PlotAxis {
-  static constexpr double kMargin = 0.04;  // of the plot's height, under and over the range
+  static constexpr double kMargin = 0.07;  // of the plot's height, under and over the range
   bool log = false;
   double lo = 0, hi = 1;  // the range; log10 of it on a log axis
   struct Tick {

@@ -188,7 +188,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     row("minimum angle", "%.1f", d.minAngle);
     row("area, 3D", "%.4e", d.area3D);
     row("area, UV", "%.4e", d.areaUV);
-    row("area distortion", "%.3f", d.areaDistortion);
+    row("area share 3D / UV", "%.3f", d.areaDistortion);  // each area over its mesh's total
     // Retriangulate: every corner is a site. Relocate: the inside vertices moved towards their
     // sites (short of them where they would fold), the border ones are theirs.
     for (int k = 0; k < 3; ++k) {

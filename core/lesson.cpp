@@ -104,7 +104,9 @@ Caption caption(Stage stage, const CaptionFacts& f) {
   const CellDetails* cell = f.cell ? &*f.cell : nullptr;
   switch (stage) {
     case Stage::Load:
-      c.formula = "The input: a triangle mesh of " + f.surface +
+      c.formula = std::string(f.inputIsMapped ? "The mesh that was parameterized (a recording holds no input): "
+                                              : "The input: ") +
+                  "a triangle mesh of " + f.surface +
                   (f.charts > 0 ? format(", split into %d charts flattened one by one (the panes "
                                          "show the largest)", f.charts)
                    : f.seamEdges == 0 ? std::string()
@@ -123,9 +125,12 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                          f.firstPass ? "a rough first remeshing of the disk (its vertices are the first sites)" : "the disk",
                          f.border.c_str());
       c.numbers = format("Area distortion r = (3D area share) / (UV area share): %.2f to %.2f; "
-                         "mean |ln r| = %.2f. The density ρ makes up for it.",
+                         "mean |ln r| = %.2f.%s",
                          f.distortion.minAreaRatio, f.distortion.maxAreaRatio,
-                         f.distortion.meanLogAreaRatio);
+                         f.distortion.meanLogAreaRatio,
+                         f.density == "uniform" ? " The density is uniform: nothing makes up for it."
+                         : f.density == "curvature" ? " The density ρ follows the curvature (and makes up for it)."
+                                                    : " The density ρ makes up for it.");
       break;
     case Stage::Voronoi:
       c.formula = "Each site sᵢ owns the points nearer to it than to any other site, clipped "
@@ -161,7 +166,8 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                          f.iteration, f.energy, f.maxMove, f.percentMoving);
       if (f.arrowScale > 1) c.numbers += format("; arrows drawn %g times as long", f.arrowScale);
       if (cell)
-        c.numbers += format("; cell %d: |c − s| = %.2e", cell->index, cell->toCentroid);
+        c.numbers += format("; cell %d%s: |c − s| = %.2e", cell->index,
+                            cell->fixed ? " (a fixed border site: it does not move)" : "", cell->toCentroid);
       break;
     case Stage::Lift:
       c.formula = "Each site returns to the surface through the barycentric coordinates of "

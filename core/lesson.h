@@ -85,7 +85,7 @@ struct CaptionFacts {
   bool disk = true;
   int seamEdges = 0, charts = 0;
   QualityMetrics input, result;
-  std::string param, solver, method;  // as the settings name them
+  std::string param, solver, method, density;  // as the settings name them
   std::string border = "free border";  // the map's (borderPhrase)
   bool firstPass = false;  // the map is of a rough first remeshing, whose vertices are the first sites
   bool cleanedUp = false;  // `result` is the final one, after the clean-up on the surface

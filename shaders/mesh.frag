@@ -15,9 +15,14 @@ void main() {
   float shade = 0.35 + 0.65 * abs(dot(normalize(normal), normalize(vec3(0.3, 0.5, 0.8))));
   vec3 c = color * shade;
   if (push.options.x > 0.5) {
-    vec3 width = fwidth(barycentric) * push.options.y;
+    vec3 perPixel = fwidth(barycentric);
+    vec3 width = perPixel * push.options.y;
     vec3 edge = smoothstep(vec3(0.0), width, barycentric);
-    c = mix(vec3(0.08, 0.08, 0.1), c, min(min(edge.x, edge.y), edge.z));
+    // Triangles a few pixels across would be all wire (a dense input was a black silhouette):
+    // the wire fades from a triangle 12 pixels high down to 4.
+    float pixelsAcross = 1.0 / max(max(perPixel.x, perPixel.y), max(perPixel.z, 1e-6));
+    float wire = smoothstep(4.0, 12.0, pixelsAcross);
+    c = mix(vec3(0.08, 0.08, 0.1), c, mix(1.0, min(min(edge.x, edge.y), edge.z), wire));
   }
   outColor = vec4(c, 1.0);
 }

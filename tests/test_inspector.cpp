@@ -92,6 +92,24 @@ TEST(Inspector, APinnedTriangleIsRingedInBothViews) {
   }
 }
 
+// Triangles a few pixels across were all wire: a dense input (the 25,905-vertex face) was a
+// black silhouette with no quality colours. Seen from far, the cap's input keeps its colours
+// (dark pixels 1168 and coloured 306 before; 390 and 607 now).
+TEST(Inspector, TheWireframeFadesOnTinyTriangles) {
+  const std::string png = test::tempPath("far.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --pane 3d --stage load --camera '0.6 0.7 14 0 0 0.75'", png),
+            0);
+  const Picture picture = readPng(png);
+  int dark = 0, green = 0;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      if (c[0] < 50 && c[1] < 50 && c[2] < 60) ++dark;
+      else if (c[1] > c[0] + 15 && c[1] > c[2] + 15) ++green;
+    }
+  EXPECT_GT(green, dark);
+}
+
 // The cap from low at its side: the sites on its far half are behind the near half and must
 // not show through it (rows of dots across the dome; a ring across the mushroom's cap).
 TEST(Inspector, SitesBehindTheSurfaceAreHidden) {

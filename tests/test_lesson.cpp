@@ -214,6 +214,27 @@ TEST(Lesson, TheResultCaptionSaysWhatARecordingComparesWith) {
   EXPECT_NE(caption(Stage::Result, facts).numbers.find("from the mesh that was parameterized"), std::string::npos);
 }
 
+// A recording's Load stage quoted the mapped mesh's numbers under "The input" (531 vertices,
+// 34% irregular, for a 25,905-vertex face); uniform density makes up for no distortion; a
+// fixed cell's |c − s| in the Move stage is not a move (it was ten times the largest move).
+TEST(Lesson, CaptionsSayWhatTheirNumbersAreOf) {
+  CaptionFacts facts;
+  EXPECT_EQ(caption(Stage::Load, facts).formula.rfind("The input: ", 0), 0u);
+  facts.inputIsMapped = true;
+  EXPECT_EQ(caption(Stage::Load, facts).formula.rfind("The mesh that was parameterized", 0), 0u);
+  facts.density = "area";
+  EXPECT_NE(caption(Stage::Parameterize, facts).numbers.find("The density ρ makes up for it."), std::string::npos);
+  facts.density = "uniform";
+  EXPECT_EQ(caption(Stage::Parameterize, facts).numbers.find("The density ρ makes up"), std::string::npos);
+  EXPECT_NE(caption(Stage::Parameterize, facts).numbers.find("nothing makes up for it"), std::string::npos);
+  CellDetails cell;
+  cell.index = 50;
+  cell.fixed = true;
+  facts.cell = cell;
+  EXPECT_NE(caption(Stage::Move, facts).numbers.find("cell 50 (a fixed border site: it does not move)"),
+            std::string::npos);
+}
+
 // The map of a run with the first pass is the rough remeshing's, and the caption says so: it
 // is why the sites start evenly spread.
 TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
