@@ -1216,16 +1216,18 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     return true;
   };
   drawSeams3D(dl, toScreen, cameraMatrices(extent).second);
-  if (finalShown()) {
+  const bool final = finalShown();
+  if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip
     if (result_.fidelity.samples > 0 && toScreen(result_.fidelity.farthestPoint, at)) {
       const float r = presentation_ ? 14.0f : 9.0f;
       dl->AddCircle(at, r, kFarthestColor, 24, presentation_ ? 4.0f : 2.5f);
     }
-  } else {
-    selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_),
-                      toScreen, !shown.input3D);
   }
+  // Pinned cells lie on the input surface, under the final result too (they were not drawn
+  // over it); pinned triangles are the iteration's result's, drawn only over that.
+  selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen,
+                    !shown.input3D && !final);
   dl->PopClipRect();
 
   if (colorByAngle_)

@@ -19,9 +19,9 @@ void main() {
     vec3 width = perPixel * push.options.y;
     vec3 edge = smoothstep(vec3(0.0), width, barycentric);
     // Triangles a few pixels across would be all wire (a dense input was a black silhouette):
-    // the wire fades from a triangle 12 pixels high down to 4.
+    // the wire fades from a triangle 7 pixels high down to 3.
     float pixelsAcross = 1.0 / max(max(perPixel.x, perPixel.y), max(perPixel.z, 1e-6));
-    float wire = smoothstep(4.0, 12.0, pixelsAcross);
+    float wire = smoothstep(3.0, 7.0, pixelsAcross);
     c = mix(vec3(0.08, 0.08, 0.1), c, mix(1.0, min(min(edge.x, edge.y), edge.z), wire));
   }
   outColor = vec4(c, 1.0);

@@ -110,6 +110,20 @@ TEST(Inspector, TheWireframeFadesOnTinyTriangles) {
   EXPECT_GT(green, dark);
 }
 
+// A pinned cell lies on the input surface: it is drawn over the final result too (it was not).
+TEST(Inspector, APinnedCellShowsOverTheFinalResult) {
+  const std::string png = test::tempPath("final_pin.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --final --select-cell 200 --pane 3d", png), 0);
+  const Picture picture = readPng(png);
+  int magenta = 0;  // Selection::cellColor: (217, 13, 179)
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      magenta += c[0] > 170 && c[1] < 60 && c[2] > 130;
+    }
+  EXPECT_GE(magenta, 20);
+}
+
 // The cap from low at its side: the sites on its far half are behind the near half and must
 // not show through it (rows of dots across the dome; a ring across the mushroom's cap).
 TEST(Inspector, SitesBehindTheSurfaceAreHidden) {
