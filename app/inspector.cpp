@@ -911,6 +911,15 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     row("Under 30 deg %", oneDecimal(&QualityMetrics::percentUnder30));
     ImGui::EndTable();
   }
+  if (replay_->method() == RemeshMethod::Retriangulate) {
+    const IterationView& view = replay_->view(iteration_);
+    const std::string leftOut = sitesLeftOutNote(iteration_, view.sites.size(), view.output.points.size());
+    if (!leftOut.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      wrappedText(leftOut);
+      ImGui::PopStyleColor();
+    }
+  }
   const int iterations = replay_->iterationCount();
   const char* plural = iterations == 1 ? "" : "s";
   if (session_ && !workerDone_)

@@ -143,6 +143,13 @@ FillScale fillScale(const std::vector<double>& values) {
   return scale;
 }
 
+std::string sitesLeftOutNote(int iteration, size_t sites, size_t vertices) {
+  if (vertices >= sites) return "";
+  const size_t left = sites - vertices;
+  return "It. " + std::to_string(iteration) + ": " + std::to_string(left) +
+         (left == 1 ? " site lies" : " sites lie") + " outside the border samples' polygon, in no triangle";
+}
+
 double arrowMagnification(double typicalPixels, double longestPixels, double spacingPixels) {
   const double wanted = std::min(spacingPixels / std::max(typicalPixels, 1e-12),
                                  2 * spacingPixels / std::max(longestPixels, 1e-12));

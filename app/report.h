@@ -57,6 +57,12 @@ struct FillScale {
 };
 FillScale fillScale(const std::vector<double>& values);
 
+// Under the table, where an iteration's result has fewer vertices than there are sites:
+// "It. 0: 1 site lies outside the border samples' polygon, in no triangle" (at iteration 0
+// without the first pass, an input vertex near the border may; the table's 999 vertices beside
+// 1000 sites went unexplained). "" where every site is a vertex.
+std::string sitesLeftOutNote(int iteration, size_t sites, size_t vertices);
+
 // How much the lesson's Move stage lengthens its arrows s → c: a typical one (`typical`
 // pixels long) to about a site spacing, the longest to two at most, by 1, 2 or 5 times a power
 // of ten (1 where they are that long already). After the first iterations a move is a fraction

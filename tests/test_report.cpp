@@ -217,6 +217,14 @@ TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
   EXPECT_FALSE(fillScale({0.0, 5.0, 1e4}).log);  // a 0 has no logarithm
 }
 
+// The bumpy disk without the first pass: iteration 0 had 999 vertices for 1000 sites, and
+// nothing said why.
+TEST(Report, ANoteSaysWhereASiteHasNoVertex) {
+  EXPECT_EQ(sitesLeftOutNote(3, 1000, 1000), "");
+  EXPECT_EQ(sitesLeftOutNote(0, 1000, 999), "It. 0: 1 site lies outside the border samples' polygon, in no triangle");
+  EXPECT_EQ(sitesLeftOutNote(0, 1000, 997), "It. 0: 3 sites lie outside the border samples' polygon, in no triangle");
+}
+
 // The lesson's Move stage: arrows of a fraction of a pixel are drawn longer, by a round
 // factor the caption can quote.
 TEST(Report, ShortArrowsAreMagnifiedByARoundFactor) {
