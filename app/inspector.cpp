@@ -893,7 +893,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     auto row = [&](const char* label, const auto& value) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(label);
+      wrappedText(label);  // in a narrow pane (960x600) "Under 30 deg %" ran into its value
       for (int k = 0; k < (showFinal ? 3 : 2); ++k) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(value(*columns[k]).c_str());

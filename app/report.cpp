@@ -61,15 +61,19 @@ std::vector<std::string> wrapAtSpaces(const std::string& text, float width,
   std::istringstream paragraphs(text);
   for (std::string paragraph; std::getline(paragraphs, paragraph);) {
     std::istringstream words(paragraph);
-    std::string line;
+    // A paragraph's indent stays on its first line (the table's " border-aware" row).
+    const size_t indent = paragraph.find_first_not_of(' ');
+    std::string line = indent == std::string::npos ? "" : paragraph.substr(0, indent);
+    bool hasWords = false;
     for (std::string word; words >> word;) {
-      const std::string longer = line.empty() ? word : line + " " + word;
-      if (!line.empty() && measure(longer) > width) {
+      const std::string longer = hasWords ? line + " " + word : line + word;
+      if (hasWords && measure(longer) > width) {
         lines.push_back(line);
         line = word;
       } else {
         line = longer;
       }
+      hasWords = true;
     }
     lines.push_back(line);
   }

@@ -170,6 +170,9 @@ TEST(Report, TextWrapsAtSpacesNotInsideNumbers) {
   EXPECT_EQ(wrapAtSpaces("one\n\nunbreakable_word two", 8, characters),
             (std::vector<std::string>{"one", "", "unbreakable_word", "two"}));
   EXPECT_EQ(wrapAtSpaces("", 8, characters), (std::vector<std::string>{""}));
+  // An indent stays (the quality table's " border-aware" row, under "Irregular %").
+  EXPECT_EQ(wrapAtSpaces(" border-aware", 20, characters), (std::vector<std::string>{" border-aware"}));
+  EXPECT_EQ(wrapAtSpaces("  two words", 6, characters), (std::vector<std::string>{"  two", "words"}));
 }
 
 // A run whose last iteration had no site still moving: 0 % cannot sit on a log axis. It was
