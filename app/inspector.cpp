@@ -1245,7 +1245,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
       return rgb(c[0], c[1], c[2]);
     });
   const std::string label =
-      finalShown()    ? format("final result (red ring: farthest from the input, %.2f%%)",
+      final           ? format("final result (red ring: farthest from the input, %.2f%%)",
                                result_.fidelity.hausdorffPercent)
       : shown.input3D ? (input_ && (!shown.mapped3D || mapIsOfTheInput()) ? "input mesh"
                                                                          : "the mesh that was parameterized")
@@ -1427,9 +1427,9 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
     g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
   for (const auto& [a, b] : recording.sharedSeams)  // a chart's, with the other charts
     g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
+  const float spacing = scale / std::sqrt(static_cast<float>(view.sites.size()) + 1);  // between sites, in pixels
   // Dots a sixth of the site spacing: the cells stay visible between them.
-  const float r = std::clamp(0.16f * scale / std::sqrt(static_cast<float>(view.sites.size()) + 1), 1.2f, 6.0f) *
-                  (strong ? 1.3f : 1.0f);
+  const float r = std::clamp(0.16f * spacing, 1.2f, 6.0f) * (strong ? 1.3f : 1.0f);
   // The lesson's Move stage is about the arrows: too short to see, they are drawn longer.
   arrowScale_ = 1;
   if (stage_ == Stage::Move) {
@@ -1438,8 +1438,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
       lengths.push_back((view.cells[i].centroid - view.sites[i]).norm() * scale);
     if (!lengths.empty()) {
       std::sort(lengths.begin(), lengths.end());
-      arrowScale_ = arrowMagnification(lengths[lengths.size() / 2], lengths.back(),
-                                        scale / std::sqrt(static_cast<double>(view.sites.size()) + 1));
+      arrowScale_ = arrowMagnification(lengths[lengths.size() / 2], lengths.back(), spacing);
     }
   }
   for (size_t i = 0; i < view.sites.size() && shown.sites2D; ++i) {

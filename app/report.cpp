@@ -154,22 +154,34 @@ std::string sitesLeftOutNote(int iteration, size_t sites, size_t vertices) {
          (left == 1 ? " site lies" : " sites lie") + " outside the border samples' polygon, in no triangle";
 }
 
+namespace {
+
+// The number of the series 1, 2, 5, 10, 20, 50 ... nearest `x` (> 0) from above, or from below.
+double oneTwoFiveAtLeast(double x) {
+  const double power = std::pow(10, std::floor(std::log10(x)));
+  for (double nice : {1.0, 2.0, 5.0})
+    if (x <= nice * power) return nice * power;
+  return 10 * power;
+}
+double oneTwoFiveAtMost(double x) {
+  const double power = std::pow(10, std::floor(std::log10(x)));
+  for (double nice : {5.0, 2.0})
+    if (nice * power <= x) return nice * power;
+  return power;
+}
+
+}  // namespace
+
 double arrowMagnification(double typicalPixels, double longestPixels, double spacingPixels) {
   const double wanted = std::min(spacingPixels / std::max(typicalPixels, 1e-12),
                                  2 * spacingPixels / std::max(longestPixels, 1e-12));
   if (!(wanted > 1)) return 1;
-  const double power = std::pow(10, std::floor(std::log10(wanted)));
-  for (double nice : {5.0, 2.0, 1.0})
-    if (nice * power <= wanted) return std::min(nice * power, 1e6);
-  return 1;
+  return std::min(oneTwoFiveAtMost(wanted), 1e6);
 }
 
 int tickStep(int count, int fitting) {
   const double rough = std::max(1.0, static_cast<double>(count) / std::clamp(fitting, 1, 6));
-  const double power = std::pow(10, std::floor(std::log10(rough)));
-  for (double nice : {1.0, 2.0, 5.0})
-    if (rough <= nice * power) return static_cast<int>(nice * power);
-  return static_cast<int>(10 * power);
+  return static_cast<int>(oneTwoFiveAtLeast(rough));
 }
 
 namespace {

@@ -17,7 +17,8 @@ bool pinned(const std::vector<int>& pins, int index) {
 
 void toggle(std::vector<int>& pins, int index) {
   if (index < 0) return;
-  if (pinned(pins, index)) pins.erase(std::find(pins.begin(), pins.end(), index));
+  const auto found = std::find(pins.begin(), pins.end(), index);
+  if (found != pins.end()) pins.erase(found);
   else pins.push_back(index);
 }
 
