@@ -221,7 +221,11 @@ std::string readWhole(std::istream& in, const std::string& path, std::uint64_t m
     return Error(path + ": larger than " + sizeText(mostBytes) + ", more than " + what + " takes");
   };
   std::error_code ec;
-  if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > mostBytes && !ec)
+  // A device never ends (/dev/zero) or blocks (a terminal): refused unread. A pipe is read.
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!ec && (std::filesystem::is_character_file(status) || std::filesystem::is_block_file(status)))
+    throw Error(path + ": is a device, not " + what);
+  if (std::filesystem::is_regular_file(status) && std::filesystem::file_size(path, ec) > mostBytes && !ec)
     throw tooLarge();
   std::string data;
   char buffer[1 << 16];

@@ -38,7 +38,8 @@ void makeFolder(const std::string& path);
 
 // The whole of `path` (opened as `in`), at most `mostBytes` of it: beyond, Error("<path>: larger
 // than <size>, more than <what> takes"), before reading where the file says its size (a link to
-// /dev/zero, which never ends, grew until memory ran out). Throws Error("<path>: cannot read
+// /dev/zero, which never ends, grew until memory ran out). A device is refused unread
+// (Error("<path>: is a device, not <what>")); a pipe is read. Throws Error("<path>: cannot read
 // the file (read error)") where reading fails.
 std::string readWhole(std::istream& in, const std::string& path, std::uint64_t mostBytes, const std::string& what);
 

@@ -150,7 +150,8 @@ TEST(Files, MakeFolderMakesTheFoldersAboveAndRefusesAFile) {
 
 // A file is read whole up to a size: a larger one is refused before it is read, and a stream
 // that never ends (a link to /dev/zero, read as a mesh, grew until memory ran out) once it
-// passes the size.
+// passes the size; a device (/dev/zero by its own name: 4 GB were read before the refusal) is
+// refused unread.
 TEST(Files, ReadWholeStopsAtItsSize) {
   const std::string path = test::tempPath("hundred.off");
   test::writeText(path, std::string(100, 'x'));
@@ -161,6 +162,10 @@ TEST(Files, ReadWholeStopsAtItsSize) {
   std::ifstream zero("/dev/zero", std::ios::binary);
   EXPECT_EQ(errorOf([&] { readWhole(zero, "z.off", 1000000, "a mesh file"); }),
             "z.off: larger than 1 MB, more than a mesh file takes");
+  std::ifstream device("/dev/zero", std::ios::binary);
+  EXPECT_EQ(errorOf([&] { readWhole(device, "/dev/zero", 1000000, "a mesh file"); }),
+            "/dev/zero: is a device, not a mesh file");
+  EXPECT_EQ(device.tellg(), 0);  // unread
   std::istringstream small("abc");
   EXPECT_EQ(readWhole(small, "s.off", 3, "a mesh file"), "abc");
 }
