@@ -323,6 +323,7 @@ void Inspector::forgetResult() {
   kept.paramUsed = result_.paramUsed;
   kept.distortion = result_.distortion;
   result_ = std::move(kept);
+  selection_.forgetFinal();
   runNotes_.clear();
 }
 
@@ -399,9 +400,13 @@ void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& exte
   const float x = (mouse.x - p0.x) / extent.x * 2 - 1, y = (mouse.y - p0.y) / extent.y * 2 - 1;
   const glm::vec4 far = inverse * glm::vec4(x, y, 1.0f, 1.0f);
   const glm::vec3 through = glm::vec3(far) / far.w - eye;
-  selection_.toggleTriangle(triangleOnRay(replay_->view(iteration_).output,
-                                          Vec3(eye.x, eye.y, eye.z),
-                                          Vec3(through.x, through.y, through.z)));
+  const int hit = triangleOnRay(resultIn3D(), Vec3(eye.x, eye.y, eye.z), Vec3(through.x, through.y, through.z));
+  if (finalShown()) selection_.toggleFinalTriangle(hit);
+  else selection_.toggleTriangle(hit);
+}
+
+const Mesh& Inspector::resultIn3D() const {
+  return finalShown() ? result_.output : replay_->view(iteration_).output;
 }
 
 void Inspector::pinCell(int cell) {
@@ -413,16 +418,17 @@ void Inspector::pinCell(int cell) {
 }
 
 void Inspector::pinTriangle(int triangle) {
-  const int count = static_cast<int>(replay_->view(iteration_).output.triangles.size());
+  const int count = static_cast<int>(resultIn3D().triangles.size());
   if (triangle < 0 || triangle >= count)
-    throw Error("triangle " + std::to_string(triangle) + " does not exist (" +
-                std::to_string(count) + " in the result at iteration " +
-                std::to_string(iteration_) + ")");
-  selection_.pinTriangle(triangle);
+    throw Error("triangle " + std::to_string(triangle) + " does not exist (" + std::to_string(count) +
+                (finalShown() ? " in the final result" : " in the result at iteration " + std::to_string(iteration_)) +
+                ")");
+  if (finalShown()) selection_.pinFinalTriangle(triangle);
+  else selection_.pinTriangle(triangle);
 }
 
 void Inspector::pinWorstTriangle() {
-  if (const int worst = worstTriangle(replay_->view(iteration_).output); worst >= 0) pinTriangle(worst);
+  if (const int worst = worstTriangle(resultIn3D()); worst >= 0) pinTriangle(worst);
 }
 
 void Inspector::pick2D(const Vec2& uv) {
@@ -962,8 +968,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     pickTriangles2D_ = pick == 1;
     if (ImGui::Button("Pin the worst triangle")) pinWorstTriangle();
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("The triangle with the smallest angle in this iteration's result (--select-worst)");
-    selection_.detailsPanel(replay_->recording(), replay_->domain(), replay_->view(iteration_));
+      ImGui::SetTooltip("The triangle with the smallest angle in the result the 3D view shows: this iteration's, or the final one (--select-worst)");
+    selection_.detailsPanel(replay_->recording(), replay_->domain(), replay_->view(iteration_), result_.output);
   }
   ImGui::Separator();
   ImGui::TextUnformatted("2D view");
@@ -1195,7 +1201,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     uploadMesh();
 
   if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-      io.MouseDragMaxDistanceSqr[0] < 9.0f && !finalShown())
+      io.MouseDragMaxDistanceSqr[0] < 9.0f)
     pick3D(io.MousePos, p0, extent);  // a click, not the end of an orbit
   if (fitPending_) {
     camera_.distance = fittingDistance(extent);
@@ -1234,16 +1240,13 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     }
   }
   // Pinned cells lie on the input surface, under the final result too (they were not drawn
-  // over it); pinned triangles are the iteration's result's, drawn only over that.
+  // over it); pinned triangles are the iteration's result's or the final result's, each drawn
+  // over its own mesh.
   selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen,
                     !shown.input3D && !final);
+  if (final) selection_.drawFinal3D(dl, result_.output, toScreen);
   dl->PopClipRect();
 
-  if (colorByAngle_)
-    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + 1.5f * ImGui::GetFontSize() + 4.5f), 90, "60 deg", "0 deg", [](float t) {
-      const auto c = angleColor(60.0 * t);
-      return rgb(c[0], c[1], c[2]);
-    });
   const std::string label =
       final           ? format("final result (red ring: farthest from the input, %.2f%%)",
                                result_.fidelity.hausdorffPercent)
@@ -1251,7 +1254,16 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
                                                                          : "the mesh that was parameterized")
                       : "result at iteration " + std::to_string(iteration_) + " (" +
                             toString(replay_->method()) + ")";
-  boxedText(dl, ImVec2(p0.x + 8, p0.y + 4), label.c_str());
+  // Wrapped in the pane (the final result's ran past its edge at 960 pixels), the colour bar
+  // under it.
+  const std::string wrapped = wrappedLines(label, extent.x - 20);
+  boxedText(dl, ImVec2(p0.x + 8, p0.y + 4), wrapped.c_str());
+  if (colorByAngle_)
+    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + ImGui::CalcTextSize(wrapped.c_str()).y + 0.5f * ImGui::GetFontSize() + 4.5f), 90,
+                 "60 deg", "0 deg", [](float t) {
+                   const auto c = angleColor(60.0 * t);
+                   return rgb(c[0], c[1], c[2]);
+                 });
   ImGui::End();
 }
 

@@ -121,11 +121,11 @@ class Inspector {
   int iteration() const { return iteration_; }
   int iterationCount() const { return replay_->iterationCount(); }
   const std::string& meshName() const { return meshName_; }  // the file, not where it lives
-  // Pins a cell, or a triangle of the current iteration's result; throws Error (one line) if
-  // there is no such one.
+  // Pins a cell, or a triangle of the result the 3D view shows (the current iteration's, or the
+  // final one); throws Error (one line) if there is no such one.
   void pinCell(int cell);
   void pinTriangle(int triangle);
-  void pinWorstTriangle();  // of the result at the current iteration
+  void pinWorstTriangle();  // of the result the 3D view shows: the iteration's or the final one
   // The 3D camera as one line of text ("yaw pitch distance x y z"), to save and restore a view.
   std::string cameraText() const;
   void setCamera(const std::string& text);  // throws Error on a malformed line
@@ -255,6 +255,7 @@ class Inspector {
   bool showInput_ = false, uploadedInput_ = false, uploadedMapped_ = false, uploadedSites_ = false;
   bool showFinal_ = false, uploadedFinal_ = false;
   bool finalShown() const;
+  const Mesh& resultIn3D() const;  // the final result or the iteration's, as the 3D view shows
   // The map is of the mesh opened itself (no first remeshing, cut or simplification).
   bool mapIsOfTheInput() const;  // showFinal_, and there is a final result, and no lesson stage
   const Mesh& fittedMesh() const;

@@ -339,10 +339,10 @@ int main(int argc, char** argv) {
                        "where it is farthest from the input");
   inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)")->check(wholeNumber(0));
   inspectCmd->add_option("--select-triangle", shot.view.triangles,
-                         "Pin this triangle of the result (repeatable)")
+                         "Pin this triangle of the result (with --final: of the final result; repeatable)")
       ->check(wholeNumber(0));
   inspectCmd->add_flag("--select-worst", shot.view.worstTriangle,
-                       "Pin the triangle with the smallest angle in the result at the iteration shown");
+                       "Pin the triangle with the smallest angle in the result at the iteration shown (with --final: in the final result)");
   std::string fill;
   inspectCmd->add_option("--fill", fill,
                          "What colours the 2D cells: none, mass, area, energy, distance (site to "

@@ -38,6 +38,23 @@ void drawPinnedTriangle(ImDrawList* dl, const ImVec2 (&corners)[3], float fillAl
   dl->AddCircle(centre, radius, Selection::triangleColor(), 32, 2.5f);
 }
 
+void drawPinnedTriangles3D(ImDrawList* dl, const Mesh& mesh, const std::vector<int>& pins,
+                           const ScreenOf3D& screen) {
+  for (int triangle : pins) {
+    if (triangle >= static_cast<int>(mesh.triangles.size())) continue;
+    const Triangle& t = mesh.triangles[triangle];
+    ImVec2 corners[3];
+    bool visible = true;
+    for (int k = 0; k < 3; ++k) visible = visible && screen(mesh.points[t[k]], corners[k]);
+    if (visible) drawPinnedTriangle(dl, corners, 0.45f);
+  }
+}
+
+// "5 (border: 4 is regular)", "7".
+std::string valenceText(const TriangleDetails& d, int k) {
+  return std::to_string(d.valences[k]) + (d.onBorder[k] ? " (border: 4 is regular)" : "");
+}
+
 }  // namespace
 
 ImU32 Selection::cellColor(float alpha) {
@@ -52,9 +69,12 @@ void Selection::toggleTriangle(int triangle) { toggle(triangles_, triangle); }
 void Selection::pinCell(int cell) { pin(cells_, cell); }
 void Selection::pinTriangle(int triangle) { pin(triangles_, triangle); }
 bool Selection::cellPinned(int cell) const { return pinned(cells_, cell); }
+void Selection::toggleFinalTriangle(int triangle) { toggle(finalTriangles_, triangle); }
+void Selection::pinFinalTriangle(int triangle) { pin(finalTriangles_, triangle); }
 void Selection::clear() {
   cells_.clear();
   triangles_.clear();
+  finalTriangles_.clear();
 }
 
 void Selection::draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
@@ -92,20 +112,15 @@ void Selection::draw3D(ImDrawList* dl, const Recording& recording, const Domain&
         dl->AddLine(a, b, cellColor(), 2.5f);
     if (screen(view.liftedSites[cell], a)) dl->AddCircleFilled(a, 4.0f, cellColor());
   }
-  if (!resultShown) return;
-  for (int triangle : triangles_) {
-    if (triangle >= static_cast<int>(view.output.triangles.size())) continue;
-    const Triangle& t = view.output.triangles[triangle];
-    ImVec2 corners[3];
-    bool visible = true;
-    for (int k = 0; k < 3; ++k) visible = visible && screen(view.output.points[t[k]], corners[k]);
-    if (!visible) continue;
-    drawPinnedTriangle(dl, corners, 0.45f);
-  }
+  if (resultShown) drawPinnedTriangles3D(dl, view.output, triangles_, screen);
+}
+
+void Selection::drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen) const {
+  drawPinnedTriangles3D(dl, final, finalTriangles_, screen);
 }
 
 void Selection::detailsPanel(const Recording& recording, const Domain& domain,
-                             const IterationView& view) {
+                             const IterationView& view, const Mesh& final) {
   if (empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     wrappedText("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, Escape clears all.");
@@ -194,15 +209,35 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     // sites (short of them where they would fold), the border ones are theirs.
     for (int k = 0; k < 3; ++k) {
       const std::string label = "vertex " + std::to_string(d.corners[k]);
-      if (d.sites[k] < 0) row(label, "%s", "not moved");
-      else if (d.atSite[k]) row(label, "site %d", d.sites[k]);
-      else row(label, "site %d, short of it", d.sites[k]);
+      const std::string valence = ", valence " + valenceText(d, k);
+      if (d.sites[k] < 0) row(label, "not moved%s", valence.c_str());
+      else if (d.atSite[k]) row(label, "site %d%s", d.sites[k], valence.c_str());
+      else row(label, "site %d, short of it%s", d.sites[k], valence.c_str());
     }
     table("triangle");
     ImGui::PopID();
   }
+  int unpinFinal = -1;
+  for (int triangle : finalTriangles_) {
+    const TriangleDetails d = describeTriangle(final, triangle);
+    if (d.index < 0) continue;
+    ImGui::PushID("final");
+    ImGui::PushID(triangle);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(triangleColor()), "Final result, triangle %d", triangle);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("unpin")) unpinFinal = triangle;
+    row("angles, 3D", "%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]);
+    row("minimum angle", "%.1f", d.minAngle);
+    row("area, 3D", "%.4e", d.area3D);
+    for (int k = 0; k < 3; ++k)
+      row("vertex " + std::to_string(d.corners[k]), "valence %s", valenceText(d, k).c_str());
+    table("final triangle");
+    ImGui::PopID();
+    ImGui::PopID();
+  }
   toggleCell(unpinCell);
   toggleTriangle(unpinTriangle);
+  toggleFinalTriangle(unpinFinal);
 }
 
 }  // namespace lloydscope

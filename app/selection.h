@@ -25,10 +25,15 @@ class Selection {
   void pinCell(int cell);
   void pinTriangle(int triangle);
   bool cellPinned(int cell) const;
+  // Triangles of the final result, kept apart: it is another mesh, numbered anew, with no map.
+  void toggleFinalTriangle(int triangle);
+  void pinFinalTriangle(int triangle);
+  void forgetFinal() { finalTriangles_.clear(); }  // a new run: its final result is another
   void clear();
-  bool empty() const { return cells_.empty() && triangles_.empty(); }
+  bool empty() const { return cells_.empty() && triangles_.empty() && finalTriangles_.empty(); }
   const std::vector<int>& cells() const { return cells_; }
   const std::vector<int>& triangles() const { return triangles_; }
+  const std::vector<int>& finalTriangles() const { return finalTriangles_; }
 
   // Highlights: each pinned cell filled, with its site's path over all iterations; each pinned
   // triangle outlined (in the parameter domain by its corners' UV positions).
@@ -38,14 +43,18 @@ class Selection {
   // when the result is shown).
   void draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,
               const IterationView& view, const ScreenOf3D& screen, bool resultShown) const;
-  // The numbers of each pinned element at this iteration, with the formulas they enter.
-  void detailsPanel(const Recording& recording, const Domain& domain, const IterationView& view);
+  // The final result's pinned triangles, when it is the mesh shown.
+  void drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen) const;
+  // The numbers of each pinned element at this iteration, with the formulas they enter, then
+  // those of the final result's pinned triangles.
+  void detailsPanel(const Recording& recording, const Domain& domain, const IterationView& view,
+                    const Mesh& final);
 
   static ImU32 cellColor(float alpha = 1.0f);
   static ImU32 triangleColor(float alpha = 1.0f);
 
  private:
-  std::vector<int> cells_, triangles_;
+  std::vector<int> cells_, triangles_, finalTriangles_;
 };
 
 }  // namespace lloydscope

@@ -31,15 +31,18 @@ void addInspectorFonts() {
 
 float presentationTextSize(float height) { return 21.0f * std::max(1.0f, height / 800.0f); }
 
-void wrappedText(const std::string& text) {
+std::string wrappedLines(const std::string& text, float width) {
   const auto measure = [](const std::string& line) { return ImGui::CalcTextSize(line.c_str()).x; };
+  std::string lines;
+  for (const std::string& line : wrapAtSpaces(text, width, measure)) lines += line + "\n";
+  lines.pop_back();  // wrapAtSpaces gives one line at least
+  return lines;
+}
+
+void wrappedText(const std::string& text) {
   // One item of several lines: as tight as ImGui's own wrapped lines (an item a line would add
   // the spacing between items under each).
-  std::string lines;
-  for (const std::string& line : wrapAtSpaces(text, ImGui::GetContentRegionAvail().x, measure))
-    lines += line + "\n";
-  lines.pop_back();  // wrapAtSpaces gives one line at least
-  ImGui::TextUnformatted(lines.c_str());
+  ImGui::TextUnformatted(wrappedLines(text, ImGui::GetContentRegionAvail().x).c_str());
 }
 
 }  // namespace lloydscope

@@ -17,6 +17,10 @@ void addInspectorFonts();
 // the same part of the height above (at 2560x1600 it was a hundredth of the picture).
 float presentationTextSize(float height);
 
+// `text` in lines no wider than `width` pixels in the current font, joined by line breaks,
+// broken at spaces only (wrapAtSpaces).
+std::string wrappedLines(const std::string& text, float width);
+
 // `text` wrapped to the room left on the line (a pane's or a table cell's), broken at spaces
 // only (wrapAtSpaces): ImGui::TextWrapped broke numbers after their decimal point.
 void wrappedText(const std::string& text);

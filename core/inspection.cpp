@@ -83,23 +83,35 @@ int cellAt(const Domain& domain, const IterationView& view, const Vec2& p) {
   return best;
 }
 
-TriangleDetails describeTriangle(const IterationView& view, int triangle) {
+TriangleDetails describeTriangle(const Mesh& mesh, int triangle) {
   TriangleDetails d;
-  const Mesh& mesh = view.output;
   if (triangle < 0 || triangle >= static_cast<int>(mesh.triangles.size())) return d;
   d.index = triangle;
   d.corners = mesh.triangles[triangle];
   const Triangle& t = d.corners;
   d.angles3D = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-  d.anglesUV = cornerAnglesDeg(view.outputUV[t[0]], view.outputUV[t[1]], view.outputUV[t[2]]);
   d.area3D = triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  d.minAngle = *std::min_element(d.angles3D.begin(), d.angles3D.end());
+  const VertexEdges edges = vertexEdges(mesh);
+  for (int k = 0; k < 3; ++k) {
+    d.valences[k] = edges.valence[t[k]];
+    d.onBorder[k] = edges.onBoundary[t[k]];
+    d.sites[k] = -1;
+  }
+  return d;
+}
+
+TriangleDetails describeTriangle(const IterationView& view, int triangle) {
+  TriangleDetails d = describeTriangle(view.output, triangle);
+  if (d.index < 0) return d;
+  const Triangle& t = d.corners;
+  d.anglesUV = cornerAnglesDeg(view.outputUV[t[0]], view.outputUV[t[1]], view.outputUV[t[2]]);
   d.areaUV = std::abs(triangleArea(view.outputUV[t[0]], view.outputUV[t[1]], view.outputUV[t[2]]));
-  const double total3D = surfaceArea(mesh);
+  const double total3D = surfaceArea(view.output);
   double totalUV = 0;
-  for (const Triangle& u : mesh.triangles)
+  for (const Triangle& u : view.output.triangles)
     totalUV += std::abs(triangleArea(view.outputUV[u[0]], view.outputUV[u[1]], view.outputUV[u[2]]));
   d.areaDistortion = d.areaUV > 0 ? (d.area3D / total3D) / (d.areaUV / totalUV) : INFINITY;
-  d.minAngle = *std::min_element(d.angles3D.begin(), d.angles3D.end());
   for (int k = 0; k < 3; ++k) {
     d.sites[k] = view.outputSite[t[k]];
     d.atSite[k] = d.sites[k] >= 0 && view.outputUV[t[k]] == view.sites[d.sites[k]];

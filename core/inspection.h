@@ -48,12 +48,18 @@ struct TriangleDetails {
   // (area3D / total 3D area) / (areaUV / total UV area): 1 where the map keeps areas.
   double areaDistortion = 0;
   double minAngle = 0;                  // in 3D, degrees
+  std::array<int, 3> valences{};        // of each corner, in the whole mesh
+  std::array<bool, 3> onBorder{};       // regular: 4 on the border, 6 inside
   std::array<int, 3> sites{};           // the site each corner is, or -1 (not moved)
   // Whether the corner is at its site: relocate stops a vertex short where it would fold.
   std::array<bool, 3> atSite{};
 };
 
+// A triangle of an iteration's result: in 3D, in the parameter domain, and its corners' sites.
 TriangleDetails describeTriangle(const IterationView& view, int triangle);
+// A triangle of a mesh with no map (the final result, cleaned up in 3D): the 3D numbers only,
+// no UV ones, every corner "not moved".
+TriangleDetails describeTriangle(const Mesh& mesh, int triangle);
 
 // The output triangle whose parameter-domain image holds p, or -1.
 int triangleAtUV(const IterationView& view, const Vec2& p);

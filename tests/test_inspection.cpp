@@ -3,6 +3,7 @@
 #include "metrics.h"
 #include "test_support.h"
 
+#include <cmath>
 #include <map>
 
 using namespace lloydscope;
@@ -113,6 +114,26 @@ TEST(Inspection, TriangleNumbers) {
       for (int s : d.sites) EXPECT_GE(s, 0);
     }
   }
+}
+
+// A triangle of a mesh with no map (the final result): its 3D numbers and its corners'
+// valences, border ones said as such; nothing of a map or of sites.
+TEST(Inspection, AFinalTriangleHasItsValencesAndNoMap) {
+  Mesh fan;  // five triangles around vertex 0, a pentagon's corners on the border
+  fan.points.push_back(Vec3(0, 0, 0));
+  for (int k = 0; k < 5; ++k) fan.points.push_back(Vec3(std::cos(0.4 * M_PI * k), std::sin(0.4 * M_PI * k), 0));
+  for (int k = 0; k < 5; ++k) fan.triangles.push_back({0, 1 + k, 1 + (k + 1) % 5});
+  const TriangleDetails d = describeTriangle(fan, 2);
+  EXPECT_EQ(d.index, 2);
+  EXPECT_EQ(d.corners, (Triangle{0, 3, 4}));
+  EXPECT_EQ(d.valences, (std::array<int, 3>{5, 3, 3}));
+  EXPECT_EQ(d.onBorder, (std::array<bool, 3>{false, true, true}));
+  EXPECT_NEAR(d.angles3D[0], 72.0, 1e-9);
+  EXPECT_NEAR(d.minAngle, 54.0, 1e-9);
+  EXPECT_NEAR(d.area3D, 0.5 * std::sin(0.4 * M_PI), 1e-12);
+  EXPECT_EQ(d.areaUV, 0.0);
+  for (int s : d.sites) EXPECT_EQ(s, -1);
+  EXPECT_EQ(describeTriangle(fan, 5).index, -1);
 }
 
 TEST(Inspection, PickingTrianglesInUVAndAlongARay) {

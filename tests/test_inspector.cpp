@@ -110,6 +110,21 @@ TEST(Inspector, TheWireframeFadesOnTinyTriangles) {
   EXPECT_GT(green, dark);
 }
 
+// With the final result shown, the worst triangle pinned is the final result's, ringed over it:
+// it was the iteration's, which the final result hides (0 teal pixels).
+TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
+  const std::string png = test::tempPath("final_worst.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --final --select-worst --pane 3d", png), 0);
+  const Picture picture = readPng(png);
+  int teal = 0;  // Selection::triangleColor: (0, 140, 115)
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
+    }
+  EXPECT_GE(teal, 180);
+}
+
 // A pinned cell lies on the input surface: it is drawn over the final result too (it was not).
 TEST(Inspector, APinnedCellShowsOverTheFinalResult) {
   const std::string png = test::tempPath("final_pin.png");
@@ -204,6 +219,7 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
            {"--select-triangle -1", "--select-triangle: expected a whole number >= 0, not '-1'"},
            {"--iteration 5000", "sphere_cap.off: iteration 5000 does not exist"},  // it showed the last one, as if asked
            {"--select-triangle 5000", "sphere_cap.off: triangle 5000 does not exist"},
+           {"--final --select-triangle 5000", "in the final result)"},
            {"--camera 'one two'", "camera"},
            {"--camera '0 0 -1 0 0 0'", "camera"}}) {
     EXPECT_EQ(run("inspect " + mesh + " --screenshot " + out + " " + args + " 2> " + err), 1) << args;
