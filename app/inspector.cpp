@@ -101,9 +101,12 @@ void boxedText(ImDrawList* dl, ImVec2 where, const char* text) {
   dl->AddText(where, rgb(0.1f, 0.1f, 0.1f), text);
 }
 
+constexpr float kColorBarWidth = 12.0f;
+constexpr float kFillBarHeight = 90.0f;
+
 void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, const char* bottom,
                   const std::function<ImU32(float)>& color) {
-  const float width = 12.0f;
+  const float width = kColorBarWidth;
   const int steps = 24;
   for (int i = 0; i < steps; ++i) {
     const float t0 = static_cast<float>(i) / steps, t1 = static_cast<float>(i + 1) / steps;
@@ -1308,9 +1311,15 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   const bool seams = !replay_->seams().empty() || !replay_->recording().sharedSeams.empty();
   const std::string legend = wrapItems(domainLegend(shown.sites2D, shown.centroids2D, seams), extent.x - 16);
   const float legendHeight = ImGui::CalcTextSize(legend.c_str()).y;
-  const float fitHeight = std::max(1.0f, extent.y - legendHeight - 10);
-  const float base = 0.92f * std::min(extent.x, fitHeight);
-  const ImVec2 center(p0.x + extent.x / 2 + pan2D_.x, p0.y + fitHeight / 2 + pan2D_.y);
+  // A fill's legend (its name over a colour bar, top left) has its own room too: over the
+  // domain it hid a square domain's corner cells.
+  const bool filled = fill_ != CellFill::None && shown.cells2D;
+  const float fillTop = filled ? fillLegendTop() : 0.0f;
+  const float fillLeft = filled ? fillLegendWidth() : 0.0f;
+  const float fitWidth = std::max(1.0f, extent.x - fillLeft);
+  const float fitHeight = std::max(1.0f, extent.y - legendHeight - 10 - fillTop);
+  const float base = 0.92f * std::min(fitWidth, fitHeight);
+  const ImVec2 center(p0.x + fillLeft + fitWidth / 2 + pan2D_.x, p0.y + fillTop + fitHeight / 2 + pan2D_.y);
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
     pan2D_.x += io.MouseDelta.x;
     pan2D_.y += io.MouseDelta.y;
@@ -1356,7 +1365,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
                     rgb(0.15f, 0.15f, 0.15f), 2.0f);
       }
   selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale);
-  if (fill_ != CellFill::None) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4));
+  if (filled) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4));
   boxedText(dl, ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), legend.c_str());
   dl->PopClipRect();
   ImGui::End();
@@ -1366,15 +1375,20 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at) const {
   constexpr const char* kNames[] = {"", "mass M = ∫ ρ dA", "area in (u, v)", "energy ∫ ρ |x - s|² dA",
                                     "distance |c - s|", "moved since k-1"};
-  const float font = ImGui::GetFontSize();
   const std::string name = std::string(kNames[static_cast<int>(fill_)]) + (fillScale_.log ? " (log scale)" : "");
   if (fillScale_.flat()) {
     boxedText(dl, at, (name + ": " + format("%.2e", fillScale_.lo) + " for every cell").c_str());
     return;
   }
   boxedText(dl, at, name.c_str());
-  drawColorBar(dl, ImVec2(at.x, at.y + 1.5f * font + 0.5f), 90, format("%.2e", fillScale_.hi).c_str(),
+  drawColorBar(dl, ImVec2(at.x, at.y + fillLegendTop() - 4), kFillBarHeight, format("%.2e", fillScale_.hi).c_str(),
                format("%.2e", fillScale_.lo).c_str(), [](float t) { return quantityColor(t); });
+}
+
+// The legend's name line, and its colour bar with the labels beside it ("2.48e-03").
+float Inspector::fillLegendTop() const { return 1.5f * ImGui::GetFontSize() + 4.5f; }
+float Inspector::fillLegendWidth() const {
+  return 10 + kColorBarWidth + 4 + ImGui::CalcTextSize("0.00e-00").x + 8;
 }
 
 CanvasGeometry Inspector::buildCanvas(float scale) {

@@ -241,6 +241,8 @@ class Inspector {
   FillScale fillScale_;  // of the cells' fill, as the canvas was last built
   double arrowScale_ = 1;  // how much longer the arrows were drawn (the lesson's Move stage)
   void fillLegend(ImDrawList* dl, const ImVec2& at) const;
+  float fillLegendTop() const;    // the 2D pane's room for the legend: its name's line
+  float fillLegendWidth() const;  // and, under it, its colour bar's strip
   int iteration_ = 0;
   int uploadedIteration_ = -1, measuredIteration_ = -1;
   RemeshMethod uploadedMethod_ = RemeshMethod::Retriangulate;

@@ -125,6 +125,36 @@ TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
   EXPECT_GE(teal, 180);
 }
 
+// A fill's colour bar and its labels stand beside the domain: over it they hid a square
+X
+TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {
+  const std::string png = test::tempPath("fill_legend.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") +
+                            " --param authalic --border square --fill area --pane 2d",
+                        png),
+            0);
+  const Picture picture = readPng(png);
+  ASSERT_GT(picture.width, 0);
+  auto longestDarkRun = [&](int x) {  // down column x: the bar's outline, the domain's border
+    int run = 0, longest = 0;
+    for (int y = 0; y < picture.height; ++y) {
+      const unsigned char* c = picture.at(x, y);
+      run = std::max({c[0], c[1], c[2]}) < 70 ? run + 1 : 0;
+      longest = std::max(longest, run);
+    }
+    return longest;
+  };
+  int bar = -1, domain = -1;  // their left edges: the bar is 90 pixels tall, the domain more
+  for (int x = 0; x < picture.width && domain < 0; ++x) {
+    const int run = longestDarkRun(x);
+    if (bar < 0 && run >= 80 && run <= 100) bar = x;
+    if (run >= 110) domain = x;
+  }
+  ASSERT_GE(bar, 0);
+  ASSERT_GE(domain, 0);
+  EXPECT_GE(domain - bar, 70);  // the bar, 12 pixels, and a label "9.68e-03" beside it
+}
+
 // A pinned cell lies on the input surface: it is drawn over the final result too (it was not).
 TEST(Inspector, APinnedCellShowsOverTheFinalResult) {
   const std::string png = test::tempPath("final_pin.png");
