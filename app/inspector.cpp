@@ -800,7 +800,7 @@ CaptionFacts Inspector::captionFacts() {
   f.iterations = replay_->iterationCount();
   const IterationRecord& it = replay_->recording().iterations[iteration_];
   f.energy = it.energy;
-  f.maxMove = it.maxDisplacement;
+  f.maxToCentroid = it.maxDisplacement;
   f.arrowScale = arrowScale_;
   f.percentMoving = 100.0 * it.fractionMoving;
   if (!selection_.cells().empty())
@@ -1700,7 +1700,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   // Numbered from 0: "of 159" read as one fewer than the 160 iterations the controls pane counts.
   // The keys' reminder is left out where the line would not fit (960x600).
   char status[256];
-  std::snprintf(status, sizeof status, "iteration %d (0-%d)   energy %.6e   max move %.2e   %.1f%% moving   %s",
+  std::snprintf(status, sizeof status, "iteration %d (0-%d)   energy %.6e   max |c - s| %.2e   %.1f%% moving   %s",
                 iteration_, last, it.energy, it.maxDisplacement, 100.0 * it.fractionMoving,
                 showTimings_ ? format("%.1f ms   ", it.milliseconds).c_str() : "");
   const std::string withKeys = std::string(status) + "keys: <- -> (Shift: 10), Home, End, Space";

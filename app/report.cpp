@@ -517,7 +517,7 @@ std::string recordingReport(const Recording& r) {
       << "Sites: " << s["fixed_sites"] << " fixed, " << s["movable_sites"] << " movable\n"
       << "Iterations: " << r.iterations.size()
       << (s["converged"].get<bool>() ? " (converged)" : " (not converged)") << "\n\n"
-      << "| iteration | CVT energy | max move | mean move | % moving | ms |\n"
+      << "| iteration | CVT energy | largest site-centroid distance | mean site-centroid distance | % moving | ms |\n"
       << "|---|---|---|---|---|---|\n";
   for (const IterationRecord& it : r.iterations)
     out << "| " << it.index << " | " << format("%.6e", it.energy) << " | "

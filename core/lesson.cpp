@@ -161,9 +161,11 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                         "down its gradient 2 Mᵢ (sᵢ − cᵢ) (arrows: sᵢ → cᵢ)."
                       : "L-BFGS: the sites take a quasi-Newton step down the energy, whose "
                         "gradient is 2 Mᵢ (sᵢ − cᵢ) (arrows: sᵢ → cᵢ).";
-      c.numbers = format("Iteration %d: E = %.4e, largest move %.2e, %.1f%% of sites moved "
-                         "more than the threshold",
-                         f.iteration, f.energy, f.maxMove, f.percentMoving);
+      // |c − s|, not "move": only Lloyd's step moves a site by it (the fill "moved since k-1"
+      // showed larger moves than this "largest move" under L-BFGS).
+      c.numbers = format("Iteration %d: E = %.4e, largest |c − s| %.2e, %.1f%% of the sites still "
+                         "moving (|c − s| over the threshold)",
+                         f.iteration, f.energy, f.maxToCentroid, f.percentMoving);
       if (f.arrowScale > 1) c.numbers += format("; arrows drawn %g times as long", f.arrowScale);
       if (cell)
         c.numbers += format("; cell %d%s: |c − s| = %.2e", cell->index,

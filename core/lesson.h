@@ -94,7 +94,9 @@ struct CaptionFacts {
   bool inputIsMapped = false;
   Distortion distortion;
   int iteration = 0, iterations = 0;
-  double energy = 0, maxMove = 0, percentMoving = 0;
+  // The largest distance from a movable site to its centroid (a Lloyd step's largest move, not
+  // an L-BFGS or Newton step's), and the % of movable sites farther than the threshold.
+  double energy = 0, maxToCentroid = 0, percentMoving = 0;
   double arrowScale = 1;  // the Move stage's arrows are drawn so many times as long
   std::optional<CellDetails> cell;  // the first pinned cell, if any
 };

@@ -126,7 +126,7 @@ TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
 }
 
 // A fill's colour bar and its labels stand beside the domain: over it they hid a square
-X
+// domain's corner cells (its left edge was 27 pixels right of the bar, under the labels).
 TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {
   const std::string png = test::tempPath("fill_legend.png");
   ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") +

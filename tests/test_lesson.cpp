@@ -237,6 +237,17 @@ TEST(Lesson, CaptionsSayWhatTheirNumbersAreOf) {
 
 // The map of a run with the first pass is the rough remeshing's, and the caption says so: it
 // is why the sites start evenly spread.
+// The Move stage's number is the largest |c − s|: it was called the largest move, and under
+// L-BFGS the sites moved farther than it (the fill "moved since k-1" reached 1.67e-03 where
+// the "largest move" was 1.06e-03).
+TEST(Lesson, TheMoveCaptionSaysItsNumberIsTheDistanceToTheCentroid) {
+  CaptionFacts facts;
+  facts.maxToCentroid = 1.06e-3;
+  const std::string numbers = caption(Stage::Move, facts).numbers;
+  EXPECT_NE(numbers.find("largest |c − s| 1.06e-03"), std::string::npos) << numbers;
+  EXPECT_EQ(numbers.find("move "), std::string::npos) << numbers;
+}
+
 TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
   CaptionFacts facts;
   facts.param = "lscm";
