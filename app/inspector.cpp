@@ -522,7 +522,10 @@ void OpeningView::applyTo(Inspector& inspector) const {
     if (iteration >= count)  // it showed the last one, as if that had been asked
       throw Error("iteration " + std::to_string(iteration) + " does not exist (" + std::to_string(count) +
                   " recorded, numbered from 0)");
+    // A stage shown alone is at the lesson's iteration for it, unless one is asked: Load showed
+    // the input beside the plots and the status bar of a converged run (iteration 159).
     if (iteration >= 0) inspector.setIteration(iteration);
+    else if (stage) inspector.setIteration(stageIteration(*stage, count));
     inspector.showFinal(final);
     if (fill) inspector.setFill(*fill);
     for (int cell : cells) inspector.pinCell(cell);
@@ -1246,7 +1249,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   // over it); pinned triangles are the iteration's result's or the final result's, each drawn
   // over its own mesh.
   selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen,
-                    !shown.input3D && !final);
+                    shown.cells2D, !shown.input3D && !final);
   if (final) selection_.drawFinal3D(dl, result_.output, toScreen);
   dl->PopClipRect();
 
@@ -1364,7 +1367,8 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
         dl->AddLine(screen(domain.uv()[tri[k]]), screen(domain.uv()[tri[(k + 1) % 3]]),
                     rgb(0.15f, 0.15f, 0.15f), 2.0f);
       }
-  selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale);
+  selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale, shown.cells2D,
+                    shown.sites2D);
   if (filled) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4));
   boxedText(dl, ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), legend.c_str());
   dl->PopClipRect();

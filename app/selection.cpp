@@ -78,8 +78,8 @@ void Selection::clear() {
 }
 
 void Selection::draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
-                       const ScreenOfUV& screen, float scale) const {
-  for (int cell : cells_) {
+                       const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown) const {
+  for (int cell : cellsShown ? cells_ : std::vector<int>{}) {
     if (cell >= static_cast<int>(view.cells.size())) continue;
     for (const CellPiece& piece : view.cells[cell].pieces) {
       std::vector<ImVec2> points;
@@ -92,7 +92,7 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
     const float r = std::clamp(0.3f * scale / std::sqrt(float(view.sites.size()) + 1), 3.0f, 8.0f);
     dl->AddCircle(screen(view.sites[cell]), r, cellColor(), 0, 2.0f);
   }
-  for (int triangle : triangles_) {
+  for (int triangle : resultShown ? triangles_ : std::vector<int>{}) {
     if (triangle >= static_cast<int>(view.output.triangles.size())) continue;
     const Triangle& t = view.output.triangles[triangle];
     const ImVec2 corners[3] = {screen(view.outputUV[t[0]]), screen(view.outputUV[t[1]]),
@@ -102,10 +102,10 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
 }
 
 void Selection::draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,
-                       const IterationView& view, const ScreenOf3D& screen,
+                       const IterationView& view, const ScreenOf3D& screen, bool cellsShown,
                        bool resultShown) const {
   ImVec2 a, b;
-  for (int cell : cells_) {
+  for (int cell : cellsShown ? cells_ : std::vector<int>{}) {
     if (cell >= static_cast<int>(view.cells.size())) continue;
     for (const auto& [p, q] : cellOutline(domain, view.cells[cell]))
       if (screen(lift(recording.input, domain, p), a) && screen(lift(recording.input, domain, q), b))

@@ -36,13 +36,15 @@ class Selection {
   const std::vector<int>& finalTriangles() const { return finalTriangles_; }
 
   // Highlights: each pinned cell filled, with its site's path over all iterations; each pinned
-  // triangle outlined (in the parameter domain by its corners' UV positions).
+  // triangle outlined (in the parameter domain by its corners' UV positions). Each only where
+  // the view shows its kind: the lesson's first stages show no cells and no result (a pinned
+  // triangle's ring floated on the empty domain).
   void draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
-              const ScreenOfUV& screen, float scale) const;
-  // The cells' outlines and sites lifted to the surface, the triangles' outlines (these only
-  // when the result is shown).
+              const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown) const;
+  // The cells' outlines and sites lifted to the surface, the triangles' outlines.
   void draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,
-              const IterationView& view, const ScreenOf3D& screen, bool resultShown) const;
+              const IterationView& view, const ScreenOf3D& screen, bool cellsShown,
+              bool resultShown) const;
   // The final result's pinned triangles, when it is the mesh shown.
   void drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen) const;
   // The numbers of each pinned element at this iteration, with the formulas they enter, then

@@ -42,6 +42,10 @@ Layers layersFor(Stage stage) {
   return l;
 }
 
+int stageIteration(Stage stage, int iterationCount) {
+  return stage <= Stage::Parameterize ? 0 : std::max(0, iterationCount - 1);
+}
+
 std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations) {
   std::vector<LessonStep> plan = {{Stage::Load, 0, 4.0f}, {Stage::Parameterize, 0, 4.0f}};
   for (int k = 0; k < iterationCount; ++k) {
@@ -137,7 +141,9 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                   "to the domain: its Voronoi cell Vᵢ.";
       c.numbers = cell ? format("Cell %d: area A = ½ Σ (xⱼ yⱼ₊₁ − xⱼ₊₁ yⱼ) = %.6e, "
                                 "%d neighbours", cell->index, cell->shoelaceArea, cell->neighbours)
-                       : format("Iteration %d of %d. Pin a cell to see its numbers.", f.iteration,
+                       // As the status bar numbers them: "2 of 190" read as one fewer than the
+                       // 191 iterations the Lift caption and the controls pane count.
+                       : format("Iteration %d (0–%d). Pin a cell to see its numbers.", f.iteration,
                                 f.iterations - 1);
       break;
     case Stage::Centroids:

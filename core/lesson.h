@@ -34,6 +34,10 @@ struct Layers {
   }
 };
 Layers layersFor(Stage stage);
+// The iteration a stage is shown at when none is asked (inspect --stage): Load and
+// Parameterize come before any step, at 0 as in the lesson; the others at the last of
+// `iterationCount`, inspect's own default (where the lesson shows Lift and Result).
+int stageIteration(Stage stage, int iterationCount);
 
 // One step of the lesson: a stage, at an iteration, for some seconds (at speed 1).
 struct LessonStep {

@@ -125,6 +125,24 @@ TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
   EXPECT_GE(teal, 180);
 }
 
+// The lesson's Load stage shows no cells and no result: a pinned triangle's ring floated on the
+// empty domain, and a pinned cell's highlight beside it.
+TEST(Inspector, TheLoadStageShowsNoPins) {
+  const std::string png = test::tempPath("load_pins.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --stage load --select-cell 100 --select-triangle 5 --pane 2d", png),
+            0);
+  const Picture picture = readPng(png);
+  ASSERT_GT(picture.width, 0);
+  int pinned = 0;  // teal (0, 140, 115) or magenta (217, 13, 179)
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      pinned += (c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145) ||
+                (c[0] > 170 && c[1] < 60 && c[2] > 130);
+    }
+  EXPECT_EQ(pinned, 0);
+}
+
 // A fill's colour bar and its labels stand beside the domain: over it they hid a square
 // domain's corner cells (its left edge was 27 pixels right of the bar, under the labels).
 TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {

@@ -1,6 +1,7 @@
 #include "lesson.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <limits>
 
 using namespace lloydscope;
@@ -158,7 +159,7 @@ TEST(Lesson, CaptionsQuoteThePinnedCell) {
   facts.solver = "lbfgs";
   EXPECT_EQ(caption(Stage::Move, facts).formula.rfind("L-BFGS", 0), 0u);
   facts.cell.reset();
-  EXPECT_NE(caption(Stage::Voronoi, facts).numbers.find("Iteration 2 of 9"), std::string::npos);
+  EXPECT_NE(caption(Stage::Voronoi, facts).numbers.find("Iteration 2 (0–9)"), std::string::npos);
 }
 
 // The last stage quotes what remesh writes, after the clean-up, and says so (it quoted the last
@@ -246,6 +247,20 @@ TEST(Lesson, TheMoveCaptionSaysItsNumberIsTheDistanceToTheCentroid) {
   const std::string numbers = caption(Stage::Move, facts).numbers;
   EXPECT_NE(numbers.find("largest |c − s| 1.06e-03"), std::string::npos) << numbers;
   EXPECT_EQ(numbers.find("move "), std::string::npos) << numbers;
+}
+
+// inspect --stage load showed the input beside the plots and the status bar of the converged
+// run (iteration 159): the stages before any step are at iteration 0, as in the lesson.
+TEST(Lesson, AStageShownAloneIsAtTheIterationItIsAbout) {
+  const std::vector<LessonStep> plan = lessonPlan(160);
+  for (Stage stage : {Stage::Load, Stage::Parameterize, Stage::Lift, Stage::Result}) {
+    const auto first = std::find_if(plan.begin(), plan.end(), [&](const LessonStep& s) { return s.stage == stage; });
+    ASSERT_NE(first, plan.end());
+    EXPECT_EQ(stageIteration(stage, 160), first->iteration) << static_cast<int>(stage);
+  }
+  EXPECT_EQ(stageIteration(Stage::Load, 160), 0);
+  EXPECT_EQ(stageIteration(Stage::Voronoi, 160), 159);
+  EXPECT_EQ(stageIteration(Stage::Move, 1), 0);
 }
 
 TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
