@@ -143,7 +143,16 @@ FillScale fillScale(const std::vector<double>& values) {
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   scale.lo = *lo;
   scale.hi = *hi;
-  scale.log = scale.lo > 0 && scale.hi > 100 * scale.lo;
+  if (!(scale.lo > 0 && scale.hi > 10 * scale.lo)) return scale;
+  // Of the two scales, the one that puts the median cell nearer the middle of the bar: a fixed
+  // factor (100) left a 99.9-fold spread linear, every cell but a few the lowest colour.
+  std::vector<double> sorted = values;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  const float linear = scale.at(median);
+  scale.log = true;
+  const float logarithmic = scale.at(median);
+  scale.log = std::abs(logarithmic - 0.5f) < std::abs(linear - 0.5f);
   return scale;
 }
 

@@ -218,6 +218,14 @@ TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
   EXPECT_TRUE(moved.flat());
   EXPECT_FLOAT_EQ(moved.at(0.0), 0.0f);
   EXPECT_FALSE(fillScale({0.0, 5.0, 1e4}).log);  // a 0 has no logarithm
+  // The curvature density's masses on the bumpy disk spread 99.9-fold, most of them low: linear,
+  // every cell was the lowest colour. The scale is the one that puts the median mid-bar.
+  const FillScale skewed = fillScale({7.33e-5, 1e-4, 2e-4, 3e-4, 4e-4, 7.32e-3});
+  EXPECT_TRUE(skewed.log);
+  EXPECT_GT(skewed.at(3e-4), 0.25f);
+  // Spread as widely, but evenly: linear.
+  EXPECT_FALSE(fillScale({1e-4, 2e-3, 4e-3, 6e-3, 8e-3, 1e-2}).log);
+  EXPECT_FALSE(fillScale({1.0, 2.0, 9.0}).log);  // under a factor 10: linear
 }
 
 // The bumpy disk without the first pass: iteration 0 had 999 vertices for 1000 sites, and
