@@ -709,7 +709,9 @@ void Inspector::frame() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float left = presentation_ ? 0.0f : std::max(280.0f, display.x * 0.23f);
-  const float captionHeight = stage_ ? 3 * line + 20 : 0;
+  std::optional<Caption> shownCaption;
+  if (stage_) shownCaption = caption(*stage_, captionFacts());
+  const float captionHeight = shownCaption ? captionPaneHeight(*shownCaption, display.x - left) : 0;
   const float timelineHeight = (presentation_ ? 2 * line + 30 : 64.0f) + (timelineWrapped_ ? ImGui::GetFrameHeightWithSpacing() : 0);
   const float plotsHeight = presentation_ ? std::max(170.0f, display.y * 0.22f)
                                           : std::max(170.0f, display.y * 0.27f);
@@ -734,7 +736,7 @@ void Inspector::frame() {
     exportRequest_ = request;
   }
   if (!presentation_) controlsPane(ImVec2(0, 0), ImVec2(left, display.y));
-  if (stage_) captionPane(ImVec2(left, 0), ImVec2(display.x - left, captionHeight));
+  if (shownCaption) captionPane(*shownCaption, ImVec2(left, 0), ImVec2(display.x - left, captionHeight));
   viewPane3D(ImVec2(left, viewsTop), ImVec2(viewWidth, viewsHeight));
   domainPane2D(ImVec2(left + viewWidth, viewsTop), ImVec2(display.x - left - viewWidth, viewsHeight));
   plotsPane(ImVec2(left, plotsTop), ImVec2(display.x - left, plotsHeight));
@@ -812,12 +814,29 @@ CaptionFacts Inspector::captionFacts() {
   return f;
 }
 
-void Inspector::captionPane(const ImVec2& pos, const ImVec2& size) {
+std::string Inspector::captionTitle(const Caption& c) const {
+  return c.title + (lesson_.paused() && lesson_.playing() ? " (paused: Space plays on)" : "");
+}
+
+// Three lines at least, so that the panes under it keep their place from stage to stage; more
+// where the caption wraps to more (at 960x600 in presentation the last line was cut off).
+float Inspector::captionPaneHeight(const Caption& c, float width) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float text = width - 2 * style.WindowPadding.x;
+  const float formulaWidth = text - ImGui::CalcTextSize(captionTitle(c).c_str()).x - style.ItemSpacing.x;
+  // The formula as ImGui::TextWrapped breaks it: at the pane's edge, less a little.
+  const float formulaHeight =
+      ImGui::CalcTextSize(c.formula.c_str(), nullptr, false, std::max(1.0f, formulaWidth)).y;
+  const float numbersHeight = ImGui::CalcTextSize(wrappedLines(c.numbers, text).c_str()).y;
+  const float needed = formulaHeight + style.ItemSpacing.y + numbersHeight + 2 * style.WindowPadding.y + 4;
+  return std::max(3 * ImGui::GetTextLineHeightWithSpacing() + 20, needed);
+}
+
+void Inspector::captionPane(const Caption& c, const ImVec2& pos, const ImVec2& size) {
   beginPane("Lesson", pos, size, ImGuiWindowFlags_NoTitleBar | kCanvasPaneFlags);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), rgb(1.0f, 0.98f, 0.9f));
-  const Caption c = caption(*stage_, captionFacts());
-  const std::string title = c.title + (lesson_.paused() && lesson_.playing() ? " (paused: Space plays on)" : "");
+  const std::string title = captionTitle(c);
   ImGui::TextColored(ImVec4(0.6f, 0.15f, 0.0f, 1.0f), "%s", title.c_str());
   ImGui::SameLine();
   ImGui::TextWrapped("%s", c.formula.c_str());
@@ -1241,8 +1260,10 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip
     if (result_.fidelity.samples > 0 && toScreen(result_.fidelity.farthestPoint, at)) {
-      const float r = presentation_ ? 14.0f : 9.0f;
-      dl->AddCircle(at, r, kFarthestColor, 24, presentation_ ? 4.0f : 2.5f);
+      const float r = presentation_ ? 14.0f : 9.0f, width = presentation_ ? 4.0f : 2.5f;
+      // On a white halo: over red (0°) triangles the red ring was lost.
+      dl->AddCircle(at, r, IM_COL32(255, 255, 255, 230), 24, width + 3.0f);
+      dl->AddCircle(at, r, kFarthestColor, 24, width);
     }
   }
   // Pinned cells lie on the input surface, under the final result too (they were not drawn
@@ -1371,6 +1392,17 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
                     shown.sites2D);
   if (filled) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4));
   boxedText(dl, ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), legend.c_str());
+  // Sites a few pixels apart are a blob of dots and rings (1000 sites in presentation mode at
+  // 960x600): the pane says how to see them.
+  const float spacing = scale / std::sqrt(static_cast<float>(replay_->view(iteration_).sites.size()) + 1);
+  if (const std::string text = crowdedSitesHint(spacing); shown.sites2D && !text.empty()) {
+    // In the room right of the domain where there is some (a wide, low pane), over its corner
+    // where there is none.
+    const float room = p0.x + extent.x - (center.x + 0.5f * scale) - 12;
+    const std::string hint = wrappedLines(text, room >= 80 ? room : 0.5f * extent.x);
+    boxedText(dl, ImVec2(p0.x + extent.x - ImGui::CalcTextSize(hint.c_str()).x - 8, p0.y + 4 + (filled ? fillLegendTop() : 0.0f)),
+              hint.c_str());
+  }
   dl->PopClipRect();
   ImGui::End();
 }

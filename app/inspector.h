@@ -147,7 +147,9 @@ class Inspector {
   void domainPane2D(const ImVec2& pos, const ImVec2& size);
   void plotsPane(const ImVec2& pos, const ImVec2& size);
   void timelinePane(const ImVec2& pos, const ImVec2& size);
-  void captionPane(const ImVec2& pos, const ImVec2& size);
+  void captionPane(const Caption& c, const ImVec2& pos, const ImVec2& size);
+  float captionPaneHeight(const Caption& c, float width) const;  // as tall as it wraps to
+  std::string captionTitle(const Caption& c) const;              // "5 Move (paused: ...)"
   CaptionFacts captionFacts();
   Layers layers() const;  // the lesson stage's, or the display switches'
   void toggleLesson();

@@ -398,6 +398,10 @@ std::string domainLegend(bool sites, bool centroids, bool seams) {
   return legend;
 }
 
+std::string crowdedSitesHint(float spacing) {
+  return spacing < 6.0f ? format("sites %.0f px apart: the mouse wheel zooms in", spacing) : "";
+}
+
 std::string distanceText(const Fidelity& f) {
   if (f.samples == 0) return "Distance to the input not measured (--no-fidelity)";
   return "Hausdorff " + format("%.3f", f.hausdorffPercent) + "%, RMS " + format("%.3f", f.rmsPercent) +

@@ -50,9 +50,10 @@ void drawPinnedTriangles3D(ImDrawList* dl, const Mesh& mesh, const std::vector<i
   }
 }
 
-// "5 (border: 4 is regular)", "7".
+// "5", "3 (border)": regular is 6 inside, 4 on the border (the guide says so; in the row it
+// took two lines at 960 pixels).
 std::string valenceText(const TriangleDetails& d, int k) {
-  return std::to_string(d.valences[k]) + (d.onBorder[k] ? " (border: 4 is regular)" : "");
+  return std::to_string(d.valences[k]) + (d.onBorder[k] ? " (border)" : "");
 }
 
 }  // namespace

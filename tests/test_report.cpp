@@ -228,6 +228,12 @@ TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
   EXPECT_FALSE(fillScale({1.0, 2.0, 9.0}).log);  // under a factor 10: linear
 }
 
+// 1000 sites in presentation mode at 960x600 were an orange blob 110 pixels across.
+TEST(Report, CrowdedSitesAreSaidWithHowToSeeThem) {
+  EXPECT_EQ(crowdedSitesHint(3.2f), "sites 3 px apart: the mouse wheel zooms in");
+  EXPECT_EQ(crowdedSitesHint(9.0f), "");
+}
+
 // The bumpy disk without the first pass: iteration 0 had 999 vertices for 1000 sites, and
 // nothing said why.
 TEST(Report, ANoteSaysWhereASiteHasNoVertex) {
