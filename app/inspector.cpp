@@ -822,27 +822,15 @@ std::string Inspector::captionTitle(const Caption& c) const {
 // where the caption wraps to more (at 960x600 in presentation the last line was cut off).
 float Inspector::captionPaneHeight(const Caption& c, float width) const {
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float text = width - 2 * style.WindowPadding.x;
-  const float formulaWidth = text - ImGui::CalcTextSize(captionTitle(c).c_str()).x - style.ItemSpacing.x;
-  // The formula as ImGui::TextWrapped breaks it: at the pane's edge, less a little.
-  const float formulaHeight =
-      ImGui::CalcTextSize(c.formula.c_str(), nullptr, false, std::max(1.0f, formulaWidth)).y;
-  const float numbersHeight = ImGui::CalcTextSize(wrappedLines(c.numbers, text).c_str()).y;
-  const float needed = formulaHeight + style.ItemSpacing.y + numbersHeight + 2 * style.WindowPadding.y + 4;
-  return std::max(3 * ImGui::GetTextLineHeightWithSpacing() + 20, needed);
+  const float text = captionTextHeight(captionTitle(c), c.formula, c.numbers, width - 2 * style.WindowPadding.x);
+  return std::max(3 * ImGui::GetTextLineHeightWithSpacing() + 20, text + 2 * style.WindowPadding.y + 4);
 }
 
 void Inspector::captionPane(const Caption& c, const ImVec2& pos, const ImVec2& size) {
   beginPane("Lesson", pos, size, ImGuiWindowFlags_NoTitleBar | kCanvasPaneFlags);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), rgb(1.0f, 0.98f, 0.9f));
-  const std::string title = captionTitle(c);
-  ImGui::TextColored(ImVec4(0.6f, 0.15f, 0.0f, 1.0f), "%s", title.c_str());
-  ImGui::SameLine();
-  ImGui::TextWrapped("%s", c.formula.c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.15f, 0.5f, 1.0f));
-  wrappedText(c.numbers);
-  ImGui::PopStyleColor();
+  captionText(captionTitle(c), c.formula, c.numbers);
   ImGui::End();
 }
 

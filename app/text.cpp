@@ -39,6 +39,24 @@ std::string wrappedLines(const std::string& text, float width) {
   return lines;
 }
 
+void captionText(const std::string& title, const std::string& formula, const std::string& numbers) {
+  ImGui::TextColored(ImVec4(0.6f, 0.15f, 0.0f, 1.0f), "%s", title.c_str());
+  ImGui::SameLine();  // the formula's lines all start after the title
+  ImGui::TextUnformatted(wrappedLines(formula, ImGui::GetContentRegionAvail().x).c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.15f, 0.5f, 1.0f));
+  wrappedText(numbers);
+  ImGui::PopStyleColor();
+}
+
+float captionTextHeight(const std::string& title, const std::string& formula, const std::string& numbers,
+                        float width) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float formulaWidth = width - ImGui::CalcTextSize(title.c_str()).x - style.ItemSpacing.x;
+  const float top = std::max(ImGui::CalcTextSize(wrappedLines(formula, formulaWidth).c_str()).y,
+                             ImGui::CalcTextSize(title.c_str()).y);
+  return top + style.ItemSpacing.y + ImGui::CalcTextSize(wrappedLines(numbers, width).c_str()).y;
+}
+
 void wrappedText(const std::string& text) {
   // One item of several lines: as tight as ImGui's own wrapped lines (an item a line would add
   // the spacing between items under each).

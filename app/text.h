@@ -21,6 +21,14 @@ float presentationTextSize(float height);
 // broken at spaces only (wrapAtSpaces).
 std::string wrappedLines(const std::string& text, float width);
 
+// A lesson caption as its pane shows it: the title (dark red), the formula wrapped beside it,
+// the numbers (blue) wrapped under both, in the room left on the line.
+void captionText(const std::string& title, const std::string& formula, const std::string& numbers);
+// The height captionText takes in `width` pixels (the pane is made that tall: a caption of
+// four lines in a pane of three lost its last line).
+float captionTextHeight(const std::string& title, const std::string& formula, const std::string& numbers,
+                        float width);
+
 // `text` wrapped to the room left on the line (a pane's or a table cell's), broken at spaces
 // only (wrapAtSpaces): ImGui::TextWrapped broke numbers after their decimal point.
 void wrappedText(const std::string& text);

@@ -143,7 +143,7 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                                 "%d neighbours", cell->index, cell->shoelaceArea, cell->neighbours)
                        // As the status bar numbers them: "2 of 190" read as one fewer than the
                        // 191 iterations the Lift caption and the controls pane count.
-                       : format("Iteration %d (0–%d). Pin a cell to see its numbers.", f.iteration,
+                       : format("Iteration %d (0-%d). Pin a cell to see its numbers.", f.iteration,
                                 f.iterations - 1);
       break;
     case Stage::Centroids:

@@ -159,7 +159,7 @@ TEST(Lesson, CaptionsQuoteThePinnedCell) {
   facts.solver = "lbfgs";
   EXPECT_EQ(caption(Stage::Move, facts).formula.rfind("L-BFGS", 0), 0u);
   facts.cell.reset();
-  EXPECT_NE(caption(Stage::Voronoi, facts).numbers.find("Iteration 2 (0–9)"), std::string::npos);
+  EXPECT_NE(caption(Stage::Voronoi, facts).numbers.find("Iteration 2 (0-9)"), std::string::npos);
 }
 
 // The last stage quotes what remesh writes, after the clean-up, and says so (it quoted the last

@@ -78,6 +78,47 @@ TEST(Fonts, EveryCaptionCharacterHasAGlyphInBothFonts) {
   ImGui::DestroyContext();
 }
 
+// The caption pane is as tall as its caption: laid out in a pane, the caption ends where
+// captionTextHeight says, at every width (the pane was three lines tall whatever the caption,
+// and a caption of four lost its last line at 960x600).
+TEST(Text, TheCaptionTakesTheHeightItIsGiven) {
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(1200, 600);
+  io.DeltaTime = 1.0f / 60.0f;
+  unsigned char* pixels = nullptr;
+  int atlasWidth = 0, atlasHeight = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &atlasWidth, &atlasHeight);
+  CaptionFacts facts;
+  facts.solver = "lbfgs";
+  facts.iteration = 2;
+  facts.iterations = 191;
+  facts.arrowScale = 10;
+  CellDetails cell;
+  cell.index = 100;
+  facts.cell = cell;
+  const Caption c = caption(Stage::Move, facts);
+  float lastHeight = 0;
+  for (float width : {1100.0f, 600.0f, 300.0f}) {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(width, 600));
+    ImGui::Begin("caption", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+    const float room = ImGui::GetContentRegionAvail().x, top = ImGui::GetCursorPosY();
+    captionText(c.title, c.formula, c.numbers);
+    const float taken = ImGui::GetCursorPosY() - ImGui::GetStyle().ItemSpacing.y - top;
+    const float given = captionTextHeight(c.title, c.formula, c.numbers, room);
+    ImGui::End();
+    ImGui::EndFrame();
+    EXPECT_NEAR(taken, given, 0.5f) << width;
+    EXPECT_GT(given, lastHeight) << width;  // narrower, taller
+    lastHeight = given;
+  }
+  EXPECT_GT(lastHeight, 4 * ImGui::GetTextLineHeight());
+  ImGui::DestroyContext();
+}
+
 // Presentation mode's type was 21 px whatever the window: a hundredth of a 2560x1600 picture.
 TEST(Text, PresentationTypeGrowsWithTheWindow) {
   EXPECT_FLOAT_EQ(presentationTextSize(600), 21.0f);  // never smaller
