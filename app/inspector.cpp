@@ -985,20 +985,32 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     selection_.detailsPanel(replay_->recording(), replay_->domain(), replay_->view(iteration_), result_.output);
   }
   ImGui::Separator();
+  // During a lesson its stage sets what the views show: the switches say what it set, greyed
+  // (the Result stage showed the final result beside an unticked "show the final result").
+  const ViewSwitches shown = viewSwitches(layers(), finalShown());
+  bool triangles = shown.triangles, arrows = shown.arrows, showInput = shown.input, finalOn = shown.final;
+  if (stage_) {
+    ImGui::BeginDisabled();
+    wrappedText("The lesson's stage sets the views (Lesson ends it):");
+  }
   ImGui::TextUnformatted("2D view");
-  ImGui::Checkbox("parameter triangles", &showTriangles_);
-  ImGui::Checkbox("site -> centroid arrows", &showArrows_);
+  if (ImGui::Checkbox("parameter triangles", &triangles)) showTriangles_ = triangles;
+  if (ImGui::Checkbox("site -> centroid arrows", &arrows)) showArrows_ = arrows;
   const char* fills[] = {"no fill", "mass", "area", "energy", "distance to centroid",
                          "moved since k-1"};
   int fill = static_cast<int>(fill_);
+  if (stage_) ImGui::EndDisabled();  // a fill shows over the lesson's cells too
   if (ImGui::Combo("cell fill", &fill, fills, 6)) fill_ = static_cast<CellFill>(fill);
+  if (stage_) ImGui::BeginDisabled();
   ImGui::TextUnformatted("3D view");
-  bool showInput = showInput_;
   if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
-  if (result_.output.triangles.empty()) ImGui::BeginDisabled();
+  if (result_.output.triangles.empty() && !stage_) ImGui::BeginDisabled();
   // With several components the final result is larger than the surface the panes follow.
-  if (ImGui::Checkbox("show the final result", &showFinal_) && result_.components > 1) fitCamera();
-  if (result_.output.triangles.empty()) ImGui::EndDisabled();
+  if (ImGui::Checkbox("show the final result", &finalOn)) {
+    showFinal_ = finalOn;
+    if (result_.components > 1) fitCamera();
+  }
+  if (result_.output.triangles.empty() || stage_) ImGui::EndDisabled();
   bool byAngle = colorByAngle_;
   if (ImGui::Checkbox("colour by minimum angle", &byAngle)) {
     colorByAngle_ = byAngle;

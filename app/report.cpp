@@ -398,6 +398,15 @@ std::string domainLegend(bool sites, bool centroids, bool seams) {
   return legend;
 }
 
+ViewSwitches viewSwitches(const Layers& shown, bool finalShown) {
+  ViewSwitches s;
+  s.triangles = shown.triangles2D;
+  s.arrows = shown.arrows2D;
+  s.input = shown.input3D && !shown.mapped3D && !finalShown;  // not the mesh that was mapped
+  s.final = finalShown;
+  return s;
+}
+
 std::string crowdedSitesHint(float spacing) {
   return spacing < 6.0f ? format("sites %.0f px apart: the mouse wheel zooms in", spacing) : "";
 }

@@ -1,6 +1,7 @@
 // How the command line shows results: tables like the reference's Table II, and JSON.
 #pragma once
 
+#include "lesson.h"
 #include "pipeline.h"
 
 #include <nlohmann/json.hpp>
@@ -111,6 +112,14 @@ std::string shownDistanceText(const Fidelity& f, bool asked, bool running);
 // The 2D pane's legend for what it draws: the sites (dots, and the fixed ones as squares), the
 // centroids (rings), and a cut surface's seams.
 std::string domainLegend(bool sites, bool centroids, bool seams);
+
+// The controls pane's view switches as they should read: what the views show (during a lesson,
+// what its stage set; the Result stage showed the final result beside an unticked "show the
+// final result").
+struct ViewSwitches {
+  bool triangles = false, arrows = false, input = false, final = false;
+};
+ViewSwitches viewSwitches(const Layers& shown, bool finalShown);
 // Where the sites are under 6 pixels apart on screen, a blob of dots and rings (1000 sites in
 // presentation mode at 960x600): "sites 3 px apart: the mouse wheel zooms in"; else "".
 std::string crowdedSitesHint(float spacing);

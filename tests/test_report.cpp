@@ -228,6 +228,23 @@ TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
   EXPECT_FALSE(fillScale({1.0, 2.0, 9.0}).log);  // under a factor 10: linear
 }
 
+// The view switches read what the views show; during a lesson what its stage set (the Result
+// stage showed the final result beside an unticked "show the final result").
+TEST(Report, TheViewSwitchesSayWhatTheViewsShow) {
+  const ViewSwitches result = viewSwitches(layersFor(Stage::Result), true);
+  EXPECT_TRUE(result.final);
+  EXPECT_FALSE(result.input);
+  EXPECT_TRUE(viewSwitches(layersFor(Stage::Load), false).input);
+  EXPECT_FALSE(viewSwitches(layersFor(Stage::Parameterize), false).input);  // the mapped mesh
+  EXPECT_FALSE(viewSwitches(layersFor(Stage::Parameterize), false).arrows);
+  EXPECT_TRUE(viewSwitches(layersFor(Stage::Move), false).arrows);
+  EXPECT_FALSE(viewSwitches(layersFor(Stage::Load), false).triangles);
+  Layers own;  // outside a lesson: the user's switches
+  own.input3D = own.triangles2D = true;
+  EXPECT_TRUE(viewSwitches(own, false).input);
+  EXPECT_TRUE(viewSwitches(own, false).triangles);
+}
+
 // 1000 sites in presentation mode at 960x600 were an orange blob 110 pixels across.
 TEST(Report, CrowdedSitesAreSaidWithHowToSeeThem) {
   EXPECT_EQ(crowdedSitesHint(3.2f), "sites 3 px apart: the mouse wheel zooms in");
