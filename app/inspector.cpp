@@ -1274,13 +1274,15 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   if (final) selection_.drawFinal3D(dl, result_.output, toScreen);
   dl->PopClipRect();
 
-  const std::string label =
-      final           ? format("final result (red ring: farthest from the input, %.2f%%)",
-                               result_.fidelity.hausdorffPercent)
-      : shown.input3D ? (input_ && (!shown.mapped3D || mapIsOfTheInput()) ? "input mesh"
-                                                                         : "the mesh that was parameterized")
-                      : "result at iteration " + std::to_string(iteration_) + " (" +
-                            toString(replay_->method()) + ")";
+  ViewLabel3D facts;
+  facts.final = final;
+  facts.hausdorffPercent = result_.fidelity.hausdorffPercent;
+  facts.result = !shown.input3D;
+  facts.iteration = iteration_;
+  facts.method = toString(replay_->method());
+  facts.input = input_ && (!shown.mapped3D || mapIsOfTheInput());
+  facts.charts = inputCharts_;
+  const std::string label = viewLabel3D(facts);
   // Wrapped in the pane (the final result's ran past its edge at 960 pixels), the colour bar
   // under it.
   const std::string wrapped = wrappedLines(label, extent.x - 20);

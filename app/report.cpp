@@ -398,6 +398,17 @@ std::string domainLegend(bool sites, bool centroids, bool seams) {
   return legend;
 }
 
+std::string viewLabel3D(const ViewLabel3D& shown) {
+  if (shown.final)
+    return format("final result (red ring: farthest from the input, %.2f%%)", shown.hausdorffPercent);
+  if (shown.result) return "result at iteration " + std::to_string(shown.iteration) + " (" + shown.method + ")";
+  if (!shown.input) return "the mesh that was parameterized";
+  // A surface made in charts: the panes follow its largest (it was labelled "input mesh" beside
+  // a caption quoting the whole input's 2775 vertices).
+  if (shown.charts > 0) return "the input's largest chart (of " + std::to_string(shown.charts) + ")";
+  return "input mesh";
+}
+
 ViewSwitches viewSwitches(const Layers& shown, bool finalShown) {
   ViewSwitches s;
   s.triangles = shown.triangles2D;

@@ -113,6 +113,18 @@ std::string shownDistanceText(const Fidelity& f, bool asked, bool running);
 // centroids (rings), and a cut surface's seams.
 std::string domainLegend(bool sites, bool centroids, bool seams);
 
+// What the 3D view shows, in its top-left label.
+struct ViewLabel3D {
+  bool final = false;          // the final result, after the clean-up
+  double hausdorffPercent = 0;  // its distance to the input (a red ring marks where)
+  bool result = false;         // else an iteration's result
+  int iteration = 0;
+  std::string method;
+  bool input = false;          // else the input as the user opened it, or the mesh that was mapped
+  int charts = 0;              // > 0: the input stands for its largest chart of so many
+};
+std::string viewLabel3D(const ViewLabel3D& shown);
+
 // The controls pane's view switches as they should read: what the views show (during a lesson,
 // what its stage set; the Result stage showed the final result beside an unticked "show the
 // final result").

@@ -228,6 +228,23 @@ TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
   EXPECT_FALSE(fillScale({1.0, 2.0, 9.0}).log);  // under a factor 10: linear
 }
 
+TEST(Report, TheViewLabelSaysWhatThe3DViewShows) {
+  ViewLabel3D shown;
+  shown.input = true;
+  EXPECT_EQ(viewLabel3D(shown), "input mesh");
+  shown.charts = 19;  // the elephant, flattened in charts: the panes follow the largest
+  EXPECT_EQ(viewLabel3D(shown), "the input's largest chart (of 19)");
+  shown.input = false;
+  EXPECT_EQ(viewLabel3D(shown), "the mesh that was parameterized");
+  shown.result = true;
+  shown.iteration = 4;
+  shown.method = "retriangulate";
+  EXPECT_EQ(viewLabel3D(shown), "result at iteration 4 (retriangulate)");
+  shown.final = true;
+  shown.hausdorffPercent = 0.131;
+  EXPECT_EQ(viewLabel3D(shown), "final result (red ring: farthest from the input, 0.13%)");
+}
+
 // The view switches read what the views show; during a lesson what its stage set (the Result
 // stage showed the final result beside an unticked "show the final result").
 TEST(Report, TheViewSwitchesSayWhatTheViewsShow) {
