@@ -891,10 +891,13 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   const bool showFinal = finalResult.vertices > 0;
   // A recording holds the mesh its map is of (a first remeshing of the input, say), not the input.
   const char* first = input_ ? "Input" : "Mapped";
+  // A run's lines take as many rows as its result's will: the Files section under them jumped
+  // by 30 pixels as the run ended, under the pointer that had clicked Open mesh.
+  const bool finalComing = showFinal || session_;
   wrappedText(std::string(input_ ? "Input" : "The mesh the map is of (a recording holds no input)") +
-              (showFinal ? ", the current iteration's result and the final one, after the clean-up "
-                           "(the report's Table II)"
-                         : " and the current iteration's result (the report's Table II)"));
+              (finalComing ? ", the current iteration's result and the final one, after the clean-up "
+                             "(the report's Table II)"
+                           : " and the current iteration's result (the report's Table II)"));
   const QualityMetrics& current = currentQuality();
   const std::string iterationHeader = "It. " + std::to_string(iteration_);
   if (ImGui::BeginTable("metrics", showFinal ? 4 : 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
@@ -953,6 +956,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   wrappedText(shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr));
   if (showTimings_ && !session_ && result_.ms.total > 0)  // a recording opened alone has no times
     ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
+  else if (showTimings_ && session_)
+    ImGui::TextUnformatted("Time: when the run has finished");
   // How this result was made (trials, a simplified input) or why its run failed: beside the
   // numbers it explains, not under the controls.
   if (!runNotes_.empty()) {
