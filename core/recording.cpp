@@ -123,6 +123,9 @@ std::string encodePayload(const Recording& r) {
   return std::move(w.bytes());
 }
 
+// How far a recorded map may stray from the unit square it was scaled to (rounding).
+constexpr double kUnitSquareSlack = 1e-9;
+
 // What the replay takes for granted, which a file of the right size and checksum may still
 // break (made by another program, or edited): each broke it with a crash.
 void checkContents(const Recording& r, const std::string& path) {
@@ -136,7 +139,27 @@ void checkContents(const Recording& r, const std::string& path) {
     damaged("a coordinate is not a finite number");
   if (!std::isfinite(r.distanceThreshold) || !std::isfinite(r.percentThreshold))
     damaged("a threshold is not a finite number");
-  if (!(mapArea(r.input, r.uv) > 0)) damaged("its parameter domain has no area");
+  // The map as parameterize() leaves it: scaled to the unit square, counter-clockwise, no
+  // triangle turned over (mirrored, it crashed the replay's point location; scaled by 1e-150
+  // it raised a floating-point exception there; border sites 1e300 away made it hang).
+  const double area = mapArea(r.input, r.uv);
+  if (!(area > 0)) damaged("its parameter domain has no area");
+  Vec2 lo = r.uv.front(), hi = lo;
+  for (const Vec2& p : r.uv) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const auto inSquare = [&](const Vec2& p) {
+    return p.x() >= -kUnitSquareSlack && p.y() >= -kUnitSquareSlack && p.x() <= 1 + kUnitSquareSlack &&
+           p.y() <= 1 + kUnitSquareSlack;
+  };
+  if (!inSquare(lo) || !inSquare(hi) || (hi - lo).maxCoeff() < 1 - kUnitSquareSlack)
+    damaged("its parameter domain is not scaled to the unit square");
+  if (!std::all_of(r.fixedSites.begin(), r.fixedSites.end(), inSquare))
+    damaged("a border site lies outside the unit square");
+  for (const Triangle& t : r.input.triangles)
+    if (triangleArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]) < -kFlatAreaShare * area)
+      damaged("a parameter triangle is turned over");
   for (const auto& corners : r.density)
     for (double d : corners)
       if (!std::isfinite(d) || d < 0) damaged("a density is negative or not a finite number");

@@ -81,7 +81,8 @@ TEST(Recording, ABorderOfFewerThanThreeSitesIsRefused) {
 
 // A file of the right size and checksum may still hold what no run records (another program
 // wrote it, or it was edited): each of these crashed the replay (a segfault, a double free
-// in the cells, a floating-point trap in CGAL) and is refused as damage.
+// in the cells, a floating-point trap in CGAL), or made it hang (border sites 1e300 away),
+// and is refused as damage.
 TEST(Recording, ContentsNoRunRecordsAreRefused) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<std::pair<std::function<void(Recording&)>, std::string>> edits = {
@@ -96,7 +97,12 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[&](Recording& r) { r.distanceThreshold = nan; }, "a threshold is not a finite number"},
       {[](Recording& r) { r.movableVertex.pop_back(); }, "its sites' vertices are not one per site"},
       {[](Recording& r) { r.movableVertex[0] = r.input.vertexCount(); }, "a site's vertex is out of range"},
-      {[](Recording& r) { r.movableVertex[0] = -2; }, "a site's vertex is out of range"}};
+      {[](Recording& r) { r.movableVertex[0] = -2; }, "a site's vertex is out of range"},
+      {[](Recording& r) { for (Vec2& p : r.uv) p.x() = -p.x(); }, "its parameter domain is not scaled to the unit square"},
+      {[](Recording& r) { for (Vec2& p : r.uv) p *= 1e-150; }, "its parameter domain is not scaled to the unit square"},
+      {[](Recording& r) { r.fixedSites[0] *= 1e300; }, "a border site lies outside the unit square"},
+      {[](Recording& r) { std::swap(r.input.triangles[10][0], r.input.triangles[10][1]); },
+       "a parameter triangle is turned over"}};
   const std::string path = test::tempPath("edited.lsrec");
   for (const auto& [edit, why] : edits) {
     Recording r = sphereCapRun().recording;
