@@ -527,7 +527,12 @@ int main(int argc, char** argv) {
       const QualityMetrics quality = measureQuality(mesh);
       Fidelity fidelity;
       const bool withReference = !metricsReference.empty();
-      if (withReference) fidelity = measureFidelity(mesh, load(metricsReference, metricsRepair));
+      if (withReference) {
+        const Mesh reference = load(metricsReference, metricsRepair);
+        requireExactPredicatesRange(mesh, metricsMesh, "measured");
+        requireExactPredicatesRange(reference, metricsReference, "measured");
+        fidelity = measureFidelity(mesh, reference);
+      }
       if (metricsJson) {
         nlohmann::json j = toJson(quality);
         if (withReference) j["fidelity"] = toJson(fidelity);

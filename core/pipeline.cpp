@@ -791,20 +791,25 @@ std::string shortNumber(double x) {
 }
 }  // namespace
 
-void requireRemeshableSize(const Mesh& input, const Topology& topology, int vertices, const std::string& name) {
+void requireExactPredicatesRange(const Mesh& input, const std::string& name, const std::string& task) {
   double largest = 0;
   for (const Vec3& p : input.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
   if (largest > kLargestCoordinate)
-    throw Error(name + ": coordinates as large as " + shortNumber(largest) + " are beyond what can be remeshed in " +
-                "double precision (up to " + shortNumber(kLargestCoordinate) + "); scale the mesh down");
+    throw Error(name + ": coordinates as large as " + shortNumber(largest) + " are beyond what can be " + task +
+                " in double precision (up to " + shortNumber(kLargestCoordinate) + "); scale the mesh down");
   const double diagonal = boundingBoxDiagonal(input);
   if (diagonal < kSmallestDiagonal)
-    throw Error(name + ": too small to remesh in double precision: its bounding box's diagonal is " +
+    throw Error(name + ": too small to be " + task + " in double precision: its bounding box's diagonal is " +
                 shortNumber(diagonal) + " (the least is " + shortNumber(kSmallestDiagonal) + "); scale it up");
   if (largest > kFarthestPerSize * diagonal)
     throw Error(name + ": too far from the origin for its size: " + shortNumber(largest / diagonal) +
                 " times its diagonal away (at most " + shortNumber(kFarthestPerSize) +
-                "), double precision leaves too few digits for its shape or the result's; move it nearer");
+                "), double precision leaves too few digits for its shape; move it nearer");
+}
+
+void requireRemeshableSize(const Mesh& input, const Topology& topology, int vertices, const std::string& name) {
+  requireExactPredicatesRange(input, name, "remeshed");
+  const double diagonal = boundingBoxDiagonal(input);
   const double area = surfaceArea(input);
   if (area < kThinnestArea * diagonal * diagonal)
     throw Error(name + ": too thin to remesh: its area is " + shortNumber(area / (diagonal * diagonal)) +

@@ -306,6 +306,9 @@ class RemeshSession {
 // shape to rounding (a unit grid 10^15 from the origin came out with 0-degree angles; 10^12
 // was fine). Throws Error naming `name`, the measure and its limit, for a mesh outside them.
 constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthestPerSize = 1e12;
+// The first three of those, for any work of CGAL's on the mesh (`task`: "remeshed", "measured"):
+// the distance to a mesh of coordinates 1e149 raised a floating-point trap in GMP.
+void requireExactPredicatesRange(const Mesh& mesh, const std::string& name, const std::string& task);
 // Of the diagonal squared: a ribbon 1000 to 1 has 10^-3. Under 10^-6 the border check below
 // could only be met by asking for hundreds of thousands of vertices (a rectangle 1 by 10^-7
 // asked for 954,894, then ran out of memory).

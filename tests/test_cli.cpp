@@ -45,6 +45,19 @@ const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 }  // namespace
 
+// A mesh the loader reads (coordinates up to 1e150) but CGAL's distance cannot measure: refused
+// in one line naming it (its distance to itself raised a floating-point trap in GMP, exit 136).
+TEST(Cli, ADistanceBeyondDoublePrecisionIsRefused) {
+  const std::string path = test::tempPath("huge.off");
+  test::writeText(path, "OFF\n4 2 0\n0 0 0\n1e149 0 0\n0 1e149 0\n1e149 1e149 1e148\n3 0 1 2\n3 1 3 2\n");
+  ASSERT_EQ(runCli("metrics " + path).code, 0);  // its angles are measured
+  const CliRun r = runCli("metrics " + path + " --reference " + path);
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(path + ": coordinates as large as 1e+149 are beyond what can be measured"), std::string::npos)
+      << r.err;
+}
+
 // CGAL's mannequin is a nearly closed disk: remeshed both slit open and whole, and the report
 // says which it kept; --no-slit keeps it whole without trying, and the settings line says so.
 TEST(Cli, NoSlitKeepsANearlyClosedDiskWhole) {

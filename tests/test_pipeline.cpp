@@ -506,7 +506,7 @@ TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
     return std::string();
   };
   EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return 1e80 * p; })).rfind("m.off: coordinates as large as 1e+80", 0), 0u);
-  EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return 1e-40 * p; })).rfind("m.off: too small to remesh", 0), 0u);
+  EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return 1e-40 * p; })).rfind("m.off: too small to be remeshed", 0), 0u);
   const std::string far = why(transformed([](const Vec3& p) -> Vec3 { return p + Vec3(1e15, 0, 0); }));
   EXPECT_EQ(far.rfind("m.off: too far from the origin", 0), 0u) << far;
   EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-9 * p.y(), p.z()); })).rfind("m.off: too thin to remesh", 0), 0u);
