@@ -73,8 +73,10 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
 }
 
 // The recording, the output and the input are three files: --record onto the input or the
-// output replaced it with a recording, silently.
+// output replaced it with a recording, silently, and -o onto the input replaced it with the
+// result (as --record onto it is refused, so is that: the input is the user's to keep).
 void refuseSameFile(const RemeshArgs& a) {
+  if (sameFile(a.output, a.input)) throw Error(a.output + ": --output would replace the input mesh; give it another name");
   if (sameFile(a.record, a.input)) throw Error(a.record + ": --record would replace the input mesh; give it another name");
   if (sameFile(a.record, a.output)) throw Error(a.record + ": --record and --output name the same file; give them two");
 }
@@ -117,8 +119,10 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   refuseSameFile(a);
   const Mesh input = load(a.input, a.repair);
   const RemeshResult result = remesh(input, options, a.input);
-  if (!a.output.empty()) writeMesh(result.output, a.output);
+  // The recording first: the larger, the likelier not to fit. Where it cannot be written the
+  // run fails before the output is touched (it replaced the output, then failed).
   if (!a.record.empty()) saveRecording(result.recording, a.record);
+  if (!a.output.empty()) writeMesh(result.output, a.output);
   if (a.json)
     std::cout << printable(toJson(result, options)) << "\n";
   else
@@ -460,6 +464,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (simplifyCmd->parsed()) {
+      if (sameFile(simplifyOut, simplifyIn))
+        throw Error(simplifyOut + ": --output would replace the input mesh; give it another name");
       requireMeshWritable(simplifyOut);
       const Mesh input = load(simplifyIn, simplifyRepair);
       const SimplifyResult s = simplify(input, simplifyTarget, simplifyIn);

@@ -317,12 +317,24 @@ TEST(Cli, ARecordingRefusesRemeshingOptions) {
 }
 
 // --record onto the input or the output replaced it with a recording (exit 0), as did bench's
-// --csv onto an input; a folder given as a recording was an "internal error" (exit 2).
+// --csv onto an input, and remesh's and simplify's -o onto the input (exit 0); a folder given
+// as a recording was an "internal error" (exit 2); a recording that could not be written failed
+// the run after the output was replaced.
 TEST(Cli, ARecordingNeitherReplacesTheInputNorTheOutputNorReadsAFolder) {
   const std::string mesh = test::tempPath("keep_me.off"), out = test::tempPath("keep_out.off");
   test::writeText(mesh, test::readText(test::assetPath("jittered_grid.off")));
   test::writeText(out, kTriangle);
-  CliRun r = runCli("remesh " + mesh + " --max-iterations 2 --record " + mesh);
+  CliRun r = runCli("remesh " + mesh + " --max-iterations 2 -o " + mesh);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + mesh + ": --output would replace the input mesh; give it another name\n");
+  r = runCli("simplify " + mesh + " --ratio 0.5 -o " + mesh);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + mesh + ": --output would replace the input mesh; give it another name\n");
+  r = runCli("remesh " + mesh + " --max-iterations 2 --no-fidelity -o " + out + " --record /dev/full");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("/dev/full: cannot write"), std::string::npos) << r.err;
+  EXPECT_EQ(test::readText(out), kTriangle);
+  r = runCli("remesh " + mesh + " --max-iterations 2 --record " + mesh);
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.err, "lloydscope: " + mesh + ": --record would replace the input mesh; give it another name\n");
   r = runCli("remesh " + mesh + " --max-iterations 2 -o " + out + " --record " + out);
