@@ -156,14 +156,19 @@ CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) 
   const bool bounded = high < std::numeric_limits<int>::max();
   const std::string range = bounded ? "from " + std::to_string(low) + " to " + std::to_string(high)
                                     : ">= " + std::to_string(low);
+  // An unbounded count still ends where an int does: "expected a whole number >= 1, not
+  // '99999999999'" read as if the number were too small.
+  const std::string tooLarge = "from " + std::to_string(low) + " to " + std::to_string(high);
   return CLI::Validator(
       [=](std::string& text) -> std::string {
         // Decimal digits only: CLI11 reads "0x20" as 32 and "1e3" not at all.
         const bool decimal = !text.empty() && text.find_first_not_of("0123456789", text[0] == '-') == std::string::npos &&
                              text != "-";
         long long value = 0;
-        if (decimal && CLI::detail::lexical_cast(text, value) && value >= low && value <= high) return "";
-        return "expected a whole number " + range + ", not '" + text + "'";
+        const bool read = decimal && CLI::detail::lexical_cast(text, value);
+        if (read && value >= low && value <= high) return "";
+        const bool large = decimal && text[0] != '-' && (!read || value > high);
+        return "expected a whole number " + (large ? tooLarge : range) + ", not '" + text + "'";
       },
       bounded ? std::to_string(low) + ".." + std::to_string(high) : ">= " + std::to_string(low));
 }

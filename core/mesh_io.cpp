@@ -663,6 +663,9 @@ void checkHasFaces(long long faceCount, const std::string& name) {
 // length (a length to the fourth) underflows: at 1e-80 across a grid's smallest angle read 48.5
 // degrees for 46.6, at 1e-100 "face 0 has zero area".
 constexpr double kLargestMeasurableCoordinate = 1e150, kSmallestMeasurableSize = 1e-75;
+// A shape this many times its size from the origin keeps two digits of its own at most: a unit
+// grid 1e16 away read "face 0 has zero area".
+constexpr double kFarthestMeasurable = 1e14;
 
 void checkMeasurable(const std::vector<Vec3>& points, const std::string& name, int base) {
   for (size_t i = 0; i < points.size(); ++i) {
@@ -675,10 +678,19 @@ void checkMeasurable(const std::vector<Vec3>& points, const std::string& name, i
     }
   }
   const auto [lo, hi] = boundingBox(points);
-  if (const double size = (hi - lo).norm(); size > 0 && size < kSmallestMeasurableSize) {
+  // stableNorm: the plain norm's square underflowed to 0 at 1e-170 across ("zero area").
+  const double size = (hi - lo).stableNorm();
+  if (size > 0 && size < kSmallestMeasurableSize) {
     std::ostringstream text;
     text << "the mesh is " << size << " across (its bounding box's diagonal), too small to measure in double "
          << "precision (lengths to the fourth underflow under " << kSmallestMeasurableSize << "); scale it up";
+    fail(name, text.str());
+  }
+  const double farthest = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  if (size > 0 && farthest > kFarthestMeasurable * size) {
+    std::ostringstream text;
+    text << "the mesh lies " << farthest / size << " times its size (its bounding box's diagonal) from the origin: "
+         << "double precision keeps too few digits of its shape; move it nearer";
     fail(name, text.str());
   }
 }

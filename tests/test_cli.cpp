@@ -626,7 +626,7 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       // A line break in a file name or a value stays on the error's one line.
       {"metrics 'bad\nname.off'", "bad\\nname.off: no such file"},
       {"remesh " + mesh + " --solver 'x\ny'", "unknown solver 'x\\ny'"},
-      {"inspect " + mesh + " --select-cell 99999999999 --screenshot x.png", "--select-cell: expected a whole number >= 0, not '99999999999'"},
+      {"inspect " + mesh + " --select-cell 99999999999 --screenshot x.png", "--select-cell: expected a whole number from 0 to 2147483647, not '99999999999'"},
       {"inspect " + mesh + " --select-triangle -1 --screenshot x.png", "--select-triangle: expected a whole number >= 0, not '-1'"},
       // bench's sizes as --sites (--lloyd-step 214748365 wrapped round in the border check and
       // was told it was too few; --sizes 50000000 and --frames 2000000000 ran on for hours).

@@ -490,6 +490,15 @@ TEST(MeshIoErrors, NonFiniteCoordinate) {
                   "the mesh is 1.41421e-100 across (its bounding box's diagonal), too small to measure in double "
                   "precision (lengths to the fourth underflow under 1e-75); scale it up");
   EXPECT_EQ(readMesh(writeFile("small.off", "OFF\n3 1 0\n0 0 0\n1e-70 0 0\n0 1e-70 0\n3 0 1 2\n")).mesh.faceCount(), 1);
+  // So small that the diagonal's square underflows itself: "face 0 has zero area" before.
+  expectFileError("tinier.off", "OFF\n3 1 0\n0 0 0\n1e-170 0 0\n0 1e-170 0\n3 0 1 2\n",
+                  "the mesh is 1.41421e-170 across (its bounding box's diagonal), too small to measure");
+  // A shape far from the origin for its size keeps too few digits ("face 0 has zero area" at
+  // 1e16 before); one nearer is read.
+  expectFileError("far.off", "OFF\n3 1 0\n1e16 0 0\n1.0000000000000004e16 0 0\n1e16 4 0\n3 0 1 2\n",
+                  "times its size (its bounding box's diagonal) from the origin: double precision keeps too few "
+                  "digits of its shape; move it nearer");
+  EXPECT_EQ(readMesh(writeFile("near.off", "OFF\n3 1 0\n1e12 0 0\n1.000000000001e12 0 0\n1e12 1 0\n3 0 1 2\n")).mesh.faceCount(), 1);
 }
 
 TEST(MeshIoErrors, FaceIndexOutOfRange) {
