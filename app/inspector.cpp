@@ -471,7 +471,10 @@ void Inspector::setCamera(const std::string& text) {
                   &z, &rest) != 6 ||
       !std::isfinite(c.yaw) || !std::isfinite(c.pitch) || !(c.distance > 0) ||
       !std::isfinite(c.distance) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-    throw Error("camera \"" + text + "\": expected \"yaw pitch distance x y z\" (six numbers, distance > 0)");
+    // Finite in single precision: a distance of 1e308 is read as infinite, and was refused as if
+    // it were not above 0.
+    throw Error("camera \"" + text + "\": expected \"yaw pitch distance x y z\" (six finite numbers, the angles "
+                "and the distance in single precision, distance > 0)");
   c.pitch = std::clamp(c.pitch, -1.5f, 1.5f);
   c.target = Vec3(x, y, z);
   camera_ = c;

@@ -269,7 +269,9 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
            {"--select-triangle 5000", "sphere_cap.off: triangle 5000 does not exist"},
            {"--final --select-triangle 5000", "in the final result)"},
            {"--camera 'one two'", "camera"},
-           {"--camera '0 0 -1 0 0 0'", "camera"}}) {
+           {"--camera '0 0 -1 0 0 0'", "camera"},
+           // read as infinite: it was refused as if not above 0
+           {"--camera '0 0 1e308 0 0 0'", "six finite numbers, the angles and the distance in single precision"}}) {
     EXPECT_EQ(run("inspect " + mesh + " --screenshot " + out + " " + args + " 2> " + err), 1) << args;
     const std::string message = test::readText(err);
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
