@@ -423,9 +423,9 @@ void Inspector::pinCell(int cell) {
 void Inspector::pinTriangle(int triangle) {
   const int count = static_cast<int>(resultIn3D().triangles.size());
   if (triangle < 0 || triangle >= count)
-    throw Error("triangle " + std::to_string(triangle) + " does not exist (" + std::to_string(count) +
-                (finalShown() ? " in the final result" : " in the result at iteration " + std::to_string(iteration_)) +
-                ")");
+    throw Error("triangle " + std::to_string(triangle) + " does not exist (" +
+                (finalShown() ? "the final result" : "the result at iteration " + std::to_string(iteration_)) +
+                " has " + std::to_string(count) + ", numbered from 0)");
   if (finalShown()) selection_.pinFinalTriangle(triangle);
   else selection_.pinTriangle(triangle);
 }
@@ -530,6 +530,9 @@ void OpeningView::applyTo(Inspector& inspector) const {
     if (iteration >= 0) inspector.setIteration(iteration);
     else if (stage) inspector.setIteration(stageIteration(*stage, count));
     inspector.showFinal(final);
+    // Before the pins: the stage decides which result the 3D view shows, and so which one a
+    // triangle is pinned in (--stage result --select-worst pinned the iteration's, unseen).
+    inspector.showStage(stage);
     if (fill) inspector.setFill(*fill);
     for (int cell : cells) inspector.pinCell(cell);
     for (int triangle : triangles) inspector.pinTriangle(triangle);
@@ -539,7 +542,6 @@ void OpeningView::applyTo(Inspector& inspector) const {
   }
   if (!camera.empty()) inspector.setCamera(camera);
   inspector.setPresentation(presentation);
-  inspector.showStage(stage);
   if (compareSolvers) inspector.compareSolvers();
   inspector.setRepairOnOpen(repair);
 }

@@ -173,6 +173,21 @@ TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {
   EXPECT_GE(domain - bar, 70);  // the bar, 12 pixels, and a label "9.68e-03" beside it
 }
 
+// The lesson's Result stage shows the final result: its worst triangle is the one pinned, and
+// ringed in 3D (it pinned the iteration's, drawn in 2D only: no teal in the 3D pane).
+TEST(Inspector, TheResultStagePinsTheFinalResultsWorstTriangle) {
+  const std::string png = test::tempPath("stage_worst.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --stage result --select-worst --pane 3d", png), 0);
+  const Picture picture = readPng(png);
+  int teal = 0;  // Selection::triangleColor: (0, 140, 115)
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
+    }
+  EXPECT_GE(teal, 100);
+}
+
 // A pinned cell lies on the input surface: it is drawn over the final result too (it was not).
 TEST(Inspector, APinnedCellShowsOverTheFinalResult) {
   const std::string png = test::tempPath("final_pin.png");
@@ -267,7 +282,8 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
            {"--select-triangle -1", "--select-triangle: expected a whole number >= 0, not '-1'"},
            {"--iteration 5000", "sphere_cap.off: iteration 5000 does not exist"},  // it showed the last one, as if asked
            {"--select-triangle 5000", "sphere_cap.off: triangle 5000 does not exist"},
-           {"--final --select-triangle 5000", "in the final result)"},
+           {"--final --select-triangle 5000", "(the final result has 934, numbered from 0)"},
+           {"--select-triangle 5000", "(the result at iteration 112 has 934, numbered from 0)"},
            {"--camera 'one two'", "camera"},
            {"--camera '0 0 -1 0 0 0'", "camera"},
            // read as infinite: it was refused as if not above 0
