@@ -169,12 +169,13 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                         "gradient is 2 Mᵢ (sᵢ − cᵢ) (arrows: sᵢ → cᵢ).";
       // |c − s|, not "move": only Lloyd's step moves a site by it (the fill "moved since k-1"
       // showed larger moves than this "largest move" under L-BFGS).
-      c.numbers = format("Iteration %d: E = %.4e, largest |c − s| %.2e, %.1f%% of the sites still "
-                         "moving (|c − s| over the threshold)",
+      // Its spaces do not break (U+00A0): a wrapped caption ended a line with "|c".
+      c.numbers = format("Iteration %d: E = %.4e, largest |c\u00a0−\u00a0s| %.2e, %.1f%% of the sites still "
+                         "moving (|c\u00a0−\u00a0s| over the threshold)",
                          f.iteration, f.energy, f.maxToCentroid, f.percentMoving);
       if (f.arrowScale > 1) c.numbers += format("; arrows drawn %g times as long", f.arrowScale);
       if (cell)
-        c.numbers += format("; cell %d%s: |c − s| = %.2e", cell->index,
+        c.numbers += format("; cell %d%s: |c\u00a0−\u00a0s| = %.2e", cell->index,
                             cell->fixed ? " (a fixed border site: it does not move)" : "", cell->toCentroid);
       break;
     case Stage::Lift:

@@ -245,7 +245,7 @@ TEST(Lesson, TheMoveCaptionSaysItsNumberIsTheDistanceToTheCentroid) {
   CaptionFacts facts;
   facts.maxToCentroid = 1.06e-3;
   const std::string numbers = caption(Stage::Move, facts).numbers;
-  EXPECT_NE(numbers.find("largest |c − s| 1.06e-03"), std::string::npos) << numbers;
+  EXPECT_NE(numbers.find("largest |c\u00a0−\u00a0s| 1.06e-03"), std::string::npos) << numbers;
   EXPECT_EQ(numbers.find("move "), std::string::npos) << numbers;
 }
 

@@ -160,6 +160,21 @@ TEST(Report, TickLabelsOfOneAxisHaveOneForm) {
 }
 
 // The inspector's notes broke "Hausdorff 1.906%" after "1.": lines break at spaces only.
+// "cell 100: |c" ended one line of a caption and "− s| = 3.90e-03" began the next.
+TEST(Report, ACaptionWrapsNotInsideItsFormulas) {
+  CaptionFacts facts;
+  CellDetails cell;
+  cell.index = 100;
+  facts.cell = cell;
+  const std::string numbers = caption(Stage::Move, facts).numbers;
+  const auto length = [](const std::string& s) { return static_cast<float>(s.size()); };
+  for (float width = 20; width <= 120; width += 1)
+    for (const std::string& line : wrapAtSpaces(numbers, width, length)) {
+      EXPECT_NE(line.substr(line.size() - std::min<size_t>(2, line.size())), "|c") << width << ": " << line;
+      EXPECT_NE(line.rfind("−", 0), 0u) << width << ": " << line;
+    }
+}
+
 TEST(Report, TextWrapsAtSpacesNotInsideNumbers) {
   const auto characters = [](const std::string& s) { return static_cast<float>(s.size()); };
   EXPECT_EQ(wrapAtSpaces("the closer kept: Hausdorff 1.906% slit, 2.300% whole", 28, characters),
