@@ -419,7 +419,21 @@ ViewSwitches viewSwitches(const Layers& shown, bool finalShown) {
 }
 
 std::string crowdedSitesHint(float spacing) {
-  return spacing < 6.0f ? format("sites %.0f px apart: the mouse wheel zooms in", spacing) : "";
+  if (!(spacing > 0 && spacing < 6.0f)) return "";
+  // Under a pixel with its tenths: the camel head's middle read "as close as 0 px".
+  return format(spacing < 1 ? "sites as close as %.1f px: the mouse wheel zooms in"
+                            : "sites as close as %.0f px: the mouse wheel zooms in",
+                spacing);
+}
+
+double closeSiteSpacing(const std::vector<BoundedCell>& cells) {
+  std::vector<double> areas;
+  for (const BoundedCell& c : cells)
+    if (c.area > 0) areas.push_back(c.area);
+  if (areas.empty()) return 0;
+  const auto twentieth = areas.begin() + areas.size() / 20;
+  std::nth_element(areas.begin(), twentieth, areas.end());
+  return std::sqrt(2 * *twentieth / std::sqrt(3.0));  // a regular hexagon's: area √3/2 d²
 }
 
 std::string distanceText(const Fidelity& f) {

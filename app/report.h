@@ -133,8 +133,11 @@ struct ViewSwitches {
 };
 ViewSwitches viewSwitches(const Layers& shown, bool finalShown);
 // Where the sites are under 6 pixels apart on screen, a blob of dots and rings (1000 sites in
-// presentation mode at 960x600): "sites 3 px apart: the mouse wheel zooms in"; else "".
+// presentation mode at 960x600): "sites as close as 3 px: the mouse wheel zooms in"; else "".
 std::string crowdedSitesHint(float spacing);
+// How far apart the sites are where they are closest (the cells of the smallest twentieth,
+// as hexagons), in the domain's units; 0 without cells.
+double closeSiteSpacing(const std::vector<BoundedCell>& cells);
 
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,

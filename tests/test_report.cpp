@@ -279,8 +279,18 @@ TEST(Report, TheViewSwitchesSayWhatTheViewsShow) {
 
 // 1000 sites in presentation mode at 960x600 were an orange blob 110 pixels across.
 TEST(Report, CrowdedSitesAreSaidWithHowToSeeThem) {
-  EXPECT_EQ(crowdedSitesHint(3.2f), "sites 3 px apart: the mouse wheel zooms in");
+  EXPECT_EQ(crowdedSitesHint(3.2f), "sites as close as 3 px: the mouse wheel zooms in");
   EXPECT_EQ(crowdedSitesHint(9.0f), "");
+  EXPECT_EQ(crowdedSitesHint(0.0f), "");  // no cells to measure
+  EXPECT_EQ(crowdedSitesHint(0.42f), "sites as close as 0.4 px: the mouse wheel zooms in");
+  // Where they are closest: 100 cells of a unit hexagon's area around sites 1 apart, and 5 of a
+  // hundredth (0.1 apart): the 20th smallest of 105 is one of the large. 10 small: close.
+  std::vector<BoundedCell> cells(105);
+  for (size_t i = 0; i < cells.size(); ++i) cells[i].area = (i < 5 ? 0.01 : 1.0) * std::sqrt(3.0) / 2;
+  EXPECT_NEAR(closeSiteSpacing(cells), 1.0, 1e-12);
+  for (size_t i = 0; i < 10; ++i) cells[i].area = 0.01 * std::sqrt(3.0) / 2;
+  EXPECT_NEAR(closeSiteSpacing(cells), 0.1, 1e-12);
+  EXPECT_EQ(closeSiteSpacing({}), 0.0);
 }
 
 // The bumpy disk without the first pass: iteration 0 had 999 vertices for 1000 sites, and
