@@ -1292,6 +1292,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   facts.method = toString(replay_->method());
   facts.input = input_ && (!shown.mapped3D || mapIsOfTheInput());
   facts.charts = inputCharts_;
+  facts.simplified = options_.simplifyTo > 0 || result_.coarseInput > 0;
   const std::string label = viewLabel3D(facts);
   // Wrapped in the pane (the final result's ran past its edge at 960 pixels), the colour bar
   // under it.

@@ -405,7 +405,10 @@ std::string viewLabel3D(const ViewLabel3D& shown) {
   if (!shown.input) return "the mesh that was parameterized";
   // A surface made in charts: the panes follow its largest (it was labelled "input mesh" beside
   // a caption quoting the whole input's 2775 vertices).
-  if (shown.charts > 0) return "the input's largest chart (of " + std::to_string(shown.charts) + ")";
+  // Of the input simplified, where it was: its colours are not the input's the caption quotes.
+  if (shown.charts > 0)
+    return std::string(shown.simplified ? "the simplified input's" : "the input's") + " largest chart (of\u00a0" +
+           std::to_string(shown.charts) + ")";
   return "input mesh";
 }
 

@@ -122,6 +122,7 @@ struct ViewLabel3D {
   std::string method;
   bool input = false;          // else the input as the user opened it, or the mesh that was mapped
   int charts = 0;              // > 0: the input stands for its largest chart of so many
+  bool simplified = false;     // charts of the input simplified first (--simplify)
 };
 std::string viewLabel3D(const ViewLabel3D& shown);
 

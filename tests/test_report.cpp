@@ -248,7 +248,9 @@ TEST(Report, TheViewLabelSaysWhatThe3DViewShows) {
   shown.input = true;
   EXPECT_EQ(viewLabel3D(shown), "input mesh");
   shown.charts = 19;  // the elephant, flattened in charts: the panes follow the largest
-  EXPECT_EQ(viewLabel3D(shown), "the input's largest chart (of 19)");
+  EXPECT_EQ(viewLabel3D(shown), "the input's largest chart (of\u00a019)");
+  shown.simplified = true;  // --simplify 1000: its angles are not the input's the caption quotes
+  EXPECT_EQ(viewLabel3D(shown), "the simplified input's largest chart (of\u00a019)");
   shown.input = false;
   EXPECT_EQ(viewLabel3D(shown), "the mesh that was parameterized");
   shown.result = true;
