@@ -1265,7 +1265,9 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
                     p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
     return true;
   };
-  drawSeams3D(dl, toScreen, cameraMatrices(extent).second);
+  const glm::vec3 eyeAt = cameraMatrices(extent).second;
+  const Vec3 eye(eyeAt.x, eyeAt.y, eyeAt.z);
+  drawSeams3D(dl, toScreen, eyeAt);
   const bool final = finalShown();
   if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip
@@ -1279,9 +1281,9 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   // Pinned cells lie on the input surface, under the final result too (they were not drawn
   // over it); pinned triangles are the iteration's result's or the final result's, each drawn
   // over its own mesh.
-  selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen,
+  selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen, eye,
                     shown.cells2D, !shown.input3D && !final);
-  if (final) selection_.drawFinal3D(dl, result_.output, toScreen);
+  if (final) selection_.drawFinal3D(dl, result_.output, toScreen, eye);
   dl->PopClipRect();
 
   ViewLabel3D facts;

@@ -28,25 +28,45 @@ void pin(std::vector<int>& pins, int index) {
 
 // A pinned triangle, filled and outlined, and ringed: a sliver of the result is a few pixels,
 // and the worst triangle pinned could not be found in either view.
-void drawPinnedTriangle(ImDrawList* dl, const ImVec2 (&corners)[3], float fillAlpha) {
-  dl->AddTriangleFilled(corners[0], corners[1], corners[2], Selection::triangleColor(fillAlpha));
-  dl->AddPolyline(corners, 3, Selection::triangleColor(), ImDrawFlags_Closed, 2.5f);
+// `behind`: the surface hides it; its ring alone is drawn, dashed, where it would be.
+void drawPinnedTriangle(ImDrawList* dl, const ImVec2 (&corners)[3], float fillAlpha, bool behind = false) {
   const ImVec2 centre((corners[0].x + corners[1].x + corners[2].x) / 3,
                       (corners[0].y + corners[1].y + corners[2].y) / 3);
   float radius = 14.0f;
   for (const ImVec2& c : corners) radius = std::max(radius, std::hypot(c.x - centre.x, c.y - centre.y) + 6.0f);
+  if (behind) {
+    constexpr int kDashes = 12;
+    for (int k = 0; k < kDashes; ++k) {
+      const float pi = static_cast<float>(M_PI), a0 = 2 * pi * k / kDashes, a1 = a0 + pi / kDashes;
+      dl->PathArcTo(centre, radius, a0, a1, 6);
+      dl->PathStroke(Selection::triangleColor(), 0, 2.5f);
+    }
+    return;
+  }
+  dl->AddTriangleFilled(corners[0], corners[1], corners[2], Selection::triangleColor(fillAlpha));
+  dl->AddPolyline(corners, 3, Selection::triangleColor(), ImDrawFlags_Closed, 2.5f);
   dl->AddCircle(centre, radius, Selection::triangleColor(), 32, 2.5f);
 }
 
+// Whether another triangle of `mesh` lies between the eye and `triangle`'s centre.
+bool hiddenFrom(const Mesh& mesh, int triangle, const Vec3& eye) {
+  const Triangle& t = mesh.triangles[triangle];
+  const Vec3 centre = (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]]) / 3.0;
+  const int first = triangleOnRay(mesh, eye, centre - eye);
+  return first >= 0 && first != triangle;
+}
+
+// The pins' marks are drawn over the mesh, with no depth test: one behind the surface (the
+// mushroom's worst triangle, under its cap) is a dashed ring, not filled as if on top.
 void drawPinnedTriangles3D(ImDrawList* dl, const Mesh& mesh, const std::vector<int>& pins,
-                           const ScreenOf3D& screen) {
+                           const ScreenOf3D& screen, const Vec3& eye) {
   for (int triangle : pins) {
     if (triangle >= static_cast<int>(mesh.triangles.size())) continue;
     const Triangle& t = mesh.triangles[triangle];
     ImVec2 corners[3];
     bool visible = true;
     for (int k = 0; k < 3; ++k) visible = visible && screen(mesh.points[t[k]], corners[k]);
-    if (visible) drawPinnedTriangle(dl, corners, 0.45f);
+    if (visible) drawPinnedTriangle(dl, corners, 0.45f, hiddenFrom(mesh, triangle, eye));
   }
 }
 
@@ -103,8 +123,8 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
 }
 
 void Selection::draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,
-                       const IterationView& view, const ScreenOf3D& screen, bool cellsShown,
-                       bool resultShown) const {
+                       const IterationView& view, const ScreenOf3D& screen, const Vec3& eye,
+                       bool cellsShown, bool resultShown) const {
   ImVec2 a, b;
   for (int cell : cellsShown ? cells_ : std::vector<int>{}) {
     if (cell >= static_cast<int>(view.cells.size())) continue;
@@ -113,11 +133,11 @@ void Selection::draw3D(ImDrawList* dl, const Recording& recording, const Domain&
         dl->AddLine(a, b, cellColor(), 2.5f);
     if (screen(view.liftedSites[cell], a)) dl->AddCircleFilled(a, 4.0f, cellColor());
   }
-  if (resultShown) drawPinnedTriangles3D(dl, view.output, triangles_, screen);
+  if (resultShown) drawPinnedTriangles3D(dl, view.output, triangles_, screen, eye);
 }
 
-void Selection::drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen) const {
-  drawPinnedTriangles3D(dl, final, finalTriangles_, screen);
+void Selection::drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen, const Vec3& eye) const {
+  drawPinnedTriangles3D(dl, final, finalTriangles_, screen, eye);
 }
 
 void Selection::detailsPanel(const Recording& recording, const Domain& domain,

@@ -41,12 +41,13 @@ class Selection {
   // triangle's ring floated on the empty domain).
   void draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
               const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown) const;
-  // The cells' outlines and sites lifted to the surface, the triangles' outlines.
+  // The cells' outlines and sites lifted to the surface, the triangles' outlines (faint where
+  // the surface hides them from `eye`, the camera).
   void draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,
-              const IterationView& view, const ScreenOf3D& screen, bool cellsShown,
+              const IterationView& view, const ScreenOf3D& screen, const Vec3& eye, bool cellsShown,
               bool resultShown) const;
   // The final result's pinned triangles, when it is the mesh shown.
-  void drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen) const;
+  void drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen, const Vec3& eye) const;
   // The numbers of each pinned element at this iteration, with the formulas they enter, then
   // those of the final result's pinned triangles.
   void detailsPanel(const Recording& recording, const Domain& domain, const IterationView& view,

@@ -188,6 +188,31 @@ TEST(Inspector, TheResultStagePinsTheFinalResultsWorstTriangle) {
   EXPECT_GE(teal, 100);
 }
 
+// A pinned triangle behind the surface is a dashed ring where it is, not filled and ringed as
+// if on top (the mushroom's worst, under its cap, looked as if it were on the cap). The cap's
+// worst triangle from two sides: in front, then behind.
+TEST(Inspector, APinnedTriangleBehindTheSurfaceIsADashedRing) {
+  auto tealSeenFrom = [](const std::string& yaw) {
+    const std::string png = test::tempPath("behind_" + yaw + ".png");
+    EXPECT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --final --select-worst --pane 3d --camera '" + yaw +
+                              " 0.5 2.5 0 0 0.6'",
+                          png),
+              0);
+    const Picture picture = readPng(png);
+    int teal = 0;  // Selection::triangleColor: (0, 140, 115)
+    for (int y = 0; y < picture.height; ++y)
+      for (int x = 0; x < picture.width; ++x) {
+        const unsigned char* c = picture.at(x, y);
+        teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
+      }
+    return teal;
+  };
+  const int inFront = tealSeenFrom("3.74"), behind = tealSeenFrom("0.6");
+  EXPECT_GE(inFront, 300);
+  EXPECT_GE(behind, 30);  // the dashes
+  EXPECT_LT(behind, inFront / 2);
+}
+
 // A pinned cell lies on the input surface: it is drawn over the final result too (it was not).
 TEST(Inspector, APinnedCellShowsOverTheFinalResult) {
   const std::string png = test::tempPath("final_pin.png");
