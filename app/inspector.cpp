@@ -1410,7 +1410,8 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   // Sites a few pixels apart are a blob of dots and rings (1000 sites in presentation mode at
   // 960x600): the pane says how to see them. Where they are closest, not on average: a map
   // squeezes some parts of the surface (the camel head's middle, 2-5 px where the mean was 9).
-  if (const std::string text = crowdedSitesHint(closeSiteSpacing(replay_->view(iteration_).cells) * scale);
+  if (const std::string text = crowdedSitesHint(
+          closeSiteSpacing(replay_->view(iteration_).cells, replay_->recording().fixedSites.size()) * scale);
       shown.sites2D && !text.empty()) {
     // In the room right of the domain where there is some (a wide, low pane), over its corner
     // where there is none.

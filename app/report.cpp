@@ -429,10 +429,10 @@ std::string crowdedSitesHint(float spacing) {
                 spacing);
 }
 
-double closeSiteSpacing(const std::vector<BoundedCell>& cells) {
+double closeSiteSpacing(const std::vector<BoundedCell>& cells, size_t first) {
   std::vector<double> areas;
-  for (const BoundedCell& c : cells)
-    if (c.area > 0) areas.push_back(c.area);
+  for (size_t i = first; i < cells.size(); ++i)
+    if (cells[i].area > 0) areas.push_back(cells[i].area);
   if (areas.empty()) return 0;
   const auto twentieth = areas.begin() + areas.size() / 20;
   std::nth_element(areas.begin(), twentieth, areas.end());

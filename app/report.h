@@ -137,8 +137,10 @@ ViewSwitches viewSwitches(const Layers& shown, bool finalShown);
 // presentation mode at 960x600): "sites as close as 3 px: the mouse wheel zooms in"; else "".
 std::string crowdedSitesHint(float spacing);
 // How far apart the sites are where they are closest (the cells of the smallest twentieth,
-// as hexagons), in the domain's units; 0 without cells.
-double closeSiteSpacing(const std::vector<BoundedCell>& cells);
+// as hexagons), in the domain's units; 0 without cells. Of cells[first..]: the fixed border
+// sites' cells, first, are slivers the border clips ("as close as 2 px" on the elephant, whose
+// sites were 20 px apart).
+double closeSiteSpacing(const std::vector<BoundedCell>& cells, size_t first);
 
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
