@@ -34,6 +34,17 @@ Picture readPng(const std::string& path) {
   return p;
 }
 
+// Pixels of a pinned triangle's teal (Selection::triangleColor: 0, 140, 115).
+int tealPixels(const Picture& picture) {
+  int teal = 0;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
+    }
+  return teal;
+}
+
 int run(const std::string& args) {
   const int status = std::system((std::string(LLOYDSCOPE_CLI) + " " + args).c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -81,14 +92,7 @@ TEST(Inspector, APinnedTriangleIsRingedInBothViews) {
   for (const char* pane : {"2d", "3d"}) {
     const std::string png = test::tempPath(std::string("worst_") + pane + ".png");
     ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --select-worst --pane " + pane, png), 0);
-    const Picture picture = readPng(png);
-    int teal = 0;  // Selection::triangleColor: (0, 140, 115)
-    for (int y = 0; y < picture.height; ++y)
-      for (int x = 0; x < picture.width; ++x) {
-        const unsigned char* c = picture.at(x, y);
-        teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
-      }
-    EXPECT_GE(teal, 180) << pane;
+    EXPECT_GE(tealPixels(readPng(png)), 180) << pane;
   }
 }
 
@@ -115,14 +119,7 @@ TEST(Inspector, TheWireframeFadesOnTinyTriangles) {
 TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
   const std::string png = test::tempPath("final_worst.png");
   ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --final --select-worst --pane 3d", png), 0);
-  const Picture picture = readPng(png);
-  int teal = 0;  // Selection::triangleColor: (0, 140, 115)
-  for (int y = 0; y < picture.height; ++y)
-    for (int x = 0; x < picture.width; ++x) {
-      const unsigned char* c = picture.at(x, y);
-      teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
-    }
-  EXPECT_GE(teal, 180);
+  EXPECT_GE(tealPixels(readPng(png)), 180);
 }
 
 // The lesson's Load stage shows no cells and no result: a pinned triangle's ring floated on the
@@ -178,14 +175,7 @@ TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {
 TEST(Inspector, TheResultStagePinsTheFinalResultsWorstTriangle) {
   const std::string png = test::tempPath("stage_worst.png");
   ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --stage result --select-worst --pane 3d", png), 0);
-  const Picture picture = readPng(png);
-  int teal = 0;  // Selection::triangleColor: (0, 140, 115)
-  for (int y = 0; y < picture.height; ++y)
-    for (int x = 0; x < picture.width; ++x) {
-      const unsigned char* c = picture.at(x, y);
-      teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
-    }
-  EXPECT_GE(teal, 100);
+  EXPECT_GE(tealPixels(readPng(png)), 100);
 }
 
 // A pinned triangle behind the surface is a dashed ring where it is, not filled and ringed as
@@ -198,14 +188,7 @@ TEST(Inspector, APinnedTriangleBehindTheSurfaceIsADashedRing) {
                               " 0.5 2.5 0 0 0.6'",
                           png),
               0);
-    const Picture picture = readPng(png);
-    int teal = 0;  // Selection::triangleColor: (0, 140, 115)
-    for (int y = 0; y < picture.height; ++y)
-      for (int x = 0; x < picture.width; ++x) {
-        const unsigned char* c = picture.at(x, y);
-        teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
-      }
-    return teal;
+    return tealPixels(readPng(png));
   };
   const int inFront = tealSeenFrom("3.74"), behind = tealSeenFrom("0.6");
   EXPECT_GE(inFront, 300);
