@@ -213,49 +213,45 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     table("cell");
     ImGui::PopID();
   }
-  for (int triangle : triangles_) {
-    const TriangleDetails d = describeTriangle(view, triangle);
-    if (d.index < 0) continue;
-    ImGui::PushID(-1 - triangle);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(triangleColor()), "Triangle %d", triangle);
+  // A pinned triangle's table: of an iteration's result (`mapped`: with its UV numbers and its
+  // corners' sites) or of the final result (3D only). True where its unpin was clicked.
+  auto triangleTable = [&](const TriangleDetails& d, const char* scope, const std::string& heading, bool mapped) {
+    ImGui::PushID(scope);
+    ImGui::PushID(d.index);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(triangleColor()), "%s", heading.c_str());
     ImGui::SameLine();
-    if (ImGui::SmallButton("unpin")) unpinTriangle = triangle;
+    const bool unpin = ImGui::SmallButton("unpin");
     row("angles, 3D", "%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]);
-    row("angles, UV", "%.1f %.1f %.1f", d.anglesUV[0], d.anglesUV[1], d.anglesUV[2]);
+    if (mapped) row("angles, UV", "%.1f %.1f %.1f", d.anglesUV[0], d.anglesUV[1], d.anglesUV[2]);
     row("minimum angle", "%.1f", d.minAngle);
     row("area, 3D", "%.4e", d.area3D);
-    row("area, UV", "%.4e", d.areaUV);
-    row("area share 3D / UV", "%.3f", d.areaDistortion);  // each area over its mesh's total
+    if (mapped) {
+      row("area, UV", "%.4e", d.areaUV);
+      row("area share 3D / UV", "%.3f", d.areaDistortion);  // each area over its mesh's total
+    }
     // Retriangulate: every corner is a site. Relocate: the inside vertices moved towards their
     // sites (short of them where they would fold), the border ones are theirs.
     for (int k = 0; k < 3; ++k) {
       const std::string label = "vertex " + std::to_string(d.corners[k]);
-      const std::string valence = ", valence " + valenceText(d, k);
-      if (d.sites[k] < 0) row(label, "not moved%s", valence.c_str());
-      else if (d.atSite[k]) row(label, "site %d%s", d.sites[k], valence.c_str());
-      else row(label, "site %d, short of it%s", d.sites[k], valence.c_str());
+      const std::string valence = "valence " + valenceText(d, k);
+      if (!mapped) row(label, "%s", valence.c_str());
+      else if (d.sites[k] < 0) row(label, "not moved, %s", valence.c_str());
+      else if (d.atSite[k]) row(label, "site %d, %s", d.sites[k], valence.c_str());
+      else row(label, "site %d, short of it, %s", d.sites[k], valence.c_str());
     }
-    table("triangle");
+    table(scope);
     ImGui::PopID();
-  }
+    ImGui::PopID();
+    return unpin;
+  };
+  for (int triangle : triangles_)
+    if (const TriangleDetails d = describeTriangle(view, triangle); d.index >= 0)
+      if (triangleTable(d, "triangle", "Triangle " + std::to_string(triangle), true)) unpinTriangle = triangle;
   int unpinFinal = -1;
-  for (int triangle : finalTriangles_) {
-    const TriangleDetails d = describeTriangle(final, triangle);
-    if (d.index < 0) continue;
-    ImGui::PushID("final");
-    ImGui::PushID(triangle);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(triangleColor()), "Final result, triangle %d", triangle);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("unpin")) unpinFinal = triangle;
-    row("angles, 3D", "%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]);
-    row("minimum angle", "%.1f", d.minAngle);
-    row("area, 3D", "%.4e", d.area3D);
-    for (int k = 0; k < 3; ++k)
-      row("vertex " + std::to_string(d.corners[k]), "valence %s", valenceText(d, k).c_str());
-    table("final triangle");
-    ImGui::PopID();
-    ImGui::PopID();
-  }
+  for (int triangle : finalTriangles_)
+    if (const TriangleDetails d = describeTriangle(final, triangle); d.index >= 0)
+      if (triangleTable(d, "final triangle", "Final result, triangle " + std::to_string(triangle), false))
+        unpinFinal = triangle;
   toggleCell(unpinCell);
   toggleTriangle(unpinTriangle);
   toggleFinalTriangle(unpinFinal);
