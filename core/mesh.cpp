@@ -41,15 +41,21 @@ void append(Mesh& to, const Mesh& part) {
   for (Triangle t : part.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
 }
 
-std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points) {
-  if (points.empty()) return {Vec3::Zero(), Vec3::Zero()};
-  Vec3 lo = points.front(), hi = lo;
-  for (const Vec3& p : points) {
+namespace {
+template <class Point>
+std::pair<Point, Point> boxOf(const std::vector<Point>& points) {
+  if (points.empty()) return {Point::Zero(), Point::Zero()};
+  Point lo = points.front(), hi = lo;
+  for (const Point& p : points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
   return {lo, hi};
 }
+}  // namespace
+
+std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points) { return boxOf(points); }
+std::pair<Vec2, Vec2> boundingBox(const std::vector<Vec2>& points) { return boxOf(points); }
 
 std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh) { return boundingBox(mesh.points); }
 

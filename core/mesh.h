@@ -47,6 +47,7 @@ struct Rings {
 // Lowest and highest corner of the axis-aligned bounding box (zeros for an empty mesh).
 std::pair<Vec3, Vec3> boundingBox(const Mesh& mesh);
 std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points);
+std::pair<Vec2, Vec2> boundingBox(const std::vector<Vec2>& points);
 // Length of its diagonal.
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);

@@ -256,11 +256,7 @@ SolvedMap givenMap(const Mesh& mesh, const std::vector<Vec2>& uv, const std::str
 // Uniform scale and translation so that the UV bounding box fits [0,1]^2 with its lower-left
 // corner at the origin: thresholds can then be given as fractions of the domain size.
 void normalize(std::vector<Vec2>& uv) {
-  Vec2 lo = uv.front(), hi = lo;
-  for (const Vec2& p : uv) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const auto [lo, hi] = boundingBox(uv);
   const double scale = 1.0 / std::max((hi - lo).maxCoeff(), 1e-300);
   for (Vec2& p : uv) p = (p - lo) * scale;
 }

@@ -144,11 +144,7 @@ void checkContents(const Recording& r, const std::string& path) {
   // it raised a floating-point exception there; border sites 1e300 away made it hang).
   const double area = mapArea(r.input, r.uv);
   if (!(area > 0)) damaged("its parameter domain has no area");
-  Vec2 lo = r.uv.front(), hi = lo;
-  for (const Vec2& p : r.uv) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const auto [lo, hi] = boundingBox(r.uv);
   const auto inSquare = [&](const Vec2& p) {
     return p.x() >= -kUnitSquareSlack && p.y() >= -kUnitSquareSlack && p.x() <= 1 + kUnitSquareSlack &&
            p.y() <= 1 + kUnitSquareSlack;
