@@ -403,9 +403,8 @@ std::string viewLabel3D(const ViewLabel3D& shown) {
     return format("final result (red ring: farthest from the input, %.2f%%)", shown.hausdorffPercent);
   if (shown.result) return "result at iteration " + std::to_string(shown.iteration) + " (" + shown.method + ")";
   if (!shown.input) return "the mesh that was parameterized";
-  // A surface made in charts: the panes follow its largest (it was labelled "input mesh" beside
-  // a caption quoting the whole input's 2775 vertices).
-  // Of the input simplified, where it was: its colours are not the input's the caption quotes.
+  // A surface made in charts: the panes follow its largest, of the input simplified where it was
+  // (labelled "input mesh", its colours sat beside a caption quoting the whole input's angles).
   if (shown.charts > 0)
     return std::string(shown.simplified ? "the simplified input's" : "the input's") + " largest chart (of\u00a0" +
            std::to_string(shown.charts) + ")";
