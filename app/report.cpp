@@ -7,12 +7,6 @@
 
 namespace lloydscope {
 
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
-
 std::vector<double> roundTicks(double lo, double hi) {
   if (!(hi > lo)) return {lo};
   // The smallest step of 1, 2 or 5 times a power of ten that leaves at most six ticks.
@@ -456,6 +450,67 @@ std::string farthestPointText(const Fidelity& f) {
          format("%.4g", p.z()) + ")" +
          (f.farthestOnReference ? " on the input (the result passes farthest from it there)"
                                 : " on the result (it strays farthest from the input there)");
+}
+
+DetailRows cellRows(const CellDetails& d) {
+  // Six decimals, and seven digits for the sums, the mass and the moment: a class checks c
+  // by hand from them, and from five digits the quotient differed from c in its last one.
+  DetailRows rows = {
+      {"site s", format("%.6f %.6f", d.site.x(), d.site.y())},
+      {"centroid c", format("%.6f %.6f", d.centroid.x(), d.centroid.y())},
+      {"s, 3D", format("%.3f %.3f %.3f", d.site3D.x(), d.site3D.y(), d.site3D.z())},
+      {"c, 3D", format("%.3f %.3f %.3f", d.centroid3D.x(), d.centroid3D.y(), d.centroid3D.z())},
+      {"area, UV", format("%.4e", d.area)},
+      {"area, surface", format("%.4e", d.surfaceArea)},
+      {"A = 1/2 sum c_i", format("%.6e", d.shoelaceArea)},
+      {"sum (x_i+x_i+1)c_i", format("%.6e", d.shoelaceSums.x())},
+      {"sum (y_i+y_i+1)c_i", format("%.6e", d.shoelaceSums.y())}};
+  if (d.shoelaceArea > 0)  // the unweighted centroid: c itself with a uniform density
+    rows.emplace_back("sums / 6A", format("%.6f %.6f", d.shoelaceSums.x() / (6 * d.shoelaceArea),
+                                           d.shoelaceSums.y() / (6 * d.shoelaceArea)));
+  rows.emplace_back("M = int rho", format("%.6e", d.mass));
+  rows.emplace_back("int x rho, u", format("%.6e", d.moment.x()));  // a row each: two in one
+  rows.emplace_back("int x rho, v", format("%.6e", d.moment.y()));  // were cut off at 960 px
+  rows.emplace_back("c = int x rho/M", d.mass > 0 ? format("%.6f %.6f", d.moment.x() / d.mass,
+                                                            d.moment.y() / d.mass)
+                                                  : std::string("- (no mass)"));
+  rows.emplace_back("E=int rho|x-s|^2", format("%.3e", d.energy));
+  rows.emplace_back("|c - s|", format("%.3e", d.toCentroid));
+  rows.emplace_back("moved since k-1", format("%.3e", d.moved));
+  rows.emplace_back("neighbours", std::to_string(d.neighbours));
+  rows.emplace_back("valence, result", d.valence >= 0 ? std::to_string(d.valence) : "- (no vertex)");
+  rows.emplace_back("param. triangles", std::to_string(d.pieces));
+  return rows;
+}
+
+DetailRows triangleRows(const TriangleDetails& d, bool mapped) {
+  DetailRows rows;
+  rows.emplace_back("angles, 3D", format("%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]));
+  if (mapped)
+    rows.emplace_back("angles, UV", format("%.1f %.1f %.1f", d.anglesUV[0], d.anglesUV[1], d.anglesUV[2]));
+  rows.emplace_back("minimum angle", format("%.1f", d.minAngle));
+  rows.emplace_back("area, 3D", format("%.4e", d.area3D));
+  if (mapped) {
+    rows.emplace_back("area, UV", format("%.4e", d.areaUV));
+    rows.emplace_back("area share 3D / UV", format("%.3f", d.areaDistortion));  // each over its mesh's total
+  }
+  // A corner's valence, and its site on a row of its own: together, "site 12, valence 4
+  // (border)" was the widest value and squeezed every label onto two lines. Regular is 6
+  // inside, 4 on the border (the guide says so).
+  for (int k = 0; k < 3; ++k)
+    rows.emplace_back("vertex " + std::to_string(d.corners[k]),
+                      "valence " + std::to_string(d.valences[k]) + (d.onBorder[k] ? ", border" : ""));
+  if (!mapped) return rows;
+  // Retriangulate: every corner is a site. Relocate: the inside vertices moved towards their
+  // sites (short of them where they would fold), the border ones are theirs.
+  std::string sites;
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) sites += ", ";
+    if (d.sites[k] < 0) sites += "- (not moved)";
+    else sites += std::to_string(d.sites[k]) + (d.atSite[k] ? "" : " (short of it)");
+  }
+  rows.emplace_back("their sites", sites);
+  return rows;
 }
 
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,

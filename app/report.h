@@ -1,19 +1,29 @@
 // How the command line shows results: tables like the reference's Table II, and JSON.
 #pragma once
 
+#include "inspection.h"
 #include "lesson.h"
 #include "pipeline.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace lloydscope {
 
-// One number in a printf pattern ("%.1f").
-std::string format(const char* pattern, double value);
+// Numbers in a printf pattern ("%.1f"), up to 160 characters. Floating point only: an int
+// passed for a %f would be read as a double's bits.
+template <typename... Values>
+std::string format(const char* pattern, Values... values) {
+  static_assert((std::is_floating_point_v<Values> && ...), "format takes floating-point numbers");
+  char text[160];
+  std::snprintf(text, sizeof text, pattern, values...);
+  return text;
+}
 
 // Round values for a linear axis's ticks from `lo` to `hi`: steps of 1, 2 or 5 times a power
 // of ten, six ticks at most (evenly spaced from the smallest value to the largest, the
@@ -143,6 +153,13 @@ std::string crowdedSitesHint(float spacing);
 double closeSiteSpacing(const std::vector<BoundedCell>& cells, size_t first);
 
 // Input and output side by side.
+// The selection panel's tables, label and value per row: a pinned cell's numbers (enough for a
+// class to check its centroid by hand) and a pinned triangle's. `mapped`: a triangle of an
+// iteration's result, with its UV numbers and its corners' sites; else of the final result.
+using DetailRows = std::vector<std::pair<std::string, std::string>>;
+DetailRows cellRows(const CellDetails& d);
+DetailRows triangleRows(const TriangleDetails& d, bool mapped);
+
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);
 std::string remeshReport(const RemeshResult& r, const RemeshOptions& options);

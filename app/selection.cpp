@@ -1,5 +1,6 @@
 #include "selection.h"
 
+#include "report.h"
 #include "text.h"
 
 #include <algorithm>
@@ -68,12 +69,6 @@ void drawPinnedTriangles3D(ImDrawList* dl, const Mesh& mesh, const std::vector<i
     for (int k = 0; k < 3; ++k) visible = visible && screen(mesh.points[t[k]], corners[k]);
     if (visible) drawPinnedTriangle(dl, corners, 0.45f, hiddenFrom(mesh, triangle, eye));
   }
-}
-
-// "5", "3 (border)": regular is 6 inside, 4 on the border (the guide says so; in the row it
-// took two lines at 960 pixels).
-std::string valenceText(const TriangleDetails& d, int k) {
-  return std::to_string(d.valences[k]) + (d.onBorder[k] ? " (border)" : "");
 }
 
 }  // namespace
@@ -152,13 +147,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
   // Each table's rows are formatted first: the value column takes the widest value (at most
   // two thirds of the pane) and the labels wrap in what is left. A fixed width cut the 3D
   // coordinates of a model in millimetres short.
-  std::vector<std::pair<std::string, std::string>> rows;
-  auto row = [&rows](const std::string& label, const char* pattern, auto... values) {
-    char text[160];
-    std::snprintf(text, sizeof text, pattern, values...);
-    rows.emplace_back(label, text);
-  };
-  auto table = [&rows](const char* id) {
+  auto table = [](const char* id, const DetailRows& rows) {
     float widest = 0;
     for (const auto& r : rows) widest = std::max(widest, ImGui::CalcTextSize(r.second.c_str()).x);
     if (ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg)) {
@@ -174,7 +163,6 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
       }
       ImGui::EndTable();
     }
-    rows.clear();
   };
   for (int cell : cells_) {
     const CellDetails d = describeCell(recording, domain, view, cell);
@@ -184,33 +172,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
                        d.fixed ? "fixed, border" : "movable");
     ImGui::SameLine();
     if (ImGui::SmallButton("unpin")) unpinCell = cell;
-    // Six decimals, and seven digits for the sums, the mass and the moment: a class checks c
-    // by hand from them, and from five digits the quotient differed from c in its last one.
-    row("site s", "%.6f %.6f", d.site.x(), d.site.y());
-    row("centroid c", "%.6f %.6f", d.centroid.x(), d.centroid.y());
-    row("s, 3D", "%.3f %.3f %.3f", d.site3D.x(), d.site3D.y(), d.site3D.z());
-    row("c, 3D", "%.3f %.3f %.3f", d.centroid3D.x(), d.centroid3D.y(), d.centroid3D.z());
-    row("area, UV", "%.4e", d.area);
-    row("area, surface", "%.4e", d.surfaceArea);
-    row("A = 1/2 sum c_i", "%.6e", d.shoelaceArea);
-    row("sum (x_i+x_i+1)c_i", "%.6e", d.shoelaceSums.x());
-    row("sum (y_i+y_i+1)c_i", "%.6e", d.shoelaceSums.y());
-    if (d.shoelaceArea > 0)  // the unweighted centroid: c itself with a uniform density
-      row("sums / 6A", "%.6f %.6f", d.shoelaceSums.x() / (6 * d.shoelaceArea),
-          d.shoelaceSums.y() / (6 * d.shoelaceArea));
-    row("M = int rho", "%.6e", d.mass);
-    row("int x rho, u", "%.6e", d.moment.x());  // a row each: two in one were cut off at 960 px
-    row("int x rho, v", "%.6e", d.moment.y());
-    if (d.mass > 0) row("c = int x rho/M", "%.6f %.6f", d.moment.x() / d.mass, d.moment.y() / d.mass);
-    else row("c = int x rho/M", "%s", "- (no mass)");
-    row("E=int rho|x-s|^2", "%.3e", d.energy);
-    row("|c - s|", "%.3e", d.toCentroid);
-    row("moved since k-1", "%.3e", d.moved);
-    row("neighbours", "%d", d.neighbours);
-    if (d.valence >= 0) row("valence, result", "%d", d.valence);
-    else row("valence, result", "%s", "- (no vertex)");
-    row("param. triangles", "%d", d.pieces);
-    table("cell");
+    table("cell", cellRows(d));
     ImGui::PopID();
   }
   // A pinned triangle's table: of an iteration's result (`mapped`: with its UV numbers and its
@@ -221,25 +183,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(triangleColor()), "%s", heading.c_str());
     ImGui::SameLine();
     const bool unpin = ImGui::SmallButton("unpin");
-    row("angles, 3D", "%.1f %.1f %.1f", d.angles3D[0], d.angles3D[1], d.angles3D[2]);
-    if (mapped) row("angles, UV", "%.1f %.1f %.1f", d.anglesUV[0], d.anglesUV[1], d.anglesUV[2]);
-    row("minimum angle", "%.1f", d.minAngle);
-    row("area, 3D", "%.4e", d.area3D);
-    if (mapped) {
-      row("area, UV", "%.4e", d.areaUV);
-      row("area share 3D / UV", "%.3f", d.areaDistortion);  // each area over its mesh's total
-    }
-    // Retriangulate: every corner is a site. Relocate: the inside vertices moved towards their
-    // sites (short of them where they would fold), the border ones are theirs.
-    for (int k = 0; k < 3; ++k) {
-      const std::string label = "vertex " + std::to_string(d.corners[k]);
-      const std::string valence = "valence " + valenceText(d, k);
-      if (!mapped) row(label, "%s", valence.c_str());
-      else if (d.sites[k] < 0) row(label, "not moved, %s", valence.c_str());
-      else if (d.atSite[k]) row(label, "site %d, %s", d.sites[k], valence.c_str());
-      else row(label, "site %d, short of it, %s", d.sites[k], valence.c_str());
-    }
-    table(scope);
+    table(scope, triangleRows(d, mapped));
     ImGui::PopID();
     ImGui::PopID();
     return unpin;

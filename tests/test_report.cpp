@@ -3,6 +3,9 @@
 #include "report.h"
 #include "test_support.h"
 
+#include <algorithm>
+#include <map>
+
 using namespace lloydscope;
 
 // A run without the measurement (--no-fidelity) says so, rather than "Hausdorff 0.000%": the
@@ -347,4 +350,50 @@ TEST(Report, TheDomainLegendNamesWhatIsDrawn) {
   EXPECT_EQ(domainLegend(false, false, false), "");
   EXPECT_EQ(domainLegend(false, false, true), "purple: seams");
   EXPECT_EQ(domainLegend(true, true, true), "dots: sites  rings: centroids  squares: fixed  purple: seams");
+}
+
+// A pinned triangle's corners: the valence on the vertex's row, the sites on a row of their own.
+// Together ("site 12, valence 4 (border)", 27 characters) they made the widest value, and the
+// table gave every label what was left: "minimum angle" and "area share 3D / UV" took two
+// lines each in the 270-pixel pane.
+TEST(Report, ATrianglesRowsAreNarrowEnoughForItsLabels) {
+  TriangleDetails d;
+  d.index = 425;
+  d.corners = {292, 11, 12};
+  d.valences = {7, 3, 4};
+  d.onBorder = {false, true, true};
+  d.sites = {292, 11, -1};
+  d.atSite = {true, false, false};
+  const DetailRows rows = triangleRows(d, true);
+  size_t widestLabel = 0, widestValue = 0;
+  for (const auto& [label, value] : rows) {
+    widestLabel = std::max(widestLabel, label.size());
+    if (label != "their sites") widestValue = std::max(widestValue, value.size());
+  }
+  EXPECT_LE(widestLabel + widestValue, 36u);  // 270 px of 7-pixel characters, less padding
+  EXPECT_EQ(rows[rows.size() - 4], (std::pair<std::string, std::string>("vertex 292", "valence 7")));
+  EXPECT_EQ(rows[rows.size() - 3].second, "valence 3, border");
+  EXPECT_EQ(rows.back(), (std::pair<std::string, std::string>("their sites", "292, 11 (short of it), - (not moved)")));
+  // The final result's triangle has no map: no UV rows, no sites.
+  for (const auto& [label, value] : triangleRows(d, false))
+    EXPECT_TRUE(label.find("UV") == std::string::npos && label != "their sites") << label;
+}
+
+// A pinned cell's rows give the centroid twice, as the shoelace quotient and as moment / mass,
+// so that a class can check one against the other.
+TEST(Report, ACellsRowsHoldTheCentroidsTwoQuotients) {
+  CellDetails d;
+  d.index = 3;
+  d.shoelaceArea = 0.5;
+  d.shoelaceSums = Vec2(1.5, 0.75);
+  d.mass = 2;
+  d.moment = Vec2(1, 0.5);
+  std::map<std::string, std::string> rows;
+  for (const auto& [label, value] : cellRows(d)) rows[label] = value;
+  EXPECT_EQ(rows["sums / 6A"], "0.500000 0.250000");
+  EXPECT_EQ(rows["c = int x rho/M"], "0.500000 0.250000");
+  EXPECT_EQ(rows["valence, result"], "- (no vertex)");
+  d.mass = 0;
+  for (const auto& [label, value] : cellRows(d))
+    if (label == "c = int x rho/M") EXPECT_EQ(value, "- (no mass)");
 }
