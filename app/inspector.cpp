@@ -385,20 +385,25 @@ void Inspector::prepare() {
   cellEdges();
 }
 
-std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent) const {
+std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent, float top) const {
   const glm::vec3 target(camera_.target.x(), camera_.target.y(), camera_.target.z());
   const glm::vec3 eye = target + camera_.distance * glm::vec3(std::cos(camera_.pitch) * std::cos(camera_.yaw),
                                                               std::cos(camera_.pitch) * std::sin(camera_.yaw),
                                                               std::sin(camera_.pitch));
-  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / extent.y,
+  const float below = extent.y - top;  // the pane under the band at its top
+  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / below,
                                     camera_.distance * 0.01f, camera_.distance * 10.0f);
   proj[1][1] *= -1.0f;  // Vulkan's y points down
-  return {proj * glm::lookAt(eye, target, glm::vec3(0, 0, 1)), eye};
+  // The view is drawn over the whole pane (a mesh zoomed in still passes under the band), but
+  // its centre and its 40 degrees are those of the pane under the band.
+  const glm::mat4 underTheBand = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, top / extent.y, 0)),
+                                            glm::vec3(1, below / extent.y, 1));
+  return {underTheBand * proj * glm::lookAt(eye, target, glm::vec3(0, 0, 1)), eye};
 }
 
-void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent) {
+void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent, float top) {
   if (layers().input3D) return;  // triangles are the result's
-  const auto [viewProjection, eye] = cameraMatrices(extent);
+  const auto [viewProjection, eye] = cameraMatrices(extent, top);
   const glm::mat4 inverse = glm::inverse(viewProjection);
   const float x = (mouse.x - p0.x) / extent.x * 2 - 1, y = (mouse.y - p0.y) / extent.y * 2 - 1;
   const glm::vec4 far = inverse * glm::vec4(x, y, 1.0f, 1.0f);
@@ -1230,6 +1235,21 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     fitCamera();
 
   const Layers shown = layers();
+  const bool final = finalShown();
+  ViewLabel3D facts;
+  facts.final = final;
+  facts.hausdorffPercent = result_.fidelity.hausdorffPercent;
+  facts.result = !shown.input3D;
+  facts.iteration = iteration_;
+  facts.method = toString(replay_->method());
+  facts.input = input_ && (!shown.mapped3D || mapIsOfTheInput());
+  facts.charts = inputCharts_;
+  facts.simplified = options_.simplifyTo > 0 || result_.coarseInput > 0;
+  // Wrapped in the pane (the final result's ran past its edge at 960 pixels), the colour bar
+  // under it. The mesh is centred and fitted in the pane under the label (at 960x600 the two
+  // lines of the final result's label covered the top of the lion's head).
+  const std::string wrapped = wrappedLines(viewLabel3D(facts), extent.x - 20);
+  const float labelBand = std::min(ImGui::CalcTextSize(wrapped.c_str()).y + 8, 0.3f * extent.y);
   if (uploadedIteration_ != iteration_ || uploadedInput_ != shown.input3D || uploadedMapped_ != shown.mapped3D ||
       uploadedSites_ != shown.sites3D || uploadedFinal_ != finalShown() ||
       uploadedMethod_ != replay_->method())
@@ -1237,12 +1257,12 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
 
   if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       io.MouseDragMaxDistanceSqr[0] < 9.0f)
-    pick3D(io.MousePos, p0, extent);  // a click, not the end of an orbit
+    pick3D(io.MousePos, p0, extent, labelBand);  // a click, not the end of an orbit
   if (fitPending_) {
-    camera_.distance = fittingDistance(extent);
+    camera_.distance = fittingDistance(ImVec2(extent.x, extent.y - labelBand));
     fitPending_ = false;
   }
-  const glm::mat4 viewProjection = cameraMatrices(extent).first;
+  const auto [viewProjection, eyeAt] = cameraMatrices(extent, labelBand);
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   MeshDraw& draw = meshCallback_.second;
@@ -1265,10 +1285,8 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
                     p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
     return true;
   };
-  const glm::vec3 eyeAt = cameraMatrices(extent).second;
   const Vec3 eye(eyeAt.x, eyeAt.y, eyeAt.z);
   drawSeams3D(dl, toScreen, eyeAt);
-  const bool final = finalShown();
   if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip
     if (result_.fidelity.samples > 0 && toScreen(result_.fidelity.farthestPoint, at)) {
@@ -1286,19 +1304,6 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   if (final) selection_.drawFinal3D(dl, result_.output, toScreen, eye);
   dl->PopClipRect();
 
-  ViewLabel3D facts;
-  facts.final = final;
-  facts.hausdorffPercent = result_.fidelity.hausdorffPercent;
-  facts.result = !shown.input3D;
-  facts.iteration = iteration_;
-  facts.method = toString(replay_->method());
-  facts.input = input_ && (!shown.mapped3D || mapIsOfTheInput());
-  facts.charts = inputCharts_;
-  facts.simplified = options_.simplifyTo > 0 || result_.coarseInput > 0;
-  const std::string label = viewLabel3D(facts);
-  // Wrapped in the pane (the final result's ran past its edge at 960 pixels), the colour bar
-  // under it.
-  const std::string wrapped = wrappedLines(label, extent.x - 20);
   boxedText(dl, ImVec2(p0.x + 8, p0.y + 4), wrapped.c_str());
   if (colorByAngle_)
     drawColorBar(dl, ImVec2(p0.x + 10, p0.y + ImGui::CalcTextSize(wrapped.c_str()).y + 0.5f * ImGui::GetFontSize() + 4.5f), 90,

@@ -156,7 +156,7 @@ class Inspector {
   void togglePlay();
   void handleKeys();
   void pick2D(const Vec2& uv);
-  void pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent);
+  void pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent, float top);
   void hoverTooltip2D(const Vec2& uv);
   void cameraControls();
   void settingsControls();
@@ -182,8 +182,9 @@ class Inspector {
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;
-  // The 3D view's view-projection matrix (Vulkan clip space) and eye, for a pane this size.
-  std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent) const;
+  // The 3D view's view-projection matrix (Vulkan clip space) and eye, for a pane this size
+  // whose `top` pixels (the label's band) the view is centred and fitted under.
+  std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent, float top) const;
 
   gpu::Context& gpu_;
   MeshRenderer renderer_;

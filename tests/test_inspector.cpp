@@ -114,6 +114,31 @@ TEST(Inspector, TheWireframeFadesOnTinyTriangles) {
   EXPECT_GT(green, dark);
 }
 
+// The 3D view is centred under its label: at 960x600 the final result's label, on two lines,
+// covered the top of the lion's head. Seen from above, the cap is a disc as far below the
+// label's box as above the pane's foot (before: 90 px below the box, 120 above the foot).
+TEST(Inspector, The3DViewIsCentredUnderItsLabel) {
+  const std::string png = test::tempPath("under_label.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --final --pane 3d --camera '0 1.5 8 0 0 0.75'", png), 0);
+  const Picture picture = readPng(png);
+  int labelBottom = -1, discTop = picture.height, discBottom = -1;
+  for (int y = 0; y < picture.height; ++y) {
+    const unsigned char* box = picture.at(16, y);  // the label's light box, left of its text
+    if (box[0] > 245 && box[1] > 245 && box[2] > 245) labelBottom = y;
+    for (int x = 45; x < picture.width; ++x) {  // right of the colour bar
+      const unsigned char* c = picture.at(x, y);
+      if (c[1] > c[0] + 15 && c[1] > c[2] + 15) {  // the cap's green
+        discTop = std::min(discTop, y);
+        discBottom = y;
+      }
+    }
+  }
+  ASSERT_GT(labelBottom, 0);
+  ASSERT_GT(discBottom, discTop);
+  EXPECT_NEAR(discTop - labelBottom, picture.height - 1 - discBottom, 10)
+      << "label's box ends at " << labelBottom << ", the disc spans " << discTop << "-" << discBottom;
+}
+
 // With the final result shown, the worst triangle pinned is the final result's, ringed over it:
 // it was the iteration's, which the final result hides (0 teal pixels).
 TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
