@@ -6,9 +6,9 @@
 #include "pipeline.h"
 #include "report.h"
 #include "simplify.h"
+#include "stopwatch.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -84,10 +84,6 @@ std::string name(const std::string& path) {
   return n.substr(0, n.find_last_of('.'));
 }
 
-double milliseconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
-}
-
 // The defaults' row of the stage table: the input's size, the time of each stage, CGAL's.
 std::string stageTimesRow(const Row& row, const Row& peer) {
   std::string line = "| " + cell(row.model) + " | " + std::to_string(row.size) + " | " + std::to_string(row.before.vertices) +
@@ -108,9 +104,9 @@ std::string stageTimesRow(const Row& row, const Row& peer) {
 std::string verdict(const Row& row, const Row& peer) {
   if (!row.failed.empty()) return "failed: " + row.failed;
   std::string missed;
-  if (row.after.irregularBoundaryAware > 15) missed += " irregular>15%";
-  if (row.after.minAngle < 30) missed += " min<30";
-  if (row.after.avgMinAngle < 53) missed += " avg<53";
+  if (row.after.irregularBoundaryAware > kMostIrregularPercent) missed += " irregular>15%";
+  if (row.after.minAngle < kLeastMinAngle) missed += " min<30";
+  if (row.after.avgMinAngle < kLeastAvgMinAngle) missed += " avg<53";
   if (row.fidelity.hausdorffPercent > peer.fidelity.hausdorffPercent) missed += " hausdorff>cgal";
   return missed.empty() ? "all met" : "missed:" + missed;
 }
@@ -307,16 +303,16 @@ void runStepBench(const BenchOptions& options) {
   saveRecording(recording, file);
   std::ifstream in(file, std::ios::binary | std::ios::ate);
   const double fileBytes = static_cast<double>(in.tellg());
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch load;
   const Recording loaded = loadRecording(file);
-  const double loadMs = milliseconds(start);
+  const double loadMs = load.lap();
   std::remove(file.c_str());
   double memoryBytes = 0, readMs = 0;
   for (const IterationRecord& it : loaded.iterations) {
     memoryBytes += sizeof(std::uint32_t) * it.sites.raw().size() + sizeof(IterationRecord);
-    const auto t = std::chrono::steady_clock::now();
+    Stopwatch read;
     const std::vector<Vec2> sites = allSites(loaded.fixedSites, it.sites);
-    readMs = std::max(readMs, milliseconds(t));
+    readMs = std::max(readMs, read.lap());
   }
   const double perSiteIteration =
       double(recording.iterations.size()) * (recording.fixedSites.size() + recording.iterations[0].sites.size());

@@ -90,10 +90,6 @@ Context::Context(const std::vector<const char*>& instanceExtensions, bool swapch
       break;
     }
   }
-  VkPhysicalDeviceProperties properties;
-  vkGetPhysicalDeviceProperties(physical, &properties);
-  deviceName = properties.deviceName;
-
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());

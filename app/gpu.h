@@ -50,7 +50,6 @@ class Context {
   VkQueue queue = VK_NULL_HANDLE;
   VkCommandPool commandPool = VK_NULL_HANDLE;
   VkDescriptorPool descriptorPool = VK_NULL_HANDLE;  // for ImGui's font texture
-  std::string deviceName;
   bool wideLines = false;  // line widths other than 1 (lavapipe has them)
   int validationMessages = 0;
 

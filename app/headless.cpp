@@ -4,11 +4,11 @@
 #include "gpu.h"
 #include "inspector.h"
 #include "png.h"
+#include "stopwatch.h"
 
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -161,14 +161,13 @@ FrameTimes benchmarkScrub(const std::string& meshName, const RemeshOptions& opti
   const int count = static_cast<int>(inspector.iteration()) + 1;
   // As the window does: the next iteration is prepared while the last frame renders, and a
   // frame's time is from one frame's start to the next one's.
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch frame;
   for (int i = 0; i <= frames; ++i) {
     if (scrub) inspector.setIteration((i * 7) % count);  // jump around, as a dragged slider
     inspector.prepare();
     renderer.frame([&] { inspector.frame(); }, false);
-    const auto now = std::chrono::steady_clock::now();
-    if (i > 0) times.milliseconds.push_back(std::chrono::duration<double, std::milli>(now - start).count());
-    start = now;
+    const double ms = frame.lap();
+    if (i > 0) times.milliseconds.push_back(ms);
   }
   renderer.finish();
   return times;

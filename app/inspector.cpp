@@ -732,7 +732,6 @@ void Inspector::frame() {
                              {left, viewsTop, viewWidth, viewsHeight},
                              {left + viewWidth, viewsTop, display.x - left - viewWidth, viewsHeight},
                              {left, plotsTop, display.x - left, plotsHeight}};
-  std::copy(&rects[0][0], &rects[0][0] + 16, &paneRects_[0][0]);
   if (exportJob_) {
     std::string path = exportJob_->path;
     if (exportJob_->first >= 0) {

@@ -274,7 +274,6 @@ class Inspector {
   std::optional<ExportJob> exportJob_;
   int exportNext_ = 0;
   std::optional<ExportRequest> exportRequest_;
-  float paneRects_[4][4] = {};  // Pane -> x, y, width, height, from the last frame's layout
   char exportPath_[512] = "lloydscope.png";
   int exportPane_ = 0, exportFirst_ = 0, exportLast_ = 0;
   void exportControls();

@@ -152,7 +152,6 @@ std::string crowdedSitesHint(float spacing);
 // sites were 20 px apart).
 double closeSiteSpacing(const std::vector<BoundedCell>& cells, size_t first);
 
-// Input and output side by side.
 // The selection panel's tables, label and value per row: a pinned cell's numbers (enough for a
 // class to check its centroid by hand) and a pinned triangle's. `mapped`: a triangle of an
 // iteration's result, with its UV numbers and its corners' sites; else of the final result.
@@ -160,6 +159,7 @@ using DetailRows = std::vector<std::pair<std::string, std::string>>;
 DetailRows cellRows(const CellDetails& d);
 DetailRows triangleRows(const TriangleDetails& d, bool mapped);
 
+// Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);
 std::string remeshReport(const RemeshResult& r, const RemeshOptions& options);

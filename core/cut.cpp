@@ -2,7 +2,6 @@
 
 #include "cgal_types.h"
 #include "parameterization.h"
-#include "remesh.h"
 #include "topology.h"
 
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>

@@ -168,9 +168,9 @@ constexpr size_t kSearchPerVertex = 2000;
 
 // The valence moves that leave fewer vertices irregular (or as many, nearer regular) whose
 // flips neither fold the surface nor make an angle under `degrees`: every such flip, and for
-// every other flip the best sequence it starts, if any, while the search has looked at no more
-// than `searchPerVertex` flips a vertex; best first. With `near`, only those whose first edge
-// has an end in it. The mesh is left as it was.
+// every other flip the best two sequences it starts (kMovesPerFirstFlip), if any, while the
+// search has looked at no more than `searchPerVertex` flips a vertex; best first. With `near`,
+// only those whose first edge has an end in it. The mesh is left as it was.
 std::vector<ValenceMove> valenceMoves(EdgeFlips& flips, const Mesh& mesh, double degrees,
                                       const std::vector<bool>* near = nullptr,
                                       size_t searchPerVertex = kSearchPerVertex);

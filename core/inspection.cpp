@@ -108,9 +108,7 @@ TriangleDetails describeTriangle(const IterationView& view, int triangle) {
   d.anglesUV = cornerAnglesDeg(view.outputUV[t[0]], view.outputUV[t[1]], view.outputUV[t[2]]);
   d.areaUV = std::abs(triangleArea(view.outputUV[t[0]], view.outputUV[t[1]], view.outputUV[t[2]]));
   const double total3D = surfaceArea(view.output);
-  double totalUV = 0;
-  for (const Triangle& u : view.output.triangles)
-    totalUV += std::abs(triangleArea(view.outputUV[u[0]], view.outputUV[u[1]], view.outputUV[u[2]]));
+  const double totalUV = mapArea(view.output, view.outputUV);
   d.areaDistortion = d.areaUV > 0 ? (d.area3D / total3D) / (d.areaUV / totalUV) : INFINITY;
   for (int k = 0; k < 3; ++k) {
     d.sites[k] = view.outputSite[t[k]];

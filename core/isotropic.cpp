@@ -1,10 +1,10 @@
 #include "isotropic.h"
 
 #include "cgal_types.h"
+#include "stopwatch.h"
 
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
-#include <chrono>
 #include <cmath>
 
 namespace lloydscope {
@@ -18,11 +18,10 @@ struct Run {
 
 Run remeshAt(const Mesh& input, double edgeLength, int iterations) {
   SurfaceMesh sm = toSurfaceMesh(input);
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch stopwatch;
   CGAL::Polygon_mesh_processing::isotropic_remeshing(
       faces(sm), edgeLength, sm, CGAL::parameters::number_of_iterations(iterations));
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = stopwatch.lap();
   sm.collect_garbage();
   return {fromSurfaceMesh(sm), ms};
 }
@@ -37,7 +36,6 @@ IsotropicResult isotropicRemesh(const Mesh& input, const IsotropicOptions& optio
     Run r = remeshAt(input, length, options.iterations);
     const int count = r.mesh.vertexCount();
     const double error = std::abs(count - options.vertices) / double(options.vertices);
-    best.searchRuns = run + 1;
     if (error < bestError) {
       bestError = error;
       best.mesh = std::move(r.mesh);

@@ -16,7 +16,6 @@ struct IsotropicOptions {
 struct IsotropicResult {
   Mesh mesh;
   double edgeLength = 0;     // the target edge length that matched
-  int searchRuns = 0;
   double milliseconds = 0;   // of the final run alone: the search is not the method's cost
 };
 

@@ -2,7 +2,6 @@
 
 #include "flips.h"
 #include "metrics.h"
-#include "remesh.h"
 #include "ring_moves.h"
 
 #include <algorithm>
@@ -246,8 +245,8 @@ class ValenceMover {
   // irregular (or as many, nearer regular), none more than two neighbours off regular that was
   // not that far before, no angle of the triangles around under the lesser
   // of the smallest there before and 30 degrees, their mean lower by kMeanDrop at most, and the
-  // chords and the input's vertices under them no farther apart than before (or than half the
-  // farthest anywhere: StaysClose). Else puts everything back.
+  // chords and the input's vertices under them no farther apart than before (or than three
+  // quarters of the farthest anywhere: StaysClose). Else puts everything back.
   bool tryMove(EdgeFlips& flips, const ValenceMove& move, std::vector<bool>& moved) {
     std::vector<EdgeFlips::Candidate> made;
     std::map<int, int> change;  // valence change of each vertex the flips touch

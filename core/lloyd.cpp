@@ -1,9 +1,9 @@
 #include "lloyd.h"
 
 #include "cvt_hessian.h"
+#include "stopwatch.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -204,7 +204,7 @@ std::vector<Vec2> LloydSolver::newtonStep(const Evaluation& current, Evaluation&
 }
 
 const IterationRecord& LloydSolver::step() {
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch stopwatch;
   if (current_.empty()) current_.push_back(evaluate(movable_));
   const Evaluation& e = current_.front();
 
@@ -233,8 +233,7 @@ const IterationRecord& LloydSolver::step() {
     movable_ = options_.solver == CvtSolver::Newton ? newtonStep(e, next) : lbfgsStep(e, next);
     current_.front() = std::move(next);
   }
-  record.milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  record.milliseconds = stopwatch.lap();
   iterations_.push_back(std::move(record));
   return iterations_.back();
 }

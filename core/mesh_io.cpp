@@ -1061,27 +1061,6 @@ std::string loadFile(const std::string& path) {
   return data;
 }
 
-// Drops vertices no triangle uses and renumbers the rest; returns how many were dropped.
-int removeUnusedVertices(Mesh& mesh) {
-  std::vector<int> newIndex(mesh.points.size(), -1);
-  for (const Triangle& t : mesh.triangles) {
-    for (int v : t) newIndex[v] = 0;
-  }
-  int next = 0;
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    if (newIndex[v] == 0) {
-      newIndex[v] = next;
-      mesh.points[next++] = mesh.points[v];
-    }
-  }
-  const int removed = mesh.vertexCount() - next;
-  mesh.points.resize(next);
-  for (Triangle& t : mesh.triangles) {
-    for (int& v : t) v = newIndex[v];
-  }
-  return removed;
-}
-
 void writeOff(std::ostream& out, const Mesh& mesh) {
   out << "OFF\n" << mesh.vertexCount() << ' ' << mesh.faceCount() << " 0\n";
   for (const Vec3& p : mesh.points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
@@ -1166,7 +1145,9 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
                                       " of vertices (the first: " + first + ") are") +
         " at the same position, each with its own faces inside the surface: it touches itself there");
   }
-  const int removed = removeUnusedVertices(result.mesh);
+  const int read = result.mesh.vertexCount();
+  result.mesh = assemble(result.mesh.triangles, result.mesh.points);
+  const int removed = read - result.mesh.vertexCount();
   if (removed > 0) {
     result.notes.push_back(path + ": " + plural(removed, "vertex", "vertices") + " used by no face " +
                            (removed == 1 ? "was" : "were") + " removed");

@@ -40,6 +40,11 @@ int worstTriangle(const Mesh& mesh) {
   return worst;
 }
 
+int barsMet(const QualityMetrics& q) {
+  return (q.irregularBoundaryAware <= kMostIrregularPercent) + (q.minAngle >= kLeastMinAngle) +
+         (q.avgMinAngle >= kLeastAvgMinAngle);
+}
+
 QualityMetrics measureQuality(const Mesh& mesh) {
   QualityMetrics m;
   m.vertices = mesh.vertexCount();

@@ -22,6 +22,15 @@ struct QualityMetrics {
 
 QualityMetrics measureQuality(const Mesh& mesh);
 
+// The quality bars a remesher is held to (issue 5): irregular vertices, boundary-aware, at
+// most 15%; no angle under 30 degrees; an average smallest angle of 53 degrees or more. (The
+// fourth, the Hausdorff distance no larger than CGAL's remesher's, needs that run.)
+constexpr double kMostIrregularPercent = 15.0;
+constexpr double kLeastMinAngle = 30.0;
+constexpr double kLeastAvgMinAngle = 53.0;
+// How many of the three a result meets.
+int barsMet(const QualityMetrics& q);
+
 struct Fidelity {
   // Two-sided distances between the surfaces, in % of the reference's bounding-box diagonal.
   double hausdorffPercent = 0;

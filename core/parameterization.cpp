@@ -414,11 +414,7 @@ double cornerAngle(const Vec2& a, const Vec2& b, const Vec2& c) {
 }  // namespace
 
 Distortion measureDistortion(const Mesh& mesh, const std::vector<Vec2>& uv) {
-  double area3 = 0, area2 = 0;
-  for (const Triangle& t : mesh.triangles) {
-    area3 += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-    area2 += std::abs(triangleArea(uv[t[0]], uv[t[1]], uv[t[2]]));
-  }
+  const double area3 = surfaceArea(mesh), area2 = mapArea(mesh, uv);
   Distortion d;
   d.minAreaRatio = INFINITY;
   d.maxAreaRatio = 0;
@@ -473,7 +469,7 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   normalize(result.uv);
   result.onBoundary.assign(mesh.points.size(), false);
   for (int v : result.boundaryLoop) result.onBoundary[v] = true;
-  if (options.method == ParamMethod::Lscm || options.method == ParamMethod::Given)
+  if (isFreeBorder(options.method))
     repairFolds(mesh, result.uv, result.onBoundary, result.boundaryLoop);
   requireOneToOne(mesh, result.uv, result.onBoundary, result.boundaryLoop, options.method, name);
   // The border cycle runs around the hole; make it counter-clockwise around the domain.

@@ -15,6 +15,10 @@ enum class ParamMethod {
 };
 enum class Border { Square, Circle };  // ignored by LSCM, whose border is free
 
+// LSCM's map, or one given: conformal, its border free. The others have a fixed border; the
+// automatic choice falls back to one (mean value, Tutte) where no conformal map held.
+inline bool isFreeBorder(ParamMethod m) { return m == ParamMethod::Lscm || m == ParamMethod::Given; }
+
 struct ParamOptions {
   // Free-border LSCM keeps the border's own shape: no corner of the input is squeezed onto a
   // circle or spread along a square's side, which measured best. It can fold, and then the

@@ -7,9 +7,9 @@
 #include "polish.h"
 #include "simplify.h"
 #include "topology.h"
+#include "stopwatch.h"
 
 #include <algorithm>
-#include <chrono>
 #include <functional>
 #include <future>
 #include <thread>
@@ -22,19 +22,6 @@
 namespace lloydscope {
 
 namespace {
-
-class Stopwatch {
- public:
-  double lap() {  // milliseconds since construction or the previous lap
-    const auto now = std::chrono::steady_clock::now();
-    const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
-    last_ = now;
-    return ms;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 }  // namespace
 
@@ -154,7 +141,7 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         if (resampled_) {
           const ParamMethod used = resampled_->param.method;
           o.fallback.clear();  // of the input's vertices, not the resampled surface's
-          if (used == ParamMethod::Lscm || used == ParamMethod::Given) o.fallback = resampled_->mesh.uv;
+          if (isFreeBorder(used)) o.fallback = resampled_->mesh.uv;
         }
         Parameterization p = parameterize(surface(), o, name);
         ms_.parameterize = stage.lap();
@@ -419,12 +406,6 @@ RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const s
   }
 }
 
-// How many of issue 5's quality bars a result meets: irregular vertices (boundary-aware) at
-// most 15%, no angle under 30 degrees, an average smallest angle of 53 degrees or more.
-int barsMet(const QualityMetrics& q) {
-  return (q.irregularBoundaryAware <= 15.0) + (q.minAngle >= 30.0) + (q.avgMinAngle >= 53.0);
-}
-
 // A part of the surface remeshed on its own (a chart, a component) added to the whole's counts
 // and times; the largest by area (`largest` so far) gives its recording and map. Returns
 // whether it was that.
@@ -685,10 +666,6 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
   countTheOtherRun(kept, other);
 }
 
-// A map with a fixed border (mean value, Tutte) is what the one disk got where no conformal
-// map of it held.
-bool conformalHeld(ParamMethod used) { return used == ParamMethod::Lscm || used == ParamMethod::Given; }
-
 // A disk is remeshed as one (remeshDisk), a surface of another topology cut open to one disk;
 // either is remeshed chart by chart too (tryCharts), a disk only where its map is not
 // conformal (not with a map or first pass the user chose: the charts need the automatic map);
@@ -716,7 +693,7 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
     if (!chartsAllowed) throw;
     kept = chartsInstead(input, once, name, prepared, e);
   }
-  if (chartsAllowed && kept.charts == 0 && (!disk || !conformalHeld(kept.paramUsed)))
+  if (chartsAllowed && kept.charts == 0 && (!disk || !isFreeBorder(kept.paramUsed)))
     tryCharts(kept, input, options, name, prepared);
   if (disk) tryWithoutFirstPass(kept, input, once, name, prepared);
   if (disk && chartsAllowed && !kept.chartTrial && barsMet(kept.after) < 3)

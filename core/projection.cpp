@@ -35,8 +35,7 @@ uint64_t spreadBits(uint64_t x) {
 // the order, near in space, for a few sorts of 64-bit keys (CGAL's Hilbert sort took as long as
 // the queries it ordered).
 std::vector<size_t> mortonOrder(const std::vector<Vec3>& points) {
-  Vec3 lo = points.front(), hi = lo;
-  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const auto [lo, hi] = boundingBox(points);
   const double scale = 1023.0 / std::max((hi - lo).maxCoeff(), 1e-300);
   std::vector<uint64_t> keys(points.size());
   for (size_t i = 0; i < points.size(); ++i) {

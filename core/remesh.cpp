@@ -152,23 +152,6 @@ std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
   return triangles;
 }
 
-Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
-              std::vector<int>* kept) {
-  std::vector<int> newIndex(points.size(), -1);
-  for (const Triangle& t : triangles)
-    for (int v : t) newIndex[v] = 0;
-  Mesh output;
-  for (size_t v = 0; v < points.size(); ++v) {
-    if (newIndex[v] < 0) continue;
-    newIndex[v] = output.vertexCount();
-    output.points.push_back(points[v]);
-    if (kept) kept->push_back(static_cast<int>(v));
-  }
-  for (const Triangle& t : triangles)
-    output.triangles.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
-  return output;
-}
-
 LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
                          const std::vector<Vec2>& border, const std::vector<Vec2>& movableSites,
                          const std::string& name, const std::vector<Vec3>& borderPoints) {

@@ -55,10 +55,4 @@ LiftedMesh retriangulate(const Mesh& input, const Domain& domain,
 std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
                                        const std::vector<Vec2>& movableSites);
 
-// The mesh of `triangles` over `points`, keeping only the points some triangle uses (a site on
-// top of another, or outside the domain, has none), numbered in order. `kept`, if given,
-// receives for each output vertex the index of its point.
-Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
-              std::vector<int>* kept = nullptr);
-
 }  // namespace lloydscope

@@ -1,13 +1,13 @@
 #include "simplify.h"
 
 #include "cgal_types.h"
+#include "stopwatch.h"
 
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
-#include <chrono>
 
 namespace lloydscope {
 
@@ -75,7 +75,7 @@ Vec3 farOffset(const Mesh& mesh) {
 }  // namespace
 
 SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name) {
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch stopwatch;
   SizeStop stop{0, 0};
   if (options.vertices > 0) {
     stop.vertices = options.vertices;
@@ -103,8 +103,7 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
   // One vertex goes with each collapse (edge_collapse counts the edges removed: three inside).
   result.collapses = input.vertexCount() - result.mesh.vertexCount();
   if (!offset.isZero()) result.mesh = moved(std::move(result.mesh), offset);
-  result.milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.milliseconds = stopwatch.lap();
   return result;
 }
 
