@@ -887,11 +887,20 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   int method = replay_->method() == RemeshMethod::Relocate ? 0 : 1;
   ImGui::TextUnformatted("Result");
   ImGui::SameLine();
+  // Greyed, with why, where the run's sites are not the input's vertices: clicked, it did
+  // nothing, and its explanation showed for one frame.
+  const bool canRelocate = replay_->canRelocate();
+  if (!canRelocate) ImGui::BeginDisabled();
   if (ImGui::RadioButton("relocate", &method, 0)) replay_->setMethod(RemeshMethod::Relocate);
+  if (!canRelocate) ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::RadioButton("retriangulate", &method, 1)) replay_->setMethod(RemeshMethod::Retriangulate);
-  if (replay_->method() != (method == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate))
-    ImGui::TextDisabled("(relocate needs one site per input vertex)");
+  if (!canRelocate) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrappedText("Relocate needs the input's vertices as sites: under Settings choose method "
+                "relocate, then Restart and Run.");
+    ImGui::PopStyleColor();
+  }
 
   ImGui::Separator();
   // The final result (what remesh writes: the iteration's mesh after the clean-up on the

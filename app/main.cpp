@@ -336,6 +336,12 @@ int main(int argc, char** argv) {
                  "headless to a PNG and exit");
   inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (remesh --record, .lsrec)")
       ->required();
+  // The window's hint line has room for the stepping keys only; the others were in the guide
+  // alone.
+  inspectCmd->footer(
+      "Keys in the window: <- -> an iteration (Shift: ten; in a lesson, a stage), Home/End the first/last, "
+      "Space play/pause, P presentation (classroom) mode, L the lesson, Escape unpin every cell and "
+      "triangle, F (over the 3D or 2D view) fit it.");
   inspectCmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);
   std::string pane = "window", iterations;
   inspectCmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots");

@@ -876,14 +876,16 @@ std::vector<std::pair<int, int>> checkSurface(const Mesh& mesh, const std::strin
       fail(name, zeroAreaProblem(mesh, t, numbering));
   }
   // Inside vertices at the same position are allowed: a surface may touch itself at a point
-  // (CGAL's cow does once). On a border they are an unwelded seam, a crack or a triangle soup,
-  // whose pieces would be remeshed apart: refused.
+  // (CGAL's cow does once). On a border they are an unwelded seam, a crack, a triangle soup,
+  // whose pieces would be remeshed apart, or a border that touches itself (two corners of it
+  // at one point, or one vertex the repair split there, where fans of faces met): refused.
   const std::vector<bool> border = vertexEdges(mesh).onBoundary;
   const std::vector<std::pair<int, int>> coincident = coincidentVertices(mesh);
   for (const auto& [a, b] : coincident)
     if (border[a] || border[b])
       fail(name, "vertices " + str(numbering.vertex(a)) + " and " + str(numbering.vertex(b)) +
-                     " are at the same position on a border (an unwelded seam or a crack)");
+                     " are at the same position on a border (an unwelded seam, a crack, or the border "
+                     "touching itself at a point)");
   checkEdges(mesh, name, numbering);
   checkVertexFans(mesh, name, numbering);
   return coincident;

@@ -22,13 +22,13 @@ Replay::Replay(Recording recording)
   for (int v = 0; v < static_cast<int>(recording_.uv.size()); ++v) borderSite_.push_back(fixedSite(v));
 }
 
+bool Replay::canRelocate() const {
+  return !recording_.movableVertex.empty() &&
+         std::none_of(recording_.movableVertex.begin(), recording_.movableVertex.end(), [](int v) { return v < 0; });
+}
+
 void Replay::setMethod(RemeshMethod method) {
-  // relocate needs one site per inside vertex; a recording made otherwise can only retriangulate
-  const bool everySiteHasAVertex =
-      !recording_.movableVertex.empty() &&
-      std::none_of(recording_.movableVertex.begin(), recording_.movableVertex.end(),
-                   [](int v) { return v < 0; });
-  if (!everySiteHasAVertex) method = RemeshMethod::Retriangulate;
+  if (!canRelocate()) method = RemeshMethod::Retriangulate;
   if (method != method_) view_.index = -1;  // the output mesh must be rebuilt
   method_ = method;
 }

@@ -25,6 +25,9 @@ class Replay {
   explicit Replay(Recording recording);
   // Switches between the two where the recording allows relocate (sites from input vertices).
   void setMethod(RemeshMethod method);
+  // Whether it does: every movable site is an inside vertex of the input (remesh --method
+  // relocate, or the reference preset); other runs' sites have no vertex to move.
+  bool canRelocate() const;
 
   const Recording& recording() const { return recording_; }
   // Where the parameterized mesh was cut open (seamEdges() of recording().input): empty for a

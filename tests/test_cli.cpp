@@ -245,7 +245,7 @@ TEST(Cli, RepairWeldsAnUnweldedSeamAndSaysSo) {
   test::writeText(path, off);
   const CliRun refused = runCli("remesh " + path + " --sites 60 --no-fidelity");
   EXPECT_EQ(refused.code, 1);
-  EXPECT_NE(refused.err.find("on a border (an unwelded seam or a crack) (--repair fixes this)"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("on a border (an unwelded seam, a crack, or the border touching itself at a point) (--repair fixes this)"), std::string::npos) << refused.err;
   const CliRun repaired = runCli("remesh " + path + " --sites 60 --no-fidelity --repair");
   ASSERT_EQ(repaired.code, 0) << repaired.err;
   EXPECT_NE(repaired.err.find("note: " + path + ": repaired: 9 vertices welded to another at the same position"),
@@ -647,6 +647,10 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
   // The picture sizes' help says both limits, as the refusal does.
   for (const char* command : {"inspect --help", "bench-frames --help"})
     EXPECT_NE(runCli(command).out.find("between 960x600 and 8192x8192"), std::string::npos) << command;
+  // inspect's help lists the window's keys (they were in the guide alone).
+  const std::string keys = runCli("inspect --help").out;
+  for (const char* key : {"Space play/pause", "P presentation", "L the lesson", "Escape unpin", "F (over"})
+    EXPECT_NE(keys.find(key), std::string::npos) << key;
 }
 
 // A file whose name starts with '-' is taken for an option by the command line; the error says

@@ -43,6 +43,7 @@ TEST(Replay, RelocateOnlyWhereSitesAreInputVertices) {
   o.lloyd.maxIterations = 3;
   const Mesh input = readMesh(test::assetPath("jittered_grid.off")).mesh;
   Replay relocated(remesh(input, o, "grid").recording);
+  EXPECT_TRUE(relocated.canRelocate());
   EXPECT_EQ(relocated.method(), RemeshMethod::Relocate);
   EXPECT_EQ(relocated.view(2).output.triangles, input.triangles);
   // Every vertex is a site, the border's the fixed ones: a border cell's valence is shown (it
@@ -65,6 +66,7 @@ TEST(Replay, RelocateOnlyWhereSitesAreInputVertices) {
   sampled.measureFidelity = false;
   sampled.lloyd.maxIterations = 3;
   Replay replay(remesh(input, sampled, "grid").recording);
+  EXPECT_FALSE(replay.canRelocate());
   replay.setMethod(RemeshMethod::Relocate);
   EXPECT_EQ(replay.method(), RemeshMethod::Retriangulate);
 }
