@@ -213,7 +213,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--beta", r.beta, "curvature density: weight of H^2")->check(finiteNumber(0, "a number >= 0"));
   cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)")
       ->check(finiteNumber(0, "a number >= 0"));
-  cmd.add_option("--sites", r.sites, "number of vertices of the result")
+  cmd.add_option("--sites", r.sites, "number of vertices of the result (the clean-up may add or remove a few: the report says)")
       ->check(kVerticesAsked);
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "

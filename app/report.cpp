@@ -416,7 +416,9 @@ ViewSwitches viewSwitches(const Layers& shown, bool finalShown) {
 
 std::string crowdedSitesHint(float spacing) {
   if (!(spacing > 0 && spacing < 6.0f)) return "";
-  // Under a pixel with its tenths: the camel head's middle read "as close as 0 px".
+  // Under a pixel with its tenths: the camel head's middle read "as close as 0 px", and
+  // under a tenth the femur's "0.0 px".
+  if (spacing < 0.1f) return "sites under 0.1 px apart: the mouse wheel zooms in";
   return format(spacing < 1 ? "sites as close as %.1f px: the mouse wheel zooms in"
                             : "sites as close as %.0f px: the mouse wheel zooms in",
                 spacing);
@@ -530,12 +532,24 @@ std::string qualityTable(const QualityMetrics& before, const QualityMetrics& aft
   return out.str();
 }
 
+std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
+  const int asked = verticesAsked(options), got = r.after.vertices;
+  if (asked <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
+  return std::to_string(got) + " vertices, " + std::to_string(std::abs(got - asked)) +
+         (got > asked ? " more" : " fewer") + " than the " + std::to_string(asked) +
+         " asked: the clean-up adds or removes a few (it splits edges along seams to stitch them "
+         "back, merges short border edges, removes flat triangles)" +
+         (r.charts > 0 ? ", and each chart's share of the vertices is rounded" : "") +
+         (r.componentsKept > 0 ? ", and components too small for their share are kept as they are" : "");
+}
+
 std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   std::ostringstream out;
   out << "Settings: " << describe(o) << "\n\n";
   out << qualityTable(r.before, r.after, o.measureFidelity ? &r.fidelity : nullptr) << "\n";
   if (o.measureFidelity)
     out << "Hausdorff distance reached at " << farthestPointText(r.fidelity) << "\n";
+  if (const std::string count = vertexCountText(r, o); !count.empty()) out << count << "\n";
   if (r.components > 1)
     out << "Remeshed " << r.components - r.componentsKept << " of " << r.components
         << " connected components, each on its own (the lines below on the map and the cut, and the"

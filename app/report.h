@@ -159,6 +159,10 @@ using DetailRows = std::vector<std::pair<std::string, std::string>>;
 DetailRows cellRows(const CellDetails& d);
 DetailRows triangleRows(const TriangleDetails& d, bool mapped);
 
+// Where a retriangulated result has more or fewer vertices than were asked, by how many and
+// why; else empty.
+std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options);
+
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);

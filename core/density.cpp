@@ -90,7 +90,7 @@ Curvature computeCurvature(const Mesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const int i = t[k], j = t[(k + 1) % 3], l = t[(k + 2) % 3];
       const Vec3 &pi = mesh.points[i], &pj = mesh.points[j], &pl = mesh.points[l];
-      angleSum[i] += std::atan2((pj - pi).cross(pl - pi).norm(), (pj - pi).dot(pl - pi));
+      angleSum[i] += cornerAngle(pi, pj, pl);
       area[i] += a / 3.0;
       // The corner at i weighs the opposite edge (j, l).
       const double w = 0.5 * cotangent(pi, pj, pl);

@@ -81,6 +81,15 @@ double boundingBoxDiagonal(const Mesh& mesh) {
   return (hi - lo).norm();
 }
 
+double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return std::atan2((b - a).cross(c - a).norm(), (b - a).dot(c - a));
+}
+
+double cornerAngle(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const Vec2 u = b - a, v = c - a;
+  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+}
+
 double surfaceArea(const Mesh& mesh) {
   double area = 0;
   for (const Triangle& t : mesh.triangles)

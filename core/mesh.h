@@ -58,6 +58,10 @@ std::pair<Vec2, Vec2> boundingBox(const std::vector<Vec2>& points);
 // Length of its diagonal.
 double boundingBoxDiagonal(const Mesh& mesh);
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
+// The angle at `a` of the triangle a, b, c, in radians (atan2 of the cross and dot products:
+// exact near 0 and 180 degrees, where acos is not).
+double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c);
+double cornerAngle(const Vec2& a, const Vec2& b, const Vec2& c);
 // Zero area up to rounding, as readMesh() refuses a face: the sine of the angle at a is
 // negligible. Exact comparison with 0 would let through collinear corners whose coordinates are
 // not exactly representable.

@@ -12,9 +12,7 @@
 namespace lloydscope {
 
 namespace {
-double angleDeg(const Vec3& at, const Vec3& p, const Vec3& q) {  // at `at`, between p and q
-  return std::atan2((p - at).cross(q - at).norm(), (p - at).dot(q - at)) * 180.0 / M_PI;
-}
+double angleDeg(const Vec3& at, const Vec3& p, const Vec3& q) { return cornerAngle(at, p, q) * 180.0 / M_PI; }
 }  // namespace
 
 std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& c) {

@@ -333,10 +333,6 @@ void requireOneToOne(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<
                 std::to_string(mesh.faceCount()) + " triangles); " + adviceAfterFolds(method));
 }
 
-double cornerAngle(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a
-  return std::atan2((b - a).cross(c - a).norm(), (b - a).dot(c - a));
-}
-
 // LSCM folds where the input has slivers, which cost it almost nothing to flip. Unfolds them
 // locally: the vertices of folded triangles and a few rings around them are placed again by
 // Floater's mean-value coordinates (positive weights: a convex combination of their
@@ -405,10 +401,6 @@ void repairFolds(const Mesh& mesh, std::vector<Vec2>& uv, const std::vector<bool
     const Eigen::VectorXd u = lu.solve(bu), v = lu.solve(bv);
     for (size_t i = 0; i < freeVertices.size(); ++i) uv[freeVertices[i]] = Vec2(u[i], v[i]);
   }
-}
-double cornerAngle(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const Vec2 u = b - a, v = c - a;
-  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
 }
 
 }  // namespace

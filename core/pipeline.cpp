@@ -283,6 +283,8 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
     o.target = options_.polishTarget;
     o.seams = seamed();
     polish(output, map, surfaceDensity(surface(), param_.uv, density_), o);
+  } else if (seamed()) {
+    prepareSeams(output, map);
   }
   if (!cut_) {
     // A chart's last steps are the whole surface's, once its charts are stitched (remeshCharts).
@@ -300,8 +302,9 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
 namespace {
 // The vertices the options ask the result to have: --sites, else --simplify, else 0 (as many
 // as the input).
-int verticesAsked(const RemeshOptions& o) { return o.sites.count > 0 ? o.sites.count : o.simplifyTo; }
 }  // namespace
+
+int verticesAsked(const RemeshOptions& o) { return o.sites.count > 0 ? o.sites.count : o.simplifyTo; }
 
 void requireStitched(const Mesh& stitched, const Topology& want, int verticesWanted, const std::string& name) {
   try {

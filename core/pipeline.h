@@ -216,6 +216,9 @@ class PreparedInput {
   mutable std::optional<SearchableSurface> search_;
 };
 
+// The vertices a run asks for (--sites, else --simplify); 0: as many as the input has.
+int verticesAsked(const RemeshOptions& options);
+
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
 // run fails with the first pass (options.resample), it is made again without it. Several
 // connected components are remeshed each on its own, with shares of the vertices asked for

@@ -339,17 +339,18 @@ void splitDoubledEdges(LiftedMesh& lm, const SurfaceMap& surface, std::vector<in
 
 }  // namespace
 
+std::vector<int> prepareSeams(LiftedMesh& mesh, const SurfaceMap& surface) {
+  // The border stays as it is, so its stitching partners do too.
+  std::vector<int> partners = seamPartners(mesh.mesh, kSeamTolerance * boundingBoxDiagonal(mesh.mesh));
+  flipEdges(mesh.mesh, doubledWhenStitched, &partners);  // what the CDT left
+  splitDoubledEdges(mesh, surface, partners);            // what no flip could remove
+  return partners;
+}
+
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options) {
-  // The border stays as it is, so its stitching partners do too.
-  std::vector<int> partners =
-      options.seams ? seamPartners(mesh.mesh, kSeamTolerance * boundingBoxDiagonal(mesh.mesh))
-                    : std::vector<int>();
+  std::vector<int> partners = options.seams ? prepareSeams(mesh, surface) : std::vector<int>();
   const std::vector<int>* stitched = options.seams ? &partners : nullptr;
-  if (stitched) {
-    flipEdges(mesh.mesh, doubledWhenStitched, stitched);  // what the CDT left
-    splitDoubledEdges(mesh, surface, partners);  // what no flip could remove
-  }
   flipEdges(mesh.mesh, notDelaunay, stitched);
   if (options.iterations <= 0) return;
   std::vector<int> triangleOf(mesh.uv.size());

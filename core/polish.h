@@ -51,4 +51,10 @@ struct SurfaceMap {
 void polish(LiftedMesh& mesh, const SurfaceMap& surface, const Density& surfaceDensity,
             const PolishOptions& options);
 
+// A disk cut open from a surface (its border holds seams), made ready for stitching: edges
+// that stitching would make edges of three triangles or more are flipped away, or split where
+// no flip can (a few vertices added). The polish begins with it; a run without the polish
+// needs it too (without it the femur's seams did not stitch). Returns seamPartners().
+std::vector<int> prepareSeams(LiftedMesh& mesh, const SurfaceMap& surface);
+
 }  // namespace lloydscope

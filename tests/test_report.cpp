@@ -288,6 +288,7 @@ TEST(Report, CrowdedSitesAreSaidWithHowToSeeThem) {
   EXPECT_EQ(crowdedSitesHint(9.0f), "");
   EXPECT_EQ(crowdedSitesHint(0.0f), "");  // no cells to measure
   EXPECT_EQ(crowdedSitesHint(0.42f), "sites as close as 0.4 px: the mouse wheel zooms in");
+  EXPECT_EQ(crowdedSitesHint(0.03f), "sites under 0.1 px apart: the mouse wheel zooms in");  // not "0.0 px"
   // Where they are closest: 100 cells of a unit hexagon's area around sites 1 apart, and 5 of a
   // hundredth (0.1 apart): the 20th smallest of 105 is one of the large. 10 small: close.
   std::vector<BoundedCell> cells(105);
@@ -396,4 +397,27 @@ TEST(Report, ACellsRowsHoldTheCentroidsTwoQuotients) {
   d.mass = 0;
   for (const auto& [label, value] : cellRows(d))
     if (label == "c = int x rho/M") EXPECT_EQ(value, "- (no mass)");
+}
+
+// A result with more or fewer vertices than asked says so, and why (CGAL's femur at 500: 510,
+// with nothing said; --help promised the number asked).
+TEST(Report, AVertexCountOtherThanAskedIsSaid) {
+  RemeshOptions options;
+  options.sites.count = 500;
+  RemeshResult r;
+  r.after.vertices = 500;
+  EXPECT_EQ(vertexCountText(r, options), "");
+  r.after.vertices = 510;
+  const std::string more = vertexCountText(r, options);
+  EXPECT_EQ(more.rfind("510 vertices, 10 more than the 500 asked: the clean-up", 0), 0u) << more;
+  r.after.vertices = 497;
+  r.charts = 19;
+  const std::string fewer = vertexCountText(r, options);
+  EXPECT_EQ(fewer.rfind("497 vertices, 3 fewer than the 500 asked", 0), 0u) << fewer;
+  EXPECT_NE(fewer.find("each chart's share"), std::string::npos) << fewer;
+  options.method = RemeshMethod::Relocate;  // the input's own vertices, however many asked
+  EXPECT_EQ(vertexCountText(r, options), "");
+  options.method = RemeshMethod::Retriangulate;
+  options.sites.count = 0;  // none asked: as many as the input
+  EXPECT_EQ(vertexCountText(r, options), "");
 }
