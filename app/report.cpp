@@ -535,11 +535,10 @@ std::string qualityTable(const QualityMetrics& before, const QualityMetrics& aft
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
   if (asked <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
-  return std::to_string(got) + " vertices, " + std::to_string(std::abs(got - asked)) +
-         (got > asked ? " more" : " fewer") + " than the " + std::to_string(asked) +
-         " asked: the clean-up adds or removes a few (it splits edges along seams to stitch them "
-         "back, merges short border edges, removes flat triangles)" +
-         (r.charts > 0 ? ", and each chart's share of the vertices is rounded" : "") +
+  return std::to_string(got) + " vertices for the " + std::to_string(asked) +
+         " asked: the clean-up adds or removes a few (seams stitched, short border edges merged, "
+         "flat triangles removed)" +
+         (r.charts > 0 ? ", and each chart's share is rounded" : "") +
          (r.componentsKept > 0 ? ", and components too small for their share are kept as they are" : "");
 }
 
