@@ -818,9 +818,11 @@ CaptionFacts Inspector::captionFacts() {
   f.maxToCentroid = it.maxDisplacement;
   f.arrowScale = arrowScale_;
   f.percentMoving = 100.0 * it.fractionMoving;
+  // The cell pinned last: pinning a second one while the class looks on, the caption stayed
+  // on the first.
   if (!selection_.cells().empty())
     f.cell = describeCell(replay_->recording(), replay_->domain(), replay_->view(iteration_),
-                          selection_.cells().front());
+                          selection_.cells().back());
   return f;
 }
 

@@ -102,7 +102,7 @@ struct CaptionFacts {
   // an L-BFGS or Newton step's), and the % of movable sites farther than the threshold.
   double energy = 0, maxToCentroid = 0, percentMoving = 0;
   double arrowScale = 1;  // the Move stage's arrows are drawn so many times as long
-  std::optional<CellDetails> cell;  // the first pinned cell, if any
+  std::optional<CellDetails> cell;  // the cell pinned last, if any
 };
 
 struct Caption {

@@ -377,6 +377,32 @@ TEST(Inspector, PresentationModeShowsTheLessonStage) {
              "--iteration 1 --presentation --stage centroids --select-cell 100");
 }
 
+// The caption quotes the cell pinned last: with 100 pinned after 40 it reads as with 100 alone
+// (it quoted cell 40, the first, whatever was pinned after).
+TEST(Inspector, TheCaptionQuotesTheCellPinnedLast) {
+  const std::string both = test::tempPath("caption_both.png"), alone = test::tempPath("caption_alone.png"),
+                    first = test::tempPath("caption_first.png");
+  const std::string stage = test::assetPath("sphere_cap.off") + " --iteration 1 --presentation --stage centroids";
+  ASSERT_EQ(renderScene(stage + " --select-cell 40 --select-cell 100", both), 0);
+  ASSERT_EQ(renderScene(stage + " --select-cell 100", alone), 0);
+  ASSERT_EQ(renderScene(stage + " --select-cell 40", first), 0);
+  // The caption's rows, above the panes (its numbers' line is the second and third).
+  auto captionDiffers = [](const Picture& a, const Picture& b) {
+    int differing = 0;
+    for (int y = 30; y < 85; ++y)
+      for (int x = 0; x < a.width; ++x)
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(a.at(x, y)[c] - b.at(x, y)[c]) > 24) {
+            ++differing;
+            break;
+          }
+    return differing;
+  };
+  const Picture withBoth = readPng(both), withLast = readPng(alone), withFirst = readPng(first);
+  EXPECT_EQ(captionDiffers(withBoth, withLast), 0);
+  EXPECT_GT(captionDiffers(withBoth, withFirst), 200);  // the test tells the two cells apart
+}
+
 // The lesson's last stage shows and quotes the final result, after the clean-up, as the
 // controls pane's Final column has it (it showed the last iteration's mesh before it).
 TEST(Inspector, TheLessonsLastStageShowsTheFinalResult) {
