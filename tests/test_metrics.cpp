@@ -159,3 +159,23 @@ TEST(Projection, BatchAndStartedQueriesAnswerEachPointAsASingleQueryDoes) {
   const std::vector<double> fewSquared = projection.squaredDistances(few);
   for (size_t i = 0; i < few.size(); ++i) ASSERT_EQ(fewSquared[i], squared[i]) << i;
 }
+
+// The three bars that need no reference, at their edges: 15% irregular is met, 30 and 53
+// degrees are met; a hair beyond each is not. Every trial's choice (slit or whole, with or
+// without the first pass, one disk or charts) counts them.
+TEST(Quality, TheBarsAreMetAtTheirEdges) {
+  QualityMetrics q;
+  q.irregularBoundaryAware = kMostIrregularPercent;
+  q.minAngle = kLeastMinAngle;
+  q.avgMinAngle = kLeastAvgMinAngle;
+  EXPECT_EQ(barsMet(q), 3);
+  q.irregularBoundaryAware = 15.0001;
+  EXPECT_EQ(barsMet(q), 2);
+  q.minAngle = 29.9999;
+  EXPECT_EQ(barsMet(q), 1);
+  q.avgMinAngle = 52.9999;
+  EXPECT_EQ(barsMet(q), 0);
+  EXPECT_EQ(kMostIrregularPercent, 15.0);  // issue 5's numbers
+  EXPECT_EQ(kLeastMinAngle, 30.0);
+  EXPECT_EQ(kLeastAvgMinAngle, 53.0);
+}
