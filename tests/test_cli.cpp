@@ -163,7 +163,9 @@ TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
   EXPECT_TRUE(j["converged"].get<bool>());
   EXPECT_EQ(j["input"]["vertices"], 441);
   EXPECT_GT(j["output"]["avg_min_angle_deg"].get<double>(), 50.0);
-  EXPECT_GE(j["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>(), 0.0);
+  const double hausdorff = j["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>();
+  EXPECT_GT(hausdorff, 0.0);  // a remeshed grid of 441 vertices is not its input
+  EXPECT_LT(hausdorff, 5.0);
   EXPECT_EQ(j["output"]["fidelity"]["farthest_point"].size(), 3u);
   EXPECT_GE(j["snapped_tips"].get<int>(), 0);
   EXPECT_TRUE(j["output"]["fidelity"]["farthest_on"] == "input" ||

@@ -94,9 +94,11 @@ TEST(Inspection, TriangleNumbers) {
     Replay replay(r);
     ASSERT_EQ(replay.method(), method);
     const IterationView& view = replay.view(4);
-    double total = 0;
+    double total = 0, totalUV = 0, shares = 0;
     for (int f = 0; f < static_cast<int>(view.output.triangles.size()); ++f) {
       const TriangleDetails d = describeTriangle(view, f);
+      totalUV += d.areaUV;
+      shares += d.areaUV * d.areaDistortion;  // = the UV area share times r: the 3D area share
       EXPECT_NEAR(d.angles3D[0] + d.angles3D[1] + d.angles3D[2], 180.0, 1e-9);
       EXPECT_NEAR(d.anglesUV[0] + d.anglesUV[1] + d.anglesUV[2], 180.0, 1e-9);
       EXPECT_EQ(d.minAngle, std::min({d.angles3D[0], d.angles3D[1], d.angles3D[2]}));
@@ -108,6 +110,10 @@ TEST(Inspection, TriangleNumbers) {
       }
     }
     EXPECT_NEAR(total, surfaceArea(view.output), 1e-12);
+    // "area share 3D / UV" r = (3D share) / (UV share): weighted by the UV shares, the 3D
+    // shares, which sum to 1.
+    EXPECT_NEAR(totalUV, mapArea(view.output, view.outputUV), 1e-12);
+    EXPECT_NEAR(shares / totalUV, 1.0, 1e-9);
     if (method == RemeshMethod::Retriangulate) {
       // Every corner is a site.
       const TriangleDetails d = describeTriangle(view, 10);

@@ -235,6 +235,40 @@ TEST(Density, CurvatureOfAUnitSphereCap) {
     for (double d : corners) EXPECT_NEAR(d, 1.0, 0.2);
 }
 
+// The curvature density follows alpha |K| + beta H^2, each term on its own: on the paraboloid
+// z = (x^2 + y^2) / 2, K = 1 / (1 + r^2)^2 and H = (2 + r^2) / (2 (1 + r^2)^(3/2)), so from
+// the apex to r = 0.5 the density falls 1.56 times with alpha alone and 1.54 with beta alone
+// (H rather than H^2 would be 1.24). On a sphere every formula was the constant 1.
+TEST(Density, CurvatureDensityFollowsKAndHSquared) {
+  const int n = 32;
+  Mesh mesh = test::grid(n, 1.6);
+  for (Vec3& p : mesh.points) {
+    const double x = p.x() - 0.8, y = p.y() - 0.8;
+    p = Vec3(x, y, 0.5 * (x * x + y * y));
+  }
+  const int apex = (n / 2) * (n + 1) + n / 2, half = (n / 2) * (n + 1) + n / 2 + 10;  // r = 0.5
+  ASSERT_NEAR(mesh.points[half].x(), 0.5, 1e-12);
+  const Parameterization p = parameterize(mesh, {}, "paraboloid");
+  auto ratio = [&](double alpha, double beta) {
+    DensityOptions options{DensityKind::Curvature};
+    options.curvatureTimesArea = false;
+    options.floor = 0;
+    options.alpha = alpha;
+    options.beta = beta;
+    const Density density = computeDensity(mesh, p.uv, options);
+    double atApex = 0, atHalf = 0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        if (mesh.triangles[t][k] == apex) atApex = density[t][k];
+        if (mesh.triangles[t][k] == half) atHalf = density[t][k];
+      }
+    return atApex / atHalf;
+  };
+  const double k = std::pow(1 + 0.25, 2), h = 1.0 / std::pow((2 + 0.25) / (2 * std::pow(1.25, 1.5)), 2);
+  EXPECT_NEAR(ratio(1, 0), k, 0.05 * k);
+  EXPECT_NEAR(ratio(0, 1), h, 0.05 * h);
+}
+
 // The floor is added everywhere, in units of the mean curvature term: a larger floor is a
 // more uniform density (what --floor sets).
 TEST(Density, ALargerCurvatureFloorIsMoreUniform) {
