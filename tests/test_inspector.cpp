@@ -255,6 +255,27 @@ TEST(Inspector, ComparesTheSolversCurves) {
 // A Newton run: each solver keeps its colour (Newton purple, L-BFGS blue, Lloyd grey).
 TEST(Inspector, ColoursEachSolverTheSameWhicheverRuns) {
   checkScene("inspector_compared_newton.png", "--solver newton --compare-solvers --pane plots");
+  // The legend's first words are the run's, in its solver's colour (solverColour: L-BFGS 38,
+  // 77, 178; Newton 158, 77, 184): a solver recoloured is a few hundred pixels of the plots,
+  // under the snapshot's allowance.
+  auto firstColumnOf = [](const Picture& p, int r, int g, int b) {
+    for (int x = 0; x < p.width; ++x)
+      for (int y = 0; y < 42; ++y) {
+        const unsigned char* c = p.at(x, y);
+        if (std::abs(c[0] - r) < 30 && std::abs(c[1] - g) < 30 && std::abs(c[2] - b) < 30) return x;
+      }
+    return p.width;
+  };
+  for (const std::string solver : {"lbfgs", "newton"}) {
+    const std::string png = test::tempPath("legend_" + solver + ".png");
+    ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --solver " + solver + " --compare-solvers --pane plots", png),
+              0);
+    const Picture picture = readPng(png);
+    const int blue = firstColumnOf(picture, 38, 77, 178), purple = firstColumnOf(picture, 158, 77, 184);
+    ASSERT_LT(std::max(blue, purple), picture.width) << solver;  // both in the legend
+    if (solver == "lbfgs") EXPECT_LT(blue, purple);
+    else EXPECT_LT(purple, blue);
+  }
 }
 
 // The same Newton run, recorded and replayed: the same picture. A recording was shown with the
