@@ -36,9 +36,16 @@ TEST(Resample, TheRemeshedOutputLiesOnTheInputSurface) {
   RemeshOptions o;
   o.sites.count = 150;
   o.measureFidelity = false;
+  o.fit = false;  // the fit moves vertices off the input, on purpose
   const RemeshResult r = remesh(input, o, "cap");
-  double deepest = 0, inputSagitta = 0;
-  for (const Vec3& p : r.output.points) deepest = std::max(deepest, 1.0 - p.norm());
+  double deepest = 0, highest = 0, inputSagitta = 0;
+  for (const Vec3& p : r.output.points) {
+    deepest = std::max(deepest, 1.0 - p.norm());
+    highest = std::max(highest, p.norm() - 1.0);  // the input's triangles are chords: inside
+  }
+  double inputHighest = 0;  // the file's vertices are on the sphere to its 7 digits
+  for (const Vec3& p : input.points) inputHighest = std::max(inputHighest, p.norm() - 1.0);
+  EXPECT_LE(highest, inputHighest + 1e-12);
   for (const Triangle& t : input.triangles)
     inputSagitta = std::max(
         inputSagitta, 1.0 - ((input.points[t[0]] + input.points[t[1]] + input.points[t[2]]) / 3).norm());
