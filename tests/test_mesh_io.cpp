@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace lloydscope {
@@ -470,6 +471,27 @@ TEST(MeshIoErrors, AbsurdCountsAreRefusedBeforeAllocating) {
   append<std::int32_t>(ply, 0, false);
   expectFileError("huge_list.ply", ply, "truncated");
   expectFileError("huge_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", "should have");
+  // Refused before allocating: read again with 512 MB more address space than the test has,
+  // where reserving 2e9 points (48 GB) would throw std::bad_alloc (on a machine that
+  // overcommits, the refusal above came either way).
+  const auto readUnderALimit = [] {
+    long pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    const rlim_t limit = static_cast<rlim_t>(pages) * sysconf(_SC_PAGESIZE) + (rlim_t(512) << 20);
+    const rlimit bound{limit, limit};
+    if (setrlimit(RLIMIT_AS, &bound) != 0) std::exit(4);
+    for (const char* name : {"huge.off", "huge_binary.off", "huge.ply", "huge_list.ply", "huge_face.off"}) {
+      try {
+        readMesh(tempPath(name));
+        std::exit(3);  // read: not refused
+      } catch (const Error&) {
+      } catch (const std::bad_alloc&) {
+        std::exit(2);  // allocated first
+      }
+    }
+    std::exit(0);
+  };
+  EXPECT_EXIT(readUnderALimit(), ::testing::ExitedWithCode(0), "");
 }
 
 TEST(MeshIoErrors, MoreDataThanTheHeaderSays) {
