@@ -387,21 +387,22 @@ TEST(MeshIoErrors, DirectoryIsNotAMesh) {
 }
 
 // Root reads any file: as root (CI, where it was skipped) the read is made by a child that
-// has become nobody first.
+// has become nobody first. The children end with _Exit: exit() would run the static
+// destructor that removes this process's temporary folder, which the parent still uses.
 TEST(MeshIoErrors, UnreadableFile) {
   const std::string path = writeFile("unreadable.off", kSquareOff);
   fs::permissions(path, fs::perms::none);
   EXPECT_EXIT(
       {
         if (geteuid() == 0 && (setresgid(65534, 65534, 65534) != 0 || setresuid(65534, 65534, 65534) != 0))
-          std::exit(3);
+          std::_Exit(3);
         try {
           readMesh(path);
         } catch (const Error& e) {
           const std::string message = e.what();
-          std::exit(message.rfind(path + ": cannot read", 0) == 0 ? 0 : 2);
+          std::_Exit(message.rfind(path + ": cannot read", 0) == 0 ? 0 : 2);
         }
-        std::exit(1);
+        std::_Exit(1);
       },
       ::testing::ExitedWithCode(0), "");
   fs::permissions(path, fs::perms::owner_all);
@@ -479,17 +480,17 @@ TEST(MeshIoErrors, AbsurdCountsAreRefusedBeforeAllocating) {
     std::ifstream("/proc/self/statm") >> pages;
     const rlim_t limit = static_cast<rlim_t>(pages) * sysconf(_SC_PAGESIZE) + (rlim_t(512) << 20);
     const rlimit bound{limit, limit};
-    if (setrlimit(RLIMIT_AS, &bound) != 0) std::exit(4);
+    if (setrlimit(RLIMIT_AS, &bound) != 0) std::_Exit(4);
     for (const char* name : {"huge.off", "huge_binary.off", "huge.ply", "huge_list.ply", "huge_face.off"}) {
       try {
         readMesh(tempPath(name));
-        std::exit(3);  // read: not refused
+        std::_Exit(3);  // read: not refused
       } catch (const Error&) {
       } catch (const std::bad_alloc&) {
-        std::exit(2);  // allocated first
+        std::_Exit(2);  // allocated first
       }
     }
-    std::exit(0);
+    std::_Exit(0);
   };
   EXPECT_EXIT(readUnderALimit(), ::testing::ExitedWithCode(0), "");
 }
