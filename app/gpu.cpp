@@ -2,8 +2,8 @@
 
 #include <backends/imgui_impl_vulkan.h>
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 namespace lloydscope::gpu {
@@ -383,10 +383,17 @@ void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes
   if (bytes) std::memcpy(buffer.mapped, data, bytes);
 }
 
+namespace {
+VkExtent2D gRenderArea{0, 0};
+}  // namespace
+
+void setRenderArea(VkExtent2D extent) { gRenderArea = extent; }
+
+VkRect2D withinRenderArea(const float (&rect)[4]) { return clipped(rect, gRenderArea); }
+
 void setViewport(VkCommandBuffer cmd, const float (&rect)[4]) {
   const VkViewport viewport{rect[0], rect[1], rect[2], rect[3], 0.0f, 1.0f};
-  const VkRect2D scissor{{static_cast<int32_t>(rect[0]), static_cast<int32_t>(rect[1])},
-                         {static_cast<uint32_t>(rect[2]), static_cast<uint32_t>(rect[3])}};
+  const VkRect2D scissor = withinRenderArea(rect);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }

@@ -96,15 +96,31 @@ void initImGuiRenderer(Context& gpu, VkRenderPass renderPass, uint32_t imageCoun
 
 // Copies `bytes` into `buffer` (a host-visible vertex buffer), growing it when needed.
 void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes);
-// Viewport and scissor to a pane: x, y, width, height in framebuffer pixels.
+// The render pass's area, which a pane's scissor and clear must lie in: set as each frame's
+// pass begins. A pane beyond it (a window shrunk to 200x150 in a lesson, whose panes were laid
+// out below its foot) was cleared outside the framebuffer, and lavapipe crashed.
+void setRenderArea(VkExtent2D extent);
+// `rect` (x, y, width, height in framebuffer pixels) within `area`; empty (zero extent)
+// where they do not meet.
+inline VkRect2D clipped(const float (&rect)[4], VkExtent2D area) {
+  auto clamp = [](double v, double lo, double hi) { return v < lo ? lo : v > hi ? hi : v; };
+  const double x0 = clamp(rect[0], 0, area.width), y0 = clamp(rect[1], 0, area.height);
+  const double x1 = clamp(double(rect[0]) + rect[2], x0, area.width),
+               y1 = clamp(double(rect[1]) + rect[3], y0, area.height);
+  return {{static_cast<int32_t>(x0), static_cast<int32_t>(y0)},
+          {static_cast<uint32_t>(x1) - static_cast<uint32_t>(x0), static_cast<uint32_t>(y1) - static_cast<uint32_t>(y0)}};
+}
+// The same within the render area.
+VkRect2D withinRenderArea(const float (&rect)[4]);
+// Viewport and scissor to a pane: x, y, width, height in framebuffer pixels. The viewport may
+// reach past the framebuffer (a pane cut by the window's edge); the scissor does not.
 void setViewport(VkCommandBuffer cmd, const float (&rect)[4]);
-// Clears a pane (in a render pass) to the given values: colour, depth or both.
+// Clears a pane (in a render pass) to the given values: colour, depth or both; the part of it
+// in the render area.
 template <size_t N>
 void clearRect(VkCommandBuffer cmd, const VkClearAttachment (&clears)[N], const float (&rect)[4]) {
-  const VkClearRect area{{{static_cast<int32_t>(rect[0]), static_cast<int32_t>(rect[1])},
-                          {static_cast<uint32_t>(rect[2]), static_cast<uint32_t>(rect[3])}},
-                         0, 1};
-  vkCmdClearAttachments(cmd, N, clears, 1, &area);
+  const VkClearRect area{withinRenderArea(rect), 0, 1};
+  if (area.rect.extent.width > 0 && area.rect.extent.height > 0) vkCmdClearAttachments(cmd, N, clears, 1, &area);
 }
 
 // A render pass with one colour and one depth attachment; the colour ends in `finalLayout`

@@ -138,6 +138,7 @@ void Inspector::recordFrame(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffe
   begin.clearValueCount = 2;
   begin.pClearValues = clear;
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  gpu::setRenderArea(extent);
   gCommandBuffer = cmd;
   ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
   vkCmdEndRenderPass(cmd);

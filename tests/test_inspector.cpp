@@ -1,6 +1,7 @@
 // Image snapshots of the whole inspector, rendered headless by the lloydscope binary, compared
 // with committed PNGs under a per-pixel tolerance. After an intended change of the pictures:
 //   LLOYDSCOPE_UPDATE_SNAPSHOTS=1 build/tests/lloydscope_tests --gtest_filter='Inspector*'
+#include "gpu.h"
 #include "mesh_io.h"
 #include "test_support.h"
 
@@ -662,4 +663,23 @@ TEST(Inspector, AResultKeptAsOneDiskAfterChartsSaysSo) {
   const std::string eight = test::cgalSample("eight.off");
   SKIP_UNLESS_EXTRACTED(eight);
   EXPECT_GT(brownNotePixels(eight, test::tempPath("eight_notes.png")), 50);
+}
+
+// A pane's scissor and clear stay in the framebuffer: shrunk to 200x150 during a lesson, the
+// window laid its panes out below its foot, they were cleared there, and lavapipe crashed
+// ("corrupted size vs. prev_size"; reproduced under Xvfb twice, and not since).
+TEST(Inspector, APaneIsClearedOnlyWithinTheFramebuffer) {
+  const VkExtent2D window{200, 150};
+  const float inside[4] = {10, 20, 50, 60}, below[4] = {0, 180, 200, 40}, across[4] = {-30, 140, 100, 30};
+  const VkRect2D a = gpu::clipped(inside, window), b = gpu::clipped(below, window), c = gpu::clipped(across, window);
+  EXPECT_EQ(a.offset.x, 10);
+  EXPECT_EQ(a.offset.y, 20);
+  EXPECT_EQ(a.extent.width, 50u);
+  EXPECT_EQ(a.extent.height, 60u);
+  EXPECT_EQ(b.extent.width * b.extent.height, 0u);  // nothing to clear
+  EXPECT_LE(b.offset.y, 150);
+  EXPECT_EQ(c.offset.x, 0);  // no negative offset (Vulkan refuses one for a scissor)
+  EXPECT_EQ(c.offset.y, 140);
+  EXPECT_EQ(c.extent.width, 70u);
+  EXPECT_EQ(c.extent.height, 10u);
 }
