@@ -335,6 +335,7 @@ void Inspector::forgetResult() {
 void Inspector::startRun() {
   if (!session_ || !workerDone_ || session_->finished()) return;
   stopComparing();  // the run appends to the replay the comparison reads
+  if (lesson_.playing()) toggleLesson();  // its plan is of the iterations before the run
   stopRequested_ = false;
   workerDone_ = false;
   worker_ = std::thread([this] {
@@ -786,6 +787,12 @@ void Inspector::toggleLesson() {
     stage_.reset();
     return;
   }
+  // The lesson's plan is made of the iterations there are: started during a run, it ended on
+  // an iteration of the run's first second and stayed there.
+  if (!workerDone_) {
+    showMessage("A lesson plays a finished run: Stop the run, or let it finish, then start the lesson.");
+    return;
+  }
   playing_ = false;
   lesson_.start(lessonPlan(replay_->iterationCount()));
 }
@@ -814,6 +821,9 @@ CaptionFacts Inspector::captionFacts() {
   f.distortion = result_.distortion;
   f.iteration = iteration_;
   f.iterations = replay_->iterationCount();
+  // A run after Restart, stepped or stopped, has not converged (the Lift stage said "3
+  // iterations to convergence" after three Steps).
+  f.converged = session_ ? session_->converged() : result_.converged;
   const IterationRecord& it = replay_->recording().iterations[iteration_];
   f.energy = it.energy;
   f.maxToCentroid = it.maxDisplacement;
@@ -1746,7 +1756,12 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::Button("Stop")) stopRun();
   if (!running) ImGui::EndDisabled();
   ImGui::SameLine();
+  const bool lessonWaits = running && !lesson_.playing();
+  if (lessonWaits) ImGui::BeginDisabled();
   if (ImGui::Button(lesson_.playing() ? "End lesson" : "Lesson")) toggleLesson();
+  if (lessonWaits) ImGui::EndDisabled();
+  if (lessonWaits && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("After the run: Stop it, or let it finish");
   ImGui::SameLine();
   if (ImGui::Button(presentation_ ? "Controls" : "Present")) presentation_ = !presentation_;
   ImGui::SameLine();

@@ -184,7 +184,8 @@ Caption caption(Stage stage, const CaptionFacts& f) {
       c.numbers = cell ? format("Cell %d: s = (%.4f, %.4f) → (%.4f, %.4f, %.4f)", cell->index,
                                 cell->site.x(), cell->site.y(), cell->site3D.x(),
                                 cell->site3D.y(), cell->site3D.z())
-                       : format("%d iterations to convergence.", f.iterations);
+                       : f.converged ? format("%d iterations to convergence.", f.iterations)
+                                     : format("%d iterations, not converged.", f.iterations);
       break;
     case Stage::Result:
       c.formula = f.method == "relocate"

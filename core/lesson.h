@@ -98,6 +98,7 @@ struct CaptionFacts {
   bool inputIsMapped = false;
   Distortion distortion;
   int iteration = 0, iterations = 0;
+  bool converged = true;  // the run met its thresholds in `iterations`
   // The largest distance from a movable site to its centroid (a Lloyd step's largest move, not
   // an L-BFGS or Newton step's), and the % of movable sites farther than the threshold.
   double energy = 0, maxToCentroid = 0, percentMoving = 0;

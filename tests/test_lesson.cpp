@@ -277,3 +277,15 @@ TEST(Lesson, StageNamesRoundTrip) {
     EXPECT_EQ(parseStage(toString(s)), s);
   EXPECT_THROW(parseStage("lunch"), Error);
 }
+
+// The Lift stage says whether the run converged: after Restart and three Steps it said
+// "3 iterations to convergence".
+TEST(Lesson, TheLiftCaptionSaysWhetherTheRunConverged) {
+  CaptionFacts facts;
+  facts.iterations = 3;
+  facts.converged = false;
+  EXPECT_EQ(caption(Stage::Lift, facts).numbers, "3 iterations, not converged.");
+  facts.iterations = 160;
+  facts.converged = true;
+  EXPECT_EQ(caption(Stage::Lift, facts).numbers, "160 iterations to convergence.");
+}
