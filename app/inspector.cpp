@@ -1102,12 +1102,14 @@ void Inspector::exportControls() {
   };
   if (ImGui::Button("Save this iteration")) start({exportPath_, pane});
   ImGui::SetNextItemWidth(60);
-  ImGui::InputInt("##first", &exportFirst_, 0);
+  // Iterations are numbered from 0: a negative one, which ExportJob reads as "the current
+  // iteration alone", saved one unnumbered picture for a sequence -5 to 1.
+  if (ImGui::InputInt("##first", &exportFirst_, 0)) exportFirst_ = std::max(0, exportFirst_);
   ImGui::SameLine();
   ImGui::TextUnformatted("to");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(60);
-  ImGui::InputInt("##last", &exportLast_, 0);
+  if (ImGui::InputInt("##last", &exportLast_, 0)) exportLast_ = std::max(0, exportLast_);
   ImGui::SameLine();
   if (ImGui::Button("Save sequence")) start({exportPath_, pane, exportFirst_, exportLast_});
   ImGui::TextDisabled("a sequence is numbered: name_0000.png, ...");
