@@ -273,6 +273,14 @@ void Inspector::stopComparing() {
   comparingError_.clear();
 }
 
+// Step and Run change the run a comparison started from: it stops, and says so (its curves
+// never came, and nothing said why).
+void Inspector::stopComparingForARun() {
+  if (comparer_.joinable() && !comparingDone_)
+    showMessage("Compare stopped: Step and Run change the run it compares with; press it again after the run.");
+  stopComparing();
+}
+
 void Inspector::openReplay(Recording recording) {
   stopComparing();
   comparisons_.clear();  // of another run
@@ -334,7 +342,7 @@ void Inspector::forgetResult() {
 
 void Inspector::startRun() {
   if (!session_ || !workerDone_ || session_->finished()) return;
-  stopComparing();  // the run appends to the replay the comparison reads
+  stopComparingForARun();  // the run appends to the replay the comparison reads
   if (lesson_.playing()) toggleLesson();  // its plan is of the iterations before the run
   stopRequested_ = false;
   workerDone_ = false;
@@ -1745,7 +1753,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   const bool canStep = session_ && !running && !session_->finished();
   if (!canStep) ImGui::BeginDisabled();
   if (ImGui::Button("Step")) {
-    stopComparing();
+    stopComparingForARun();
     replay_->append(session_->step());
     setIteration(replay_->iterationCount() - 1);
     if (session_->finished()) finishSession();

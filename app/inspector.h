@@ -174,6 +174,7 @@ class Inspector {
   void collectIterations();
   void finishSession();
   void openReplay(Recording recording);
+  void stopComparingForARun();
   void uploadMesh();
   void drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm::vec3& eye) const;
   const QualityMetrics& currentQuality();
