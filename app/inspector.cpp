@@ -1198,7 +1198,8 @@ void Inspector::fileControls() {
                       "against their neighbours (--repair); a note says what changed");
   if (open) {
     try {
-      stopRun();
+      // Read before the run is stopped (startSession stops it): a missing or bad file left
+      // the run stopped, at iteration 206, beside its error.
       ReadResult read = readMesh(meshPath_, ReadOptions{repairOnOpen_});
       const std::string name = fileNameOf(meshPath_);
       settings_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
@@ -1235,8 +1236,8 @@ void Inspector::fileControls() {
   ImGui::SameLine();
   if (ImGui::Button("Open recording")) {
     try {
+      Recording r = loadRecording(recordingPath_);  // before the run stops, as for a mesh
       stopRun();
-      Recording r = loadRecording(recordingPath_);
       session_.reset();
       input_.reset();
       inputTopology_.reset();  // the recording holds its disk only
