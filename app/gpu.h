@@ -3,6 +3,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -103,10 +104,9 @@ void setRenderArea(VkExtent2D extent);
 // `rect` (x, y, width, height in framebuffer pixels) within `area`; empty (zero extent)
 // where they do not meet.
 inline VkRect2D clipped(const float (&rect)[4], VkExtent2D area) {
-  auto clamp = [](double v, double lo, double hi) { return v < lo ? lo : v > hi ? hi : v; };
-  const double x0 = clamp(rect[0], 0, area.width), y0 = clamp(rect[1], 0, area.height);
-  const double x1 = clamp(double(rect[0]) + rect[2], x0, area.width),
-               y1 = clamp(double(rect[1]) + rect[3], y0, area.height);
+  const double x0 = std::clamp<double>(rect[0], 0, area.width), y0 = std::clamp<double>(rect[1], 0, area.height);
+  const double x1 = std::clamp<double>(double(rect[0]) + rect[2], x0, area.width),
+               y1 = std::clamp<double>(double(rect[1]) + rect[3], y0, area.height);
   return {{static_cast<int32_t>(x0), static_cast<int32_t>(y0)},
           {static_cast<uint32_t>(x1) - static_cast<uint32_t>(x0), static_cast<uint32_t>(y1) - static_cast<uint32_t>(y0)}};
 }

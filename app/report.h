@@ -159,7 +159,7 @@ using DetailRows = std::vector<std::pair<std::string, std::string>>;
 DetailRows cellRows(const CellDetails& d);
 DetailRows triangleRows(const TriangleDetails& d, bool mapped);
 
-// Where a retriangulated result has more or fewer vertices than were asked, by how many and
+// Where a retriangulated result has more or fewer vertices than were asked: both counts, and
 // why; else empty.
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options);
 

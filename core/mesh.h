@@ -39,11 +39,10 @@ struct VertexEdges {
 VertexEdges vertexEdges(const Mesh& mesh);
 
 // The mesh of `triangles` over `points`, keeping only the points some triangle uses (a site on
-// top of another, outside the domain, or a vertex of no face in a file, has none), numbered in order. `kept`, if given,
-// receives for each output vertex the index of its point.
+// top of another, outside the domain, or a vertex of no face in a file, has none), numbered in
+// order. `kept`, if given, receives for each output vertex the index of its point.
 Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
               std::vector<int>* kept = nullptr);
-
 
 // Each vertex's triangles: faces[offset[v]] .. faces[offset[v + 1] - 1].
 struct Rings {
