@@ -35,26 +35,39 @@ Picture readPng(const std::string& path) {
   return p;
 }
 
+// The pixels whose colour `is` takes (a pointer to its red, green and blue).
+template <class ColourTest>
+int pixelsWhere(const Picture& picture, ColourTest is) {
+  int count = 0;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) count += is(picture.at(x, y));
+  return count;
+}
+
 // Pixels of a pinned triangle's teal (Selection::triangleColor: 0, 140, 115).
 int tealPixels(const Picture& picture) {
-  int teal = 0;
-  for (int y = 0; y < picture.height; ++y)
-    for (int x = 0; x < picture.width; ++x) {
-      const unsigned char* c = picture.at(x, y);
-      teal += c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
-    }
-  return teal;
+  return pixelsWhere(picture, [](const unsigned char* c) {
+    return c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145;
+  });
 }
 
 // Pixels of a pinned cell's magenta (Selection::cellColor: 217, 13, 179).
 int magentaPixels(const Picture& picture) {
-  int magenta = 0;
-  for (int y = 0; y < picture.height; ++y)
-    for (int x = 0; x < picture.width; ++x) {
-      const unsigned char* c = picture.at(x, y);
-      magenta += c[0] > 170 && c[1] < 60 && c[2] > 130;
-    }
-  return magenta;
+  return pixelsWhere(picture, [](const unsigned char* c) { return c[0] > 170 && c[1] < 60 && c[2] > 130; });
+}
+
+// Pixels of rows [firstRow, endRow) that differ between two pictures of one size: a channel
+// off by more than 24 (antialiasing stays under it).
+size_t differingPixels(const Picture& a, const Picture& b, int firstRow, int endRow) {
+  size_t differing = 0;
+  for (int y = firstRow; y < endRow; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(a.at(x, y)[c] - b.at(x, y)[c]) > 24) {
+          ++differing;
+          break;
+        }
+  return differing;
 }
 
 int run(const std::string& args) {
@@ -83,15 +96,9 @@ void checkScene(const std::string& name, const std::string& args, std::string in
   ASSERT_FALSE(expected.rgba.empty()) << "missing snapshot " << expectedPath;
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
-  // A pixel differs if a channel is off by more than 24; allow 0.5% of them (antialiasing).
-  size_t differing = 0, inExactRows = 0;
-  for (size_t i = 0; i < actual.rgba.size(); i += 4)
-    for (int c = 0; c < 3; ++c)
-      if (std::abs(actual.rgba[i + c] - expected.rgba[i + c]) > 24) {
-        ++differing;
-        inExactRows += i / 4 < static_cast<size_t>(exactRows) * actual.width;
-        break;
-      }
+  // Allow 0.5% of the pixels to differ (antialiasing), none in the exact rows.
+  const size_t differing = differingPixels(actual, expected, 0, actual.height),
+               inExactRows = differingPixels(actual, expected, 0, exactRows);
   EXPECT_LE(differing, actual.rgba.size() / 4 / 200) << name << ": " << differing << " pixels differ from the snapshot; this run's picture: " << actualPath;
   EXPECT_EQ(inExactRows, 0u) << name << ": the top " << exactRows << " rows differ; this run's picture: " << actualPath;
 }
@@ -171,14 +178,7 @@ TEST(Inspector, TheLoadStageShowsNoPins) {
             0);
   const Picture picture = readPng(png);
   ASSERT_GT(picture.width, 0);
-  int pinned = 0;  // teal (0, 140, 115) or magenta (217, 13, 179)
-  for (int y = 0; y < picture.height; ++y)
-    for (int x = 0; x < picture.width; ++x) {
-      const unsigned char* c = picture.at(x, y);
-      pinned += (c[0] < 40 && c[1] > 110 && c[1] < 170 && c[2] > 85 && c[2] < 145) ||
-                (c[0] > 170 && c[1] < 60 && c[2] > 130);
-    }
-  EXPECT_EQ(pinned, 0);
+  EXPECT_EQ(tealPixels(picture) + magentaPixels(picture), 0);
 }
 
 // A fill's colour bar and its labels stand beside the domain: over it they hid a square
@@ -429,20 +429,10 @@ TEST(Inspector, TheCaptionQuotesTheCellPinnedLast) {
   ASSERT_EQ(renderScene(stage + " --select-cell 100", alone), 0);
   ASSERT_EQ(renderScene(stage + " --select-cell 40", first), 0);
   // The caption's rows, above the panes (its numbers' line is the second and third).
-  auto captionDiffers = [](const Picture& a, const Picture& b) {
-    int differing = 0;
-    for (int y = 30; y < 85; ++y)
-      for (int x = 0; x < a.width; ++x)
-        for (int c = 0; c < 3; ++c)
-          if (std::abs(a.at(x, y)[c] - b.at(x, y)[c]) > 24) {
-            ++differing;
-            break;
-          }
-    return differing;
-  };
+  auto captionDiffers = [](const Picture& a, const Picture& b) { return differingPixels(a, b, 30, 85); };
   const Picture withBoth = readPng(both), withLast = readPng(alone), withFirst = readPng(first);
-  EXPECT_EQ(captionDiffers(withBoth, withLast), 0);
-  EXPECT_GT(captionDiffers(withBoth, withFirst), 200);  // the test tells the two cells apart
+  EXPECT_EQ(captionDiffers(withBoth, withLast), 0u);
+  EXPECT_GT(captionDiffers(withBoth, withFirst), 200u);  // the test tells the two cells apart
 }
 
 // The lesson's last stage shows and quotes the final result, after the clean-up, as the
