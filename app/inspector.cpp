@@ -15,6 +15,7 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -940,37 +941,43 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
                            : " and the current iteration's result (the report's Table II)"));
   const QualityMetrics& current = currentQuality();
   const std::string iterationHeader = "It. " + std::to_string(iteration_);
-  if (ImGui::BeginTable("metrics", showFinal ? 4 : 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-    // Each number column as wide as its header or a five-digit count, whichever is wider.
-    auto numbers = [](const char* header) {
-      const float width = std::max(ImGui::CalcTextSize(header).x, ImGui::CalcTextSize("00000").x);
-      ImGui::TableSetupColumn(header, ImGuiTableColumnFlags_WidthFixed, width);
-    };
+  const int columnCount = showFinal ? 3 : 2;
+  const QualityMetrics* columns[] = {&result_.before, &current, &finalResult};
+  // The rows formatted first, for the columns' widths (numberColumnWidth).
+  std::vector<std::pair<const char*, std::array<std::string, 3>>> rows;
+  auto row = [&](const char* label, const auto& value) {
+    std::array<std::string, 3> cells;
+    for (int k = 0; k < columnCount; ++k) cells[k] = value(*columns[k]);
+    rows.emplace_back(label, cells);
+  };
+  auto oneDecimal = [](double QualityMetrics::*m) {
+    return [m](const QualityMetrics& q) { return format("%.1f", q.*m); };
+  };
+  row("Vertices", [](const QualityMetrics& q) { return std::to_string(q.vertices); });
+  row("Faces", [](const QualityMetrics& q) { return std::to_string(q.faces); });
+  row("Irregular %", oneDecimal(&QualityMetrics::irregularPercent));
+  row(" border-aware", oneDecimal(&QualityMetrics::irregularBoundaryAware));
+  row("Min angle", oneDecimal(&QualityMetrics::minAngle));
+  row("Avg min angle", oneDecimal(&QualityMetrics::avgMinAngle));
+  row("Under 30 deg %", oneDecimal(&QualityMetrics::percentUnder30));
+  if (ImGui::BeginTable("metrics", columnCount + 1, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-    numbers(first);
-    numbers(iterationHeader.c_str());
-    if (showFinal) numbers("Final");
+    const char* headers[] = {first, iterationHeader.c_str(), "Final"};
+    for (int k = 0; k < columnCount; ++k) {
+      std::vector<std::string> values;
+      for (const auto& r : rows) values.push_back(r.second[k]);
+      ImGui::TableSetupColumn(headers[k], ImGuiTableColumnFlags_WidthFixed, numberColumnWidth(headers[k], values));
+    }
     ImGui::TableHeadersRow();
-    const QualityMetrics* columns[] = {&result_.before, &current, &finalResult};
-    auto row = [&](const char* label, const auto& value) {
+    for (const auto& [label, cells] : rows) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       wrappedText(label);  // in a narrow pane (960x600) "Under 30 deg %" ran into its value
-      for (int k = 0; k < (showFinal ? 3 : 2); ++k) {
+      for (int k = 0; k < columnCount; ++k) {
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(value(*columns[k]).c_str());
+        ImGui::TextUnformatted(cells[k].c_str());
       }
-    };
-    auto oneDecimal = [](double QualityMetrics::*m) {
-      return [m](const QualityMetrics& q) { return format("%.1f", q.*m); };
-    };
-    row("Vertices", [](const QualityMetrics& q) { return std::to_string(q.vertices); });
-    row("Faces", [](const QualityMetrics& q) { return std::to_string(q.faces); });
-    row("Irregular %", oneDecimal(&QualityMetrics::irregularPercent));
-    row(" border-aware", oneDecimal(&QualityMetrics::irregularBoundaryAware));
-    row("Min angle", oneDecimal(&QualityMetrics::minAngle));
-    row("Avg min angle", oneDecimal(&QualityMetrics::avgMinAngle));
-    row("Under 30 deg %", oneDecimal(&QualityMetrics::percentUnder30));
+    }
     ImGui::EndTable();
   }
   if (replay_->method() == RemeshMethod::Retriangulate) {

@@ -1,6 +1,7 @@
 #include "report.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -530,6 +531,23 @@ std::string qualityTable(const QualityMetrics& before, const QualityMetrics& aft
     line(out, "RMS distance (% diagonal)", "", format("%.3f", fidelity->rmsPercent));
   }
   return out.str();
+}
+
+std::string pinsNotShown(const std::vector<int>& pinned, size_t count, const std::string& kind,
+                         const std::string& where) {
+  std::string missing;
+  int n = 0;
+  for (int index : pinned)
+    if (index < 0 || static_cast<size_t>(index) >= count) {
+      missing += (n++ ? ", " : " ") + std::to_string(index);
+    }
+  if (n == 0) return "";
+  std::string heading = kind + (n > 1 ? "s" : "");
+  heading[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(heading[0])));
+  const std::string has = count == 0 ? "has no " + kind + "s"
+                                     : "has " + std::to_string(count) + " " + kind + (count > 1 ? "s" : "") +
+                                           ", numbered from 0";
+  return heading + missing + " pinned: " + where + " " + has + ".";
 }
 
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {

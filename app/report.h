@@ -158,6 +158,12 @@ double closeSiteSpacing(const std::vector<BoundedCell>& cells, size_t first);
 using DetailRows = std::vector<std::pair<std::string, std::string>>;
 DetailRows cellRows(const CellDetails& d);
 DetailRows triangleRows(const TriangleDetails& d, bool mapped);
+// The pins of one kind ("cell", "triangle") that `where` ("this iteration") cannot show, for it
+// has `count` of them: "Cells 100, 120 pinned: this iteration has 20 cells, numbered from 0.";
+// empty where every pin shows. After Restart with fewer sites the earlier pins were hidden, and
+// the panel showed nothing at all, not even how to pin.
+std::string pinsNotShown(const std::vector<int>& pinned, size_t count, const std::string& kind,
+                         const std::string& where);
 
 // Where a retriangulated result has more or fewer vertices than were asked: both counts, and
 // why; else empty.

@@ -137,10 +137,13 @@ void Selection::drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D&
 
 void Selection::detailsPanel(const Recording& recording, const Domain& domain,
                              const IterationView& view, const Mesh& final) {
-  if (empty()) {
+  auto greyed = [](const std::string& text) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    wrappedText("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, Escape clears all.");
+    wrappedText(text);
     ImGui::PopStyleColor();
+  };
+  if (empty()) {
+    greyed("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, Escape clears all.");
     return;
   }
   int unpinCell = -1, unpinTriangle = -1;
@@ -196,6 +199,19 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     if (const TriangleDetails d = describeTriangle(final, triangle); d.index >= 0)
       if (triangleTable(d, "final triangle", "Final result, triangle " + std::to_string(triangle), false))
         unpinFinal = triangle;
+  // Pins this view cannot show (a run with fewer sites, an iteration with fewer triangles) are
+  // said, not dropped: scrubbing back shows them again.
+  const std::string notShown[] = {
+      pinsNotShown(cells_, view.cells.size(), "cell", "this iteration"),
+      pinsNotShown(triangles_, view.output.triangles.size(), "triangle", "the result at this iteration"),
+      pinsNotShown(finalTriangles_, final.triangles.size(), "triangle", "the final result")};
+  bool anyNotShown = false;
+  for (const std::string& note : notShown)
+    if (!note.empty()) {
+      greyed(note);
+      anyNotShown = true;
+    }
+  if (anyNotShown) greyed("Escape unpins every cell and triangle.");
   toggleCell(unpinCell);
   toggleTriangle(unpinTriangle);
   toggleFinalTriangle(unpinFinal);

@@ -31,6 +31,12 @@ void addInspectorFonts() {
 
 float presentationTextSize(float height) { return 21.0f * std::max(1.0f, height / 800.0f); }
 
+float numberColumnWidth(const std::string& header, const std::vector<std::string>& values) {
+  float width = std::max(ImGui::CalcTextSize(header.c_str()).x, ImGui::CalcTextSize("00000").x);
+  for (const std::string& value : values) width = std::max(width, ImGui::CalcTextSize(value.c_str()).x);
+  return width;
+}
+
 std::string wrappedLines(const std::string& text, float width) {
   const auto measure = [](const std::string& line) { return ImGui::CalcTextSize(line.c_str()).x; };
   std::string lines;

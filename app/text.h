@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace lloydscope {
 
@@ -20,6 +21,11 @@ float presentationTextSize(float height);
 // `text` in lines no wider than `width` pixels in the current font, joined by line breaks,
 // broken at spaces only (wrapAtSpaces).
 std::string wrappedLines(const std::string& text, float width);
+
+// A table column of numbers in the current font: as wide as its header, its widest value or
+// five digits (steady while scrubbing), whichever is widest. Five digits alone cut "100000"
+// short at 100,000 sites.
+float numberColumnWidth(const std::string& header, const std::vector<std::string>& values);
 
 // A lesson caption as its pane shows it: the title (dark red), the formula wrapped beside it,
 // the numbers (blue) wrapped under both, in the room left on the line.

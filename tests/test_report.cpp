@@ -400,6 +400,20 @@ TEST(Report, ACellsRowsHoldTheCentroidsTwoQuotients) {
   EXPECT_EQ(rows.at("c = int x rho/M"), "- (no mass)");
 }
 
+// After Restart with 20 sites, cell 100 pinned in the run before was hidden, and the Selection
+// panel showed nothing, not even how to pin: each pin a view cannot show is said.
+TEST(Report, PinsAViewCannotShowAreSaid) {
+  EXPECT_EQ(pinsNotShown({3, 19}, 20, "cell", "this iteration"), "");
+  EXPECT_EQ(pinsNotShown({100}, 20, "cell", "this iteration"),
+            "Cell 100 pinned: this iteration has 20 cells, numbered from 0.");
+  EXPECT_EQ(pinsNotShown({5, 100, 20}, 20, "cell", "this iteration"),
+            "Cells 100, 20 pinned: this iteration has 20 cells, numbered from 0.");
+  EXPECT_EQ(pinsNotShown({0}, 1, "triangle", "the final result"), "");
+  EXPECT_EQ(pinsNotShown({1}, 1, "triangle", "the final result"),
+            "Triangle 1 pinned: the final result has 1 triangle, numbered from 0.");
+  EXPECT_EQ(pinsNotShown({7}, 0, "triangle", "the final result"), "Triangle 7 pinned: the final result has no triangles.");
+}
+
 // A result with more or fewer vertices than asked says so, and why (CGAL's femur at 500: 510,
 // with nothing said; --help promised the number asked).
 TEST(Report, AVertexCountOtherThanAskedIsSaid) {

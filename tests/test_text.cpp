@@ -119,6 +119,27 @@ TEST(Text, TheCaptionTakesTheHeightItIsGiven) {
   ImGui::DestroyContext();
 }
 
+// Table II's number columns were five digits wide: "100000" (vertices at 100,000 sites) was cut
+// short.
+TEST(Text, ANumberColumnFitsItsWidestNumber) {
+  ImGui::CreateContext();
+  unsigned char* pixels = nullptr;
+  int atlasWidth = 0, atlasHeight = 0;
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(800, 600);
+  io.DeltaTime = 1.0f / 60.0f;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &atlasWidth, &atlasHeight);
+  ImGui::NewFrame();
+  const float fiveDigits = ImGui::CalcTextSize("00000").x;
+  EXPECT_FLOAT_EQ(numberColumnWidth("It. 5", {"500", "73.2"}), fiveDigits);  // steady while scrubbing
+  EXPECT_FLOAT_EQ(numberColumnWidth("It. 1000", {"500"}), ImGui::CalcTextSize("It. 1000").x);
+  EXPECT_FLOAT_EQ(numberColumnWidth("It. 5", {"100000", "199801"}), ImGui::CalcTextSize("100000").x);
+  EXPECT_GT(ImGui::CalcTextSize("100000").x, fiveDigits);
+  ImGui::EndFrame();
+  ImGui::DestroyContext();
+}
+
 // Presentation mode's type was 21 px whatever the window: a hundredth of a 2560x1600 picture.
 TEST(Text, PresentationTypeGrowsWithTheWindow) {
   EXPECT_FLOAT_EQ(presentationTextSize(600), 21.0f);  // never smaller
