@@ -8,6 +8,7 @@
 #include "keys.h"
 #include "text.h"
 #include "mesh_io.h"
+#include "names.h"
 #include "png.h"
 #include "report.h"
 #include "topology.h"
@@ -499,20 +500,16 @@ void Inspector::setCamera(const std::string& text) {
 }
 
 CellFill parseCellFill(const std::string& name) {
-  const std::pair<const char*, CellFill> fills[] = {{"none", CellFill::None},       {"mass", CellFill::Mass},
-                                                    {"area", CellFill::Area},       {"energy", CellFill::Energy},
-                                                    {"distance", CellFill::ToCentroid}, {"moved", CellFill::Moved}};
-  for (const auto& [text, fill] : fills)
-    if (name == text) return fill;
-  throw Error("fill \"" + name + "\": expected none, mass, area, energy, distance or moved");
+  constexpr NamedValue<CellFill> kFillNames[] = {{CellFill::None, "none"},         {CellFill::Mass, "mass"},
+                                                 {CellFill::Area, "area"},         {CellFill::Energy, "energy"},
+                                                 {CellFill::ToCentroid, "distance"}, {CellFill::Moved, "moved"}};
+  return parseName(kFillNames, name, "fill");
 }
 
 Pane parsePane(const std::string& name) {
-  if (name == "window") return Pane::Window;
-  if (name == "3d") return Pane::View3D;
-  if (name == "2d") return Pane::Domain2D;
-  if (name == "plots") return Pane::Plots;
-  throw Error("pane \"" + name + "\": expected window, 3d, 2d or plots");
+  constexpr NamedValue<Pane> kPaneNames[] = {
+      {Pane::Window, "window"}, {Pane::View3D, "3d"}, {Pane::Domain2D, "2d"}, {Pane::Plots, "plots"}};
+  return parseName(kPaneNames, name, "pane");
 }
 
 void Inspector::startExport(ExportJob job) {

@@ -1,5 +1,7 @@
 #include "density.h"
 
+#include "names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -166,19 +168,11 @@ Density computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
   return {};
 }
 
-const char* toString(DensityKind kind) {
-  switch (kind) {
-    case DensityKind::Uniform: return "uniform";
-    case DensityKind::Area: return "area";
-    case DensityKind::Curvature: return "curvature";
-  }
-  return "?";
-}
+constexpr NamedValue<DensityKind> kDensityNames[] = {
+    {DensityKind::Uniform, "uniform"}, {DensityKind::Area, "area"}, {DensityKind::Curvature, "curvature"}};
 
-DensityKind parseDensityKind(const std::string& text) {
-  for (DensityKind k : {DensityKind::Uniform, DensityKind::Area, DensityKind::Curvature})
-    if (text == toString(k)) return k;
-  throw Error("unknown density '" + text + "' (uniform, area, curvature)");
-}
+const char* toString(DensityKind kind) { return nameOf(kDensityNames, kind); }
+
+DensityKind parseDensityKind(const std::string& text) { return parseName(kDensityNames, text, "density"); }
 
 }  // namespace lloydscope

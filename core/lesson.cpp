@@ -1,5 +1,7 @@
 #include "lesson.h"
 
+#include "names.h"
+
 #include <algorithm>
 #include <limits>
 #include <cstdio>
@@ -7,9 +9,6 @@
 namespace lloydscope {
 
 namespace {
-
-constexpr const char* kNames[] = {"load", "parameterize", "voronoi", "centroids",
-                                  "move", "lift",         "result"};
 
 template <typename... Args>
 std::string format(const char* pattern, Args... args) {
@@ -20,14 +19,13 @@ std::string format(const char* pattern, Args... args) {
 
 }  // namespace
 
-const char* toString(Stage stage) { return kNames[static_cast<int>(stage)]; }
+constexpr NamedValue<Stage> kStageNames[] = {
+    {Stage::Load, "load"}, {Stage::Parameterize, "parameterize"}, {Stage::Voronoi, "voronoi"},
+    {Stage::Centroids, "centroids"}, {Stage::Move, "move"}, {Stage::Lift, "lift"}, {Stage::Result, "result"}};
 
-Stage parseStage(const std::string& name) {
-  for (int s = 0; s < 7; ++s)
-    if (name == kNames[s]) return static_cast<Stage>(s);
-  throw Error("stage \"" + name +
-              "\": expected load, parameterize, voronoi, centroids, move, lift or result");
-}
+const char* toString(Stage stage) { return nameOf(kStageNames, stage); }
+
+Stage parseStage(const std::string& name) { return parseName(kStageNames, name, "stage"); }
 
 Layers layersFor(Stage stage) {
   Layers l;

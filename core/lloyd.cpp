@@ -1,6 +1,7 @@
 #include "lloyd.h"
 
 #include "cvt_hessian.h"
+#include "names.h"
 #include "stopwatch.h"
 
 #include <algorithm>
@@ -249,19 +250,11 @@ void LloydSolver::run(const std::atomic<bool>* stop) {
     step();
 }
 
-const char* toString(CvtSolver solver) {
-  switch (solver) {
-    case CvtSolver::Lloyd: return "lloyd";
-    case CvtSolver::Lbfgs: return "lbfgs";
-    case CvtSolver::Newton: return "newton";
-  }
-  return "?";
-}
+constexpr NamedValue<CvtSolver> kSolverNames[] = {
+    {CvtSolver::Lloyd, "lloyd"}, {CvtSolver::Lbfgs, "lbfgs"}, {CvtSolver::Newton, "newton"}};
 
-CvtSolver parseCvtSolver(const std::string& text) {
-  for (CvtSolver s : kCvtSolvers)
-    if (text == toString(s)) return s;
-  throw Error("unknown solver '" + text + "' (lloyd, lbfgs, newton)");
-}
+const char* toString(CvtSolver solver) { return nameOf(kSolverNames, solver); }
+
+CvtSolver parseCvtSolver(const std::string& text) { return parseName(kSolverNames, text, "solver"); }
 
 }  // namespace lloydscope

@@ -1,6 +1,7 @@
 #include "parameterization.h"
 
 #include "cgal_types.h"
+#include "names.h"
 #include "topology.h"
 
 #include <CGAL/Eigen_solver_traits.h>
@@ -481,20 +482,17 @@ std::vector<Vec2> conformalMap(const Mesh& disk, const std::string& name) {
   return leastSquaresConformalMap(disk, name);
 }
 
+// The methods one can ask for; the input's own map ("input-map") is not one of them.
+constexpr NamedValue<ParamMethod> kParamMethodNames[] = {
+    {ParamMethod::Auto, "auto"},   {ParamMethod::Authalic, "authalic"}, {ParamMethod::Conformal, "conformal"},
+    {ParamMethod::MeanValue, "mean-value"}, {ParamMethod::Tutte, "tutte"}, {ParamMethod::Lscm, "lscm"}};
+constexpr NamedValue<Border> kBorderNames[] = {{Border::Square, "square"}, {Border::Circle, "circle"}};
+
 const char* toString(ParamMethod method) {
-  switch (method) {
-    case ParamMethod::Auto: return "auto";
-    case ParamMethod::Authalic: return "authalic";
-    case ParamMethod::Conformal: return "conformal";
-    case ParamMethod::MeanValue: return "mean-value";
-    case ParamMethod::Tutte: return "tutte";
-    case ParamMethod::Lscm: return "lscm";
-    case ParamMethod::Given: return "input-map";
-  }
-  return "?";
+  return method == ParamMethod::Given ? "input-map" : nameOf(kParamMethodNames, method);
 }
 
-const char* toString(Border border) { return border == Border::Square ? "square" : "circle"; }
+const char* toString(Border border) { return nameOf(kBorderNames, border); }
 
 std::string borderPhrase(ParamMethod used, Border border) {
   if (used == ParamMethod::Lscm) return "free border";
@@ -503,17 +501,9 @@ std::string borderPhrase(ParamMethod used, Border border) {
 }
 
 ParamMethod parseParamMethod(const std::string& text) {
-  for (ParamMethod m : {ParamMethod::Auto, ParamMethod::Authalic, ParamMethod::Conformal, ParamMethod::MeanValue,
-                        ParamMethod::Tutte, ParamMethod::Lscm})
-    if (text == toString(m)) return m;
-  throw Error("unknown parameterization '" + text +
-              "' (auto, authalic, conformal, mean-value, tutte, lscm)");
+  return parseName(kParamMethodNames, text, "parameterization");
 }
 
-Border parseBorder(const std::string& text) {
-  if (text == "square") return Border::Square;
-  if (text == "circle") return Border::Circle;
-  throw Error("unknown border '" + text + "' (square, circle)");
-}
+Border parseBorder(const std::string& text) { return parseName(kBorderNames, text, "border"); }
 
 }  // namespace lloydscope

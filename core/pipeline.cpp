@@ -2,6 +2,7 @@
 
 #include "charts.h"
 #include "mesh_io.h"
+#include "names.h"
 #include "flips.h"
 #include "last_steps.h"
 #include "polish.h"
@@ -944,14 +945,11 @@ RemeshOptions optionsFromSettings(const std::string& settings) {
   return o;
 }
 
-const char* toString(RemeshMethod method) {
-  return method == RemeshMethod::Relocate ? "relocate" : "retriangulate";
-}
+constexpr NamedValue<RemeshMethod> kRemeshMethodNames[] = {{RemeshMethod::Relocate, "relocate"},
+                                                            {RemeshMethod::Retriangulate, "retriangulate"}};
 
-RemeshMethod parseRemeshMethod(const std::string& text) {
-  if (text == "relocate") return RemeshMethod::Relocate;
-  if (text == "retriangulate") return RemeshMethod::Retriangulate;
-  throw Error("unknown method '" + text + "' (relocate, retriangulate)");
-}
+const char* toString(RemeshMethod method) { return nameOf(kRemeshMethodNames, method); }
+
+RemeshMethod parseRemeshMethod(const std::string& text) { return parseName(kRemeshMethodNames, text, "method"); }
 
 }  // namespace lloydscope

@@ -2,6 +2,7 @@
 
 #include "flips.h"
 #include "metrics.h"
+#include "names.h"
 
 #include <algorithm>
 #include <iterator>
@@ -234,19 +235,14 @@ double meanEdgeLength(const Mesh& m) {
   return sum / (3.0 * m.faceCount());
 }
 
-const char* toString(PolishTarget target) {
-  switch (target) {
-    case PolishTarget::Voronoi: return "voronoi";
-    case PolishTarget::Centroid: return "centroid";
-    case PolishTarget::Circumcenter: return "circumcenter";
-  }
-  return "?";
-}
+constexpr NamedValue<PolishTarget> kPolishTargetNames[] = {{PolishTarget::Voronoi, "voronoi"},
+                                                            {PolishTarget::Centroid, "centroid"},
+                                                            {PolishTarget::Circumcenter, "circumcenter"}};
+
+const char* toString(PolishTarget target) { return nameOf(kPolishTargetNames, target); }
 
 PolishTarget parsePolishTarget(const std::string& text) {
-  for (PolishTarget t : kPolishTargets)
-    if (text == toString(t)) return t;
-  throw Error("unknown polish target '" + text + "' (voronoi, centroid, circumcenter)");
+  return parseName(kPolishTargetNames, text, "polish target");
 }
 
 bool turnsOver(const Mesh& m, const Rings& rings, int v, const Vec3& to) {

@@ -359,6 +359,8 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
            {"--select-triangle 5000", "sphere_cap.off: triangle 5000 does not exist"},
            {"--final --select-triangle 5000", "(the final result has 934, numbered from 0)"},
            {"--select-triangle 5000", "(the result at iteration 112 has 934, numbered from 0)"},
+           {"--pane x", "unknown pane 'x' (window, 3d, 2d, plots)"},
+           {"--fill y", "unknown fill 'y' (none, mass, area, energy, distance, moved)"},
            {"--camera 'one two'", "camera"},
            {"--camera '0 0 -1 0 0 0'", "camera"},
            // read as infinite: it was refused as if not above 0
