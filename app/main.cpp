@@ -130,8 +130,6 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   return 0;
 }
 
-}  // namespace
-
 void addRepairFlag(CLI::App& cmd, bool& repair) {
   cmd.add_flag("--repair", repair,
                "Weld vertices at the same position (an unwelded seam), remove faces of zero area, "
@@ -315,132 +313,286 @@ void keepFreedMemory() {
   mallopt(M_TOP_PAD, 64 << 20);
 }
 
+// One struct a command: its arguments, the options that fill them (add) and its work (run).
+
+struct RemeshCommand {
+  CLI::App* cmd = nullptr;
+  RemeshArgs args;
+
+  void add(CLI::App& app) {
+    cmd = app.add_subcommand("remesh", "Remesh a disk-topology triangle mesh");
+    cmd->add_option("input", args.input, "Input mesh (OFF, OBJ or PLY)")->required();
+    cmd->add_option("-o,--output", args.output, "Output mesh (OFF, OBJ or PLY)")->check(kFileName);
+    cmd->add_option("--record", args.record, "Save every Lloyd iteration to this file")->check(kFileName);
+    cmd->add_flag("--json", args.json, "Print the results as one JSON object");
+    addRemeshOptions(*cmd, args);
+  }
+  int run() const { return runRemesh(args, *cmd); }
+};
+
+struct InspectCommand {
+  CLI::App* cmd = nullptr;
+  RemeshArgs args;
+  ScreenshotOptions shot;
+  std::string size, pane = "window", iterations, fill, stage;
+  bool noTimings = false;
+
+  void add(CLI::App& app) {
+    cmd = app.add_subcommand("inspect", "Open the inspector on a mesh or a recording; with --screenshot, render it "
+                                        "headless to a PNG and exit");
+    cmd->add_option("input", args.input, "Mesh (OFF, OBJ, PLY) or recording (remesh --record, .lsrec)")->required();
+    // The window's hint line has room for the stepping keys only; the others were in the guide
+    // alone.
+    cmd->footer(
+        "Keys in the window: <- -> an iteration (Shift: ten; in a lesson, a stage), Home/End the first/last, "
+        "Space play/pause, P presentation (classroom) mode, L the lesson, Escape unpin every cell and "
+        "triangle, F (over the 3D or 2D view) fit it.");
+    cmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);
+    cmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots");
+    cmd->add_option("--iterations", iterations, "With --screenshot: FIRST:LAST, one numbered PNG per iteration");
+    cmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")->check(wholeNumber(0));
+    cmd->add_flag("--final", shot.view.final,
+                  "The 3D pane shows the final result (what remesh writes), with a red ring "
+                  "where it is farthest from the input");
+    cmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)")->check(wholeNumber(0));
+    cmd->add_option("--select-triangle", shot.view.triangles,
+                    "Pin this triangle of the result (with --final: of the final result; repeatable)")
+        ->check(wholeNumber(0));
+    cmd->add_flag("--select-worst", shot.view.worstTriangle,
+                  "Pin the triangle with the smallest angle in the result at the iteration shown (with --final: in the final result)");
+    cmd->add_option("--fill", fill,
+                    "What colours the 2D cells: none, mass, area, energy, distance (site to "
+                    "centroid) or moved (since the iteration before)");
+    cmd->add_flag("--compare-solvers", shot.view.compareSolvers,
+                  "Also relax the run's start with the other two solvers and plot their curves");
+    cmd->add_flag("--presentation", shot.view.presentation,
+                  "Classroom mode: large fonts, thick lines, no controls pane");
+    cmd->add_option("--stage", stage,
+                    "Show one stage of the lesson with its caption: load, parameterize, "
+                    "voronoi, centroids, move, lift or result");
+    cmd->add_option("--camera", shot.view.camera,
+                    "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
+                    "the point x y z looked at (the inspector's Copy view)");
+    cmd->add_option("--size", size, "Picture size WxH, " + pictureSizes() + " (default 1280x800)");
+    cmd->add_flag("--validation", shot.validation, "Enable the Vulkan validation layer; fail if it reports anything");
+    cmd->add_flag("--no-timings", noTimings, "Leave timings out of the picture, so that it is the same on every run");
+    addRemeshOptions(*cmd, args);
+  }
+
+  // Plain `lloydscope`: the inspector on the default mesh.
+  int runDefault() {
+    args.input = LLOYDSCOPE_SOURCE_DIR "/assets/bumpy_disk.off";
+    requireDisplay();
+    RemeshOptions options;
+    std::optional<Mesh> input;
+    RemeshResult result = openForInspection(args, *cmd, options, &input);
+    return runWindow(args.input, options, std::move(result), false, std::move(input));
+  }
+
+  int run() {
+    parseSize(size, shot.width, shot.height);
+    shot.timings = !noTimings;
+    shot.picture.pane = parsePane(pane);
+    if (!stage.empty()) shot.view.stage = parseStage(stage);
+    if (!fill.empty()) shot.view.fill = parseCellFill(fill);
+    shot.view.repair = args.repair;
+    if (!iterations.empty()) parseIterations();
+    RemeshOptions options;
+    std::optional<Mesh> input;
+    if (shot.picture.path.empty()) {
+      requireDisplay();  // before minutes of work that no window would show
+      RemeshResult result = openForInspection(args, *cmd, options, &input);
+      return runWindow(args.input, options, std::move(result), shot.validation, std::move(input), shot.view);
+    }
+    requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
+    RemeshResult result = openForInspection(args, *cmd, options, &input);
+    renderScreenshot(args.input, options, std::move(result), shot, std::move(input));
+    return 0;
+  }
+
+  // --iterations FIRST:LAST
+  void parseIterations() {
+    long long first = 0, last = 0;
+    char rest;
+    if (std::sscanf(iterations.c_str(), "%lld:%lld%c", &first, &last, &rest) != 2 || first < 0 ||
+        first > std::numeric_limits<int>::max() || last > std::numeric_limits<int>::max())  // 0:4294967296 wrapped to 0:0
+      throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
+    shot.picture.first = static_cast<int>(first);
+    shot.picture.last = static_cast<int>(last);
+  }
+};
+
+struct FrameBenchCommand {
+  CLI::App* cmd = nullptr;
+  RemeshArgs args;
+  std::string size;
+  int frames = 100;
+
+  void add(CLI::App& app) {
+    cmd = app.add_subcommand("bench-frames", "Median frame time of the inspector while scrubbing a recording (headless)");
+    cmd->add_option("input", args.input, "Mesh")->required();
+    cmd->add_option("--frames", frames, "Frames to time")->check(wholeNumber(1, kMostFrames));
+    cmd->add_option("--size", size, "Frame size WxH, " + pictureSizes() + " (default 1280x800)");
+    addRemeshOptions(*cmd, args);
+  }
+
+  int run() const {
+    int width = 1280, height = 800;
+    parseSize(size, width, height);
+    RemeshOptions options;
+    RemeshResult result = openForInspection(args, *cmd, options);
+    const size_t sites = result.recording.fixedSites.size() +
+                         (result.recording.iterations.empty() ? 0 : result.recording.iterations[0].sites.size());
+    const int iterations = result.iterations;
+    auto median = [](std::vector<double> v) {
+      std::sort(v.begin(), v.end());
+      return v[v.size() / 2];
+    };
+    const FrameTimes still = benchmarkScrub(args.input, options, result, width, height, frames, false);
+    const FrameTimes scrub = benchmarkScrub(args.input, options, std::move(result), width, height, frames, true);
+    std::printf("| sites | iterations | size | frames | median ms, still | median ms, scrubbing | "
+                "max ms, scrubbing |\n|---|---|---|---|---|---|---|\n"
+                "| %zu | %d | %dx%d | %d | %.1f | %.1f | %.1f |\n",
+                sites, iterations, width, height, frames, median(still.milliseconds), median(scrub.milliseconds),
+                *std::max_element(scrub.milliseconds.begin(), scrub.milliseconds.end()));
+    return 0;
+  }
+};
+
+struct BenchCommand {
+  CLI::App* cmd = nullptr;
+  BenchOptions options;
+  bool noReference = false;
+
+  void add(CLI::App& app) {
+    cmd = app.add_subcommand("bench", "Lloydscope against CGAL's isotropic_remeshing on prepared inputs (markdown, CSV)");
+    cmd->add_option("models", options.models, "Meshes (default: CGAL's disk samples in data/cgal)");
+    cmd->add_option("--sizes", options.sizes, "Vertex counts (default 500 1000 2000)")->check(kVerticesAsked);
+    cmd->add_option("--csv", options.csv, "CSV output (default bench.csv)")->check(kFileName);
+    cmd->add_option("--save-inputs", options.saveInputs, "Also write each prepared input to DIR/<model>_<size>.off");
+    cmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
+    cmd->add_flag("--as-is", options.asIs,
+                  "Use the models as they come, not prepared: each remeshed to each size "
+                  "(--sites), with the defaults and --full-input, beside CGAL's remesher on it");
+    addRepairFlag(*cmd, options.repair);
+    cmd->add_option("--lloyd-step", options.stepSites, "Instead: time one Lloyd iteration at N sites (one core and all)")
+        ->check(kVerticesAsked);
+  }
+
+  int run() {
+    options.reference = !noReference;
+    if (options.stepSites > 0) runStepBench(options);
+    else runBench(options);
+    return 0;
+  }
+};
+
+struct SimplifyCommand {
+  CLI::App* cmd = nullptr;
+  std::string input, output;
+  SimplifyOptions target;
+  bool repair = false;
+
+  void add(CLI::App& app) {
+    cmd = app.add_subcommand("simplify", "Quadric edge collapse (Garland-Heckbert) to a target size, boundary in place");
+    cmd->add_option("input", input, "Mesh (OFF, OBJ, PLY)")->required();
+    cmd->add_option("-o,--output", output, "Where to write the result")->required()->check(kFileName);
+    auto* size = cmd->add_option_group("target", "one of");
+    size->add_option("--vertices", target.vertices, "Target number of vertices")->check(kPositiveCount);
+    size->add_option("--faces", target.faces, "Target number of faces")->check(kPositiveCount);
+    size->add_option("--ratio", target.ratio, "Target fraction of the vertices, in (0, 1]")
+        ->check(finiteNumber(std::numeric_limits<double>::min(), "a fraction in (0, 1]", 1));
+    size->require_option(1);
+    addRepairFlag(*cmd, repair);
+  }
+
+  int run() const {
+    if (sameFile(output, input)) throw Error(output + ": --output would replace the input mesh; give it another name");
+    requireMeshWritable(output);
+    const Mesh mesh = load(input, repair);
+    const SimplifyResult s = simplify(mesh, target, input);
+    writeMesh(s.mesh, output);
+    std::cout << input << ": " << mesh.vertexCount() << " vertices, " << mesh.faceCount() << " faces -> "
+              << s.mesh.vertexCount() << " vertices, " << s.mesh.faceCount() << " faces (" << s.collapses
+              << " collapses, " << std::lround(s.milliseconds) << " ms)\n";
+    return 0;
+  }
+};
+
+struct MetricsCommand {
+  CLI::App* cmd = nullptr;
+  std::string mesh, reference;
+  bool json = false, repair = false;
+
+  void add(CLI::App& app) {
+    cmd = app.add_subcommand("metrics", "Measure a mesh's quality");
+    cmd->add_option("mesh", mesh, "Mesh to measure")->required();
+    cmd->add_option("--reference", reference, "Also measure Hausdorff and RMS distance to this mesh");
+    cmd->add_flag("--json", json, "Print JSON");
+    addRepairFlag(*cmd, repair);
+  }
+
+  int run() const {
+    const Mesh measured = load(mesh, repair);
+    const QualityMetrics quality = measureQuality(measured);
+    Fidelity fidelity;
+    const bool withReference = !reference.empty();
+    if (withReference) {
+      const Mesh against = load(reference, repair);
+      requireExactPredicatesRange(measured, mesh, "measured");
+      requireExactPredicatesRange(against, reference, "measured");
+      fidelity = measureFidelity(measured, against);
+    }
+    if (json) {
+      nlohmann::json j = toJson(quality);
+      if (withReference) j["fidelity"] = toJson(fidelity);
+      std::cout << printable(j) << "\n";
+    } else {
+      std::cout << metricsReport(quality, withReference ? &fidelity : nullptr);
+    }
+    return 0;
+  }
+};
+
+struct InfoCommand {
+  CLI::App* cmd = nullptr;
+  std::string recording;
+  bool json = false;
+
+  void add(CLI::App& app) {
+    cmd = app.add_subcommand("info", "Summarize a recording");
+    cmd->add_option("recording", recording, "Recording file (from remesh --record)")->required();
+    cmd->add_flag("--json", json, "Print JSON");
+  }
+
+  int run() const {
+    const Recording r = loadRecording(recording);
+    if (json) std::cout << printable(recordingSummary(r)) << "\n";
+    else std::cout << recordingReport(r);
+    return 0;
+  }
+};
+
+}  // namespace
+
 int main(int argc, char** argv) {
   keepFreedMemory();
   CLI::App app{"Lloydscope: variational surface remeshing by weighted Lloyd relaxation"};
   app.require_subcommand(0, 1);
-
-  RemeshArgs r;
-  CLI::App* remeshCmd = app.add_subcommand("remesh", "Remesh a disk-topology triangle mesh");
-  remeshCmd->add_option("input", r.input, "Input mesh (OFF, OBJ or PLY)")->required();
-  remeshCmd->add_option("-o,--output", r.output, "Output mesh (OFF, OBJ or PLY)")->check(kFileName);
-  remeshCmd->add_option("--record", r.record, "Save every Lloyd iteration to this file")->check(kFileName);
-  remeshCmd->add_flag("--json", r.json, "Print the results as one JSON object");
-  addRemeshOptions(*remeshCmd, r);
-
-  RemeshArgs ir;
-  ScreenshotOptions shot;
-  std::string size;
-  CLI::App* inspectCmd = app.add_subcommand(
-      "inspect", "Open the inspector on a mesh or a recording; with --screenshot, render it "
-                 "headless to a PNG and exit");
-  inspectCmd->add_option("input", ir.input, "Mesh (OFF, OBJ, PLY) or recording (remesh --record, .lsrec)")
-      ->required();
-  // The window's hint line has room for the stepping keys only; the others were in the guide
-  // alone.
-  inspectCmd->footer(
-      "Keys in the window: <- -> an iteration (Shift: ten; in a lesson, a stage), Home/End the first/last, "
-      "Space play/pause, P presentation (classroom) mode, L the lesson, Escape unpin every cell and "
-      "triangle, F (over the 3D or 2D view) fit it.");
-  inspectCmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);
-  std::string pane = "window", iterations;
-  inspectCmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots");
-  inspectCmd->add_option("--iterations", iterations,
-                         "With --screenshot: FIRST:LAST, one numbered PNG per iteration");
-  inspectCmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")
-      ->check(wholeNumber(0));
-  inspectCmd->add_flag("--final", shot.view.final,
-                       "The 3D pane shows the final result (what remesh writes), with a red ring "
-                       "where it is farthest from the input");
-  inspectCmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)")->check(wholeNumber(0));
-  inspectCmd->add_option("--select-triangle", shot.view.triangles,
-                         "Pin this triangle of the result (with --final: of the final result; repeatable)")
-      ->check(wholeNumber(0));
-  inspectCmd->add_flag("--select-worst", shot.view.worstTriangle,
-                       "Pin the triangle with the smallest angle in the result at the iteration shown (with --final: in the final result)");
-  std::string fill;
-  inspectCmd->add_option("--fill", fill,
-                         "What colours the 2D cells: none, mass, area, energy, distance (site to "
-                         "centroid) or moved (since the iteration before)");
-  inspectCmd->add_flag("--compare-solvers", shot.view.compareSolvers,
-                       "Also relax the run's start with the other two solvers and plot their curves");
-  inspectCmd->add_flag("--presentation", shot.view.presentation,
-                       "Classroom mode: large fonts, thick lines, no controls pane");
-  std::string stage;
-  inspectCmd->add_option("--stage", stage,
-                         "Show one stage of the lesson with its caption: load, parameterize, "
-                         "voronoi, centroids, move, lift or result");
-  inspectCmd->add_option("--camera", shot.view.camera,
-                         "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
-                         "the point x y z looked at (the inspector's Copy view)");
-  inspectCmd->add_option("--size", size, "Picture size WxH, " + pictureSizes() + " (default 1280x800)");
-  inspectCmd->add_flag("--validation", shot.validation,
-                       "Enable the Vulkan validation layer; fail if it reports anything");
-  bool noTimings = false;
-  inspectCmd->add_flag("--no-timings", noTimings,
-                       "Leave timings out of the picture, so that it is the same on every run");
-  addRemeshOptions(*inspectCmd, ir);
-
-  CLI::App* benchCmd = app.add_subcommand(
-      "bench-frames", "Median frame time of the inspector while scrubbing a recording (headless)");
-  RemeshArgs br;
-  int frames = 100;
-  benchCmd->add_option("input", br.input, "Mesh")->required();
-  benchCmd->add_option("--frames", frames, "Frames to time")->check(wholeNumber(1, kMostFrames));
-  benchCmd->add_option("--size", size, "Frame size WxH, " + pictureSizes() + " (default 1280x800)");
-  addRemeshOptions(*benchCmd, br);
-
-  std::string metricsMesh, metricsReference;
-  bool metricsJson = false;
-  BenchOptions benchOptions;
-  bool noReference = false;
-  CLI::App* peerBenchCmd = app.add_subcommand(
-      "bench", "Lloydscope against CGAL's isotropic_remeshing on prepared inputs (markdown, CSV)");
-  peerBenchCmd->add_option("models", benchOptions.models,
-                           "Meshes (default: CGAL's disk samples in data/cgal)");
-  peerBenchCmd->add_option("--sizes", benchOptions.sizes, "Vertex counts (default 500 1000 2000)")
-      ->check(kVerticesAsked);
-  peerBenchCmd->add_option("--csv", benchOptions.csv, "CSV output (default bench.csv)")->check(kFileName);
-  peerBenchCmd->add_option("--save-inputs", benchOptions.saveInputs,
-                           "Also write each prepared input to DIR/<model>_<size>.off");
-  peerBenchCmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
-  peerBenchCmd->add_flag("--as-is", benchOptions.asIs,
-                         "Use the models as they come, not prepared: each remeshed to each size "
-                         "(--sites), with the defaults and --full-input, beside CGAL's remesher on it");
-  addRepairFlag(*peerBenchCmd, benchOptions.repair);
-  peerBenchCmd->add_option("--lloyd-step", benchOptions.stepSites,
-                           "Instead: time one Lloyd iteration at N sites (one core and all)")
-      ->check(kVerticesAsked);
-
-  std::string simplifyIn, simplifyOut;
-  SimplifyOptions simplifyTarget;
-  CLI::App* simplifyCmd = app.add_subcommand(
-      "simplify", "Quadric edge collapse (Garland-Heckbert) to a target size, boundary in place");
-  simplifyCmd->add_option("input", simplifyIn, "Mesh (OFF, OBJ, PLY)")->required();
-  simplifyCmd->add_option("-o,--output", simplifyOut, "Where to write the result")->required()->check(kFileName);
-  auto* target = simplifyCmd->add_option_group("target", "one of");
-  target->add_option("--vertices", simplifyTarget.vertices, "Target number of vertices")->check(kPositiveCount);
-  target->add_option("--faces", simplifyTarget.faces, "Target number of faces")->check(kPositiveCount);
-  target->add_option("--ratio", simplifyTarget.ratio, "Target fraction of the vertices, in (0, 1]")
-      ->check(finiteNumber(std::numeric_limits<double>::min(), "a fraction in (0, 1]", 1));
-  target->require_option(1);
-  bool simplifyRepair = false;
-  addRepairFlag(*simplifyCmd, simplifyRepair);
-
-  CLI::App* metricsCmd = app.add_subcommand("metrics", "Measure a mesh's quality");
-  metricsCmd->add_option("mesh", metricsMesh, "Mesh to measure")->required();
-  metricsCmd->add_option("--reference", metricsReference,
-                         "Also measure Hausdorff and RMS distance to this mesh");
-  metricsCmd->add_flag("--json", metricsJson, "Print JSON");
-  bool metricsRepair = false;
-  addRepairFlag(*metricsCmd, metricsRepair);
-
-  std::string recordingPath;
-  bool infoJson = false;
-  CLI::App* infoCmd = app.add_subcommand("info", "Summarize a recording");
-  infoCmd->add_option("recording", recordingPath, "Recording file (from remesh --record)")
-      ->required();
-  infoCmd->add_flag("--json", infoJson, "Print JSON");
+  RemeshCommand remesh;
+  InspectCommand inspect;
+  FrameBenchCommand frameBench;
+  BenchCommand bench;
+  SimplifyCommand simplify;
+  MetricsCommand metrics;
+  InfoCommand info;
+  remesh.add(app);
+  inspect.add(app);
+  frameBench.add(app);
+  bench.add(app);
+  simplify.add(app);
+  metrics.add(app);
+  info.add(app);
 
   // A command-line error is one line, as every other error, with exit code 1 (CLI11's own
   // printed two and exited 105-109); --help prints the help and exits 0.
@@ -452,121 +604,16 @@ int main(int argc, char** argv) {
               << " (--help lists the options)\n";
     return 1;
   }
-  if (app.get_subcommands().empty()) {  // plain `lloydscope`: the inspector on the default mesh
-    ir.input = LLOYDSCOPE_SOURCE_DIR "/assets/bumpy_disk.off";
-    try {
-      requireDisplay();
-      RemeshOptions options;
-      std::optional<Mesh> input;
-      RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
-      return runWindow(ir.input, options, std::move(result), false, std::move(input));
-    } catch (const std::exception& e) {
-      std::cerr << "lloydscope: " << oneLine(e.what()) << "\n";
-      return 1;
-    }
-  }
 
   try {
-    if (remeshCmd->parsed()) return runRemesh(r, *remeshCmd);
-    if (peerBenchCmd->parsed()) {
-      benchOptions.reference = !noReference;
-      if (benchOptions.stepSites > 0) runStepBench(benchOptions);
-      else runBench(benchOptions);
-      return 0;
-    }
-    if (simplifyCmd->parsed()) {
-      if (sameFile(simplifyOut, simplifyIn))
-        throw Error(simplifyOut + ": --output would replace the input mesh; give it another name");
-      requireMeshWritable(simplifyOut);
-      const Mesh input = load(simplifyIn, simplifyRepair);
-      const SimplifyResult s = simplify(input, simplifyTarget, simplifyIn);
-      writeMesh(s.mesh, simplifyOut);
-      std::cout << simplifyIn << ": " << input.vertexCount() << " vertices, " << input.faceCount()
-                << " faces -> " << s.mesh.vertexCount() << " vertices, " << s.mesh.faceCount()
-                << " faces (" << s.collapses << " collapses, " << std::lround(s.milliseconds)
-                << " ms)\n";
-      return 0;
-    }
-    if (inspectCmd->parsed()) {
-      RemeshOptions options;
-      std::optional<Mesh> input;
-      parseSize(size, shot.width, shot.height);
-      shot.timings = !noTimings;
-      shot.picture.pane = parsePane(pane);
-      if (!stage.empty()) shot.view.stage = parseStage(stage);
-      if (!fill.empty()) shot.view.fill = parseCellFill(fill);
-      shot.view.repair = ir.repair;
-      if (!iterations.empty()) {
-        long long first = 0, last = 0;
-        char rest;
-        if (std::sscanf(iterations.c_str(), "%lld:%lld%c", &first, &last, &rest) != 2 || first < 0 ||
-            first > std::numeric_limits<int>::max() || last > std::numeric_limits<int>::max())  // 0:4294967296 wrapped to 0:0
-          throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
-        shot.picture.first = static_cast<int>(first);
-        shot.picture.last = static_cast<int>(last);
-      }
-      if (shot.picture.path.empty()) {
-        requireDisplay();  // before minutes of work that no window would show
-        RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
-        return runWindow(ir.input, options, std::move(result), shot.validation, std::move(input),
-                         shot.view);
-      }
-      requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
-      RemeshResult result = openForInspection(ir, *inspectCmd, options, &input);
-      renderScreenshot(ir.input, options, std::move(result), shot, std::move(input));
-      return 0;
-    }
-    if (benchCmd->parsed()) {
-      int width = 1280, height = 800;
-      parseSize(size, width, height);
-      RemeshOptions options;
-      RemeshResult result = openForInspection(br, *benchCmd, options);
-      const size_t sites = result.recording.fixedSites.size() +
-                           (result.recording.iterations.empty() ? 0 : result.recording.iterations[0].sites.size());
-      const int iterations = result.iterations;
-      auto median = [](std::vector<double> v) {
-        std::sort(v.begin(), v.end());
-        return v[v.size() / 2];
-      };
-      const FrameTimes still = benchmarkScrub(br.input, options, result, width, height, frames, false);
-      const FrameTimes scrub =
-          benchmarkScrub(br.input, options, std::move(result), width, height, frames, true);
-      std::printf("| sites | iterations | size | frames | median ms, still | median ms, scrubbing | "
-                  "max ms, scrubbing |\n|---|---|---|---|---|---|---|\n"
-                  "| %zu | %d | %dx%d | %d | %.1f | %.1f | %.1f |\n",
-                  sites, iterations, width, height, frames, median(still.milliseconds),
-                  median(scrub.milliseconds),
-                  *std::max_element(scrub.milliseconds.begin(), scrub.milliseconds.end()));
-      return 0;
-    }
-    if (metricsCmd->parsed()) {
-      const Mesh mesh = load(metricsMesh, metricsRepair);
-      const QualityMetrics quality = measureQuality(mesh);
-      Fidelity fidelity;
-      const bool withReference = !metricsReference.empty();
-      if (withReference) {
-        const Mesh reference = load(metricsReference, metricsRepair);
-        requireExactPredicatesRange(mesh, metricsMesh, "measured");
-        requireExactPredicatesRange(reference, metricsReference, "measured");
-        fidelity = measureFidelity(mesh, reference);
-      }
-      if (metricsJson) {
-        nlohmann::json j = toJson(quality);
-        if (withReference) j["fidelity"] = toJson(fidelity);
-        std::cout << printable(j) << "\n";
-      } else {
-        std::cout << metricsReport(quality, withReference ? &fidelity : nullptr);
-      }
-      return 0;
-    }
-    if (infoCmd->parsed()) {
-      const Recording recording = loadRecording(recordingPath);
-      if (infoJson)
-        std::cout << printable(recordingSummary(recording)) << "\n";
-      else
-        std::cout << recordingReport(recording);
-      return 0;
-    }
+    if (app.get_subcommands().empty()) return inspect.runDefault();
+    if (remesh.cmd->parsed()) return remesh.run();
+    if (inspect.cmd->parsed()) return inspect.run();
+    if (frameBench.cmd->parsed()) return frameBench.run();
+    if (bench.cmd->parsed()) return bench.run();
+    if (simplify.cmd->parsed()) return simplify.run();
+    if (metrics.cmd->parsed()) return metrics.run();
+    if (info.cmd->parsed()) return info.run();
   } catch (const Error& e) {
     std::cerr << "lloydscope: " << oneLine(e.what()) << "\n";
     return 1;
@@ -576,9 +623,10 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     // The file the command was working on, as every other error names it.
     std::string file;
-    for (const std::string* input : {&r.input, &ir.input, &br.input, &simplifyIn, &metricsMesh, &recordingPath})
+    for (const std::string* input : {&remesh.args.input, &inspect.args.input, &frameBench.args.input, &simplify.input,
+                                     &metrics.mesh, &info.recording})
       if (file.empty()) file = *input;
-    if (file.empty() && !benchOptions.models.empty()) file = benchOptions.models.front();
+    if (file.empty() && !bench.options.models.empty()) file = bench.options.models.front();
     std::cerr << "lloydscope: " << (file.empty() ? "" : oneLine(file) + ": ")
               << "out of memory: fewer vertices asked, or a smaller input, need less\n";
     return 1;
