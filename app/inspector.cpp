@@ -1359,28 +1359,6 @@ const std::vector<std::pair<Vec2, Vec2>>& Inspector::cellEdges() {
   return cellEdges_;
 }
 
-namespace {
-// Items separated by two spaces ("dots: sites  rings: centroids"), one line after another as
-// many as fit in `width` pixels, never split inside an item.
-std::string wrapItems(const std::string& items, float width) {
-  std::string wrapped, line;
-  size_t start = 0;
-  while (start < items.size()) {
-    const size_t end = std::min(items.find("  ", start), items.size());
-    const std::string item = items.substr(start, end - start);
-    const std::string longer = line.empty() ? item : line + "  " + item;
-    if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
-      wrapped += line + "\n";
-      line = item;
-    } else {
-      line = longer;
-    }
-    start = end + 2;
-  }
-  return wrapped + line;
-}
-}  // namespace
-
 void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   beginPane("2D parameter domain", pos, size, kCanvasPaneFlags);
   const auto [p0, extent] = canvasArea();
@@ -1390,7 +1368,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   // two lines where the pane is narrower than it (960x600).
   const Layers shown = layers();
   const bool seams = !replay_->seams().empty() || !replay_->recording().sharedSeams.empty();
-  const std::string legend = wrapItems(domainLegend(shown.sites2D, shown.centroids2D, seams), extent.x - 16);
+  const std::string legend = wrappedLines(domainLegend(shown.sites2D, shown.centroids2D, seams), extent.x - 16, "  ");
   const float legendHeight = ImGui::CalcTextSize(legend.c_str()).y;
   // A fill's legend (its name over a colour bar, top left) has its own room too: over the
   // domain it hid a square domain's corner cells.

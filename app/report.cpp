@@ -51,17 +51,21 @@ std::vector<std::string> tickLabels(const std::vector<double>& values) {
 }
 
 std::vector<std::string> wrapAtSpaces(const std::string& text, float width,
-                                      const std::function<float(const std::string&)>& measure) {
+                                      const std::function<float(const std::string&)>& measure,
+                                      const std::string& gap) {
   std::vector<std::string> lines;
   std::istringstream paragraphs(text);
   for (std::string paragraph; std::getline(paragraphs, paragraph);) {
-    std::istringstream words(paragraph);
     // A paragraph's indent stays on its first line (the table's " border-aware" row).
     const size_t indent = paragraph.find_first_not_of(' ');
     std::string line = indent == std::string::npos ? "" : paragraph.substr(0, indent);
     bool hasWords = false;
-    for (std::string word; words >> word;) {
-      const std::string longer = hasWords ? line + " " + word : line + word;
+    for (size_t start = line.size(); start < paragraph.size();) {
+      const size_t end = std::min(paragraph.find(gap, start), paragraph.size());
+      const std::string word = paragraph.substr(start, end - start);
+      start = end + gap.size();
+      if (word.find_first_not_of(' ') == std::string::npos) continue;  // gaps in a row are one
+      const std::string longer = hasWords ? line + gap + word : line + word;
       if (hasWords && measure(longer) > width) {
         lines.push_back(line);
         line = word;

@@ -85,11 +85,14 @@ double arrowMagnification(double typicalPixels, double longestPixels, double spa
 // by side). Steps of 20 along 230 iterations ran "100120140..." together.
 int tickStep(int count, int fitting);
 
-// `text` in lines no wider than `width` by `measure`, broken at spaces and at its own line
+// `text` in lines no wider than `width` by `measure`, broken at `gap`s and at its own line
 // breaks only: ImGui 1.86 also breaks after '.' and ',', inside numbers ("Hausdorff 1." then
-// "906%" on the next line). A word wider than the line has a line of its own; one line at least.
+// "906%" on the next line). A word (what lies between gaps) wider than the line has a line of its
+// own; one line at least. A gap of two spaces keeps a legend's items ("dots: sites  rings:
+// centroids") whole.
 std::vector<std::string> wrapAtSpaces(const std::string& text, float width,
-                                      const std::function<float(const std::string&)>& measure);
+                                      const std::function<float(const std::string&)>& measure,
+                                      const std::string& gap = " ");
 
 nlohmann::json toJson(const QualityMetrics& m);
 nlohmann::json toJson(const Fidelity& f);

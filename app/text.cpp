@@ -37,10 +37,10 @@ float numberColumnWidth(const std::string& header, const std::vector<std::string
   return width;
 }
 
-std::string wrappedLines(const std::string& text, float width) {
+std::string wrappedLines(const std::string& text, float width, const std::string& gap) {
   const auto measure = [](const std::string& line) { return ImGui::CalcTextSize(line.c_str()).x; };
   std::string lines;
-  for (const std::string& line : wrapAtSpaces(text, width, measure)) lines += line + "\n";
+  for (const std::string& line : wrapAtSpaces(text, width, measure, gap)) lines += line + "\n";
   lines.pop_back();  // wrapAtSpaces gives one line at least
   return lines;
 }

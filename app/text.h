@@ -19,8 +19,8 @@ void addInspectorFonts();
 float presentationTextSize(float height);
 
 // `text` in lines no wider than `width` pixels in the current font, joined by line breaks,
-// broken at spaces only (wrapAtSpaces).
-std::string wrappedLines(const std::string& text, float width);
+// broken at `gap`s only (wrapAtSpaces).
+std::string wrappedLines(const std::string& text, float width, const std::string& gap = " ");
 
 // A table column of numbers in the current font: as wide as its header, its widest value or
 // five digits (steady while scrubbing), whichever is widest. Five digits alone cut "100000"

@@ -191,6 +191,12 @@ TEST(Report, TextWrapsAtSpacesNotInsideNumbers) {
   // An indent stays (the quality table's " border-aware" row, under "Irregular %").
   EXPECT_EQ(wrapAtSpaces(" border-aware", 20, characters), (std::vector<std::string>{" border-aware"}));
   EXPECT_EQ(wrapAtSpaces("  two words", 6, characters), (std::vector<std::string>{"  two", "words"}));
+  EXPECT_EQ(wrapAtSpaces("two  words", 20, characters), (std::vector<std::string>{"two words"}));
+  // A legend's items, two spaces apart, are never split.
+  EXPECT_EQ(wrapAtSpaces("dots: sites  rings: centroids  squares: fixed", 30, characters, "  "),
+            (std::vector<std::string>{"dots: sites  rings: centroids", "squares: fixed"}));
+  EXPECT_EQ(wrapAtSpaces("dots: sites  rings: centroids", 5, characters, "  "),
+            (std::vector<std::string>{"dots: sites", "rings: centroids"}));
 }
 
 // A run whose last iteration had no site still moving: 0 % cannot sit on a log axis. It was
