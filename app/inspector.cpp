@@ -154,11 +154,28 @@ Mesh largestComponent(const Mesh& mesh) {
   return std::move(*std::max_element(parts.begin(), parts.end(), byArea));
 }
 
+// The last item (a view's canvas) was let go of after a click, not a drag of 3 px or more.
+bool clickedNotDragged() {
+  return ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+         ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 9.0f;
+}
+
+// How much longer the lesson's Move stage draws the arrows s -> c of the movable sites (the
+// view's first `fixedCount` are fixed): arrowMagnification of a typical and the longest, by the
+// site spacing. Ratios of lengths, the same in the domain's units as in pixels.
+double moveArrowScale(const IterationView& view, size_t fixedCount) {
+  std::vector<double> lengths;
+  for (size_t i = fixedCount; i < view.sites.size(); ++i) lengths.push_back((view.cells[i].centroid - view.sites[i]).norm());
+  if (lengths.empty()) return 1;
+  std::sort(lengths.begin(), lengths.end());
+  return arrowMagnification(lengths[lengths.size() / 2], lengths.back(), 1.0 / std::sqrt(view.sites.size() + 1.0));
+}
+
 }  // namespace
 
 Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string meshName,
                      RemeshOptions options, RemeshResult result, std::optional<Mesh> input)
-    : gpu_(gpu), renderer_(gpu, renderPass),
+    : renderer_(gpu, renderPass),
       meshName_(fileNameOf(meshName)),
       options_(std::move(options)), slitDisksAsked_(options_.slitDisks), result_(std::move(result)),
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
@@ -287,6 +304,10 @@ void Inspector::openReplay(Recording recording) {
   stopComparing();
   comparisons_.clear();  // of another run
   replay_ = std::make_unique<Replay>(std::move(recording));
+  // A lesson's plan and an exported sequence's numbers are of the replay before (Restart in a
+  // lesson kept playing the old plan, clamped to iteration 0).
+  if (lesson_.playing()) toggleLesson();
+  exportJob_.reset();
   uploadedIteration_ = measuredIteration_ = edgesIteration_ = -1;
   canvasKey_ = CanvasKey{};
   iteration_ = std::max(0, replay_->iterationCount() - 1);
@@ -302,7 +323,7 @@ void Inspector::fit2D() {
 void Inspector::startSession(const Mesh& input, const std::string& name) {
   stopComparing();
   stopRun();
-  // Made before anything on show changes: where it fails, the last run stays as it was.
+  // Made before the replay on show changes: where it fails, the last run's iterations stay.
   std::unique_ptr<RemeshSession> session;
   std::string notes;
   try {
@@ -348,11 +369,16 @@ void Inspector::startRun() {
   if (lesson_.playing()) toggleLesson();  // its plan is of the iterations before the run
   stopRequested_ = false;
   workerDone_ = false;
+  runError_.clear();
   worker_ = std::thread([this] {
-    while (!stopRequested_ && !session_->finished()) {
-      IterationRecord record = session_->step();
-      std::lock_guard<std::mutex> lock(pendingMutex_);
-      pending_.push_back(std::move(record));
+    try {
+      while (!stopRequested_ && !session_->finished()) {
+        IterationRecord record = session_->step();
+        std::lock_guard<std::mutex> lock(pendingMutex_);
+        pending_.push_back(std::move(record));
+      }
+    } catch (const std::exception& e) {  // out of memory, say: it ended the program
+      runError_ = e.what();
     }
     workerDone_ = true;
   });
@@ -360,8 +386,17 @@ void Inspector::startRun() {
 
 void Inspector::stopRun() {
   stopRequested_ = true;
+  joinWorker();
+}
+
+void Inspector::joinWorker() {
   if (worker_.joinable()) worker_.join();
   collectIterations();
+  if (runError_.empty()) return;
+  // The iterations so far stay to look at; the session that failed is spent.
+  showMessage("The run stopped at iteration " + std::to_string(replay_->iterationCount() - 1) + ": " + runError_);
+  runError_.clear();
+  session_.reset();
 }
 
 void Inspector::collectIterations() {
@@ -398,11 +433,14 @@ void Inspector::prepare() {
   cellEdges();
 }
 
+glm::vec3 Inspector::towardsEye() const {
+  return glm::vec3(std::cos(camera_.pitch) * std::cos(camera_.yaw), std::cos(camera_.pitch) * std::sin(camera_.yaw),
+                   std::sin(camera_.pitch));
+}
+
 std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent, float top) const {
   const glm::vec3 target(camera_.target.x(), camera_.target.y(), camera_.target.z());
-  const glm::vec3 eye = target + camera_.distance * glm::vec3(std::cos(camera_.pitch) * std::cos(camera_.yaw),
-                                                              std::cos(camera_.pitch) * std::sin(camera_.yaw),
-                                                              std::sin(camera_.pitch));
+  const glm::vec3 eye = target + camera_.distance * towardsEye();
   const float below = extent.y - top;  // the pane under the band at its top
   glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / below,
                                     camera_.distance * 0.01f, camera_.distance * 10.0f);
@@ -579,8 +617,7 @@ void Inspector::fitCamera() {
 // direction and the pane's shape: a long shape seen across (a triceratops) fits too, which a
 // distance from the bounding box alone did not make sure of.
 float Inspector::fittingDistance(const ImVec2& extent) const {
-  const glm::vec3 toEye(std::cos(camera_.pitch) * std::cos(camera_.yaw),
-                        std::cos(camera_.pitch) * std::sin(camera_.yaw), std::sin(camera_.pitch));
+  const glm::vec3 toEye = towardsEye();
   const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 0, 1), toEye));
   const glm::vec3 up = glm::cross(toEye, right);
   const float margin = 0.9f;
@@ -692,9 +729,8 @@ void Inspector::frame() {
   }
   collectIterations();
   if (session_ && workerDone_ && worker_.joinable()) {
-    worker_.join();
-    collectIterations();
-    if (session_->finished()) finishSession();
+    joinWorker();
+    if (session_ && session_->finished()) finishSession();
   }
   // The time since the last frame goes to what was playing then, before the keys change it:
   // the window sleeps between a lesson's steps, and a stage skipped to got the time it had
@@ -828,18 +864,24 @@ CaptionFacts Inspector::captionFacts() {
   f.iteration = iteration_;
   f.iterations = replay_->iterationCount();
   // A run after Restart, stepped or stopped, has not converged (the Lift stage said "3
-  // iterations to convergence" after three Steps).
-  f.converged = session_ ? session_->converged() : result_.converged;
+  // iterations to convergence" after three Steps). Of the iterations on show: the session's
+  // solver is the worker's while it runs.
+  f.converged = session_ ? replay_->recording().converged() : result_.converged;
   const IterationRecord& it = replay_->recording().iterations[iteration_];
   f.energy = it.energy;
   f.maxToCentroid = it.maxDisplacement;
-  f.arrowScale = arrowScale_;
+  // From the view, not from the 2D pane's last drawing: drawn after the caption, it gave each
+  // picture of an exported sequence the magnification of the picture before.
+  f.arrowScale = moveArrowScale(replay_->view(iteration_), replay_->recording().fixedSites.size());
   f.percentMoving = 100.0 * it.fractionMoving;
   // The cell pinned last: pinning a second one while the class looks on, the caption stayed
   // on the first.
+  // Not one this run lacks (cell 900 after a restart with 500 sites read "Cell -1").
   if (!selection_.cells().empty())
-    f.cell = describeCell(replay_->recording(), replay_->domain(), replay_->view(iteration_),
-                          selection_.cells().back());
+    if (const CellDetails d = describeCell(replay_->recording(), replay_->domain(), replay_->view(iteration_),
+                                           selection_.cells().back());
+        d.index >= 0)
+      f.cell = d;
   return f;
 }
 
@@ -916,10 +958,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   if (ImGui::RadioButton("retriangulate", &method, 1)) replay_->setMethod(RemeshMethod::Retriangulate);
   if (!canRelocate) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    wrappedText("Relocate needs the input's vertices as sites: under Settings choose method "
-                "relocate, then Restart and Run.");
-    ImGui::PopStyleColor();
+    greyedText("Relocate needs the input's vertices as sites: under Settings choose method "
+               "relocate, then Restart and Run.");
   }
 
   ImGui::Separator();
@@ -980,11 +1020,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   if (replay_->method() == RemeshMethod::Retriangulate) {
     const IterationView& view = replay_->view(iteration_);
     const std::string leftOut = sitesLeftOutNote(iteration_, view.sites.size(), view.output.points.size());
-    if (!leftOut.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      wrappedText(leftOut);
-      ImGui::PopStyleColor();
-    }
+    if (!leftOut.empty()) greyedText(leftOut);
   }
   const int iterations = replay_->iterationCount();
   const char* plural = iterations == 1 ? "" : "s";
@@ -1054,10 +1090,11 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   ImGui::TextUnformatted("3D view");
   if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
   if (result_.output.triangles.empty() && !stage_) ImGui::BeginDisabled();
-  // With several components the final result is larger than the surface the panes follow.
+  // With several components, or charts, the final result is larger than the surface the panes
+  // follow (the largest component or chart): the view fits the one shown.
   if (ImGui::Checkbox("show the final result", &finalOn)) {
     showFinal_ = finalOn;
-    if (result_.components > 1) fitCamera();
+    if (result_.components > 1 || inputCharts_ > 0) fitCamera();
   }
   if (result_.output.triangles.empty() || stage_) ImGui::EndDisabled();
   bool byAngle = colorByAngle_;
@@ -1162,22 +1199,27 @@ void Inspector::settingsControls() {
   if (!own) {
     ImGui::SetNextItemWidth(130);
     ImGui::InputInt("sites (0: as input)", &settings_.sites.count, 100, 1000);
-    settings_.sites.count = settings_.sites.count > 0 ? std::max(kSmallestRemeshedShare, settings_.sites.count) : 0;
+    settings_.sites.count = settings_.sites.count > 0 ? std::clamp(settings_.sites.count, kSmallestRemeshedShare, kMostRemeshedVertices) : 0;
   }
+  // Within the command line's bounds: a distance above 0, a percentage from 0 to 100, at most
+  // kMostIterations (the run is recorded whole: one that never converges grows to its limit).
   ImGui::SetNextItemWidth(130);
-  ImGui::InputDouble("distance thr.", &settings_.lloyd.distanceThreshold, 0, 0, "%.1e");
+  const double distance = settings_.lloyd.distanceThreshold;
+  if (ImGui::InputDouble("distance thr.", &settings_.lloyd.distanceThreshold, 0, 0, "%.1e") &&
+      !(settings_.lloyd.distanceThreshold > 0 && std::isfinite(settings_.lloyd.distanceThreshold)))
+    settings_.lloyd.distanceThreshold = distance;
   ImGui::SetNextItemWidth(130);
   ImGui::InputDouble("percent thr.", &settings_.lloyd.percentThreshold, 1, 5, "%.1f");
+  if (!(settings_.lloyd.percentThreshold >= 0)) settings_.lloyd.percentThreshold = 0;  // NaN too
+  settings_.lloyd.percentThreshold = std::min(settings_.lloyd.percentThreshold, 100.0);
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("polish (-1: none)", &settings_.polish, 1, 1);
   settings_.polish = std::max(-1, settings_.polish);
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("max iterations", &settings_.lloyd.maxIterations, 10, 100);
-  settings_.lloyd.maxIterations = std::max(1, settings_.lloyd.maxIterations);
+  settings_.lloyd.maxIterations = std::clamp(settings_.lloyd.maxIterations, 1, kMostIterations);
   // Wrapped: the pane is narrower than the line (it ran past its edge).
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  wrappedText("then Restart below the plots: the run on screen keeps its own settings until then");
-  ImGui::PopStyleColor();
+  greyedText("then Restart below the plots: the run on screen keeps its own settings until then");
 }
 
 void Inspector::fileControls() {
@@ -1292,9 +1334,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
       uploadedMethod_ != replay_->method())
     uploadMesh();
 
-  if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-      io.MouseDragMaxDistanceSqr[0] < 9.0f)
-    pick3D(io.MousePos, p0, extent, labelBand);  // a click, not the end of an orbit
+  if (clickedNotDragged()) pick3D(io.MousePos, p0, extent, labelBand);  // not the end of an orbit
   if (fitPending_) {
     camera_.distance = fittingDistance(ImVec2(extent.x, extent.y - labelBand));
     fitPending_ = false;
@@ -1391,9 +1431,8 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
                   center.y - static_cast<float>(uv.y() - 0.5) * scale);
   };
   const Vec2 mouseUV(0.5 + (io.MousePos.x - center.x) / scale, 0.5 - (io.MousePos.y - center.y) / scale);
-  if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-      io.MouseDragMaxDistanceSqr[0] < 9.0f)
-    pick2D(mouseUV);  // a click, not the end of a pan
+  if (clickedNotDragged())
+    pick2D(mouseUV);  // not the end of a pan
   else if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
     hoverTooltip2D(mouseUV);
 
@@ -1530,16 +1569,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   // Dots a sixth of the site spacing: the cells stay visible between them.
   const float r = std::clamp(0.16f * spacing, 1.2f, 6.0f) * (strong ? 1.3f : 1.0f);
   // The lesson's Move stage is about the arrows: too short to see, they are drawn longer.
-  arrowScale_ = 1;
-  if (stage_ == Stage::Move) {
-    std::vector<double> lengths;  // in pixels
-    for (size_t i = fixedCount; i < view.sites.size(); ++i)
-      lengths.push_back((view.cells[i].centroid - view.sites[i]).norm() * scale);
-    if (!lengths.empty()) {
-      std::sort(lengths.begin(), lengths.end());
-      arrowScale_ = arrowMagnification(lengths[lengths.size() / 2], lengths.back(), spacing);
-    }
-  }
+  const double arrowScale = stage_ == Stage::Move ? moveArrowScale(view, fixedCount) : 1.0;
   for (size_t i = 0; i < view.sites.size() && shown.sites2D; ++i) {
     const Vec2& s = view.sites[i];
     if (i < fixedCount) {
@@ -1547,7 +1577,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
       continue;
     }
     const Vec2& c = view.cells[i].centroid;
-    const Vec2 tip = s + arrowScale_ * (c - s);
+    const Vec2 tip = s + arrowScale * (c - s);
     const Vec2 d = (tip - s) * scale;  // in pixels, v up
     const float length = static_cast<float>(d.norm());
     if (shown.arrows2D && length > 1.0f) {
@@ -1683,8 +1713,7 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
       const Comparison& c = comparisons_[k];
       others.add(c.iterations);
       otherColours.push_back(ImGui::ColorConvertFloat4ToU32(solverColour(c.solver)));
-      const bool converged = !c.iterations.empty() && 100.0 * c.iterations.back().fractionMoving <
-                                                          replay_->recording().percentThreshold;
+      const bool converged = convergedAt(c.iterations, replay_->recording().percentThreshold);
       ImGui::SameLine();
       ImGui::TextColored(solverColour(c.solver), "  %s%s: %d%s", toString(c.solver),
                          k == 0 ? ", same start" : "", static_cast<int>(c.iterations.size()),

@@ -163,7 +163,8 @@ class Inspector {
   void fileControls();
   // Live runs: a session steps on a worker thread; its iterations reach the replay here.
   // Starts one of `input` with the Settings pane's settings and shows it; throws Error where
-  // none can start, leaving the run on show as it was.
+  // none can start, leaving the replay on show as it was (a run or a comparison in progress is
+  // stopped first either way).
   void startSession(const Mesh& input, const std::string& name);
   // Puts `text` (if any) before the run's notes so far.
   void noteFirst(const std::string& text);
@@ -171,23 +172,24 @@ class Inspector {
   void forgetResult();
   void startRun();
   void stopRun();
+  void joinWorker();  // the worker's iterations collected, and what ended it said
   void collectIterations();
   void finishSession();
   void openReplay(Recording recording);
   void stopComparingForARun();
   void uploadMesh();
   void drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm::vec3& eye) const;
-  const QualityMetrics& currentQuality();
+  const QualityMetrics& currentQuality();  // of the current iteration's result, cached
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
-  CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks  // of the current iteration's result, cached
+  CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;
   // The 3D view's view-projection matrix (Vulkan clip space) and eye, for a pane this size
   // whose `top` pixels (the label's band) the view is centred and fitted under.
+  glm::vec3 towardsEye() const;  // the unit vector from the camera's target to its eye
   std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent, float top) const;
 
-  gpu::Context& gpu_;
   MeshRenderer renderer_;
   std::string meshName_;
   RemeshOptions options_;   // the run on screen's: the header, the captions and Compare describe it
@@ -243,7 +245,6 @@ class Inspector {
   };
   CanvasKey canvasKey_;
   FillScale fillScale_;  // of the cells' fill, as the canvas was last built
-  double arrowScale_ = 1;  // how much longer the arrows were drawn (the lesson's Move stage)
   void fillLegend(ImDrawList* dl, const ImVec2& at) const;
   float fillLegendTop() const;    // the 2D pane's room for the legend: its name's line
   float fillLegendWidth() const;  // and, under it, its colour bar's strip
@@ -273,6 +274,7 @@ class Inspector {
   bool fitPending_ = false;  // fitCamera() waits for the 3D pane's size to set the distance
   Selection selection_;
   std::optional<ExportJob> exportJob_;
+  std::string runError_;  // what ended the worker's run (out of memory, say), said by joinWorker()
   int exportNext_ = 0;
   std::optional<ExportRequest> exportRequest_;
   char exportPath_[512] = "lloydscope.png";

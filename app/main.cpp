@@ -171,7 +171,6 @@ CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) 
       bounded ? std::to_string(low) + ".." + std::to_string(high) : ">= " + std::to_string(low));
 }
 const CLI::Validator kPositiveCount = wholeNumber(1);
-constexpr int kMostIterations = 100000;
 // A file to write: `-o ''` (an unset variable) was taken as no file, and the run wrote nothing.
 const CLI::Validator kFileName(
     [](std::string& text) -> std::string { return text.empty() ? "expected a file name, not an empty one" : ""; }, "FILE");
@@ -216,8 +215,6 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
-  // Every iteration is recorded: a run that never converges (--distance-threshold 1e-300) grew
-  // by 30 MB a second up to its limit (2147483647 was taken).
   cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
       ->check(wholeNumber(1, kMostIterations));
   cmd.add_option("--distance-threshold", r.distanceThreshold,

@@ -137,13 +137,8 @@ void Selection::drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D&
 
 void Selection::detailsPanel(const Recording& recording, const Domain& domain,
                              const IterationView& view, const Mesh& final) {
-  auto greyed = [](const std::string& text) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    wrappedText(text);
-    ImGui::PopStyleColor();
-  };
   if (empty()) {
-    greyed("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, Escape clears all.");
+    greyedText("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, Escape clears all.");
     return;
   }
   int unpinCell = -1, unpinTriangle = -1;
@@ -208,10 +203,10 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
   bool anyNotShown = false;
   for (const std::string& note : notShown)
     if (!note.empty()) {
-      greyed(note);
+      greyedText(note);
       anyNotShown = true;
     }
-  if (anyNotShown) greyed("Escape unpins every cell and triangle.");
+  if (anyNotShown) greyedText("Escape unpins every cell and triangle.");
   toggleCell(unpinCell);
   toggleTriangle(unpinTriangle);
   toggleFinalTriangle(unpinFinal);

@@ -32,8 +32,6 @@ class Selection {
   void clear();
   bool empty() const { return cells_.empty() && triangles_.empty() && finalTriangles_.empty(); }
   const std::vector<int>& cells() const { return cells_; }
-  const std::vector<int>& triangles() const { return triangles_; }
-  const std::vector<int>& finalTriangles() const { return finalTriangles_; }
 
   // Highlights: each pinned cell filled, with its site's path over all iterations; each pinned
   // triangle outlined (in the parameter domain by its corners' UV positions). Each only where
@@ -41,8 +39,8 @@ class Selection {
   // triangle's ring floated on the empty domain).
   void draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
               const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown) const;
-  // The cells' outlines and sites lifted to the surface, the triangles' outlines (faint where
-  // the surface hides them from `eye`, the camera).
+  // The cells' outlines and sites lifted to the surface, the triangles' outlines (where the
+  // surface hides one from `eye`, the camera, a dashed ring alone).
   void draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,
               const IterationView& view, const ScreenOf3D& screen, const Vec3& eye, bool cellsShown,
               bool resultShown) const;

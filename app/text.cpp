@@ -69,4 +69,10 @@ void wrappedText(const std::string& text) {
   ImGui::TextUnformatted(wrappedLines(text, ImGui::GetContentRegionAvail().x).c_str());
 }
 
+void greyedText(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  wrappedText(text);
+  ImGui::PopStyleColor();
+}
+
 }  // namespace lloydscope

@@ -38,5 +38,7 @@ float captionTextHeight(const std::string& title, const std::string& formula, co
 // `text` wrapped to the room left on the line (a pane's or a table cell's), broken at spaces
 // only (wrapAtSpaces): ImGui::TextWrapped broke numbers after their decimal point.
 void wrappedText(const std::string& text);
+// The same, greyed: a hint or a note beside the numbers.
+void greyedText(const std::string& text);
 
 }  // namespace lloydscope

@@ -239,10 +239,11 @@ const IterationRecord& LloydSolver::step() {
   return iterations_.back();
 }
 
-bool LloydSolver::converged() const {
-  return !iterations_.empty() &&
-         100.0 * iterations_.back().fractionMoving < options_.percentThreshold;
+bool convergedAt(const std::vector<IterationRecord>& iterations, double percentThreshold) {
+  return !iterations.empty() && 100.0 * iterations.back().fractionMoving < percentThreshold;
 }
+
+bool LloydSolver::converged() const { return convergedAt(iterations_, options_.percentThreshold); }
 
 void LloydSolver::run(const std::atomic<bool>* stop) {
   while (!converged() && static_cast<int>(iterations_.size()) < options_.maxIterations &&

@@ -29,6 +29,10 @@ struct LloydOptions {
   int maxIterations = 1000;
   int threads = 0;  // for the cells; 0: every core (results do not depend on it)
 };
+// The most iterations a run may be asked for (the command line and the inspector's Settings):
+// every iteration is recorded, and a run that never converges (a distance threshold of 1e-300)
+// grew by 30 MB a second up to the limit it was given (2147483647 was taken).
+constexpr int kMostIterations = 100000;
 
 // One iteration as it happened: the sites it started from and the centroids of their cells.
 // Displacements are site-to-centroid distances: the move Lloyd makes (the L-BFGS step differs,
@@ -67,6 +71,10 @@ struct IterationRecord {
   double fractionMoving = 0;    // of movable sites farther than the distance threshold
   double milliseconds = 0;      // time of the step
 };
+
+// The convergence test on a run's last iteration: fewer than `percentThreshold` % of the
+// movable sites still moving (false before the first).
+bool convergedAt(const std::vector<IterationRecord>& iterations, double percentThreshold);
 
 // Fixed sites (the border samples) first, then movable ones: the order of every site list.
 std::vector<Vec2> allSites(const std::vector<Vec2>& fixed, const std::vector<Vec2>& movable);

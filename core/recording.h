@@ -31,10 +31,7 @@ struct Recording {
   std::vector<IterationRecord> iterations;
 
   Domain domain() const { return Domain(uv, input.triangles, density); }
-  // The run's convergence test on its last iteration (LloydSolver::converged()).
-  bool converged() const {
-    return !iterations.empty() && 100.0 * iterations.back().fractionMoving < percentThreshold;
-  }
+  bool converged() const { return convergedAt(iterations, percentThreshold); }
   // The cells of iteration k, recomputed from its sites: bit-identical to those of the run.
   // `hints` as computeCells takes them.
   std::vector<BoundedCell> cells(const Domain& domain, int iteration, bool keepGeometry,

@@ -113,8 +113,22 @@ TEST(Charts, AClosedSurfaceNoMapOfOneCutHoldsIsRemeshedChartByChart) {
   size_t borderEdges = 0;
   for (const auto& loop : analyzeTopology(r.recording.input).boundaryLoops) borderEdges += loop.size();
   EXPECT_EQ(r.recording.sharedSeams.size(), borderEdges);
-  const Replay replay(r.recording);
+  Replay replay(r.recording);
   EXPECT_EQ(replay.sharedSeamsOnOutput().size(), r.recording.sharedSeams.size());  // 974 without Chart::nodeSamples
+  // Edges of the mesh each method shows, retriangulate's (numbered by site) and relocate's
+  // (numbered as the chart, whose border vertices come first, in the fixed sites' order).
+  auto onOutput = [&] {
+    std::set<std::pair<int, int>> edges;
+    for (const Triangle& t : replay.view(replay.iterationCount() - 1).output.triangles)
+      for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+    int missing = 0;
+    for (const auto& [a, b] : replay.sharedSeamsOnOutput()) missing += !edges.count(std::minmax(a, b));
+    return missing;
+  };
+  EXPECT_EQ(onOutput(), 0);
+  ASSERT_TRUE(replay.canRelocate());
+  replay.setMethod(RemeshMethod::Relocate);
+  EXPECT_EQ(onOutput(), 0);
 }
 
 // A disk no conformal map holds (LSCM's border overlaps itself, and the mean-value map on a

@@ -395,6 +395,22 @@ TEST(Inspector, ExportsANumberedSequenceOfOnePane) {
   EXPECT_NE(first.rgba, last.rgba);  // the result changed between iterations 2 and 4
 }
 
+// Each picture of a sequence of the Move stage quotes its own arrows' magnification: the
+// caption took it from the 2D pane's last drawing, the picture before's.
+TEST(Inspector, EachPictureOfASequenceHasItsOwnCaption) {
+  const std::string base = test::tempPath("moves.png"), mesh = test::assetPath("sphere_cap.off");
+  const std::string stem = base.substr(0, base.size() - 4);
+  ASSERT_EQ(run("inspect " + mesh + " --screenshot " + base + " --size 960x600 --no-timings --stage move --iterations 0:3"), 0);
+  for (int k : {1, 3}) {
+    const std::string alone = test::tempPath("move_" + std::to_string(k) + ".png");
+    ASSERT_EQ(renderScene(mesh + " --stage move --iteration " + std::to_string(k), alone), 0);
+    const Picture a = readPng(alone), b = readPng(stem + "_000" + std::to_string(k) + ".png");
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    EXPECT_EQ(differingPixels(a, b, 0, 60), 0u) << "iteration " << k;
+  }
+}
+
 TEST(Inspector, ExportErrorsAreOneLine) {
   const std::string mesh = test::assetPath("sphere_cap.off"), err = test::tempPath("export.err");
   for (const std::string& args :
