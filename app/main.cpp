@@ -119,10 +119,12 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   refuseSameFile(a);
   const Mesh input = load(a.input, a.repair);
   const RemeshResult result = remesh(input, options, a.input);
-  // The recording first: the larger, the likelier not to fit. Where it cannot be written the
-  // run fails before the output is touched (it replaced the output, then failed).
-  if (!a.record.empty()) saveRecording(result.recording, a.record);
-  if (!a.output.empty()) writeMesh(result.output, a.output);
+  // Both or neither: where either cannot be written, neither file there is replaced (the output
+  // was, then the recording failed; the other way round, the recording was).
+  FileBatch files;
+  if (!a.record.empty()) saveRecording(result.recording, a.record, files);
+  if (!a.output.empty()) writeMesh(result.output, a.output, files);
+  files.commit();
   if (a.json)
     std::cout << printable(toJson(result, options)) << "\n";
   else

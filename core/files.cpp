@@ -63,13 +63,15 @@ bool isSpecialFile(const std::string& path) {
          !std::filesystem::is_directory(status);
 }
 
-// The temporary being written, removed if the run is interrupted (Ctrl+C, kill) before it is
-// renamed: one slot, as the program writes one file at a time.
-char inFlight[4096];
-volatile std::sig_atomic_t haveInFlight = 0;
+// The temporaries being written, removed if the run is interrupted (Ctrl+C, kill) before they
+// are renamed: a slot each, for the few files one batch writes.
+constexpr int kSlots = 4;
+char inFlight[kSlots][4096];
+volatile std::sig_atomic_t slotUsed[kSlots] = {};
 
 extern "C" void removeInFlightAndDie(int signal) {
-  if (haveInFlight) unlink(inFlight);
+  for (int k = 0; k < kSlots; ++k)
+    if (slotUsed[k]) unlink(inFlight[k]);
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
@@ -82,12 +84,21 @@ class InFlight {
       return true;
     }();
     (void)installed;
-    if (temporary.size() < sizeof inFlight) {
-      std::memcpy(inFlight, temporary.c_str(), temporary.size() + 1);
-      haveInFlight = 1;
-    }
+    for (int k = 0; k < kSlots && slot_ < 0; ++k)
+      if (!slotUsed[k] && temporary.size() < sizeof inFlight[k]) {
+        std::memcpy(inFlight[k], temporary.c_str(), temporary.size() + 1);
+        slotUsed[k] = 1;
+        slot_ = k;
+      }
   }
-  ~InFlight() { haveInFlight = 0; }
+  ~InFlight() {
+    if (slot_ >= 0) slotUsed[slot_] = 0;
+  }
+  InFlight(const InFlight&) = delete;
+  InFlight& operator=(const InFlight&) = delete;
+
+ private:
+  int slot_ = -1;
 };
 
 // Makes "<folder>/<stem><pid>-<n><suffix>" with O_EXCL, the next n where one is taken (another
@@ -120,7 +131,23 @@ std::string makeTemporary(const std::string& path, const std::filesystem::path& 
 
 }  // namespace
 
-void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+// A temporary written beside its target, renamed onto it, or removed where that never comes.
+struct FileBatch::Staged {
+  std::string path, temporary;
+  std::filesystem::path target;
+  InFlight removedIfInterrupted;
+  bool renamed = false;
+  Staged(std::string p, std::string t, std::filesystem::path target)
+      : path(std::move(p)), temporary(std::move(t)), target(std::move(target)), removedIfInterrupted(temporary) {}
+  ~Staged() {
+    if (!renamed) std::remove(temporary.c_str());
+  }
+};
+
+FileBatch::FileBatch() = default;
+FileBatch::~FileBatch() = default;
+
+void FileBatch::add(const std::string& path, const std::function<void(std::ostream&)>& write) {
   requireFileName(path);
   if (isSpecialFile(path)) {
     std::ofstream out(path, std::ios::binary);
@@ -130,32 +157,29 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
     return;
   }
   const std::filesystem::path target = targetOf(path);
-  const std::string temporary = makeTemporary(path, target);
-  const InFlight removedIfInterrupted(temporary);
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw Error(path + ": cannot write " + temporary);
-    }
-    try {
-      write(out);
-    } catch (...) {  // out of memory, say: no half-written temporary stays
-      out.close();
-      std::remove(temporary.c_str());
-      throw;
-    }
-    out.close();
-    if (!out) {  // the writer's own failure (the PNG encoder's), or the disk's
-      std::remove(temporary.c_str());
-      throw Error(path + ": cannot write " + temporary + " (disk full?)");
-    }
+  auto staged = std::make_unique<Staged>(path, makeTemporary(path, target), target);
+  std::ofstream out(staged->temporary, std::ios::binary | std::ios::trunc);
+  if (!out) throw Error(path + ": cannot write " + staged->temporary);
+  write(out);  // out of memory, say: the temporary goes with `staged`
+  out.close();
+  if (!out)  // the writer's own failure (the PNG encoder's), or the disk's
+    throw Error(path + ": cannot write " + staged->temporary + " (disk full?)");
+  staged_.push_back(std::move(staged));
+}
+
+void FileBatch::commit() {
+  for (const auto& staged : staged_) {
+    if (std::rename(staged->temporary.c_str(), staged->target.c_str()) != 0)
+      throw Error(staged->path + ": cannot write: renaming " + staged->temporary + " onto it failed (" +
+                  std::strerror(errno) + ")");
+    staged->renamed = true;
   }
-  if (std::rename(temporary.c_str(), target.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw Error(path + ": cannot write: renaming " + temporary + " onto it failed (" + reason + ")");
-  }
+}
+
+void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  FileBatch batch;
+  batch.add(path, write);
+  batch.commit();
 }
 
 void requireWritable(const std::string& path) {

@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <functional>
 #include <istream>
+#include <memory>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace lloydscope {
 
@@ -15,6 +17,24 @@ namespace lloydscope {
 // permissions; a link is written through, to its target. `write` fills the stream (binary).
 // Throws Error("<path>: cannot write ...") saying why.
 void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+// Files saved together, each as writeAtomically saves one: add() writes a file's temporary,
+// commit() renames them all onto their files. Where an add() throws, or commit() never comes,
+// no file is replaced (remesh -o on a full disk replaced the --record file it had saved first,
+// then failed). A device (/dev/stdout) has no temporary: add() writes into it at once.
+class FileBatch {
+ public:
+  FileBatch();
+  ~FileBatch();  // removes the temporaries not renamed
+  FileBatch(const FileBatch&) = delete;
+  FileBatch& operator=(const FileBatch&) = delete;
+  void add(const std::string& path, const std::function<void(std::ostream&)>& write);
+  void commit();
+
+ private:
+  struct Staged;
+  std::vector<std::unique_ptr<Staged>> staged_;
+};
 
 // Throws the Error writeAtomically would end with where its temporary cannot be made (no such
 // folder, no permission) or `path` is a folder: checked before a run that may take minutes.

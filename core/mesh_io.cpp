@@ -1169,9 +1169,15 @@ void requireMeshWritable(const std::string& path) {
 }
 
 void writeMesh(const Mesh& mesh, const std::string& path) {
+  FileBatch batch;
+  writeMesh(mesh, path, batch);
+  batch.commit();
+}
+
+void writeMesh(const Mesh& mesh, const std::string& path, FileBatch& batch) {
   const std::string ext = lowercaseExtension(path);
   requireWritableExtension(ext, path);
-  writeAtomically(path, [&](std::ostream& out) {
+  batch.add(path, [&](std::ostream& out) {
     out.imbue(std::locale::classic());  // a decimal point, whatever the global locale says
     out << std::setprecision(17);       // enough digits to read back the same doubles
     if (ext == ".off") writeOff(out, mesh);

@@ -10,6 +10,8 @@
 
 namespace lloydscope {
 
+class FileBatch;  // core/files.h
+
 struct ReadResult {
   Mesh mesh;
   // Things that were repaired rather than refused, one line each, e.g.
@@ -39,6 +41,8 @@ void validateMesh(const Mesh& mesh, const std::string& name);
 
 // Writes by extension. The file appears complete or not at all (temporary file, then rename).
 void writeMesh(const Mesh& mesh, const std::string& path);
+// The same, saved with the other files of `batch` (FileBatch, core/files.h) when it commits.
+void writeMesh(const Mesh& mesh, const std::string& path, FileBatch& batch);
 // Throws the Error writeMesh would for `path` (an extension it does not write, a folder it
 // cannot write in: requireWritable), before a run that may take minutes.
 void requireMeshWritable(const std::string& path);

@@ -240,6 +240,12 @@ std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydO
 }
 
 void saveRecording(const Recording& recording, const std::string& path) {
+  FileBatch batch;
+  saveRecording(recording, path, batch);
+  batch.commit();
+}
+
+void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch) {
   const std::string payload = encodePayload(recording);
   Writer file;
   file.bytes().append(kMagic, sizeof(kMagic));
@@ -248,7 +254,7 @@ void saveRecording(const Recording& recording, const std::string& path) {
   file.bytes() += payload;
   file.put<std::uint64_t>(fnv1a(payload.data(), payload.size()));
 
-  writeAtomically(path, [&](std::ostream& out) {
+  batch.add(path, [&](std::ostream& out) {
     out.write(file.bytes().data(), static_cast<std::streamsize>(file.bytes().size()));
   });
 }

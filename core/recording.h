@@ -11,6 +11,8 @@
 
 namespace lloydscope {
 
+class FileBatch;  // core/files.h
+
 struct Recording {
   // 2: sites as grid indices (8 bytes a site), centroids recomputed rather than stored.
   // 3: the density per triangle corner.
@@ -48,6 +50,8 @@ std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydO
 // Written through a temporary and renamed (writeAtomically), so an existing file is replaced
 // whole or not at all.
 void saveRecording(const Recording& recording, const std::string& path);
+// The same, saved with the other files of `batch` (FileBatch, core/files.h) when it commits.
+void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch);
 // The largest recording read: 5000 iterations of 100,000 sites at 8 bytes a site. (A link to
 // /dev/zero is read that far, into as much memory, before it is refused.)
 constexpr std::uint64_t kLargestRecording = 4'000'000'000;

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 #include <sys/wait.h>
 #include <thread>
 
@@ -371,6 +373,19 @@ TEST(Cli, AFailedRunLeavesTheUsersFileAlone) {
   test::writeText(bad, "OFF\n3 1 0\n0 0 0\n");
   EXPECT_EQ(runCli("remesh " + bad + " -o " + out).code, 1);
   EXPECT_EQ(test::readText(out), kTriangle);
+}
+
+// The recording and the output are saved both or neither: with the output on a full disk the
+// recording of the run before was replaced all the same.
+TEST(Cli, AnOutputThatCannotBeWrittenLeavesTheRecordingAlone) {
+  const std::string record = test::tempPath("kept.lsrec"), full = test::tempPath("full.off");
+  test::writeText(record, "the user's own");
+  std::remove(full.c_str());
+  ASSERT_EQ(symlink("/dev/full", full.c_str()), 0);
+  const CliRun r = runCli("remesh " + test::assetPath("sphere_cap.off") + " --sites 100 -o " + full + " --record " + record);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("full.off: cannot write"), std::string::npos) << r.err;
+  EXPECT_EQ(test::readText(record), "the user's own");
 }
 
 TEST(Cli, UnknownOptionValues) {

@@ -65,6 +65,37 @@ TEST(Files, WriteAtomicallyReplacesAFileWholeOrNotAtAll) {
   EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"whole.txt"});  // no temporary stays
 }
 
+// Files saved together are all replaced or none: a second that fails to write leaves the
+// first as it was (remesh -o on a full disk replaced the --record file it had saved first).
+TEST(Files, ABatchReplacesAllOfItsFilesOrNone) {
+  const std::string here = test::emptyFolder("batch");
+  const std::string first = here + "/first.txt", second = here + "/second.txt";
+  test::writeText(first, "old first");
+  test::writeText(second, "old second");
+  const std::string why = errorOf([&] {
+    FileBatch batch;
+    batch.add(first, [](std::ostream& out) { out << "new first"; });
+    batch.add(second, [](std::ostream& out) { out.setstate(std::ios::failbit); });
+    batch.commit();
+  });
+  EXPECT_EQ(why.rfind(second + ": cannot write", 0), 0u) << why;
+  EXPECT_EQ(test::readText(first), "old first");
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"first.txt", "second.txt"}));  // no temporary stays
+  {
+    FileBatch batch;  // never committed: nothing replaced either
+    batch.add(first, [](std::ostream& out) { out << "new first"; });
+  }
+  EXPECT_EQ(test::readText(first), "old first");
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"first.txt", "second.txt"}));
+  FileBatch batch;
+  batch.add(first, [](std::ostream& out) { out << "new first"; });
+  batch.add(second, [](std::ostream& out) { out << "new second"; });
+  EXPECT_EQ(test::readText(first), "old first");  // until the commit
+  batch.commit();
+  EXPECT_EQ(test::readText(first), "new first");
+  EXPECT_EQ(test::readText(second), "new second");
+}
+
 // The temporary is a name of its own beside the file: a user's "<name>.tmp" was deleted, and a
 // name near the system's limit (255) could not take ".tmp". The file keeps its permissions, and
 // a link is written through to its target, not replaced by a file.
