@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "files.h"
 #include "keys.h"
 #include "text.h"
 #include "mesh_io.h"
@@ -177,6 +178,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
                      RemeshOptions options, RemeshResult result, std::optional<Mesh> input)
     : renderer_(gpu, renderPass),
       meshName_(fileNameOf(meshName)),
+      shownPath_(meshName),
       options_(std::move(options)), slitDisksAsked_(options_.slitDisks), result_(std::move(result)),
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
       canvas_(gpu, renderPass) {
@@ -550,8 +552,22 @@ Pane parsePane(const std::string& name) {
   return parseName(kPaneNames, name, "pane");
 }
 
+std::string exportPath(const ExportJob& job, int iteration) {
+  if (job.first < 0) return job.path;
+  char number[16];
+  std::snprintf(number, sizeof number, "_%04d", iteration);
+  return std::string(job.path).insert(job.path.size() - 4, number);
+}
+
+void refuseReplacing(const ExportJob& job, const std::string& shown) {
+  for (int k = std::max(job.first, 0); k <= std::max(job.last, 0); ++k)
+    if (sameFile(exportPath(job, k), shown))
+      throw Error(exportPath(job, k) + ": the picture would replace " + shown + ", the file shown; give it another name");
+}
+
 void Inspector::startExport(ExportJob job) {
   requirePngPath(job.path);
+  refuseReplacing(job, shownPath_);
   const int count = replay_->iterationCount();
   const std::string range = "iterations " + std::to_string(job.first) + ":" + std::to_string(job.last);
   if (job.first >= 0 && job.last < job.first)
@@ -778,13 +794,7 @@ void Inspector::frame() {
                              {left + viewWidth, viewsTop, display.x - left - viewWidth, viewsHeight},
                              {left, plotsTop, display.x - left, plotsHeight}};
   if (exportJob_) {
-    std::string path = exportJob_->path;
-    if (exportJob_->first >= 0) {
-      char number[16];
-      std::snprintf(number, sizeof number, "_%04d", exportNext_);
-      path.insert(path.size() - 4, number);
-    }
-    ExportRequest request{path, {}};
+    ExportRequest request{exportPath(*exportJob_, exportNext_), {}};
     std::copy(rects[static_cast<int>(exportJob_->pane)], rects[static_cast<int>(exportJob_->pane)] + 4,
               request.crop);
     exportRequest_ = request;
@@ -1258,6 +1268,7 @@ void Inspector::fileControls() {
       }
       input_ = std::move(read.mesh);
       meshName_ = name;
+      shownPath_ = meshPath_;
       inputTopology_ = analyzeTopology(*input_);
       inputCharts_ = 0;  // a session makes one run, of one disk
       result_.before = measureQuality(*input_);
@@ -1272,6 +1283,9 @@ void Inspector::fileControls() {
   ImGui::InputText("##recording", recordingPath_, sizeof recordingPath_);
   if (ImGui::Button("Save recording")) {
     try {
+      if (sameFile(recordingPath_, shownPath_))
+        throw Error(std::string(recordingPath_) + ": the recording would replace " + shownPath_ +
+                    ", the file shown; give it another name");
       stopRun();
       saveRecording(replay_->recording(), recordingPath_);
       showMessage(std::string("saved ") + recordingPath_);
@@ -1291,6 +1305,7 @@ void Inspector::fileControls() {
       result_.before = measureQuality(r.input);
       forgetResult();
       openReplay(std::move(r));
+      shownPath_ = recordingPath_;
       message_.clear();
     } catch (const Error& e) {
       showMessage(e.what());

@@ -50,6 +50,11 @@ struct ExportJob {
   Pane pane = Pane::Window;
   int first = -1, last = -1;  // -1: just the current iteration
 };
+// The file the picture of `iteration` goes to.
+std::string exportPath(const ExportJob& job, int iteration);
+// Throws Error where a file `job` writes is `shown`, the mesh or recording open (a screenshot
+// named like it replaced the user's file with a PNG).
+void refuseReplacing(const ExportJob& job, const std::string& shown);
 
 // One picture the front end must save: after rendering the frame, read it back, write `crop`
 // of it to `path`, and call Inspector::exported().
@@ -192,6 +197,7 @@ class Inspector {
 
   MeshRenderer renderer_;
   std::string meshName_;
+  std::string shownPath_;  // the mesh or recording open, with its folder: no export or save replaces it
   RemeshOptions options_;   // the run on screen's: the header, the captions and Compare describe it
   RemeshOptions settings_;  // the Settings pane's, for the next Restart or Open mesh
   bool repairOnOpen_ = false;

@@ -404,6 +404,7 @@ struct InspectCommand {
       return runWindow(args.input, options, std::move(result), shot.validation, std::move(input), shot.view);
     }
     requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
+    refuseReplacing(shot.picture, args.input);
     RemeshResult result = openForInspection(args, *cmd, options, &input);
     renderScreenshot(args.input, options, std::move(result), shot, std::move(input));
     return 0;

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <memory>
 #include <sys/wait.h>
+#include <unistd.h>
 
 using namespace lloydscope;
 
@@ -409,6 +410,24 @@ TEST(Inspector, EachPictureOfASequenceHasItsOwnCaption) {
     ASSERT_EQ(a.height, b.height);
     EXPECT_EQ(differingPixels(a, b, 0, 60), 0u) << "iteration " << k;
   }
+}
+
+// A picture named like the file shown (through a link, or a recording saved as a .png, as
+// --record allows) replaced it with a PNG.
+TEST(Inspector, AScreenshotNeverReplacesTheFileShown) {
+  const std::string mesh = test::tempPath("shown.off"), link = test::tempPath("shown.png"), err = test::tempPath("shown.err");
+  test::writeText(mesh, test::readText(test::assetPath("sphere_cap.off")));
+  std::remove(link.c_str());
+  ASSERT_EQ(symlink(mesh.c_str(), link.c_str()), 0);
+  EXPECT_EQ(run("inspect " + mesh + " --screenshot " + link + " 2> " + err), 1);
+  EXPECT_NE(test::readText(err).find("shown.png: the picture would replace"), std::string::npos) << test::readText(err);
+  EXPECT_EQ(test::readText(mesh), test::readText(test::assetPath("sphere_cap.off")));
+  const std::string recording = test::tempPath("run_0001.png"), base = test::tempPath("run.png");
+  ASSERT_EQ(run("remesh " + mesh + " --sites 100 --record " + recording + " > /dev/null"), 0);
+  const std::string before = test::readText(recording);
+  EXPECT_EQ(run("inspect " + recording + " --screenshot " + base + " --iterations 0:2 2> " + err), 1);
+  EXPECT_NE(test::readText(err).find("run_0001.png: the picture would replace"), std::string::npos) << test::readText(err);
+  EXPECT_EQ(test::readText(recording), before);
 }
 
 TEST(Inspector, ExportErrorsAreOneLine) {
