@@ -510,6 +510,8 @@ struct SimplifyCommand {
     if (sameFile(output, input)) throw Error(output + ": --output would replace the input mesh; give it another name");
     requireMeshWritable(output);
     const Mesh mesh = load(input, repair);
+    // Beyond it the quadrics overflow: at 1e78 nothing collapsed, and the mesh was written as read.
+    requireExactPredicatesRange(mesh, input, "simplified");
     const SimplifyResult s = simplify(mesh, target, input);
     writeMesh(s.mesh, output);
     std::cout << input << ": " << mesh.vertexCount() << " vertices, " << mesh.faceCount() << " faces -> "
@@ -534,12 +536,13 @@ struct MetricsCommand {
 
   int run() const {
     const Mesh measured = load(mesh, repair);
+    // Beyond it the angles overflow: at 1e78 every angle of a grid read 90 degrees.
+    requireExactPredicatesRange(measured, mesh, "measured");
     const QualityMetrics quality = measureQuality(measured);
     Fidelity fidelity;
     const bool withReference = !reference.empty();
     if (withReference) {
       const Mesh against = load(reference, repair);
-      requireExactPredicatesRange(measured, mesh, "measured");
       requireExactPredicatesRange(against, reference, "measured");
       fidelity = measureFidelity(measured, against);
     }

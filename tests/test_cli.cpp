@@ -47,17 +47,25 @@ const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 }  // namespace
 
-// A mesh the loader reads (coordinates up to 1e150) but CGAL's distance cannot measure: refused
-// in one line naming it (its distance to itself raised a floating-point trap in GMP, exit 136).
-TEST(Cli, ADistanceBeyondDoublePrecisionIsRefused) {
+// A mesh the loader reads (coordinates up to 1e150) but double precision cannot measure or
+// simplify: refused in one line naming it. Its distance to itself raised a floating-point trap
+// in GMP (exit 136); its angles (at 1e78 and up) all read 90 degrees, and simplify collapsed
+// nothing and wrote it back as read, both with exit 0.
+TEST(Cli, ABeyondDoublePrecisionMeshIsRefused) {
   const std::string path = test::tempPath("huge.off");
   test::writeText(path, "OFF\n4 2 0\n0 0 0\n1e149 0 0\n0 1e149 0\n1e149 1e149 1e148\n3 0 1 2\n3 1 3 2\n");
-  ASSERT_EQ(runCli("metrics " + path).code, 0);  // its angles are measured
-  const CliRun r = runCli("metrics " + path + " --reference " + path);
-  EXPECT_EQ(r.code, 1) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_NE(r.err.find(path + ": coordinates as large as 1e+149 are beyond what can be measured"), std::string::npos)
-      << r.err;
+  for (const std::string& command : {"metrics " + path, "metrics " + path + " --reference " + path,
+                                     "simplify " + path + " -o " + test::tempPath("never.off") + " --vertices 3"}) {
+    const CliRun r = runCli(command);
+    EXPECT_EQ(r.code, 1) << command << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(path + ": coordinates as large as 1e+149 are beyond what can be"), std::string::npos) << r.err;
+  }
+  // At unit scale the same square's angles are 45 and 90 degrees.
+  test::writeText(path, "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n");
+  const CliRun unit = runCli("metrics " + path + " --json");
+  ASSERT_EQ(unit.code, 0) << unit.err;
+  EXPECT_NEAR(nlohmann::json::parse(unit.out)["min_angle_deg"].get<double>(), 45.0, 1e-9);
 }
 
 // CGAL's mannequin is a nearly closed disk: remeshed both slit open and whole, and the report
