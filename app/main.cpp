@@ -35,6 +35,30 @@ struct RemeshArgs {
        fullInput = false, repair = false;
 };
 
+// An option the run would ignore is said, a note on stderr each: --alpha without the curvature
+// density, the polish's options with relocate, and the like were accepted and did nothing.
+void noteIgnoredOptions(const CLI::App& cmd, const RemeshOptions& o) {
+  const bool relocate = o.method == RemeshMethod::Relocate, noPolish = relocate || o.polish <= 0;
+  const char* curvatureOnly = "it shapes the curvature density (--density curvature)";
+  const char* retriangulateOnly = "it is retriangulate's, and relocate keeps the input's own triangles";
+  const struct {
+    const char* option;
+    bool ignored;
+    const char* why;
+  } rules[] = {{"--alpha", o.density.kind != DensityKind::Curvature, curvatureOnly},
+               {"--beta", o.density.kind != DensityKind::Curvature, curvatureOnly},
+               {"--floor", o.density.kind != DensityKind::Curvature, curvatureOnly},
+               {"--border", o.param.method == ParamMethod::Lscm, "LSCM's border is free"},
+               {"--polish", relocate, retriangulateOnly},
+               {"--polish-target", noPolish, "it is the polish's, and there is no polish to relax with"},
+               {"--no-snap", noPolish, "the snaps are the polish's last step, and there is no polish"},
+               {"--no-fit", relocate, retriangulateOnly},
+               {"--no-resample", relocate, "relocate parameterizes the input itself always"}};
+  for (const auto& rule : rules)
+    if (rule.ignored && cmd.count(rule.option) > 0)
+      std::cerr << "note: " << rule.option << " has no effect here: " << rule.why << "\n";
+}
+
 // The preset first, then whatever the user named explicitly on top of it.
 RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   const RemeshMethod method = parseRemeshMethod(a.method);
@@ -69,6 +93,7 @@ RemeshOptions remeshOptions(const RemeshArgs& a, const CLI::App& cmd) {
   if (a.noSlit) o.slitDisks = false;
   if (a.fullInput) o.coarsenInput = false;
   if (cmd.count("--polish-target")) o.polishTarget = parsePolishTarget(a.polishTarget);
+  noteIgnoredOptions(cmd, o);
   return o;
 }
 

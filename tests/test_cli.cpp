@@ -396,6 +396,24 @@ TEST(Cli, AnOutputThatCannotBeWrittenLeavesTheRecordingAlone) {
   EXPECT_EQ(test::readText(record), "the user's own");
 }
 
+// An option the run ignores is said: --alpha without the curvature density, or the polish's
+// options with relocate, were accepted and changed nothing (the output was byte for byte the same).
+TEST(Cli, AnOptionWithNoEffectIsSaid) {
+  const std::string mesh = test::assetPath("sphere_cap.off"), out = test::tempPath("ignored.off");
+  const CliRun plain = runCli("remesh " + mesh + " --sites 100 -o " + out);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("note:"), std::string::npos) << plain.err;
+  const CliRun alpha = runCli("remesh " + mesh + " --sites 100 --alpha 3 -o " + out);
+  ASSERT_EQ(alpha.code, 0) << alpha.err;
+  EXPECT_NE(alpha.err.find("note: --alpha has no effect here: it shapes the curvature density"), std::string::npos) << alpha.err;
+  EXPECT_EQ(runCli("remesh " + mesh + " --sites 100 --density curvature --alpha 3 -o " + out).err.find("note:"),
+            std::string::npos);
+  const CliRun relocate = runCli("remesh " + mesh + " --method relocate --no-fit --polish 5 -o " + out);
+  ASSERT_EQ(relocate.code, 0) << relocate.err;
+  EXPECT_NE(relocate.err.find("note: --no-fit has no effect here"), std::string::npos) << relocate.err;
+  EXPECT_NE(relocate.err.find("note: --polish has no effect here"), std::string::npos) << relocate.err;
+}
+
 TEST(Cli, UnknownOptionValues) {
   const CliRun r = runCli("remesh " + test::assetPath("jittered_grid.off") + " --param nope");
   EXPECT_EQ(r.code, 1);
