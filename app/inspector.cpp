@@ -440,12 +440,17 @@ glm::vec3 Inspector::towardsEye() const {
                    std::sin(camera_.pitch));
 }
 
+glm::vec3 Inspector::toGpu(const Vec3& p) const {
+  const Vec3 q = (p - gpuOrigin_) / gpuScale_;
+  return glm::vec3(q.x(), q.y(), q.z());
+}
+
 std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent, float top) const {
-  const glm::vec3 target(camera_.target.x(), camera_.target.y(), camera_.target.z());
-  const glm::vec3 eye = target + camera_.distance * towardsEye();
+  const glm::vec3 target = toGpu(camera_.target);
+  const float distance = static_cast<float>(camera_.distance / gpuScale_);
+  const glm::vec3 eye = target + distance * towardsEye();
   const float below = extent.y - top;  // the pane under the band at its top
-  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / below,
-                                    camera_.distance * 0.01f, camera_.distance * 10.0f);
+  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / below, distance * 0.01f, distance * 10.0f);
   proj[1][1] *= -1.0f;  // Vulkan's y points down
   // The view is drawn over the whole pane (a mesh zoomed in still passes under the band), but
   // its centre and its 40 degrees are those of the pane under the band.
@@ -460,8 +465,9 @@ void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& exte
   const glm::mat4 inverse = glm::inverse(viewProjection);
   const float x = (mouse.x - p0.x) / extent.x * 2 - 1, y = (mouse.y - p0.y) / extent.y * 2 - 1;
   const glm::vec4 far = inverse * glm::vec4(x, y, 1.0f, 1.0f);
-  const glm::vec3 through = glm::vec3(far) / far.w - eye;
-  const int hit = triangleOnRay(resultIn3D(), Vec3(eye.x, eye.y, eye.z), Vec3(through.x, through.y, through.z));
+  const glm::vec3 through = glm::vec3(far) / far.w - eye;  // the same way in the GPU's frame as in the mesh's
+  const Vec3 eyeAt = gpuOrigin_ + gpuScale_ * Vec3(eye.x, eye.y, eye.z);
+  const int hit = triangleOnRay(resultIn3D(), eyeAt, Vec3(through.x, through.y, through.z));
   if (finalShown()) selection_.toggleFinalTriangle(hit);
   else selection_.toggleTriangle(hit);
 }
@@ -648,10 +654,10 @@ float Inspector::fittingDistance(const ImVec2& extent) const {
   return distance > 0 ? distance : camera_.distance;
 }
 
-void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm::vec3& eye) const {
+void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const Vec3& eye) const {
   ImVec2 a, b;
   for (const SeamEdge& e : seam3D_) {
-    const Vec3 toEye = Vec3(eye.x, eye.y, eye.z) - 0.5 * (e.a + e.b);
+    const Vec3 toEye = eye - 0.5 * (e.a + e.b);
     if (e.normal.dot(toEye) <= 0) continue;  // on the far side (no depth test here)
     if (screen(e.a, a) && screen(e.b, b)) dl->AddLine(a, b, kSeamColor, presentation_ ? 4.0f : 3.0f);
   }
@@ -685,7 +691,11 @@ void Inspector::uploadMesh() {
     const auto a = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
     colors.push_back(angleColor(*std::min_element(a.begin(), a.end())));
   }
-  renderer_.upload(mesh, colors);
+  // The GPU's frame: the mesh's box, centred and of size 1.
+  const auto [lo, hi] = boundingBox(mesh);
+  gpuOrigin_ = 0.5 * (lo + hi);
+  gpuScale_ = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1.0;
+  renderer_.upload(mesh, colors, gpuOrigin_, gpuScale_);
   // The seams on the mesh shown; on the user's own mesh (never cut), those of the mesh that was
   // parameterized, whose border vertices lie on it.
   const Mesh& cut = !shown.input3D ? view.output : replay_->recording().input;
@@ -709,7 +719,7 @@ void Inspector::uploadMesh() {
   std::vector<Marker> sites;
   if (shown.sites3D && !final)
     for (const Vec3& s : view.liftedSites)
-      sites.push_back(marker(s, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+      sites.push_back(marker((s - gpuOrigin_) / gpuScale_, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
   renderer_.uploadMarkers(sites);
   uploadedIteration_ = iteration_;
   uploadedInput_ = shown.input3D;
@@ -1371,14 +1381,14 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
   auto toScreen = [&](const Vec3& p, ImVec2& screen) {
-    const glm::vec4 c = viewProjection * glm::vec4(p.x(), p.y(), p.z(), 1.0f);
+    const glm::vec4 c = viewProjection * glm::vec4(toGpu(p), 1.0f);
     if (c.w <= 0) return false;
     screen = ImVec2(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
                     p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
     return true;
   };
-  const Vec3 eye(eyeAt.x, eyeAt.y, eyeAt.z);
-  drawSeams3D(dl, toScreen, eyeAt);
+  const Vec3 eye = gpuOrigin_ + gpuScale_ * Vec3(eyeAt.x, eyeAt.y, eyeAt.z);  // the mesh's frame
+  drawSeams3D(dl, toScreen, eye);
   if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip
     if (result_.fidelity.samples > 0 && toScreen(result_.fidelity.farthestPoint, at)) {

@@ -183,20 +183,26 @@ class Inspector {
   void openReplay(Recording recording);
   void stopComparingForARun();
   void uploadMesh();
-  void drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const glm::vec3& eye) const;
+  void drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const Vec3& eye) const;
   const QualityMetrics& currentQuality();  // of the current iteration's result, cached
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;
-  // The 3D view's view-projection matrix (Vulkan clip space) and eye, for a pane this size
-  // whose `top` pixels (the label's band) the view is centred and fitted under.
   glm::vec3 towardsEye() const;  // the unit vector from the camera's target to its eye
+  glm::vec3 toGpu(const Vec3& p) const;  // where the GPU has p: see gpuOrigin_
+  // The 3D view's view-projection matrix (Vulkan clip space) and eye, both of the GPU's frame
+  // (toGpu), for a pane this size whose `top` pixels (the label's band) the view is centred
+  // and fitted under.
   std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent, float top) const;
 
   MeshRenderer renderer_;
   std::string meshName_;
+  // The 3D pane's mesh goes to the GPU centred on gpuOrigin_, at 1 / gpuScale_ (its box's
+  // centre and diagonal, set as it is uploaded): single precision keeps its shape at any size.
+  Vec3 gpuOrigin_ = Vec3::Zero();
+  double gpuScale_ = 1;
   std::string shownPath_;  // the mesh or recording open, with its folder: no export or save replaces it
   RemeshOptions options_;   // the run on screen's: the header, the captions and Compare describe it
   RemeshOptions settings_;  // the Settings pane's, for the next Restart or Open mesh

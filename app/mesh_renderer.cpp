@@ -40,7 +40,8 @@ MeshRenderer::~MeshRenderer() {
   gpu_.destroy(pipeline_);
 }
 
-void MeshRenderer::upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors) {
+void MeshRenderer::upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors, const Vec3& origin,
+                          double scale) {
   std::vector<Vertex> vertices;
   vertices.reserve(3 * mesh.triangles.size());
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -49,7 +50,7 @@ void MeshRenderer::upload(const Mesh& mesh, const std::vector<std::array<float, 
                        .cross(mesh.points[t[2]] - mesh.points[t[0]])
                        .normalized();
     for (int k = 0; k < 3; ++k) {
-      const Vec3& p = mesh.points[t[k]];
+      const Vec3 p = (mesh.points[t[k]] - origin) / scale;
       Vertex v{};
       for (int i = 0; i < 3; ++i) {
         v.position[i] = static_cast<float>(p[i]);

@@ -26,7 +26,9 @@ class MeshRenderer {
   ~MeshRenderer();
 
   // One colour per triangle (linear RGB, 0..1).
-  void upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors);
+  // Each point p goes to the GPU as (p - origin) / scale, in single precision: near the origin
+  // and of size 1 (a mesh 1e8 units off the origin was a line of dots, one of size 1e19 nothing).
+  void upload(const Mesh& mesh, const std::vector<std::array<float, 3>>& colors, const Vec3& origin, double scale);
   // Marks on the surface (the lifted sites), drawn over the mesh where they are in sight (sites
   // on the far side showed through it: a ring of dots across the mushroom's cap).
   void uploadMarkers(const std::vector<Marker>& markers) { markers_.upload(markers); }

@@ -430,6 +430,25 @@ TEST(Inspector, AScreenshotNeverReplacesTheFileShown) {
   EXPECT_EQ(test::readText(recording), before);
 }
 
+// The 3D view of a mesh far from the origin, or of a huge one, is the view of the same mesh
+// at unit size: in single precision one 1e8 units off the origin was a line of dots, and one of
+// size 1e19 was not drawn at all (remesh takes both).
+TEST(Inspector, The3DViewDrawsAMeshAtAnySizeAndPlace) {
+  const Mesh cap = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  auto meshPixels = [&](const std::string& name, double scale, const Vec3& offset) {
+    Mesh moved = cap;
+    for (Vec3& p : moved.points) p = scale * p + offset;
+    const std::string path = test::tempPath(name + ".off"), png = test::tempPath(name + ".png");
+    writeMesh(moved, path);
+    EXPECT_EQ(renderScene(path + " --sites 100 --pane 3d", png), 0) << name;
+    return pixelsWhere(readPng(png), [](const unsigned char* c) { return c[1] > c[0] + 30 && c[1] > c[2] + 30; });  // green
+  };
+  const int unit = meshPixels("unit", 1, Vec3::Zero());
+  EXPECT_GT(unit, 20000);
+  EXPECT_NEAR(meshPixels("far", 1, Vec3(1e8, 0, 0)), unit, 0.05 * unit);
+  EXPECT_NEAR(meshPixels("huge", 1e19, Vec3::Zero()), unit, 0.05 * unit);
+}
+
 TEST(Inspector, ExportErrorsAreOneLine) {
   const std::string mesh = test::assetPath("sphere_cap.off"), err = test::tempPath("export.err");
   for (const std::string& args :
