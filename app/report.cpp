@@ -554,6 +554,14 @@ std::string pinsNotShown(const std::vector<int>& pinned, size_t count, const std
   return heading + missing + " pinned: " + where + " " + has + ".";
 }
 
+std::string farFromTheInputText(const Fidelity& f) {
+  if (!(f.hausdorffPercent > kFarFromTheInputPercent)) return "";
+  // A tall cone of 33 vertices, 32 of them on its border, came out a flat disk, said nowhere.
+  return "Warning: the result strays " + format("%.1f", f.hausdorffPercent) +
+         "% of the diagonal from the input: too few vertices for its shape there; more vertices "
+         "asked may follow it";
+}
+
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
   if (asked <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
@@ -568,8 +576,10 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   std::ostringstream out;
   out << "Settings: " << describe(o) << "\n\n";
   out << qualityTable(r.before, r.after, o.measureFidelity ? &r.fidelity : nullptr) << "\n";
-  if (o.measureFidelity)
+  if (o.measureFidelity) {
     out << "Hausdorff distance reached at " << farthestPointText(r.fidelity) << "\n";
+    if (const std::string far = farFromTheInputText(r.fidelity); !far.empty()) out << far << "\n";
+  }
   if (const std::string count = vertexCountText(r, o); !count.empty()) out << count << "\n";
   if (r.components > 1)
     out << "Remeshed " << r.components - r.componentsKept << " of " << r.components

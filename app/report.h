@@ -168,6 +168,11 @@ DetailRows triangleRows(const TriangleDetails& d, bool mapped);
 std::string pinsNotShown(const std::vector<int>& pinned, size_t count, const std::string& kind,
                          const std::string& where);
 
+// Where the result strays farther than kFarFromTheInputPercent of the diagonal from the input
+// (the results here are 0.1-3%): a warning that says so, and what may help; else empty.
+constexpr double kFarFromTheInputPercent = 10;
+std::string farFromTheInputText(const Fidelity& f);
+
 // Where a retriangulated result has more or fewer vertices than were asked: both counts, and
 // why; else empty.
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options);

@@ -420,6 +420,20 @@ TEST(Report, PinsAViewCannotShowAreSaid) {
   EXPECT_EQ(pinsNotShown({7}, 0, "triangle", "the final result"), "Triangle 7 pinned: the final result has no triangles.");
 }
 
+// A result far from the input is warned of (a tall cone came out a flat disk, 99.6% of the
+// diagonal away, with nothing said); the usual 0.1-3% is not.
+TEST(Report, AResultFarFromTheInputIsWarnedOf) {
+  Fidelity f;
+  f.hausdorffPercent = 2.9;
+  EXPECT_EQ(farFromTheInputText(f), "");
+  f.hausdorffPercent = 99.558;
+  EXPECT_EQ(farFromTheInputText(f).rfind("Warning: the result strays 99.6% of the diagonal from the input", 0), 0u)
+      << farFromTheInputText(f);
+  RemeshResult r;
+  r.fidelity = f;
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("Warning: the result strays 99.6%"), std::string::npos);
+}
+
 // A result with more or fewer vertices than asked says so, and why (CGAL's femur at 500: 510,
 // with nothing said; --help promised the number asked).
 TEST(Report, AVertexCountOtherThanAskedIsSaid) {
