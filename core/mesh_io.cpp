@@ -1059,6 +1059,10 @@ std::string loadFile(const std::string& path) {
   // A UTF-8 byte order mark (some editors write one) is not part of the first line: an OBJ's
   // first vertex was lost with it, an OFF's header refused.
   if (data.rfind("\xEF\xBB\xBF", 0) == 0) data.erase(0, 3);
+  // Lines ended by CR alone (classic Mac OS) are lines: an OBJ written so was one line, a
+  // comment, and refused as "the mesh has no faces". (A binary PLY's header ends its lines in
+  // LF, so a file without one is text.)
+  if (data.find('\n') == std::string::npos) std::replace(data.begin(), data.end(), '\r', '\n');
   if (onlySpace(data)) fail(path, "the file is empty");
   return data;
 }

@@ -186,6 +186,13 @@ TEST(MeshIo, ReadsAsciiOffWithCommentsAndColours) {
   EXPECT_TRUE(result.notes.empty());
 }
 
+// Lines ended by CR alone (classic Mac OS): the OBJ was read as one line and refused as "the
+// mesh has no faces".
+TEST(MeshIo, ReadsLinesEndedByCarriageReturnsAlone) {
+  expectUnitSquare(readMesh(writeFile("mac.obj", "# square\rv 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3\rf 1 3 4\r")).mesh);
+  expectUnitSquare(readMesh(writeFile("mac.off", "OFF\r4 2 0\r0 0 0\r1 0 0\r1 1 0\r0 1 0\r3 0 1 2\r3 0 2 3\r")).mesh);
+}
+
 TEST(MeshIo, ReadsOffVariantsAndCountsOnTheKeywordLine) {
   expectUnitSquare(readMesh(writeFile("counts.off", "OFF 4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3"))
                        .mesh);
