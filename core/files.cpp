@@ -20,14 +20,17 @@ namespace lloydscope {
 namespace {
 
 // Where a write goes: through a link to its target (renaming onto the link replaced it with a
-// file and left the target as it was).
+// file and left the target as it was), a target not there yet too (a link to a file to be made
+// was replaced by the file), link after link.
 std::filesystem::path targetOf(const std::string& path) {
+  std::filesystem::path target = path;
   std::error_code error;
-  if (std::filesystem::is_symlink(path, error)) {
-    std::filesystem::path target = std::filesystem::weakly_canonical(path, error);
-    if (!error) return target;
+  for (int links = 0; links < 40 && std::filesystem::is_symlink(target, error); ++links) {
+    const std::filesystem::path to = std::filesystem::read_symlink(target, error);
+    if (error) break;
+    target = to.is_absolute() ? to : target.parent_path() / to;
   }
-  return path;
+  return target;
 }
 
 // Says why no file could be made in the target's folder: a missing folder by its name, else the

@@ -118,6 +118,11 @@ TEST(Files, WriteAtomicallyTouchesNoOtherFileAndKeepsLinksAndPermissions) {
   writeAtomically(here + "/link.off", [](std::ostream& out) { out << "new"; });
   EXPECT_TRUE(fs::is_symlink(here + "/link.off"));
   EXPECT_EQ(test::readText(here + "/real/target.off"), "new");
+  // A link to a file not there yet makes the file, and stays a link (it was replaced by it).
+  fs::create_symlink("real/later.off", here + "/dangling.off");
+  writeAtomically(here + "/dangling.off", [](std::ostream& out) { out << "made"; });
+  EXPECT_TRUE(fs::is_symlink(here + "/dangling.off"));
+  EXPECT_EQ(test::readText(here + "/real/later.off"), "made");
 
   fs::permissions(here + "/out.off", fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   writeAtomically(here + "/out.off", [](std::ostream& out) { out << "again"; });
