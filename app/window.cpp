@@ -13,6 +13,7 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
+#include <exception>
 #include <cstdlib>
 #include <optional>
 #include <vector>
@@ -288,6 +289,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     throw Error("cannot open a window on this display");
   }
   WindowEvents events;  // the callbacks' until the window is gone
+  std::exception_ptr failed;
   glfwSetWindowUserPointer(window, &events);
   {
     gpu::Context gpu(surfaceExtensions(), true, validation);
@@ -323,8 +325,10 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     alloc.commandBufferCount = 1;
     VkCommandBuffer cmd;
     vkAllocateCommandBuffers(gpu.device, &alloc, &cmd);
-    {
-      gpu::Buffer pixels;  // frames read back for exports
+    gpu::Buffer pixels;  // frames read back for exports
+    // What fails from here on (a pin that does not exist, as the view is applied) still lets
+    // every Vulkan object go, before the device, and the window close; then it is thrown again.
+    try {
       Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
       inspector.setWake(glfwPostEmptyEvent);  // thread-safe: ends the wait for events
       view.applyTo(inspector);
@@ -382,9 +386,12 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
         vkResetFences(gpu.device, 1, &done);
         if (exporting) saveExport(inspector, chain, pixels);
       }
-      vkDeviceWaitIdle(gpu.device);
-      gpu.destroy(pixels);
+      vkDeviceWaitIdle(gpu.device);  // before the inspector's buffers go
+    } catch (...) {
+      failed = std::current_exception();
     }
+    vkDeviceWaitIdle(gpu.device);
+    gpu.destroy(pixels);
     vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
     vkDestroyFence(gpu.device, done, nullptr);
     vkDestroySemaphore(gpu.device, rendered, nullptr);
@@ -395,12 +402,13 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     chain.destroy(gpu);
     vkDestroyRenderPass(gpu.device, pass, nullptr);
     vkDestroySurfaceKHR(gpu.instance, surface, nullptr);
-    if (gpu.validationMessages > 0)
+    if (!failed && gpu.validationMessages > 0)
       throw Error("the Vulkan validation layer reported " + std::to_string(gpu.validationMessages) +
                   " problems");
   }
   glfwDestroyWindow(window);
   glfwTerminate();
+  if (failed) std::rethrow_exception(failed);
   return 0;
 }
 
