@@ -88,12 +88,9 @@ class OffscreenRenderer {
     if (readBack) gpu_.waitSubmitted();
   }
 
-  // Writes the part `crop` (x, y, width, height) of the last frame read back.
-  void writePng(const std::string& path, const float (&crop)[4]) const {
-    lloydscope::writePng(path, static_cast<const unsigned char*>(pixels_.mapped), width_, height_,
-                         false,
-                         {static_cast<int>(crop[0]), static_cast<int>(crop[1]),
-                          static_cast<int>(crop[2]), static_cast<int>(crop[3])});
+  // Writes the part `crop` of the last frame read back.
+  void writePng(const std::string& path, const PixelRect& crop) const {
+    lloydscope::writePng(path, static_cast<const unsigned char*>(pixels_.mapped), width_, height_, false, crop);
   }
 
   void finish() { gpu_.waitSubmitted(); }

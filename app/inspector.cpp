@@ -805,10 +805,10 @@ void Inspector::frame() {
                              {left + viewWidth, viewsTop, display.x - left - viewWidth, viewsHeight},
                              {left, plotsTop, display.x - left, plotsHeight}};
   if (exportJob_) {
-    ExportRequest request{exportPath(*exportJob_, exportNext_), {}};
-    std::copy(rects[static_cast<int>(exportJob_->pane)], rects[static_cast<int>(exportJob_->pane)] + 4,
-              request.crop);
-    exportRequest_ = request;
+    const float* rect = rects[static_cast<int>(exportJob_->pane)];
+    exportRequest_ = ExportRequest{exportPath(*exportJob_, exportNext_),
+                                   {static_cast<int>(rect[0]), static_cast<int>(rect[1]),
+                                    static_cast<int>(rect[2]), static_cast<int>(rect[3])}};
   }
   if (!presentation_) controlsPane(ImVec2(0, 0), ImVec2(left, display.y));
   if (shownCaption) captionPane(*shownCaption, ImVec2(left, 0), ImVec2(display.x - left, captionHeight));
@@ -1535,19 +1535,13 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   const IterationView& view = replay_->view(iteration_);
   const size_t fixedCount = replay_->recording().fixedSites.size();
   if (fill_ != CellFill::None && layers().cells2D) {
-    const auto& iterations = replay_->recording().iterations;
     auto quantity = [&](size_t i) {
       const BoundedCell& c = view.cells[i];
       switch (fill_) {
         case CellFill::Mass: return c.mass;
         case CellFill::Area: return c.area;
         case CellFill::Energy: return c.energy;
-        case CellFill::Moved:  // fixed sites never move; iteration 0 has no predecessor
-          return i < fixedCount || view.index == 0
-                     ? 0.0
-                     : (iterations[view.index].sites[i - fixedCount] -
-                        iterations[view.index - 1].sites[i - fixedCount])
-                           .norm();
+        case CellFill::Moved: return siteMoved(replay_->recording(), view.index, i);
         default: return (c.centroid - view.sites[i]).norm();
       }
     };

@@ -6,6 +6,7 @@
 #include "canvas_renderer.h"
 #include "mesh_renderer.h"
 #include "pipeline.h"
+#include "png.h"
 #include "report.h"
 #include "lesson.h"
 #include "replay.h"
@@ -60,7 +61,7 @@ void refuseReplacing(const ExportJob& job, const std::string& shown);
 // of it to `path`, and call Inspector::exported().
 struct ExportRequest {
   std::string path;
-  float crop[4];  // x, y, width, height in framebuffer pixels
+  PixelRect crop;  // in framebuffer pixels
 };
 
 // What the inspector opens on beyond the recording, from the command line: the same for the

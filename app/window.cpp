@@ -147,8 +147,7 @@ void saveExport(Inspector& inspector, const Swapchain& chain, const gpu::Buffer&
   try {
     writePng(r.path, static_cast<const unsigned char*>(pixels.mapped),
              static_cast<int>(chain.extent.width), static_cast<int>(chain.extent.height), true,
-             {static_cast<int>(r.crop[0]), static_cast<int>(r.crop[1]), static_cast<int>(r.crop[2]),
-              static_cast<int>(r.crop[3])});
+             r.crop);
     inspector.exported();
   } catch (const Error& e) {
     inspector.exported(e.what());

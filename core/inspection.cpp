@@ -52,16 +52,17 @@ CellDetails describeCell(const Recording& recording, const Domain& domain,
     d.shoelaceArea += pieceArea;
     d.surfaceArea += pieceArea * stretch;
   }
-  if (!d.fixed && view.index > 0) {
-    const size_t movable = cell - recording.fixedSites.size();
-    d.moved = (recording.iterations[view.index].sites[movable] -
-               recording.iterations[view.index - 1].sites[movable])
-                  .norm();
-  }
+  d.moved = siteMoved(recording, view.index, cell);
   const auto vertex = std::find(view.outputSite.begin(), view.outputSite.end(), cell);
   if (vertex != view.outputSite.end())
     d.valence = vertexEdges(view.output).valence[vertex - view.outputSite.begin()];
   return d;
+}
+
+double siteMoved(const Recording& recording, int k, size_t cell) {
+  const size_t fixed = recording.fixedSites.size();
+  if (cell < fixed || k <= 0) return 0;
+  return (recording.iterations[k].sites[cell - fixed] - recording.iterations[k - 1].sites[cell - fixed]).norm();
 }
 
 std::vector<Vec2> siteTrajectory(const Recording& recording, int site) {

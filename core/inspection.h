@@ -36,6 +36,9 @@ CellDetails describeCell(const Recording& recording, const Domain& domain,
 
 // Where site i was at every recorded iteration.
 std::vector<Vec2> siteTrajectory(const Recording& recording, int site);
+// How far site `cell` (of all sites, fixed first) moved from iteration k - 1 to k: 0 for a
+// fixed site, and at iteration 0.
+double siteMoved(const Recording& recording, int k, size_t cell);
 
 // The cell that holds p (its nearest site), or -1 when p is outside the domain.
 int cellAt(const Domain& domain, const IterationView& view, const Vec2& p);
