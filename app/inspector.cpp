@@ -766,11 +766,12 @@ void Inspector::frame() {
   const float elapsed = animatedLastFrame_ ? ImGui::GetIO().DeltaTime : 0.0f;
   if (playing_) {
     playClock_ += elapsed * playSpeed_;
-    while (playClock_ >= 1.0f) {
+    while (playing_ && playClock_ >= 1.0f) {  // a long sleep plays to the last iteration, no further
       playClock_ -= 1.0f;
       if (iteration_ + 1 >= replay_->iterationCount()) playing_ = false;
       else setIteration(iteration_ + 1);
     }
+    if (!playing_) playClock_ = 0;
   }
   if (lesson_.playing()) lesson_.advance(elapsed * playSpeed_ / 10.0f);  // 10 it/s: a lecture's pace
   handleKeys();
@@ -1334,8 +1335,12 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     camera_.yaw -= io.MouseDelta.x * 0.01f;
     camera_.pitch = std::clamp(camera_.pitch + io.MouseDelta.y * 0.01f, -1.5f, 1.5f);
   }
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0)
-    camera_.distance *= std::pow(0.9f, io.MouseWheel);
+  // Zoomed within 10^-3..10^3 times the mesh's size: at 0 or infinity the projection was NaN,
+  // and Copy view gave a view Paste view refused.
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
+    const float size = static_cast<float>(boundingBoxDiagonal(fittedMesh()));
+    camera_.distance = std::clamp(camera_.distance * std::pow(0.9f, io.MouseWheel), 1e-3f * size, 1e3f * size);
+  }
   if (ImGui::IsItemHovered() && letterPressed('F'))
     fitCamera();
 
@@ -1449,7 +1454,9 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     pan2D_.x += io.MouseDelta.x;
     pan2D_.y += io.MouseDelta.y;
   }
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0) zoom2D_ *= std::pow(1.15f, io.MouseWheel);
+  // From a twentieth of the pane up (sites 10^-7 of the domain apart, as on a long limb's map,
+  // are still drawn apart), and never 0 or infinite.
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) zoom2D_ = std::clamp(zoom2D_ * std::pow(1.15f, io.MouseWheel), 0.05f, 1e9f);
   if (ImGui::IsItemHovered() && letterPressed('F')) fit2D();
   const float scale = base * zoom2D_;
   auto screen = [&](const Vec2& uv) {
