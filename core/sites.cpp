@@ -302,7 +302,15 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   const bool stitched = options.stitchedCount > 0;  // the border's seam copies become one vertex each
   const int border = stitched ? distinctPoints(sites.fixedPoints, boundingBoxDiagonal(mesh))
                               : static_cast<int>(sites.fixed.size());
-  const int inside = std::max(0, (stitched ? options.stitchedCount : count) - border);
+  const int asked = stitched ? options.stitchedCount : count;
+  int inside = std::max(0, asked - border);
+  // Where the map squashes the border (a tall cone's LSCM map is a lens), its samples are
+  // doubled until they follow it in the plane, and they took every site: none was left inside,
+  // and the cone came out a flat disk. The inside keeps at least what a border sampled by its
+  // length alone would leave it.
+  const long long byLength = std::max(3LL, std::llround(loopLength(mesh, param.boundaryLoop) / spacing));
+  if (static_cast<long long>(sites.fixed.size()) > 2 * byLength)
+    inside = std::max<long long>(inside, asked - byLength);
   sites.movable = sampleDensity(domain, inside, options.seed);
   sites.movableVertex.assign(sites.movable.size(), -1);
   return sites;
