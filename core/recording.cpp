@@ -153,6 +153,13 @@ void checkContents(const Recording& r, const std::string& path) {
     damaged("its parameter domain is not scaled to the unit square");
   if (!std::all_of(r.fixedSites.begin(), r.fixedSites.end(), inSquare))
     damaged("a border site lies outside the unit square");
+  // Every iteration's result is triangulated inside them: where they cross, the replay failed
+  // with an error that named no file.
+  try {
+    triangulateSites(r.fixedSites, {});
+  } catch (const Error& e) {
+    damaged(e.what());
+  }
   for (const Triangle& t : r.input.triangles)
     if (triangleArea(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]) < -kFlatAreaShare * area)
       damaged("a parameter triangle is turned over");

@@ -37,30 +37,31 @@ const IterationView& Replay::view(int k) {
   k = std::clamp(k, 0, std::max(0, iterationCount() - 1));
   if (view_.index == k || recording_.iterations.empty()) return view_;
   const IterationRecord& it = recording_.iterations[k];
-  view_.index = k;
-  view_.sites = allSites(recording_.fixedSites, it.sites);
-  view_.cells = recording_.cells(domain_, k, /*keepGeometry=*/true, &hints_);
-  view_.liftedSites.clear();
-  for (size_t i = 0; i < view_.sites.size(); ++i)
-    view_.liftedSites.push_back(lift(recording_.input, domain_, view_.sites[i], hints_.triangle[i]));
+  // Made apart and moved in whole: where it fails (a damaged recording), the view before stays
+  // as it was (it was left half made, its new sites over its old mesh).
+  IterationView next;
+  next.index = k;
+  next.sites = allSites(recording_.fixedSites, it.sites);
+  next.cells = recording_.cells(domain_, k, /*keepGeometry=*/true, &hints_);
+  for (size_t i = 0; i < next.sites.size(); ++i)
+    next.liftedSites.push_back(lift(recording_.input, domain_, next.sites[i], hints_.triangle[i]));
   // The retriangulated output is made of exactly these lifted points: no second lift
   // (relocate lifts its vertices where they end, short of a site where it would fold).
   const size_t fixedCount = recording_.fixedSites.size();
-  view_.outputUV.clear();
-  view_.outputSite.clear();
   if (method_ == RemeshMethod::Retriangulate) {
-    view_.output = assemble(triangulateSites(recording_.fixedSites, it.sites.unpack()), view_.liftedSites,
-                            &view_.outputSite);
-    for (int s : view_.outputSite) view_.outputUV.push_back(view_.sites[s]);
+    next.output = assemble(triangulateSites(recording_.fixedSites, it.sites.unpack()), next.liftedSites,
+                            &next.outputSite);
+    for (int s : next.outputSite) next.outputUV.push_back(next.sites[s]);
   } else {
     Relocation relocated = relocate(recording_.input, domain_, recording_.movableVertex, it.sites.unpack());
-    view_.output = std::move(relocated.mesh);
-    view_.outputUV = std::move(relocated.uv);  // short of the sites where they would fold
-    view_.outputSite = borderSite_;  // relocate leaves the border vertices on their fixed sites
+    next.output = std::move(relocated.mesh);
+    next.outputUV = std::move(relocated.uv);  // short of the sites where they would fold
+    next.outputSite = borderSite_;  // relocate leaves the border vertices on their fixed sites
     for (size_t i = 0; i < it.sites.size(); ++i)
-      view_.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
+      next.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
   }
-  view_.stitched = !seams_.empty() ? stitchSeams(view_.output, kSeamTolerance * boundingBoxDiagonal(view_.output)) : Mesh{};
+  next.stitched = !seams_.empty() ? stitchSeams(next.output, kSeamTolerance * boundingBoxDiagonal(next.output)) : Mesh{};
+  view_ = std::move(next);
   return view_;
 }
 

@@ -101,6 +101,9 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[](Recording& r) { for (Vec2& p : r.uv) p.x() = -p.x(); }, "its parameter domain is not scaled to the unit square"},
       {[](Recording& r) { for (Vec2& p : r.uv) p *= 1e-150; }, "its parameter domain is not scaled to the unit square"},
       {[](Recording& r) { r.fixedSites[0] *= 1e300; }, "a border site lies outside the unit square"},
+      // the replay failed on it with an error that named no file
+      {[](Recording& r) { std::swap(r.fixedSites[0], r.fixedSites[r.fixedSites.size() / 2]); },
+       "the border of the parameter domain crosses itself"},
       {[](Recording& r) { std::swap(r.input.triangles[10][0], r.input.triangles[10][1]); },
        "a parameter triangle is turned over"}};
   const std::string path = test::tempPath("edited.lsrec");
