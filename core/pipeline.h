@@ -152,7 +152,8 @@ struct FirstPassTrial {
 // one is remeshed to that many.
 
 // How many vertices a large input is simplified to before a run asked for `vertices`
-// (RemeshOptions::coarsenInput): ten per vertex asked, or five where ten would be over 10,000.
+// (RemeshOptions::coarsenInput): ten per vertex asked, but no more than 10,000 or five per
+// vertex asked, whichever is larger (1500 asked: 10,000; 4000 asked: 20,000).
 int coarseInputSize(int vertices);
 
 struct RemeshResult {
