@@ -187,7 +187,12 @@ bool RemeshSession::finished() const {
 
 Recording RemeshSession::header() const {
   Recording r;
-  r.settings = describe(options_) + " param-used=" + toString(param_.method);  // what "auto" chose
+  // The settings asked, and what the run made of them: the coarse input it simplified to (as
+  // simplify=N, it read back as asked) and the map "auto" chose.
+  RemeshOptions asked = options_;
+  if (coarsened_) asked.simplifyTo = 0;
+  r.settings = describe(asked) + (coarsened_ ? " coarse-input=" + std::to_string(options_.simplifyTo) : "") +
+               " param-used=" + toString(param_.method);
   r.method = options_.method;
   r.distanceThreshold = options_.lloyd.distanceThreshold;
   r.percentThreshold = options_.lloyd.percentThreshold;
@@ -896,6 +901,7 @@ std::string describe(const RemeshOptions& options) {
     s << " fit=" << (o.fit ? "yes" : "no");
     if (!o.slitDisks) s << " slit-disks=no";
   }
+  if (!o.coarsenInput) s << " full-input=yes";
   return s.str();
 }
 
@@ -942,6 +948,7 @@ RemeshOptions optionsFromSettings(const std::string& settings) {
   with("snap", [&](const std::string& v) { o.snapToTips = yes(v); });
   with("fit", [&](const std::string& v) { o.fit = yes(v); });
   with("slit-disks", [&](const std::string& v) { o.slitDisks = yes(v); });
+  with("full-input", [&](const std::string& v) { o.coarsenInput = !yes(v); });
   return o;
 }
 

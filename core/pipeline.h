@@ -326,7 +326,8 @@ void requireRemeshableSize(const Mesh& input, const Topology& topology, int vert
 std::string describe(const RemeshOptions& options);
 
 // The value of `key` in a describe() line, "" where the line does not name it. A recording's
-// line also names the map "auto" chose (param-used=lscm).
+// line also names the map "auto" chose (param-used=lscm), and the size a large input was
+// simplified to first (coarse-input=10000; RemeshOptions::coarsenInput).
 std::string settingValue(const std::string& settings, const std::string& key);
 // The options a describe() line was made from (a recording's: the inspector shows and compares
 // with what the run was), keys it does not name at their defaults. Throws Error on a value

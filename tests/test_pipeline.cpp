@@ -652,3 +652,25 @@ TEST(Names, EachNameReadsBackAndAnUnknownOneListsThemAll) {
   EXPECT_EQ(refusal(parseBorder, "Square"), "unknown border 'Square' (square, circle)");
   EXPECT_EQ(refusal(parsePolishTarget, ""), "unknown polish target '' (voronoi, centroid, circumcenter)");
 }
+
+// A recording's settings read back as the options asked: the coarse input a run simplified a
+// large input to was written as simplify=500, read back as asked, and --full-input was not
+// written at all.
+TEST(Pipeline, ARecordingsSettingsAreTheOptionsAsked) {
+  const Mesh bumpy = readMesh(test::assetPath("bumpy_disk.off")).mesh;  // 1000 vertices
+  RemeshOptions o;
+  o.sites.count = 50;
+  o.measureFidelity = false;
+  const std::string coarse = remesh(bumpy, o, "bumpy").recording.settings;
+  EXPECT_EQ(settingValue(coarse, "simplify"), "") << coarse;
+  EXPECT_EQ(settingValue(coarse, "coarse-input"), "500") << coarse;
+  EXPECT_EQ(optionsFromSettings(coarse).simplifyTo, 0);
+  EXPECT_TRUE(optionsFromSettings(coarse).coarsenInput);
+  o.coarsenInput = false;
+  const std::string full = remesh(bumpy, o, "bumpy").recording.settings;
+  EXPECT_EQ(settingValue(full, "coarse-input"), "") << full;
+  EXPECT_FALSE(optionsFromSettings(full).coarsenInput) << full;
+  o.coarsenInput = true;
+  o.simplifyTo = 300;  // asked: written as asked
+  EXPECT_EQ(optionsFromSettings(remesh(bumpy, o, "bumpy").recording.settings).simplifyTo, 300);
+}
