@@ -308,12 +308,19 @@ RawMesh readOff(const std::string& path, std::string_view text) {
   if (counts.size() == 3) headerCount(path, lines.lineNumber(), counts[2], "edge");  // unused, but must be sane
   RawMesh raw;
   reservePoints(raw, nv, text.size() - lines.position(), 6);  // "0 0 0\n"
+  size_t widest = 0;  // the most numbers on one vertex line, and where
+  int widestLine = 0;
   for (int i = 0; i < nv; ++i) {
     if (!lines.next(tokens)) {
-      fail(path, "file is truncated: header says " + plural(nv, "vertex", "vertices") +
-                     " but the file ends after " + str(i));
+      // Several vertices written on one line read as one: say where, not just "truncated".
+      fail(path, "file is truncated: header says " + plural(nv, "vertex", "vertices") + " but the file ends after " +
+                     str(i) +
+                     (widest > 7 ? " (a line is one vertex, and line " + str(widestLine) + " holds " +
+                                       str(widest) + " numbers)"
+                                 : ""));
     }
     const int line = lines.lineNumber();
+    if (tokens.size() > widest) widest = tokens.size(), widestLine = line;
     if (tokens.size() < 3) {
       fail(path, atLine(line) + "vertex " + str(i) + " has " + plural(tokens.size(), "coordinate", "coordinates") +
                      " (expected 3)");

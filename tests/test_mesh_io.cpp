@@ -448,7 +448,10 @@ TEST(MeshIoErrors, BadHeader) {
 }
 
 TEST(MeshIoErrors, TruncatedFile) {
-  expectFileError("few_vertices.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n", "truncated");
+  expectFileError("few_vertices.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n", "header says 4 vertices but the file ends after 2");
+  // Vertices run together on one line read as one: the line is named (it said "truncated" alone).
+  expectFileError("one_line.off", "OFF\n4 2 0\n0 0 0 1 0 0 0 1 0 1 1 0\n3 0 1 2 3 1 3 2\n",
+                  "file ends after 2 (a line is one vertex, and line 3 holds 12 numbers)");
   expectFileError("few_faces.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n", "truncated");
   expectFileError("few_faces.ply",
                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
