@@ -558,6 +558,15 @@ class PlyValues {
   }
 
   size_t remaining() const { return format_ == PlyFormat::Ascii ? body_.size() - pos_ : binary_.remaining(); }
+  // ASCII: a value follows on the line of the last one read (a row longer than its header says,
+  // or rows packed on one line).
+  bool moreOnThisLine() const {
+    if (format_ != PlyFormat::Ascii) return false;
+    size_t at = pos_;
+    while (at < body_.size() && isSpace(body_[at]) && body_[at] != '\n') ++at;
+    return at < body_.size() && body_[at] != '\n';
+  }
+  int line() const { return line_; }
   std::string_view rest() const { return format_ == PlyFormat::Ascii ? body_.substr(pos_) : binary_.rest(); }
 
  private:
@@ -625,37 +634,49 @@ RawMesh readPly(const std::string& path, std::string_view text) {
   RawMesh raw;
   reservePoints(raw, vertexElement->count, body.size(), vertexElement->properties.size());
   PlyValues values(path, body, header.format, header.bodyLine);
-  for (const PlyElement& element : header.elements) {
-    const bool isVertex = &element == vertexElement, isFace = &element == faceElement;
-    for (long long i = 0; i < element.count; ++i) {
-      const auto truncated = [&] {
-        fail(path, "file is truncated: it ends inside " + element.name + " " + str(i) + " of " + str(element.count));
-      };
-      Vec3 point = Vec3::Zero();
-      for (const PlyProperty& property : element.properties) {
-        double value = 0;
-        if (!values.read(property.isList ? property.countType : property.type, value)) truncated();
-        if (!property.isList) {
-          for (int c = 0; c < 3; ++c) {
-            if (isVertex && &property == xyz[c]) point[c] = value;
+  // The first row that a value follows on its line: where the body stops matching its header,
+  // said with the error that follows from it ("line 29: '1.0' is not an integer" named the
+  // face that read a vertex's extra column, not the vertex).
+  std::string longRow;
+  try {
+    for (const PlyElement& element : header.elements) {
+      const bool isVertex = &element == vertexElement, isFace = &element == faceElement;
+      for (long long i = 0; i < element.count; ++i) {
+        const auto truncated = [&] {
+          fail(path, "file is truncated: it ends inside " + element.name + " " + str(i) + " of " + str(element.count));
+        };
+        Vec3 point = Vec3::Zero();
+        for (const PlyProperty& property : element.properties) {
+          double value = 0;
+          if (!values.read(property.isList ? property.countType : property.type, value)) truncated();
+          if (!property.isList) {
+            for (int c = 0; c < 3; ++c) {
+              if (isVertex && &property == xyz[c]) point[c] = value;
+            }
+            continue;
           }
-          continue;
+          if (value < 0) fail(path, element.name + " " + str(i) + " has a list of negative length");
+          // Every item takes at least one byte: refuse a length the remaining data cannot hold.
+          if (value > static_cast<double>(values.remaining())) truncated();
+          const bool isIndexList = isFace && &property == indexProperty;
+          for (long long k = 0; k < static_cast<long long>(value); ++k) {
+            double item = 0;
+            if (!values.read(property.type, item)) truncated();
+            if (isIndexList) raw.indices.push_back(static_cast<long long>(item));
+          }
+          if (isIndexList) raw.endPolygon();
         }
-        if (value < 0) fail(path, element.name + " " + str(i) + " has a list of negative length");
-        // Every item takes at least one byte: refuse a length the remaining data cannot hold.
-        if (value > static_cast<double>(values.remaining())) truncated();
-        const bool isIndexList = isFace && &property == indexProperty;
-        for (long long k = 0; k < static_cast<long long>(value); ++k) {
-          double item = 0;
-          if (!values.read(property.type, item)) truncated();
-          if (isIndexList) raw.indices.push_back(static_cast<long long>(item));
-        }
-        if (isIndexList) raw.endPolygon();
+        if (isVertex) raw.points.push_back(point);
+        if (longRow.empty() && values.moreOnThisLine())
+          longRow = "line " + str(values.line()) + " (" + element.name + " " + str(i) +
+                    ") holds more values than the header declares for a " + element.name;
       }
-      if (isVertex) raw.points.push_back(point);
     }
+    if (!onlySpace(values.rest())) fail(path, "the file has more data than its header declares");
+  } catch (const Error& e) {
+    if (longRow.empty()) throw;
+    throw Error(std::string(e.what()) + "; " + longRow);
   }
-  if (!onlySpace(values.rest())) fail(path, "the file has more data than its header declares");
   return raw;
 }
 

@@ -449,6 +449,12 @@ TEST(MeshIoErrors, BadHeader) {
 
 TEST(MeshIoErrors, TruncatedFile) {
   expectFileError("few_vertices.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n", "header says 4 vertices but the file ends after 2");
+  // A PLY row with a column more than its header declares: the error its data leads to says
+  // where the rows stopped matching (it named only a later line's value).
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  expectFileError("extra_column.ply", ply + "0 0 0 1.0\n1 0 0 1.0\n1 1 0 1.0\n0 1 0 1.0\n3 0 1 2\n3 0 2 3\n",
+                  "; line 10 (vertex 0) holds more values than the header declares for a vertex");
   // Vertices run together on one line read as one: the line is named (it said "truncated" alone).
   expectFileError("one_line.off", "OFF\n4 2 0\n0 0 0 1 0 0 0 1 0 1 1 0\n3 0 1 2 3 1 3 2\n",
                   "file ends after 2 (a line is one vertex, and line 3 holds 12 numbers)");
