@@ -155,6 +155,8 @@ Mesh largestComponent(const Mesh& mesh) {
   return std::move(*std::max_element(parts.begin(), parts.end(), byArea));
 }
 
+glm::vec3 glmOf(const Vec3& p) { return glm::vec3(p.x(), p.y(), p.z()); }
+
 // The last item (a view's canvas) was let go of after a click, not a drag of 3 px or more.
 bool clickedNotDragged() {
   return ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
@@ -441,13 +443,12 @@ glm::vec3 Inspector::towardsEye() const {
                    std::sin(camera_.pitch));
 }
 
-glm::vec3 Inspector::toGpu(const Vec3& p) const {
-  const Vec3 q = (p - gpuOrigin_) / gpuScale_;
-  return glm::vec3(q.x(), q.y(), q.z());
-}
+Vec3 Inspector::toGpu(const Vec3& p) const { return (p - gpuOrigin_) / gpuScale_; }
+
+Vec3 Inspector::fromGpu(const glm::vec3& p) const { return gpuOrigin_ + gpuScale_ * Vec3(p.x, p.y, p.z); }
 
 std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent, float top) const {
-  const glm::vec3 target = toGpu(camera_.target);
+  const glm::vec3 target = glmOf(toGpu(camera_.target));
   const float distance = static_cast<float>(camera_.distance / gpuScale_);
   const glm::vec3 eye = target + distance * towardsEye();
   const float below = extent.y - top;  // the pane under the band at its top
@@ -467,8 +468,7 @@ void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& exte
   const float x = (mouse.x - p0.x) / extent.x * 2 - 1, y = (mouse.y - p0.y) / extent.y * 2 - 1;
   const glm::vec4 far = inverse * glm::vec4(x, y, 1.0f, 1.0f);
   const glm::vec3 through = glm::vec3(far) / far.w - eye;  // the same way in the GPU's frame as in the mesh's
-  const Vec3 eyeAt = gpuOrigin_ + gpuScale_ * Vec3(eye.x, eye.y, eye.z);
-  const int hit = triangleOnRay(resultIn3D(), eyeAt, Vec3(through.x, through.y, through.z));
+  const int hit = triangleOnRay(resultIn3D(), fromGpu(eye), Vec3(through.x, through.y, through.z));
   if (finalShown()) selection_.toggleFinalTriangle(hit);
   else selection_.toggleTriangle(hit);
 }
@@ -566,10 +566,13 @@ std::string exportPath(const ExportJob& job, int iteration) {
   return std::string(job.path).insert(job.path.size() - 4, number);
 }
 
+void refuseReplacing(const std::string& path, const std::string& shown, const std::string& what) {
+  if (sameFile(path, shown))
+    throw Error(path + ": the " + what + " would replace " + shown + ", the file shown; give it another name");
+}
+
 void refuseReplacing(const ExportJob& job, const std::string& shown) {
-  for (int k = std::max(job.first, 0); k <= std::max(job.last, 0); ++k)
-    if (sameFile(exportPath(job, k), shown))
-      throw Error(exportPath(job, k) + ": the picture would replace " + shown + ", the file shown; give it another name");
+  for (int k = std::max(job.first, 0); k <= std::max(job.last, 0); ++k) refuseReplacing(exportPath(job, k), shown, "picture");
 }
 
 void Inspector::startExport(ExportJob job) {
@@ -720,7 +723,7 @@ void Inspector::uploadMesh() {
   std::vector<Marker> sites;
   if (shown.sites3D && !final)
     for (const Vec3& s : view.liftedSites)
-      sites.push_back(marker((s - gpuOrigin_) / gpuScale_, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+      sites.push_back(marker(toGpu(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
   renderer_.uploadMarkers(sites);
   uploadedIteration_ = iteration_;
   uploadedInput_ = shown.input3D;
@@ -894,11 +897,11 @@ CaptionFacts Inspector::captionFacts() {
   f.maxToCentroid = it.maxDisplacement;
   // From the view, not from the 2D pane's last drawing: drawn after the caption, it gave each
   // picture of an exported sequence the magnification of the picture before.
-  f.arrowScale = moveArrowScale(replay_->view(iteration_), replay_->recording().fixedSites.size());
+  if (stage_ == Stage::Move)
+    f.arrowScale = moveArrowScale(replay_->view(iteration_), replay_->recording().fixedSites.size());
   f.percentMoving = 100.0 * it.fractionMoving;
-  // The cell pinned last: pinning a second one while the class looks on, the caption stayed
-  // on the first.
-  // Not one this run lacks (cell 900 after a restart with 500 sites read "Cell -1").
+  // The cell pinned last (pinning a second one while the class looks on, the caption stayed on
+  // the first), unless this run lacks it (cell 900 after a restart with 500 sites read "Cell -1").
   if (!selection_.cells().empty())
     if (const CellDetails d = describeCell(replay_->recording(), replay_->domain(), replay_->view(iteration_),
                                            selection_.cells().back());
@@ -1295,9 +1298,7 @@ void Inspector::fileControls() {
   ImGui::InputText("##recording", recordingPath_, sizeof recordingPath_);
   if (ImGui::Button("Save recording")) {
     try {
-      if (sameFile(recordingPath_, shownPath_))
-        throw Error(std::string(recordingPath_) + ": the recording would replace " + shownPath_ +
-                    ", the file shown; give it another name");
+      refuseReplacing(recordingPath_, shownPath_, "recording");
       stopRun();
       saveRecording(replay_->recording(), recordingPath_);
       showMessage(std::string("saved ") + recordingPath_);
@@ -1387,13 +1388,13 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
   auto toScreen = [&](const Vec3& p, ImVec2& screen) {
-    const glm::vec4 c = viewProjection * glm::vec4(toGpu(p), 1.0f);
+    const glm::vec4 c = viewProjection * glm::vec4(glmOf(toGpu(p)), 1.0f);
     if (c.w <= 0) return false;
     screen = ImVec2(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
                     p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
     return true;
   };
-  const Vec3 eye = gpuOrigin_ + gpuScale_ * Vec3(eyeAt.x, eyeAt.y, eyeAt.z);  // the mesh's frame
+  const Vec3 eye = fromGpu(eyeAt);  // the mesh's frame
   drawSeams3D(dl, toScreen, eye);
   if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip

@@ -53,8 +53,10 @@ struct ExportJob {
 };
 // The file the picture of `iteration` goes to.
 std::string exportPath(const ExportJob& job, int iteration);
-// Throws Error where a file `job` writes is `shown`, the mesh or recording open (a screenshot
-// named like it replaced the user's file with a PNG).
+// Throws Error where `path`, a file the inspector saves (`what`: "picture", "recording"), is
+// `shown`, the mesh or recording open (a screenshot named like it replaced the user's file with
+// a PNG); the same for each file `job` writes.
+void refuseReplacing(const std::string& path, const std::string& shown, const std::string& what);
 void refuseReplacing(const ExportJob& job, const std::string& shown);
 
 // One picture the front end must save: after rendering the frame, read it back, write `crop`
@@ -192,7 +194,8 @@ class Inspector {
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;
   glm::vec3 towardsEye() const;  // the unit vector from the camera's target to its eye
-  glm::vec3 toGpu(const Vec3& p) const;  // where the GPU has p: see gpuOrigin_
+  Vec3 toGpu(const Vec3& p) const;  // where the GPU has p: see gpuOrigin_
+  Vec3 fromGpu(const glm::vec3& p) const;
   // The 3D view's view-projection matrix (Vulkan clip space) and eye, both of the GPU's frame
   // (toGpu), for a pane this size whose `top` pixels (the label's band) the view is centred
   // and fitted under.

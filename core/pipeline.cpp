@@ -305,11 +305,6 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
   return stitched;
 }
 
-namespace {
-// The vertices the options ask the result to have: --sites, else --simplify, else 0 (as many
-// as the input).
-}  // namespace
-
 int verticesAsked(const RemeshOptions& o) { return o.sites.count > 0 ? o.sites.count : o.simplifyTo; }
 
 void requireStitched(const Mesh& stitched, const Topology& want, int verticesWanted, const std::string& name) {

@@ -50,7 +50,7 @@ const IterationView& Replay::view(int k) {
   const size_t fixedCount = recording_.fixedSites.size();
   if (method_ == RemeshMethod::Retriangulate) {
     next.output = assemble(triangulateSites(recording_.fixedSites, it.sites.unpack()), next.liftedSites,
-                            &next.outputSite);
+                           &next.outputSite);
     for (int s : next.outputSite) next.outputUV.push_back(next.sites[s]);
   } else {
     Relocation relocated = relocate(recording_.input, domain_, recording_.movableVertex, it.sites.unpack());
