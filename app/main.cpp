@@ -211,6 +211,13 @@ constexpr int kMostPolishPasses = 100, kMostFrames = 100000;
 // recording, which replays its own run, refuses them (refuseRemeshingOptions).
 constexpr const char* kRemeshing = "Remeshing";
 
+// " (default 1e-06)": an option's help says its default, taken from the options themselves.
+std::string defaultIs(double value) {
+  std::ostringstream text;
+  text << " (default " << value << ")";
+  return text.str();
+}
+
 void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.option_defaults()->group(kRemeshing);
   cmd.add_option("--polish", r.polish,
@@ -233,23 +240,27 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                  "mean-value, tutte or lscm");
   cmd.add_option("--border", r.border, "square or circle (default), for the fixed-border methods");
   cmd.add_option("--density", r.density, "uniform, area (default) or curvature");
-  cmd.add_option("--alpha", r.alpha, "curvature density: weight of |K|")->check(finiteNumber(0, "a number >= 0"));
-  cmd.add_option("--beta", r.beta, "curvature density: weight of H^2")->check(finiteNumber(0, "a number >= 0"));
-  cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)")
+  const DensityOptions density;
+  const LloydOptions lloyd;
+  cmd.add_option("--alpha", r.alpha, "curvature density: weight of |K|" + defaultIs(density.alpha))->check(finiteNumber(0, "a number >= 0"));
+  cmd.add_option("--beta", r.beta, "curvature density: weight of H^2" + defaultIs(density.beta))->check(finiteNumber(0, "a number >= 0"));
+  cmd.add_option("--floor", r.floor, "curvature density: added everywhere, in units of the mean curvature term (larger: more uniform)" +
+                     defaultIs(density.floor))
       ->check(finiteNumber(0, "a number >= 0"));
-  cmd.add_option("--sites", r.sites, "number of vertices of the result (the clean-up may add or remove a few: the report says)")
+  cmd.add_option("--sites", r.sites, "number of vertices of the result (the clean-up may add or remove a few: the report says; "
+                 "default: as many as the input has)")
       ->check(kVerticesAsked);
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
-  cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations")
+  cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations" + defaultIs(lloyd.maxIterations))
       ->check(wholeNumber(1, kMostIterations));
   cmd.add_option("--distance-threshold", r.distanceThreshold,
                  "a site farther than this from its centroid (a fraction of the domain's size) is still "
-                 "moving (default 1e-6)")
+                 "moving" + defaultIs(lloyd.distanceThreshold))
       ->check(finiteNumber(std::numeric_limits<double>::min(), "a number > 0"));
   cmd.add_option("--percent-threshold", r.percentThreshold,
-                 "converged when fewer than this % of the sites are still moving (default 5)")
+                 "converged when fewer than this % of the sites are still moving" + defaultIs(lloyd.percentThreshold))
       ->check(finiteNumber(0, "a percentage from 0 to 100", 100));
   cmd.add_flag("--no-resample", r.noResample,
                "Parameterize the input itself, not a rough first remeshing of it");
@@ -273,14 +284,19 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.option_defaults()->group("Options");
 }
 
-// A recording is replayed with the settings it was made with: an option that would remesh is
-// refused, not shown as if it had been used (--solver newton relabelled an L-BFGS run).
+// A recording is replayed with the settings it was made with: an option that would remesh, or
+// show the final result it lacks, is refused, not shown as if it had been used (--solver newton
+// relabelled an L-BFGS run; --final was ignored).
 void refuseRemeshingOptions(const CLI::App& cmd, const std::string& recording) {
   for (const CLI::Option* option : cmd.get_options())
     if (option->get_group() == kRemeshing && option->count() > 0)
       throw Error(recording + ": " + option->get_name() +
                   " applies to a mesh; a recording replays its own run, with the settings it was made with "
                   "(lloydscope info shows them)");
+  // The final result is the clean-up's, made after the last iteration: a recording does not hold it.
+  if (const CLI::Option* final = cmd.get_option_no_throw("--final"); final && final->count() > 0)
+    throw Error(recording + ": --final applies to a mesh; a recording holds the iterations of its run, "
+                "not the final result (remesh -o writes that)");
 }
 
 // "1280x800" -> width, height, within the sizes renderScreenshot() takes (bench-frames took
@@ -456,7 +472,7 @@ struct FrameBenchCommand {
   void add(CLI::App& app) {
     cmd = app.add_subcommand("bench-frames", "Median frame time of the inspector while scrubbing a recording (headless)");
     cmd->add_option("input", args.input, "Mesh")->required();
-    cmd->add_option("--frames", frames, "Frames to time")->check(wholeNumber(1, kMostFrames));
+    cmd->add_option("--frames", frames, "Frames to time" + defaultIs(frames))->check(wholeNumber(1, kMostFrames));
     cmd->add_option("--size", size, "Frame size WxH, " + pictureSizes() + " (default 1280x800)");
     addRemeshOptions(*cmd, args);
   }

@@ -315,11 +315,12 @@ TEST(Cli, TruncatedRecording) {
 }
 
 // A recording replays its own run: an option that would remesh is refused, in one line naming
-// it (inspect cap.lsrec --solver newton drew the L-BFGS run in Newton's colour, labelled newton).
+// it (inspect cap.lsrec --solver newton drew the L-BFGS run in Newton's colour, labelled newton),
+// as is --final, which it cannot show (it was ignored, exit 0).
 TEST(Cli, ARecordingRefusesRemeshingOptions) {
   const std::string rec = test::tempPath("cli_options.lsrec");
   ASSERT_EQ(runCli("remesh " + test::assetPath("jittered_grid.off") + " --max-iterations 3 --no-fidelity --record " + rec).code, 0);
-  for (const std::string option : {"--solver newton", "--density uniform", "--distance-threshold 1e-3", "--polish 0"}) {
+  for (const std::string option : {"--solver newton", "--density uniform", "--distance-threshold 1e-3", "--polish 0", "--final"}) {
     const CliRun r = runCli("inspect " + rec + " " + option + " --screenshot " + test::tempPath("never.png"));
     EXPECT_EQ(r.code, 1) << option;
     EXPECT_EQ(r.err.rfind("lloydscope: " + rec + ": " + option.substr(0, option.find(' ')) + " applies to a mesh", 0), 0u) << r.err;
@@ -428,6 +429,23 @@ TEST(Cli, RemeshHelpNamesEverySolverAndPolishTarget) {
   ASSERT_EQ(r.code, 0) << r.err;
   for (CvtSolver s : kCvtSolvers) EXPECT_NE(r.out.find(toString(s)), std::string::npos) << toString(s);
   for (PolishTarget t : kPolishTargets) EXPECT_NE(r.out.find(toString(t)), std::string::npos) << toString(t);
+}
+
+// An option's help says its default, as the options hold it (the guide and the help said
+// nothing of --max-iterations' 1000, which a comparison's legend shows as "not converged").
+TEST(Cli, TheHelpSaysEachTunedOptionsDefault) {
+  const std::string help = runCli("remesh --help").out;
+  const auto line = [&](const std::string& option) {
+    const size_t at = help.find(option);
+    const size_t next = help.find("\n  -", at + 1);
+    return at == std::string::npos ? std::string() : help.substr(at, next - at);
+  };
+  EXPECT_NE(line("--max-iterations").find("(default 1000)"), std::string::npos) << line("--max-iterations");
+  EXPECT_NE(line("--alpha").find("(default 1)"), std::string::npos) << line("--alpha");
+  EXPECT_NE(line("--floor").find("(default 0.1)"), std::string::npos) << line("--floor");
+  EXPECT_NE(line("--distance-threshold").find("(default 1e-06)"), std::string::npos);
+  EXPECT_NE(line("--sites").find("default: as many as the input has"), std::string::npos) << line("--sites");
+  EXPECT_NE(runCli("bench-frames --help").out.find("Frames to time (default 100)"), std::string::npos);
 }
 
 TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
