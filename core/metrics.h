@@ -36,14 +36,17 @@ struct Fidelity {
   double hausdorffPercent = 0;
   double rmsPercent = 0;
   int samples = 0;
-  // Where the Hausdorff distance is reached: the sample farthest from the other surface, and
+  // Where the Hausdorff distance is reached: the point farthest from the other surface, and
   // on which surface it lies (to show a user where the result strays most).
   Vec3 farthestPoint = Vec3::Zero();
   bool farthestOnReference = false;
 };
 
 // Samples each surface (vertices, edge midpoints and area-weighted random points, fixed seed)
-// and measures the distance to the other with an AABB tree, in both directions.
+// and measures the distance to the other with an AABB tree, in both directions, as Metro does;
+// then searches the triangles of the farthest samples for the farthest point between them.
+// The Hausdorff distance is the larger of the two one-sided ones, the RMS distance the larger
+// of the two one-sided RMS distances over the area (the random points).
 Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference);
 // The same against a reference whose search is built already (several meshes measured
 // against one: the trials of a run).

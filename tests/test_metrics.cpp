@@ -135,6 +135,51 @@ TEST(Fidelity, SaysWhereTheResultStraysFarthest) {
   EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.2 / std::sqrt(2.0), 1e-9);
 }
 
+// The farthest point lies between samples: a square against the same square with a small
+// square hole of half-width r, off every vertex and edge of the square's two triangles. The
+// square's farthest point from the holed one is the hole's centre, r from its sides; the
+// farthest of 10,000 random samples was about half as far.
+TEST(Fidelity, FindsTheFarthestPointBetweenItsSamples) {
+  const double r = 0.01;
+  const Vec3 c(0.37, 0.61, 0);
+  Mesh holed;
+  holed.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                  c + Vec3(-r, -r, 0), c + Vec3(r, -r, 0), c + Vec3(r, r, 0), c + Vec3(-r, r, 0)};
+  for (int k = 0; k < 4; ++k) {  // the band between side k of the square and side k of the hole
+    const int o = k, o1 = (k + 1) % 4, i = 4 + k, i1 = 4 + (k + 1) % 4;
+    holed.triangles.push_back({o, o1, i1});
+    holed.triangles.push_back({o, i1, i});
+  }
+  Mesh square;
+  square.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const Fidelity f = measureFidelity(square, holed);
+  EXPECT_NEAR(f.hausdorffPercent, 100.0 * r / std::sqrt(2.0), 1e-3 * 100.0 * r / std::sqrt(2.0));
+  EXPECT_FALSE(f.farthestOnReference);
+  EXPECT_NEAR((f.farthestPoint - c).norm(), 0.0, 1e-4);
+}
+
+// Each edge is sampled once at its midpoint, the border's too (half of the border's edges were
+// left out): a triangle has 3 vertices, 3 edges and 10,000 + 10 random points.
+TEST(Fidelity, SamplesEveryVertexAndEdgeOnce) {
+  Mesh triangle;
+  triangle.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  triangle.triangles = {{0, 1, 2}};
+  EXPECT_EQ(measureFidelity(triangle, triangle).samples, 2 * (3 + 3 + 10010));
+}
+
+// The RMS distance is Metro's, one-sided over the area, the larger of the two sides: the whole
+// unit square against its half x <= 0.5 is sqrt(integral of (x - 0.5)^2 for x in 0.5..1) =
+// sqrt(1/24) from it, and the half 0 from the whole. Both sides pooled said about 0.7 of that.
+TEST(Fidelity, TheRmsDistanceIsTheLargerOneSidedRmsOverTheArea) {
+  Mesh half;
+  half.points = {{0, 0, 0}, {0.5, 0, 0}, {0.5, 1, 0}, {0, 1, 0}};
+  half.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const Fidelity f = measureFidelity(test::grid(8), half);
+  const double expected = 100.0 * std::sqrt(1.0 / 24) / std::sqrt(1.25);  // the half's diagonal
+  EXPECT_NEAR(f.rmsPercent, expected, 0.02 * expected);
+}
+
 // The batch queries take the points in a spatial order, each search started from the one
 // before, as a single query may start from a point found before: each answer must still be the
 // one asked for, at the same index, exactly.
