@@ -462,8 +462,10 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   normalize(result.uv);
   result.onBoundary.assign(mesh.points.size(), false);
   for (int v : result.boundaryLoop) result.onBoundary[v] = true;
-  if (isFreeBorder(options.method))
+  if (isFreeBorder(options.method)) {
     repairFolds(mesh, result.uv, result.onBoundary, result.boundaryLoop);
+    normalize(result.uv);  // the repair may have moved the border in from the square's sides
+  }
   requireOneToOne(mesh, result.uv, result.onBoundary, result.boundaryLoop, options.method, name);
   // The border cycle runs around the hole; make it counter-clockwise around the domain.
   double signedArea = 0;

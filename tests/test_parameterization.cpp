@@ -64,6 +64,33 @@ TEST(Parameterization, TheBorderPhraseSaysWhatTheMapUsedHas) {
   EXPECT_EQ(borderPhrase(ParamMethod::Given, Border::Circle), "border of the input's map");
 }
 
+// The map is scaled to the unit square after its folds are repaired too: the repair moved a
+// border vertex of this cap with a spike 85 times its radius tall (from a fuzzed input's first
+// pass) in from the square's side, and the recording that remesh saved of it was refused as
+// damaged when read back ("not scaled to the unit square").
+TEST(Parameterization, AMapWithItsFoldsRepairedFillsTheUnitSquare) {
+  Mesh spike;
+  spike.points = {{0.795611, -0.342057, 0.5},
+                  {0.635831, 0.587978, 0.5},
+                  {-0.292802, 0.815026, 0.5},
+                  {-0.838808892815939, 0.20970252624540905, 0.5},
+                  {-0.641896, -0.581352, 0.5},
+                  {0.1420665973539794, -0.8534324504535831, 0.5000000000000001},
+                  {0.7120306218992045, 0.004831012365373623, 0.6990849191549393},
+                  {0.6414869532073515, 0.03307291183727813, 30.40622148702325},
+                  {0.6793234414618723, 0.10763718491012643, 85.40158451794782},
+                  {0.09272018092530884, -0.4221100004602071, 0.8995186651456187},
+                  {0.6696802947098771, 0.1385944123853408, 0.7257699611920402},
+                  {0.1348460895061415, 0.06812433489430438, 0.9866094572229833},
+                  {-0.41030145172789434, 0.09904526480252557, 0.9046534281542578}};
+  spike.triangles = {{12, 2, 3}, {4, 5, 9}, {9, 11, 12}, {10, 7, 1}, {12, 3, 4}, {5, 0, 9}, {11, 7, 10}, {9, 0, 6}, {11, 6, 7}, {2, 12, 11}, {12, 4, 9}, {1, 2, 11}, {11, 10, 1}, {6, 0, 1}, {8, 6, 1}, {8, 7, 6}, {9, 6, 11}, {7, 8, 1}};
+  const Parameterization p = parameterize(spike, {}, "spike");
+  const auto [lo, hi] = boundingBox(p.uv);
+  EXPECT_NEAR(lo.minCoeff(), 0.0, 1e-12);
+  EXPECT_NEAR((hi - lo).maxCoeff(), 1.0, 1e-12);
+  EXPECT_LE(hi.maxCoeff(), 1.0 + 1e-12);
+}
+
 TEST(Parameterization, BoundaryLoopIsCounterClockwiseInUV) {
   const Parameterization p = parameterize(test::grid(5), {}, "g");
   double area = 0;
