@@ -246,6 +246,22 @@ std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydO
   return solver.takeIterations();
 }
 
+namespace {
+
+void addToBatch(const std::string& payload, const std::string& path, FileBatch& batch) {
+  Writer file;
+  file.bytes().append(kMagic, sizeof(kMagic));
+  file.put<std::uint32_t>(Recording::kVersion);
+  file.put<std::uint64_t>(payload.size());
+  file.bytes() += payload;
+  file.put<std::uint64_t>(fnv1a(payload.data(), payload.size()));
+  batch.add(path, [&](std::ostream& out) {
+    out.write(file.bytes().data(), static_cast<std::streamsize>(file.bytes().size()));
+  });
+}
+
+}  // namespace
+
 void saveRecording(const Recording& recording, const std::string& path) {
   FileBatch batch;
   saveRecording(recording, path, batch);
@@ -253,17 +269,23 @@ void saveRecording(const Recording& recording, const std::string& path) {
 }
 
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch) {
+  if (recording.iterations.empty())
+    throw Error(path + ": nothing to record: no Lloyd iteration was run (" + kNoIterationWhy + ")");
   const std::string payload = encodePayload(recording);
-  Writer file;
-  file.bytes().append(kMagic, sizeof(kMagic));
-  file.put<std::uint32_t>(Recording::kVersion);
-  file.put<std::uint64_t>(payload.size());
-  file.bytes() += payload;
-  file.put<std::uint64_t>(fnv1a(payload.data(), payload.size()));
+  // What is saved reads back: a recording the replay would refuse is not written.
+  try {
+    Reader in(payload, 0, payload.size(), path);
+    decodePayload(in, path);
+  } catch (const Error& e) {
+    throw Error(std::string(e.what()) + "; not saved: the run made a recording that would not read back");
+  }
+  addToBatch(payload, path, batch);
+}
 
-  batch.add(path, [&](std::ostream& out) {
-    out.write(file.bytes().data(), static_cast<std::streamsize>(file.bytes().size()));
-  });
+void saveRecordingUnchecked(const Recording& recording, const std::string& path) {
+  FileBatch batch;
+  addToBatch(encodePayload(recording), path, batch);
+  batch.commit();
 }
 
 bool isRecording(const std::string& path) {

@@ -47,11 +47,18 @@ struct Recording {
 std::vector<IterationRecord> relaxAgain(const Recording& recording, const LloydOptions& options,
                                         const std::atomic<bool>* stop = nullptr);
 
+// Why a run may have no iteration: a surface of several components, each too small for its
+// share of the vertices asked, is kept as it is.
+constexpr const char* kNoIterationWhy = "every part of the mesh was kept as it is, too small for its share of the vertices asked";
+
 // Written through a temporary and renamed (writeAtomically), so an existing file is replaced
-// whole or not at all.
+// whole or not at all. Throws Error("<path>: ...") where the run has no iteration, or the
+// recording would not read back (loadRecording's checks): nothing is written then.
 void saveRecording(const Recording& recording, const std::string& path);
 // The same, saved with the other files of `batch` (FileBatch, core/files.h) when it commits.
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch);
+// saveRecording without its checks: the damaged files the tests of loadRecording's refusals make.
+void saveRecordingUnchecked(const Recording& recording, const std::string& path);
 // The largest recording read: 5000 iterations of 100,000 sites at 8 bytes a site. (A link to
 // /dev/zero is read that far, into as much memory, before it is refused.)
 constexpr std::uint64_t kLargestRecording = 4'000'000'000;

@@ -329,6 +329,26 @@ TEST(Cli, ARecordingRefusesRemeshingOptions) {
   EXPECT_EQ(runCli("inspect " + rec + " --iteration 1 --screenshot " + test::tempPath("fine.png")).code, 0);
 }
 
+// A mesh of parts each too small for its share of the vertices asked is kept as it is, and no
+// Lloyd iteration is run: inspect and bench-frames crashed on it (a segfault), and remesh
+// --record saved a recording that info then refused as damaged.
+TEST(Cli, ARunWithoutIterationsIsNeitherShownNorRecorded) {
+  const std::string mesh = test::tempPath("two_triangles.off"), rec = test::tempPath("none.lsrec"),
+                    out = test::tempPath("none_out.off");
+  test::writeText(mesh, "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0\n4 0 0\n3 1 0\n3 0 1 2\n3 3 4 5\n");
+  for (const std::string command : {"inspect " + mesh + " --sites 20 --screenshot " + test::tempPath("none.png"),
+                                    "bench-frames " + mesh + " --sites 20 --frames 2",
+                                    "remesh " + mesh + " --sites 20 --record " + rec + " -o " + out}) {
+    const CliRun r = runCli(command);
+    EXPECT_EQ(r.code, 1) << command;
+    EXPECT_NE(r.err.find("no Lloyd iteration was run"), std::string::npos) << command << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(rec));
+  EXPECT_FALSE(std::filesystem::exists(out));  // the output and the recording: both or neither
+  EXPECT_EQ(runCli("remesh " + mesh + " --sites 20 -o " + out).code, 0);  // without --record, as before
+}
+
 // --record onto the input or the output replaced it with a recording (exit 0), as did bench's
 // --csv onto an input, and remesh's and simplify's -o onto the input (exit 0); a folder given
 // as a recording was an "internal error" (exit 2); a recording that could not be written failed

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <thread>
@@ -66,7 +67,7 @@ TEST(Recording, SharedSeamsRoundTrip) {
   saveRecording(r, path);
   EXPECT_EQ(loadRecording(path).sharedSeams, r.sharedSeams);
   r.sharedSeams = {{0, r.input.vertexCount()}};
-  saveRecording(r, path);
+  saveRecordingUnchecked(r, path);
   expectError(path, "seam vertex is out of range");
 }
 
@@ -75,7 +76,7 @@ TEST(Recording, ABorderOfFewerThanThreeSitesIsRefused) {
   Recording r = sphereCapRun().recording;
   r.fixedSites.resize(2);
   const std::string path = test::tempPath("two_border_sites.lsrec");
-  saveRecording(r, path);
+  saveRecordingUnchecked(r, path);
   expectError(path, "fewer than 3 border sites");
 }
 
@@ -110,9 +111,20 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
   for (const auto& [edit, why] : edits) {
     Recording r = sphereCapRun().recording;
     edit(r);
-    saveRecording(r, path);
+    saveRecordingUnchecked(r, path);
     SCOPED_TRACE(why);
     expectError(path, "damaged recording (" + why + ")");
+    // remesh --record and the window's Save recording write nothing a replay would refuse.
+    const std::string refused = test::tempPath("never_saved.lsrec");
+    try {
+      saveRecording(r, refused);
+      ADD_FAILURE() << "saved";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.rfind(refused + ": ", 0), 0u) << message;
+      EXPECT_NE(message.find(r.iterations.empty() ? "nothing to record" : "not saved"), std::string::npos) << message;
+    }
+    EXPECT_FALSE(std::filesystem::exists(refused));
   }
   // Sites without an input vertex (-1) are what a run with a first pass records.
   Recording r = sphereCapRun().recording;
