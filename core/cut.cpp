@@ -298,7 +298,8 @@ bool isFlat(const Vec3& at, const Vec3& a, const Vec3& b) {
 // A flat triangle on the border whose middle vertex has no other triangle (three border samples
 // in a row on a straight border, that a map with a round border bent into an ear) goes, and its
 // middle vertex with it; repeated, as the next sample may then be one.
-void dropFlatEars(std::vector<Triangle>& triangles, const std::vector<Vec3>& points) {
+bool dropFlatEars(std::vector<Triangle>& triangles, const std::vector<Vec3>& points) {
+  bool any = false;
   for (bool dropped = true; dropped;) {
     dropped = false;
     std::vector<int> uses(points.size(), 0);
@@ -309,16 +310,22 @@ void dropFlatEars(std::vector<Triangle>& triangles, const std::vector<Vec3>& poi
       for (int k = 0; k < 3; ++k) {
         if (uses[t[k]] == 1 && isFlat(points[t[k]], points[t[(k + 1) % 3]], points[t[(k + 2) % 3]])) {
           triangles.erase(triangles.begin() + f);
-          dropped = true;
+          dropped = any = true;
           break;
         }
       }
       if (dropped) break;
     }
   }
+  return any;
 }
 
 }  // namespace
+
+void dropFlatEars(Mesh& mesh) {
+  std::vector<Triangle> triangles = mesh.triangles;
+  if (dropFlatEars(triangles, mesh.points)) mesh = assemble(triangles, mesh.points);
+}
 
 Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex) {
   const std::vector<int> target = seamPartners(disk, tolerance);

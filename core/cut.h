@@ -82,6 +82,11 @@ std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance);
 // `seamVertex`, if given, receives per vertex of the result whether it was on a seam.
 Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex = nullptr);
 
+// Drops each flat ear of the border (three border vertices in a row on a straight border, the
+// middle one in no other triangle: a map with a round border bends them into an ear) and its
+// middle vertex: a triangle of no area, which no reader of the result takes.
+void dropFlatEars(Mesh& mesh);
+
 // Removes the stitched surface's (nearly) flat triangles -- a vertex lifted onto a seam where
 // the map shrinks the surface most -- by CGAL's edge flips and collapses (caps with an angle over
 // 179.5 degrees, needles 10^4 times longer than wide). Returns how many flat ones are left.

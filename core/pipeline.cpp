@@ -223,9 +223,7 @@ namespace {
 // before the flips, left the man at 19.6 degrees); every vertex moved where its triangles'
 // mean smallest angle is largest, their smallest angle kept (raiseMeanAngles: on the 36 disks,
 // the average smallest angle up by 0.65 degrees on average); then the fit to the input.
-void lastSteps(Mesh& result, const PreparedInput& input, const RemeshOptions& o, RemeshResult& done) {
-  if (o.polish <= 0 && !o.fit) return;
-  const SearchableSurface& original = input.search();  // searched by every step below
+void stepsOnTheInput(Mesh& result, const SearchableSurface& original, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0) {
     std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();
     done.snappedTips = static_cast<int>(tips.size());
@@ -243,6 +241,14 @@ void lastSteps(Mesh& result, const PreparedInput& input, const RemeshOptions& o,
   FitOptions fit;
   fit.threads = o.lloyd.threads;
   done.fit = fitToSurface(result, original, fit);
+}
+
+// The steps above where asked, then, with or without them, the border's flat ears dropped: a
+// map with a round border makes ears of samples in a row on a straight border, triangles of
+// no area that a reader of the result refuses (dropFlatEars).
+void lastSteps(Mesh& result, const PreparedInput& input, const RemeshOptions& o, RemeshResult& done) {
+  if (o.polish > 0 || o.fit) stepsOnTheInput(result, input.search(), o, done);
+  dropFlatEars(result);
 }
 
 // A result stitched back from a cut disk or from charts: its seams relaxed on `surface`, its

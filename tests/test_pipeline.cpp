@@ -674,3 +674,92 @@ TEST(Pipeline, ARecordingsSettingsAreTheOptionsAsked) {
   o.simplifyTo = 300;  // asked: written as asked
   EXPECT_EQ(optionsFromSettings(remesh(bumpy, o, "bumpy").recording.settings).simplifyTo, 300);
 }
+
+// Two grids, one of them bent along straight folds, its border straight in 3D and round in a
+// mean-value map: three border samples in a row made an ear of no area, and remesh wrote a
+// result that its own reader refused ("face 28 has zero area"; found by fuzzing).
+TEST(Pipeline, NoResultHasATriangleOfNoArea) {
+  const std::string path = test::tempPath("bent_grids.off");
+  test::writeText(path,
+      "OFF\n"
+      "32 36 0\n"
+      "0 0 0\n"
+      "0.33333333333333331 0 0\n"
+      "0.66666666666666663 0 0\n"
+      "1 0 0\n"
+      "0 0.33333333333333331 0\n"
+      "0.33333333333333331 0.33333333333333331 0\n"
+      "0.66666666666666663 0.33333333333333331 0\n"
+      "1 0.33333333333333331 0\n"
+      "0 0.66666666666666663 0\n"
+      "0.33333333333333331 0.66666666666666663 0\n"
+      "0.66666666666666663 0.66666666666666663 0\n"
+      "1 0.66666666666666663 0\n"
+      "0 1 0\n"
+      "0.33333333333333331 1 0\n"
+      "0.66666666666666663 1 0\n"
+      "1 1 0\n"
+      "3 0 8.2462112512353212\n"
+      "3.3333333333333335 0 8.2462112512353212\n"
+      "3.6666666666666665 0 0\n"
+      "4 0 2.0615528128088303\n"
+      "3 0.33333333333333331 0\n"
+      "3.3333333333333335 0.33333333333333331 8.2462112512353212\n"
+      "3.6666666666666665 0.33333333333333331 0\n"
+      "4 0.33333333333333331 2.0615528128088303\n"
+      "3 0.66666666666666663 2.0615528128088303\n"
+      "3.6666666666707894 1.0000000000041231 2.0615528128047074\n"
+      "3.6666666666666665 0.66666666666666663 2.0615528128088303\n"
+      "4 0.66666666666666663 0\n"
+      "3 1 8.2462112512353212\n"
+      "3.3333333333333335 1 0\n"
+      "3.6666666666666665 1 8.2462112512353212\n"
+      "4 1 8.2462112512353212\n"
+      "3 0 1 5\n"
+      "3 0 5 4\n"
+      "3 1 2 6\n"
+      "3 1 6 5\n"
+      "3 2 3 7\n"
+      "3 2 7 6\n"
+      "3 4 5 9\n"
+      "3 4 9 8\n"
+      "3 5 6 10\n"
+      "3 5 10 9\n"
+      "3 6 7 11\n"
+      "3 6 11 10\n"
+      "3 8 9 13\n"
+      "3 8 13 12\n"
+      "3 9 10 14\n"
+      "3 9 14 13\n"
+      "3 10 11 15\n"
+      "3 10 15 14\n"
+      "3 16 17 21\n"
+      "3 16 21 20\n"
+      "3 17 18 22\n"
+      "3 17 22 21\n"
+      "3 18 19 23\n"
+      "3 18 23 22\n"
+      "3 20 21 25\n"
+      "3 20 25 24\n"
+      "3 21 22 26\n"
+      "3 21 26 25\n"
+      "3 22 23 27\n"
+      "3 22 27 26\n"
+      "3 24 25 29\n"
+      "3 24 29 28\n"
+      "3 25 26 30\n"
+      "3 25 30 29\n"
+      "3 26 27 31\n"
+      "3 26 31 30\n"
+      "");
+  const Mesh input = readMesh(path).mesh;
+  for (const bool fit : {true, false}) {
+    RemeshOptions o;
+    o.param.method = ParamMethod::MeanValue;
+    o.sites.count = 50;
+    o.fit = fit;
+    o.measureFidelity = false;
+    const Mesh output = remesh(input, o, "bent_grids.off").output;
+    EXPECT_NO_THROW(validateMesh(output, "result")) << "fit " << fit;
+  }
+}
