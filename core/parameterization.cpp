@@ -70,11 +70,19 @@ std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
   const size_t first = std::max_element(turn.begin(), turn.end()) - turn.begin();
   std::array<Vertex, 4> corners = {loop[first], loop[first], loop[first], loop[first]};
   for (int k = 1; k < 4; ++k) {
-    double best = -INFINITY;
+    double best = -INFINITY, nearest = INFINITY;
+    Vertex nearestFree = loop[first];
     for (size_t i = 0; i < loop.size(); ++i) {
+      // Four corners, each once: CGAL refuses a corner given twice (and says so on the standard
+      // error, before our own error: a border of four vertices, one raised).
+      if (std::find(corners.begin(), corners.begin() + k, loop[i]) != corners.begin() + k) continue;
       // Offset along the border from the first corner, compared with k quarters.
       const double offset = std::fmod(position[i] - position[first] + length, length);
       const double miss = std::abs(offset - k * length / 4);
+      if (miss < nearest) {
+        nearest = miss;
+        nearestFree = loop[i];
+      }
       if (miss > length / 8) continue;
       const double score = turn[i] - 1e-9 * miss;  // sharpest; the nearer on ties
       if (score > best) {
@@ -82,6 +90,7 @@ std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
         corners[k] = loop[i];
       }
     }
+    if (best == -INFINITY) corners[k] = nearestFree;  // no vertex near this quarter: the nearest
   }
   return corners;
 }
