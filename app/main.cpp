@@ -321,17 +321,9 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
   if ((in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) || isRecording(in)) {
     refuseRemeshingOptions(cmd, in);
     RemeshResult result;
-    result.recording = loadRecording(in);
-    try {
-      options = optionsFromSettings(result.recording.settings);
-      // Older recordings: as asked. The input's own map (where no other held) is no method to ask for.
-      const std::string used = settingValue(result.recording.settings, "param-used");
-      result.paramUsed = used.empty()                                ? options.param.method
-                         : used == toString(ParamMethod::Given) ? ParamMethod::Given
-                                                                     : parseParamMethod(used);
-    } catch (const Error& e) {
-      throw Error(in + ": damaged recording (" + e.what() + ")");
-    }
+    result.recording = loadRecording(in);  // its settings checked there
+    options = optionsFromSettings(result.recording.settings);
+    result.paramUsed = recordedParamMethod(result.recording.settings);
     result.before = measureQuality(result.recording.input);
     result.iterations = static_cast<int>(result.recording.iterations.size());
     result.converged = result.recording.converged();

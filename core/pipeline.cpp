@@ -953,6 +953,13 @@ RemeshOptions optionsFromSettings(const std::string& settings) {
   return o;
 }
 
+ParamMethod recordedParamMethod(const std::string& settings) {
+  const std::string used = settingValue(settings, "param-used");
+  if (used.empty()) return optionsFromSettings(settings).param.method;
+  // The input's own map (where no other held) is no method to ask for: parseParamMethod refuses it.
+  return used == toString(ParamMethod::Given) ? ParamMethod::Given : parseParamMethod(used);
+}
+
 constexpr NamedValue<RemeshMethod> kRemeshMethodNames[] = {{RemeshMethod::Relocate, "relocate"},
                                                             {RemeshMethod::Retriangulate, "retriangulate"}};
 

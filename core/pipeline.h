@@ -333,6 +333,9 @@ std::string settingValue(const std::string& settings, const std::string& key);
 // with what the run was), keys it does not name at their defaults. Throws Error on a value
 // that is not one of the setting's.
 RemeshOptions optionsFromSettings(const std::string& settings);
+// The map a recorded run used: its line's param-used (the map "auto" chose, or the input's own,
+// ParamMethod::Given), else the one asked (older recordings). Throws Error as optionsFromSettings.
+ParamMethod recordedParamMethod(const std::string& settings);
 
 const char* toString(RemeshMethod method);
 RemeshMethod parseRemeshMethod(const std::string& text);  // throws Error on unknown names

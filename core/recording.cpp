@@ -1,6 +1,7 @@
 #include "recording.h"
 
 #include "files.h"
+#include "pipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +135,16 @@ void checkContents(const Recording& r, const std::string& path) {
     return std::all_of(values.begin(), values.end(), [](const auto& v) { return v.allFinite(); });
   };
   if (r.iterations.empty()) damaged("no iterations");
+  // The settings line is describe()'s, which the inspector and info read back and print: a
+  // value no option takes, or a control character sent to the terminal, is damage.
+  if (!std::all_of(r.settings.begin(), r.settings.end(), [](char c) { return c >= ' ' && c <= '~'; }))
+    damaged("its settings hold a character no run writes");
+  try {
+    optionsFromSettings(r.settings);
+    recordedParamMethod(r.settings);
+  } catch (const Error& e) {
+    damaged(e.what());
+  }
   if (r.input.triangles.empty()) damaged("no triangles");
   if (!allFinite(r.input.points) || !allFinite(r.uv) || !allFinite(r.fixedSites))
     damaged("a coordinate is not a finite number");

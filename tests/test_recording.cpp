@@ -106,7 +106,11 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[](Recording& r) { std::swap(r.fixedSites[0], r.fixedSites[r.fixedSites.size() / 2]); },
        "the border of the parameter domain crosses itself"},
       {[](Recording& r) { std::swap(r.input.triangles[10][0], r.input.triangles[10][1]); },
-       "a parameter triangle is turned over"}};
+       "a parameter triangle is turned over"},
+      // info printed these (inspect refused the first), the escape sequence to the terminal
+      {[](Recording& r) { r.settings = "method=bogus " + r.settings; }, "unknown method 'bogus' (relocate, retriangulate)"},
+      {[](Recording& r) { r.settings = "param-used=nope " + r.settings; }, "unknown parameterization 'nope' (auto, authalic, conformal, mean-value, tutte, lscm)"},
+      {[](Recording& r) { r.settings += " solver=\x1b[31mRED"; }, "its settings hold a character no run writes"}};
   const std::string path = test::tempPath("edited.lsrec");
   for (const auto& [edit, why] : edits) {
     Recording r = sphereCapRun().recording;
