@@ -44,13 +44,17 @@ namespace {
 
 // What RemeshOptions::coarsenInput simplifies `input` to: 0 where it is not simplified (the
 // caller's simplifyTo stands, the sites are the input's own vertices, a chart's seam samples are
-// numbered by its vertices, or it is small enough).
+// numbered by its vertices, it is small enough, or it has a fan of triangles around a vertex
+// too large to simplify quickly: a CAD disk's hub of 3000 took over a minute to simplify, and
+// a second to remesh as it is).
 int coarseTarget(const RemeshOptions& o, const Mesh& input) {
   if (!o.coarsenInput || o.simplifyTo > 0 || o.sites.count <= 0 || o.method == RemeshMethod::Relocate ||
       o.sites.fromInputVertices || !o.sites.onSeam.empty())
     return 0;
   const int size = coarseInputSize(o.sites.count);
-  return input.vertexCount() > size ? size : 0;
+  if (input.vertexCount() <= size || mostTrianglesAroundAVertex(input) > kMostTrianglesAroundAVertexToSimplify)
+    return 0;
+  return size;
 }
 
 // Relocation moves the input's own vertices: it needs one site per inside vertex, and the

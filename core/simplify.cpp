@@ -119,4 +119,11 @@ Mesh benchInput(const Mesh& model, int size, const std::string& name) {
   return simplify(subdivideTo(model, 2 * size), {size}, name).mesh;
 }
 
+int mostTrianglesAroundAVertex(const Mesh& mesh) {
+  std::vector<int> around(mesh.points.size(), 0);
+  for (const Triangle& t : mesh.triangles)
+    for (int v : t) ++around[v];
+  return around.empty() ? 0 : *std::max_element(around.begin(), around.end());
+}
+
 }  // namespace lloydscope

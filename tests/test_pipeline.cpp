@@ -763,3 +763,21 @@ TEST(Pipeline, NoResultHasATriangleOfNoArea) {
     EXPECT_NO_THROW(validateMesh(output, "result")) << "fit " << fit;
   }
 }
+
+// A disk fanned around one vertex (a CAD part's cap, 1200 triangles): simplifying it first, as
+// an input larger than ten vertices per vertex asked is, took time cubic in the fan (3000
+// triangles: over a minute; found by fuzzing). It is remeshed as it is, which takes a second.
+TEST(Pipeline, AFanTooLargeToSimplifyQuicklyIsRemeshedAsItIs) {
+  Mesh fan;
+  fan.points.emplace_back(0, 0, 0);
+  const int n = 1200;
+  for (int i = 0; i < n; ++i) fan.points.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0);
+  for (int i = 0; i < n; ++i) fan.triangles.push_back({0, 1 + i, 1 + (i + 1) % n});
+  ASSERT_GT(mostTrianglesAroundAVertex(fan), kMostTrianglesAroundAVertexToSimplify);
+  RemeshOptions o;
+  o.sites.count = 50;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(fan, o, "fan.off");
+  EXPECT_EQ(r.coarseInput, 0);
+  EXPECT_NO_THROW(validateMesh(r.output, "result"));
+}
