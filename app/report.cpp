@@ -228,7 +228,8 @@ nlohmann::json toJson(const QualityMetrics& m) {
           {"avg_min_angle_deg", m.avgMinAngle},
           {"percent_under_30_deg", m.percentUnder30},
           {"max_angle_deg", m.maxAngle},
-          {"angle_histogram_10deg", m.angleHistogram}};
+          {"angle_histogram_10deg", m.angleHistogram},
+          {"folded_edges", m.foldedEdges}};
 }
 
 nlohmann::json toJson(const Fidelity& f) {
@@ -562,6 +563,16 @@ std::string farFromTheInputText(const Fidelity& f) {
          "asked may follow it";
 }
 
+std::string foldsText(const QualityMetrics& before, const QualityMetrics& after) {
+  if (after.foldedEdges == 0 || before.foldedEdges > 0) return "";
+  // The lion head's ear at 1000 vertices: two triangles bridging the ear's rim, folded 179
+  // degrees onto each other, seen by no angle (an independent check found them).
+  return "Warning: the result folds back on itself at " + std::to_string(after.foldedEdges) + " edge" +
+         (after.foldedEdges > 1 ? "s" : "") + " (its triangles turn more than " + format("%.0f", kFoldDegrees) +
+         " degrees there), where the input folds nowhere that much: a part thinner than its triangles "
+         "(an ear, a fin); more vertices asked may follow it";
+}
+
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
   if (asked <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
@@ -580,6 +591,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
     out << "Hausdorff distance reached at " << farthestPointText(r.fidelity) << "\n";
     if (const std::string far = farFromTheInputText(r.fidelity); !far.empty()) out << far << "\n";
   }
+  if (const std::string folds = foldsText(r.before, r.after); !folds.empty()) out << folds << "\n";
   if (const std::string count = vertexCountText(r, o); !count.empty()) out << count << "\n";
   if (r.components > 1)
     out << "Remeshed " << r.components - r.componentsKept << " of " << r.components

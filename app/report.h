@@ -172,6 +172,9 @@ std::string pinsNotShown(const std::vector<int>& pinned, size_t count, const std
 // (the results here are 0.1-3%): a warning that says so, and what may help; else empty.
 constexpr double kFarFromTheInputPercent = 10;
 std::string farFromTheInputText(const Fidelity& f);
+// A warning where the result folds back on itself (QualityMetrics::foldedEdges) and the input
+// does not, else "".
+std::string foldsText(const QualityMetrics& before, const QualityMetrics& after);
 
 // Where a retriangulated result has more or fewer vertices than were asked: both counts, and
 // why; else empty.

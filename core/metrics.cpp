@@ -46,6 +46,29 @@ int barsMet(const QualityMetrics& q) {
          (q.avgMinAngle >= kLeastAvgMinAngle);
 }
 
+namespace {
+
+int countFoldedEdges(const Mesh& mesh) {
+  std::vector<std::array<int, 3>> edges;  // smaller end, larger end, triangle
+  edges.reserve(3 * mesh.triangles.size());
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto [a, b] = std::minmax(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
+      edges.push_back({a, b, f});
+    }
+  std::sort(edges.begin(), edges.end());
+  const double cosFold = std::cos(kFoldDegrees * M_PI / 180.0);
+  int folded = 0;
+  for (size_t i = 0; i + 1 < edges.size(); ++i) {
+    if (edges[i][0] != edges[i + 1][0] || edges[i][1] != edges[i + 1][1]) continue;
+    const Vec3 n1 = faceNormal(mesh, mesh.triangles[edges[i][2]]), n2 = faceNormal(mesh, mesh.triangles[edges[i + 1][2]]);
+    if (n1.norm() > 0 && n2.norm() > 0 && n1.normalized().dot(n2.normalized()) < cosFold) ++folded;
+  }
+  return folded;
+}
+
+}  // namespace
+
 QualityMetrics measureQuality(const Mesh& mesh) {
   QualityMetrics m;
   m.vertices = mesh.vertexCount();
@@ -80,6 +103,7 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   }
   m.avgMinAngle = sumMin / mesh.faceCount();
   m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
+  m.foldedEdges = countFoldedEdges(mesh);
   return m;
 }
 

@@ -18,7 +18,12 @@ struct QualityMetrics {
   double avgMinAngle = 0;            // mean of each triangle's smallest angle
   double percentUnder30 = 0;         // triangles whose smallest angle is under 30 degrees
   std::array<int, 18> angleHistogram{};  // all corner angles in 10-degree bins, 0..180
+  // Inside edges whose two triangles' normals turn more than kFoldDegrees: the surface folds
+  // back on itself there (a fin, or a result's triangles bridging the two sides of a thin flap:
+  // no angle shows it).
+  int foldedEdges = 0;
 };
+constexpr double kFoldDegrees = 150.0;
 
 QualityMetrics measureQuality(const Mesh& mesh);
 

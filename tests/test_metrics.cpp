@@ -208,6 +208,22 @@ TEST(Projection, BatchAndStartedQueriesAnswerEachPointAsASingleQueryDoes) {
 // The three bars that need no reference, at their edges: 15% irregular is met, 30 and 53
 // degrees are met; a hair beyond each is not. Every trial's choice (slit or whole, with or
 // without the first pass, one disk or charts) counts them.
+// Two triangles on one edge, the second turned about it: folded when their normals turn more
+// than 150 degrees (a flap bent back on itself), not at 120.
+TEST(Quality, CountsTheEdgesWhereTheSurfaceFoldsBackOnItself) {
+  const auto hinge = [](double degrees) {
+    Mesh m;
+    const double a = degrees * M_PI / 180;
+    m.points = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -std::cos(a), std::sin(a)}};
+    m.triangles = {{0, 1, 2}, {1, 0, 3}};
+    return m;
+  };
+  EXPECT_EQ(measureQuality(hinge(0)).foldedEdges, 0);
+  EXPECT_EQ(measureQuality(hinge(120)).foldedEdges, 0);
+  EXPECT_EQ(measureQuality(hinge(170)).foldedEdges, 1);
+  EXPECT_EQ(measureQuality(test::grid(4)).foldedEdges, 0);
+}
+
 TEST(Quality, TheBarsAreMetAtTheirEdges) {
   QualityMetrics q;
   q.irregularBoundaryAware = kMostIrregularPercent;

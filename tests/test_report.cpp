@@ -434,6 +434,22 @@ TEST(Report, AResultFarFromTheInputIsWarnedOf) {
   EXPECT_NE(remeshReport(r, RemeshOptions{}).find("Warning: the result strays 99.6%"), std::string::npos);
 }
 
+// Triangles folded back onto each other show in no angle (the lion head's ear at 1000: two
+// triangles bridging its rim, 179 degrees apart): the report warns of them where the input has
+// none of its own.
+TEST(Report, AResultThatFoldsWhereTheInputDoesNotIsWarnedOf) {
+  QualityMetrics before, after;
+  EXPECT_EQ(foldsText(before, after), "");
+  after.foldedEdges = 6;
+  EXPECT_EQ(foldsText(before, after).rfind("Warning: the result folds back on itself at 6 edges", 0), 0u)
+      << foldsText(before, after);
+  RemeshResult r;
+  r.after = after;
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("folds back on itself at 6 edges"), std::string::npos);
+  before.foldedEdges = 4;  // the camel head's fins: the input folds so too
+  EXPECT_EQ(foldsText(before, after), "");
+}
+
 // A result with more or fewer vertices than asked says so, and why (CGAL's femur at 500: 510,
 // with nothing said; --help promised the number asked).
 TEST(Report, AVertexCountOtherThanAskedIsSaid) {
