@@ -48,22 +48,30 @@ int barsMet(const QualityMetrics& q) {
 
 namespace {
 
+// Each inside edge once, from the triangle where it runs from its smaller end to its larger
+// (the other runs it back), its other triangle found among its smaller end's: no sort of all
+// the edges, as measureQuality runs for every iteration the inspector shows.
 int countFoldedEdges(const Mesh& mesh) {
-  std::vector<std::array<int, 3>> edges;  // smaller end, larger end, triangle
-  edges.reserve(3 * mesh.triangles.size());
-  for (int f = 0; f < mesh.faceCount(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const auto [a, b] = std::minmax(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
-      edges.push_back({a, b, f});
-    }
-  std::sort(edges.begin(), edges.end());
+  const Rings rings(mesh);
+  std::vector<Vec3> normal(mesh.triangles.size(), Vec3::Zero());
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Vec3 n = faceNormal(mesh, mesh.triangles[f]);
+    if (n.norm() > 0) normal[f] = n.normalized();
+  }
   const double cosFold = std::cos(kFoldDegrees * M_PI / 180.0);
   int folded = 0;
-  for (size_t i = 0; i + 1 < edges.size(); ++i) {
-    if (edges[i][0] != edges[i + 1][0] || edges[i][1] != edges[i + 1][1]) continue;
-    const Vec3 n1 = faceNormal(mesh, mesh.triangles[edges[i][2]]), n2 = faceNormal(mesh, mesh.triangles[edges[i + 1][2]]);
-    if (n1.norm() > 0 && n2.norm() > 0 && n1.normalized().dot(n2.normalized()) < cosFold) ++folded;
-  }
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+      if (a > b) continue;
+      for (int i = rings.offset[a]; i < rings.offset[a + 1]; ++i) {
+        const Triangle& g = mesh.triangles[rings.faces[i]];
+        if (rings.faces[i] != f && std::find(g.begin(), g.end(), b) != g.end()) {
+          if (normal[f].dot(normal[rings.faces[i]]) < cosFold) ++folded;
+          break;
+        }
+      }
+    }
   return folded;
 }
 
@@ -137,7 +145,8 @@ Samples samplePoints(const Mesh& mesh, int randomCount) {
     total += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
     cumulative.push_back(total);
   }
-  // Each edge once, the border's too (once per triangle, in one direction, left half of them out).
+  // Each edge once, the border's too (taken where a triangle ran it from its smaller end, half
+  // of the border's edges were never sampled).
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
               edges.end());
