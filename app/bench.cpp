@@ -105,7 +105,7 @@ std::string verdict(const Row& row, const Row& peer) {
   if (!row.failed.empty()) return "failed: " + row.failed;
   std::string missed;
   if (row.after.irregularBoundaryAware > kMostIrregularPercent) missed += " irregular>15%";
-  if (row.after.minAngle < kLeastMinAngle) missed += " min<30";
+  if (!meetsMinAngleBar(row.after, row.before)) missed += " min<30";
   if (row.after.avgMinAngle < kLeastAvgMinAngle) missed += " avg<53";
   if (row.fidelity.hausdorffPercent > peer.fidelity.hausdorffPercent) missed += " hausdorff>cgal";
   return missed.empty() ? "all met" : "missed:" + missed;

@@ -229,7 +229,10 @@ nlohmann::json toJson(const QualityMetrics& m) {
           {"percent_under_30_deg", m.percentUnder30},
           {"max_angle_deg", m.maxAngle},
           {"angle_histogram_10deg", m.angleHistogram},
-          {"folded_edges", m.foldedEdges}};
+          {"folded_edges", m.foldedEdges},
+          {"min_angle_off_sharp_corners_deg", m.minAngleOffSharpCorners},
+          {"sharpest_border_corner_deg",
+           m.boundaryVertices > 0 ? nlohmann::json(m.sharpestBorderCorner) : nlohmann::json(nullptr)}};
 }
 
 nlohmann::json toJson(const Fidelity& f) {
@@ -452,10 +455,14 @@ std::string shownDistanceText(const Fidelity& f, bool asked, bool running) {
   return "Distances to the input: none for what is shown (a recording keeps its iterations only)";
 }
 
+namespace {
+std::string pointText(const Vec3& p) {
+  return "(" + format("%.4g", p.x()) + ", " + format("%.4g", p.y()) + ", " + format("%.4g", p.z()) + ")";
+}
+}  // namespace
+
 std::string farthestPointText(const Fidelity& f) {
-  const Vec3& p = f.farthestPoint;
-  return "(" + format("%.4g", p.x()) + ", " + format("%.4g", p.y()) + ", " +
-         format("%.4g", p.z()) + ")" +
+  return pointText(f.farthestPoint) +
          (f.farthestOnReference ? " on the input (the result passes farthest from it there)"
                                 : " on the result (it strays farthest from the input there)");
 }
@@ -573,6 +580,22 @@ std::string foldsText(const QualityMetrics& before, const QualityMetrics& after)
          "(an ear, a fin); more vertices asked may follow it";
 }
 
+std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& after) {
+  // The smallest angle is at a corner of the border one triangle fills, no sharper than the
+  // input's sharpest (CGAL's holes model clipped in half: its cut grazes a hole's rim, 13 degrees).
+  if (after.minAngle >= kLeastMinAngle || after.minAngleOffSharpCorners <= after.minAngle ||
+      after.minAngle < before.sharpestBorderCorner - 1e-6)
+    return "";
+  const std::string elsewhere =
+      after.minAngleOffSharpCorners >= kLeastMinAngle
+          ? "no angle elsewhere is under 30 (the trials count the bar as met)"
+          : "elsewhere the smallest angle is " + format("%.1f", after.minAngleOffSharpCorners) + " degrees";
+  return "The input's border has a corner of " + format("%.1f", before.sharpestBorderCorner) + " degrees at " +
+         pointText(before.sharpestBorderCornerAt) +
+         ", kept as it is: the one triangle there can have no larger angle, and the 30-degree bar is out of reach "
+         "there; " + elsewhere;
+}
+
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
   if (asked <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
@@ -592,6 +615,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
     if (const std::string far = farFromTheInputText(r.fidelity); !far.empty()) out << far << "\n";
   }
   if (const std::string folds = foldsText(r.before, r.after); !folds.empty()) out << folds << "\n";
+  if (const std::string corner = sharpCornerText(r.before, r.after); !corner.empty()) out << corner << "\n";
   if (const std::string count = vertexCountText(r, o); !count.empty()) out << count << "\n";
   if (r.components > 1)
     out << "Remeshed " << r.components - r.componentsKept << " of " << r.components

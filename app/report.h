@@ -175,6 +175,10 @@ std::string farFromTheInputText(const Fidelity& f);
 // A warning where the result folds back on itself (QualityMetrics::foldedEdges) and the input
 // does not, else "".
 std::string foldsText(const QualityMetrics& before, const QualityMetrics& after);
+// Where the result's smallest angle is under 30 degrees at a sharp corner of the border that the
+// input has too: that the bar is out of reach there, where, and the smallest angle elsewhere;
+// else "".
+std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& after);
 
 // Where a retriangulated result has more or fewer vertices than were asked: both counts, and
 // why; else empty.

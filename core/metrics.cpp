@@ -41,9 +41,17 @@ int worstTriangle(const Mesh& mesh) {
   return worst;
 }
 
-int barsMet(const QualityMetrics& q) {
-  return (q.irregularBoundaryAware <= kMostIrregularPercent) + (q.minAngle >= kLeastMinAngle) +
-         (q.avgMinAngle >= kLeastAvgMinAngle);
+bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input) {
+  // The result's corner is the input's to the last digits (1e-14 apart on CGAL's mask clipped
+  // in half), or a little wider where the fit moved its border neighbours.
+  constexpr double kRounding = 1e-6;
+  return result.minAngle >= kLeastMinAngle || (result.minAngleOffSharpCorners >= kLeastMinAngle &&
+                                               result.minAngle >= input.sharpestBorderCorner - kRounding);
+}
+
+int barsMet(const QualityMetrics& result, const QualityMetrics& input) {
+  return (result.irregularBoundaryAware <= kMostIrregularPercent) + meetsMinAngleBar(result, input) +
+         (result.avgMinAngle >= kLeastAvgMinAngle);
 }
 
 namespace {
@@ -100,9 +108,15 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   m.minAngle = 180;
   double sumMin = 0;
   int under30 = 0;
+  std::vector<double> angleSum(mesh.points.size(), 0.0);
+  std::vector<int> trianglesAt(mesh.points.size(), 0);
+  std::vector<double> smallest;
+  smallest.reserve(mesh.triangles.size());
   for (const Triangle& t : mesh.triangles) {
     const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    for (int k = 0; k < 3; ++k) angleSum[t[k]] += angles[k], ++trianglesAt[t[k]];
     const double lo = *std::min_element(angles.begin(), angles.end());
+    smallest.push_back(lo);
     m.minAngle = std::min(m.minAngle, lo);
     m.maxAngle = std::max(m.maxAngle, *std::max_element(angles.begin(), angles.end()));
     sumMin += lo;
@@ -111,6 +125,23 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   }
   m.avgMinAngle = sumMin / mesh.faceCount();
   m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
+  for (size_t v = 0; v < angleSum.size(); ++v)
+    if (boundary[v] && angleSum[v] < m.sharpestBorderCorner) {
+      m.sharpestBorderCorner = angleSum[v];
+      m.sharpestBorderCornerAt = mesh.points[v];
+    }
+  const auto sharpCorner = [&](int v) { return boundary[v] && trianglesAt[v] == 1 && angleSum[v] < kLeastMinAngle; };
+  m.minAngleOffSharpCorners = 180;
+  for (int f = 0; f < m.faces; ++f) {
+    const Triangle& t = mesh.triangles[f];
+    if (!sharpCorner(t[0]) && !sharpCorner(t[1]) && !sharpCorner(t[2])) {
+      m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, smallest[f]);
+      continue;
+    }
+    const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    for (int k = 0; k < 3; ++k)
+      if (!sharpCorner(t[k])) m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, angles[k]);
+  }
   m.foldedEdges = countFoldedEdges(mesh);
   return m;
 }

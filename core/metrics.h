@@ -22,6 +22,14 @@ struct QualityMetrics {
   // back on itself there (a fin, or a result's triangles bridging the two sides of a thin flap:
   // no angle shows it).
   int foldedEdges = 0;
+  // The smallest sum of the angles at a border vertex, degrees (360 with no border), and where:
+  // a remesher that keeps the border's corners (this one does, as CGAL's does) leaves a triangle
+  // there with no larger angle (a clipped surface whose cut grazes a hole's rim: 13 degrees).
+  double sharpestBorderCorner = 360;
+  Vec3 sharpestBorderCornerAt = Vec3::Zero();
+  // The smallest angle but those at a corner of the border under kLeastMinAngle that one
+  // triangle fills: the angles a remesher has a say in where it keeps the border's corners.
+  double minAngleOffSharpCorners = 180;
 };
 constexpr double kFoldDegrees = 150.0;
 
@@ -33,8 +41,11 @@ QualityMetrics measureQuality(const Mesh& mesh);
 constexpr double kMostIrregularPercent = 15.0;
 constexpr double kLeastMinAngle = 30.0;
 constexpr double kLeastAvgMinAngle = 53.0;
-// How many of the three a result meets.
-int barsMet(const QualityMetrics& q);
+// The smallest-angle bar within the input's reach: no angle under 30 degrees, but at a corner of
+// the border sharper than that, filled by one triangle and no sharper than the input's sharpest.
+bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input);
+// How many of the three a result of `input` meets.
+int barsMet(const QualityMetrics& result, const QualityMetrics& input);
 
 struct Fidelity {
   // Two-sided distances between the surfaces, in % of the reference's bounding-box diagonal.

@@ -553,8 +553,8 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
     trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
     trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
-    trial.oneCutBars = barsMet(kept.after);
-    trial.chartsBars = barsMet(charted.after);
+    trial.oneCutBars = barsMet(kept.after, kept.before);
+    trial.chartsBars = barsMet(charted.after, charted.before);
     if (trial.chartsBetter()) std::swap(kept, charted);
     kept.chartTrial = trial;
     countTheOtherRun(kept, charted);
@@ -583,7 +583,7 @@ RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, cons
       charted.chartTrial = ChartTrial{};
       charted.chartTrial->charts = charted.charts;
       charted.chartTrial->chartsAvgMinAngle = charted.after.avgMinAngle;
-      charted.chartTrial->chartsBars = barsMet(charted.after);
+      charted.chartTrial->chartsBars = barsMet(charted.after, charted.before);
       charted.chartTrial->oneCutFailed = problemOf(oneCut, name);
       return charted;
     } catch (const Error& e) {
@@ -630,7 +630,8 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
   if (kept.cut.seamEdges > 0 && whole.valid()) {
     try {
       RemeshResult other = whole.get();
-      SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle, barsMet(kept.after), barsMet(other.after)};
+      SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle, barsMet(kept.after, kept.before),
+                      barsMet(other.after, other.before)};
       if (trial.bothMeetTheBars()) {
         measureFidelityOf(kept, prepared);
         measureFidelityOf(other, prepared);
@@ -652,7 +653,7 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
 void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name,
                          const PreparedInput& prepared) {
   // Without the polish the bars are not what a run aims at (`--polish -1` shows what it buys).
-  if (!usesResampling(options) || options.polish <= 0 || !kept.resampleDropped.empty() || barsMet(kept.after) == 3)
+  if (!usesResampling(options) || options.polish <= 0 || !kept.resampleDropped.empty() || barsMet(kept.after, kept.before) == 3)
     return;
   // A nearly closed disk is made slit open and whole again: the way the slit trial kept with the
   // first pass alone would save a fifth of the time (the camel head at 500: 3.2 -> 2.8 s), but
@@ -663,15 +664,15 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
     other = remeshDisk(input, withoutResampling(options), name, prepared);
   } catch (const Error& e) {
     kept.firstPassTrial = FirstPassTrial{};
-    kept.firstPassTrial->withBars = barsMet(kept.after);
+    kept.firstPassTrial->withBars = barsMet(kept.after, kept.before);
     kept.firstPassTrial->failed = problemOf(e, name);
     return;
   }
   measureFidelityOf(kept, prepared);
   measureFidelityOf(other, prepared);
   FirstPassTrial trial;
-  trial.withBars = barsMet(kept.after);
-  trial.withoutBars = barsMet(other.after);
+  trial.withBars = barsMet(kept.after, kept.before);
+  trial.withoutBars = barsMet(other.after, other.before);
   trial.withHausdorff = kept.fidelity.hausdorffPercent;
   trial.withoutHausdorff = other.fidelity.hausdorffPercent;
   trial.keptWithout = trial.withoutBetter();
@@ -710,7 +711,7 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   if (chartsAllowed && kept.charts == 0 && (!disk || !isFreeBorder(kept.paramUsed)))
     tryCharts(kept, input, options, name, prepared);
   if (disk) tryWithoutFirstPass(kept, input, once, name, prepared);
-  if (disk && chartsAllowed && !kept.chartTrial && barsMet(kept.after) < 3)
+  if (disk && chartsAllowed && !kept.chartTrial && barsMet(kept.after, kept.before) < 3)
     tryCharts(kept, input, options, name, prepared, /*forBars=*/true);
   kept.ms.simplify += simplifyMs;
   if (options.measureFidelity) measureFidelityOf(kept, prepared);

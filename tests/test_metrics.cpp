@@ -225,18 +225,58 @@ TEST(Quality, CountsTheEdgesWhereTheSurfaceFoldsBackOnItself) {
 }
 
 TEST(Quality, TheBarsAreMetAtTheirEdges) {
+  const QualityMetrics input;  // no border: nothing of it in the way
   QualityMetrics q;
   q.irregularBoundaryAware = kMostIrregularPercent;
   q.minAngle = kLeastMinAngle;
   q.avgMinAngle = kLeastAvgMinAngle;
-  EXPECT_EQ(barsMet(q), 3);
+  EXPECT_EQ(barsMet(q, input), 3);
   q.irregularBoundaryAware = 15.0001;
-  EXPECT_EQ(barsMet(q), 2);
+  EXPECT_EQ(barsMet(q, input), 2);
   q.minAngle = 29.9999;
-  EXPECT_EQ(barsMet(q), 1);
+  EXPECT_EQ(barsMet(q, input), 1);
   q.avgMinAngle = 52.9999;
-  EXPECT_EQ(barsMet(q), 0);
+  EXPECT_EQ(barsMet(q, input), 0);
   EXPECT_EQ(kMostIrregularPercent, 15.0);  // issue 5's numbers
   EXPECT_EQ(kLeastMinAngle, 30.0);
   EXPECT_EQ(kLeastAvgMinAngle, 53.0);
+}
+
+TEST(Quality, MeasuresTheSharpestCornerOfTheBorder) {
+  // A sector's apex: the sum of its 12 triangles' angles there; the far corners are 90 degrees.
+  const QualityMetrics sector = measureQuality(test::sector(20));
+  EXPECT_NEAR(sector.sharpestBorderCorner, 20.0, 1e-9);
+  EXPECT_NEAR(sector.sharpestBorderCornerAt.norm(), 0.0, 1e-12);
+  EXPECT_EQ(sector.minAngleOffSharpCorners, sector.minAngle);  // more than one triangle there
+  EXPECT_NEAR(measureQuality(test::grid(4)).sharpestBorderCorner, 90.0, 1e-9);
+  EXPECT_EQ(measureQuality(test::cube(3, false)).sharpestBorderCorner, 360.0);  // no border
+  // One triangle of 20, 70 and 90 degrees: its 20-degree corner is all the border has there.
+  Mesh one;
+  one.points = {{0, 0, 0}, {1, 0, 0}, {1, std::tan(20 * M_PI / 180), 0}};
+  one.triangles = {{0, 1, 2}};
+  const QualityMetrics q = measureQuality(one);
+  EXPECT_NEAR(q.minAngle, 20.0, 1e-9);
+  EXPECT_NEAR(q.minAngleOffSharpCorners, 70.0, 1e-9);
+}
+
+TEST(Quality, TheSmallestAngleBarIsWithinTheInputsReach) {
+  // A result keeps its input's border corners: where one of 20 degrees is one triangle's, that
+  // triangle has no more there.
+  QualityMetrics input, result;
+  input.sharpestBorderCorner = 20.0;
+  result.minAngle = 20.0;
+  result.minAngleOffSharpCorners = 35.0;
+  EXPECT_TRUE(meetsMinAngleBar(result, input));
+  result.minAngleOffSharpCorners = 29.9;  // a small angle elsewhere too
+  EXPECT_FALSE(meetsMinAngleBar(result, input));
+  result.minAngleOffSharpCorners = 35.0;
+  result.minAngle = 19.99;  // a corner sharper than any of the input's
+  EXPECT_FALSE(meetsMinAngleBar(result, input));
+  input.sharpestBorderCorner = 90.0;  // a square's corners ask for no less than 30
+  result.minAngle = 29.99;
+  EXPECT_FALSE(meetsMinAngleBar(result, input));
+  result.minAngle = 30.0;
+  EXPECT_TRUE(meetsMinAngleBar(result, input));
+  result.irregularBoundaryAware = 100;  // and barsMet counts it
+  EXPECT_EQ(barsMet(result, input), 1);
 }

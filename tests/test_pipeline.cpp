@@ -605,6 +605,23 @@ TEST(Pipeline, TheBorderSlidOutOfASharpCornerStaysOnTheInputsBorder) {
   }
 }
 
+// A 20-degree sector, bent: the result keeps its apex, one triangle's corner, which can have no
+// more than 20 degrees. The trials count that as the bar met, and make no other run to reach 30 (before,
+// the run without the first pass was made too, in vain).
+TEST(Pipeline, ASharpCornerOfTheInputsBorderIsNoBarToMiss) {
+  const Mesh input = test::sector(20, [](double x, double) { return 0.5 * x * x; });
+  RemeshOptions o;
+  o.sites.count = 500;  // (at 300 the wedge squeezes the triangles beside the apex's to 23 degrees)
+  const RemeshResult r = remesh(input, o, "sector");
+  EXPECT_NEAR(r.before.sharpestBorderCorner, 20.0, 0.01);  // bent a little
+  EXPECT_LT(r.after.minAngle, 30.0);
+  EXPECT_GE(r.after.minAngleOffSharpCorners, 30.0);
+  EXPECT_TRUE(meetsMinAngleBar(r.after, r.before));
+  EXPECT_EQ(barsMet(r.after, r.before), 3);
+  EXPECT_EQ(r.runs, 1);
+  EXPECT_FALSE(r.firstPassTrial.has_value());
+}
+
 // A surface cut open needs its seams made ready for stitching (edges that stitching would
 // share among three triangles flipped, or split) with or without the polish: without it
 // (--polish -1) CGAL's femur at 500 was refused, "the remeshed seams did not stitch back".
