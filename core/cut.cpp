@@ -320,11 +320,55 @@ bool dropFlatEars(std::vector<Triangle>& triangles, const std::vector<Vec3>& poi
   return any;
 }
 
+// Flips each flat triangle's longest edge where a triangle that is not flat lies beyond it: its
+// middle vertex then joins that triangle's far corner, and both new triangles have area (the
+// middle vertex lies between the edge's ends). Repeated, as the flat triangles of a fan along a
+// straight border each lie beyond the next (the border samples a round map bent into a pocket,
+// without the polish that would flip them). Returns whether any was flipped.
+bool flipFlatTriangles(std::vector<Triangle>& triangles, const std::vector<Vec3>& points) {
+  const auto flat = [&](const Triangle& t) { return isFlat(points[t[0]], points[t[1]], points[t[2]]); };
+  std::map<std::pair<int, int>, int> across;  // directed edge -> its triangle
+  for (size_t f = 0; f < triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) across[{triangles[f][k], triangles[f][(k + 1) % 3]}] = static_cast<int>(f);
+  bool any = false;
+  // Each flip leaves one flat triangle fewer: as many rounds as there are flat triangles at most.
+  for (bool flipped = true; flipped;) {
+    flipped = false;
+    for (size_t f = 0; f < triangles.size(); ++f) {
+      const Triangle t = triangles[f];
+      if (!flat(t)) continue;
+      // Turned so that (c, a) is the longest edge and b the middle vertex.
+      int k = 0;
+      for (int j = 1; j < 3; ++j)
+        if ((points[t[(j + 2) % 3]] - points[t[(j + 1) % 3]]).squaredNorm() >
+            (points[t[(k + 2) % 3]] - points[t[(k + 1) % 3]]).squaredNorm())
+          k = j;
+      const int b = t[k], c = t[(k + 1) % 3], a = t[(k + 2) % 3];
+      const auto beyond = across.find({a, c});
+      if (beyond == across.end() || points[b] == points[a] || points[b] == points[c]) continue;
+      const int g = beyond->second;
+      const Triangle& u = triangles[g];
+      const int d = u[0] != a && u[0] != c ? u[0] : u[1] != a && u[1] != c ? u[1] : u[2];
+      if (flat(u) || across.count({b, d}) || across.count({d, b})) continue;
+      for (const Triangle* old : {&triangles[f], &triangles[g]})
+        for (int j = 0; j < 3; ++j) across.erase({(*old)[j], (*old)[(j + 1) % 3]});
+      triangles[f] = {b, c, d};
+      triangles[g] = {b, d, a};
+      for (size_t h : {f, static_cast<size_t>(g)})
+        for (int j = 0; j < 3; ++j) across[{triangles[h][j], triangles[h][(j + 1) % 3]}] = static_cast<int>(h);
+      flipped = any = true;
+    }
+  }
+  return any;
+}
+
 }  // namespace
 
-void dropFlatEars(Mesh& mesh) {
+void dropFlatTriangles(Mesh& mesh) {
   std::vector<Triangle> triangles = mesh.triangles;
-  if (dropFlatEars(triangles, mesh.points)) mesh = assemble(triangles, mesh.points);
+  // The ears first: an ear flipped would keep its middle vertex, a sample no triangle needs.
+  const bool dropped = dropFlatEars(triangles, mesh.points);
+  if (flipFlatTriangles(triangles, mesh.points) || dropped) mesh = assemble(triangles, mesh.points);
 }
 
 Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex) {

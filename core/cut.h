@@ -82,10 +82,12 @@ std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance);
 // `seamVertex`, if given, receives per vertex of the result whether it was on a seam.
 Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex = nullptr);
 
-// Drops each flat ear of the border (three border vertices in a row on a straight border, the
-// middle one in no other triangle: a map with a round border bends them into an ear) and its
-// middle vertex: a triangle of no area, which no reader of the result takes.
-void dropFlatEars(Mesh& mesh);
+// Leaves no triangle of no area, which no reader of the result takes: drops each flat ear of
+// the border (three border samples in a row on a straight border, which a map with a round
+// border bent into an ear, the middle one in no other triangle) and its middle vertex, then
+// flips away each flat triangle that has a triangle with area beyond its longest edge (a fan of
+// such samples bent into a pocket).
+void dropFlatTriangles(Mesh& mesh);
 
 // Removes the stitched surface's (nearly) flat triangles -- a vertex lifted onto a seam where
 // the map shrinks the surface most -- by CGAL's edge flips and collapses (caps with an angle over

@@ -247,12 +247,12 @@ void stepsOnTheInput(Mesh& result, const SearchableSurface& original, const Reme
   done.fit = fitToSurface(result, original, fit);
 }
 
-// The steps above where asked, then, with or without them, the border's flat ears dropped: a
-// map with a round border makes ears of samples in a row on a straight border, triangles of
-// no area that a reader of the result refuses (dropFlatEars).
+// The steps above where asked, then, with or without them, the triangles of no area mended: a
+// map with a round border makes ears and pockets of samples in a row on a straight border,
+// triangles of no area that a reader of the result refuses (dropFlatTriangles).
 void lastSteps(Mesh& result, const PreparedInput& input, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0 || o.fit) stepsOnTheInput(result, input.search(), o, done);
-  dropFlatEars(result);
+  dropFlatTriangles(result);
 }
 
 // A result stitched back from a cut disk or from charts: its seams relaxed on `surface`, its

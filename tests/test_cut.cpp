@@ -502,3 +502,21 @@ TEST(Cut, SeamEdgesAreBothCopiesOfEveryCutEdge) {
   const CutResult tube = cutToDisk(::tube(), "tube");  // the loops' own edges are not seams
   EXPECT_EQ(seamEdges(tube.disk, 1e-9).size(), 2 * tube.seam.size());
 }
+
+// A triangle of no area inside the mesh (its middle vertex has triangles on the other side too,
+// so it is no ear): its longest edge is flipped with the triangle beyond, and the two new ones
+// have area. Without it a result written with --polish -1 held such a triangle, and the reader
+// refused it ("face 22 has zero area"; found by fuzzing).
+TEST(Cut, AFlatTriangleIsFlippedAway) {
+  Mesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, -1, 0}};  // 0 1 2 on a line
+  m.triangles = {{0, 2, 3}, {0, 1, 2}, {0, 4, 1}, {1, 4, 2}};
+  ASSERT_THROW(validateMesh(m, "before"), Error);
+  dropFlatTriangles(m);
+  EXPECT_NO_THROW(validateMesh(m, "after"));
+  EXPECT_EQ(m.vertexCount(), 5);
+  EXPECT_EQ(m.faceCount(), 4);
+  EXPECT_TRUE(analyzeTopology(m).isDisk());
+  for (const Triangle& t : m.triangles)  // all facing up, as before
+    EXPECT_GT((m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]).z(), 0);
+}
