@@ -581,18 +581,22 @@ std::string foldsText(const QualityMetrics& before, const QualityMetrics& after)
 }
 
 std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& after) {
-  // The smallest angle is at a corner of the border one triangle fills, no sharper than the
-  // input's sharpest (CGAL's holes model clipped in half: its cut grazes a hole's rim, 13 degrees).
-  if (after.minAngle >= kLeastMinAngle || after.minAngleOffSharpCorners <= after.minAngle ||
-      after.minAngle < before.sharpestBorderCorner - 1e-6)
-    return "";
+  // The smallest angle fills a corner of the border alone, at a corner of the input's (CGAL's
+  // holes model clipped in half: its cut grazes a hole's rim, 13 degrees).
+  if (after.minAngle >= kLeastMinAngle || after.minAngleOffSharpCorners <= after.minAngle) return "";
+  const auto corner = std::find_if(after.sharpCorners.begin(), after.sharpCorners.end(),
+                                   [](const BorderCorner& c) { return c.triangles == 1; });
+  if (corner == after.sharpCorners.end()) return "";
+  const BorderCorner* own = inputCornerAt(before, *corner);
+  if (!own || corner->degrees < own->degrees - kCornerSlackDegrees) return "";
   const std::string elsewhere =
-      after.minAngleOffSharpCorners >= kLeastMinAngle
-          ? "no angle elsewhere is under 30 (the trials count the bar as met)"
-          : "elsewhere the smallest angle is " + format("%.1f", after.minAngleOffSharpCorners) + " degrees";
-  return "The input's border has a corner of " + format("%.1f", before.sharpestBorderCorner) + " degrees at " +
-         pointText(before.sharpestBorderCornerAt) +
-         ", kept as it is: the one triangle there can have no larger angle, and the 30-degree bar is out of reach "
+      meetsMinAngleBar(after, before) ? "no angle elsewhere is under 30 (the trials count the bar as met)"
+      : after.minAngleOffSharpCorners < kLeastMinAngle
+          ? "elsewhere the smallest angle is " + format("%.1f", after.minAngleOffSharpCorners) + " degrees"
+          : "but another corner of the result is sharper than the input's there";
+  return "The smallest angle, " + format("%.1f", corner->degrees) + " degrees, is at a corner of the input's border (" +
+         format("%.1f", own->degrees) + " degrees at " + pointText(own->at) +
+         "), kept as it is: one triangle fills the corner, so no remeshing that keeps the border reaches 30 "
          "there; " + elsewhere;
 }
 

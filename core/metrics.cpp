@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <thread>
@@ -41,12 +42,23 @@ int worstTriangle(const Mesh& mesh) {
   return worst;
 }
 
+const BorderCorner* inputCornerAt(const QualityMetrics& input, const BorderCorner& corner) {
+  for (const BorderCorner& c : input.sharpCorners)
+    if ((c.at - corner.at).norm() <= 1e-6 * std::min(c.shorterEdge, corner.shorterEdge)) return &c;
+  return nullptr;
+}
+
 bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input) {
-  // The result's corner is the input's to the last digits (1e-14 apart on CGAL's mask clipped
-  // in half), or a little wider where the fit moved its border neighbours.
-  constexpr double kRounding = 1e-6;
-  return result.minAngle >= kLeastMinAngle || (result.minAngleOffSharpCorners >= kLeastMinAngle &&
-                                               result.minAngle >= input.sharpestBorderCorner - kRounding);
+  if (result.minAngle >= kLeastMinAngle) return true;
+  if (result.minAngleOffSharpCorners < kLeastMinAngle) return false;
+  bool any = false;  // the smallest angle is at one of them
+  for (const BorderCorner& corner : result.sharpCorners) {
+    if (corner.triangles != 1 || corner.degrees >= kLeastMinAngle) continue;
+    const BorderCorner* own = inputCornerAt(input, corner);
+    if (!own || corner.degrees < own->degrees - kCornerSlackDegrees) return false;
+    any = true;
+  }
+  return any;
 }
 
 int barsMet(const QualityMetrics& result, const QualityMetrics& input) {
@@ -81,6 +93,19 @@ int countFoldedEdges(const Mesh& mesh) {
       }
     }
   return folded;
+}
+
+// The shorter of the border edges at `v` (an edge of one triangle): a scan of all the triangles,
+// made for the few sharp corners only.
+double shorterBorderEdge(const Mesh& mesh, int v) {
+  std::map<int, int> uses;  // the other end of each edge at v: its triangles
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == v) ++uses[t[(k + 1) % 3]], ++uses[t[(k + 2) % 3]];
+  double shorter = std::numeric_limits<double>::infinity();
+  for (const auto& [w, count] : uses)
+    if (count == 1) shorter = std::min(shorter, (mesh.points[w] - mesh.points[v]).norm());
+  return shorter;
 }
 
 }  // namespace
@@ -125,11 +150,14 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   }
   m.avgMinAngle = sumMin / mesh.faceCount();
   m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
-  for (size_t v = 0; v < angleSum.size(); ++v)
-    if (boundary[v] && angleSum[v] < m.sharpestBorderCorner) {
-      m.sharpestBorderCorner = angleSum[v];
-      m.sharpestBorderCornerAt = mesh.points[v];
-    }
+  for (size_t v = 0; v < angleSum.size(); ++v) {
+    if (!boundary[v]) continue;
+    m.sharpestBorderCorner = std::min(m.sharpestBorderCorner, angleSum[v]);
+    if (angleSum[v] < kSharpCornerDegrees)
+      m.sharpCorners.push_back({mesh.points[v], angleSum[v], trianglesAt[v], shorterBorderEdge(mesh, static_cast<int>(v))});
+  }
+  std::sort(m.sharpCorners.begin(), m.sharpCorners.end(),
+            [](const BorderCorner& a, const BorderCorner& b) { return a.degrees < b.degrees; });
   const auto sharpCorner = [&](int v) { return boundary[v] && trianglesAt[v] == 1 && angleSum[v] < kLeastMinAngle; };
   m.minAngleOffSharpCorners = 180;
   for (int f = 0; f < m.faces; ++f) {

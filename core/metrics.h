@@ -10,6 +10,15 @@ namespace lloydscope {
 
 struct SearchableSurface;
 
+// A vertex of the border, the sum of its triangles' angles, how many they are, and its
+// shorter border edge (the scale to tell whether two corners are the same place).
+struct BorderCorner {
+  Vec3 at = Vec3::Zero();
+  double degrees = 0;
+  int triangles = 0;
+  double shorterEdge = 0;
+};
+
 struct QualityMetrics {
   int vertices = 0, faces = 0, boundaryVertices = 0;
   double irregularPercent = 0;       // vertices of valence != 6, all of them (the reference)
@@ -22,16 +31,22 @@ struct QualityMetrics {
   // back on itself there (a fin, or a result's triangles bridging the two sides of a thin flap:
   // no angle shows it).
   int foldedEdges = 0;
-  // The smallest sum of the angles at a border vertex, degrees (360 with no border), and where:
-  // a remesher that keeps the border's corners (this one does, as CGAL's does) leaves a triangle
-  // there with no larger angle (a clipped surface whose cut grazes a hole's rim: 13 degrees).
+  // The smallest sum of the angles at a border vertex, degrees (360 with no border).
   double sharpestBorderCorner = 360;
-  Vec3 sharpestBorderCornerAt = Vec3::Zero();
-  // The smallest angle but those at a corner of the border under kLeastMinAngle that one
-  // triangle fills: the angles a remesher has a say in where it keeps the border's corners.
+  // The border's corners sharper than kSharpCornerDegrees, by sharpness: a remesher that keeps
+  // the border's corners (this one does, as CGAL's does) cannot raise the angle of the one
+  // triangle that fills one (a clipped surface whose cut grazes a hole's rim: 13 degrees).
+  std::vector<BorderCorner> sharpCorners;
+  // The smallest angle but those at a sharp corner that one triangle fills: the angles a
+  // remesher has a say in.
   double minAngleOffSharpCorners = 180;
 };
 constexpr double kFoldDegrees = 150.0;
+// Border corners kept in QualityMetrics::sharpCorners: those under 30 degrees, and those a
+// little wider that a result's corner at the same place may be a little sharper than (the
+// first border samples along two sides that curve outward cut the corner's chords inward).
+constexpr double kCornerSlackDegrees = 0.5;
+constexpr double kSharpCornerDegrees = 30.0 + kCornerSlackDegrees;
 
 QualityMetrics measureQuality(const Mesh& mesh);
 
@@ -41,9 +56,12 @@ QualityMetrics measureQuality(const Mesh& mesh);
 constexpr double kMostIrregularPercent = 15.0;
 constexpr double kLeastMinAngle = 30.0;
 constexpr double kLeastAvgMinAngle = 53.0;
-// The smallest-angle bar within the input's reach: no angle under 30 degrees, but at a corner of
-// the border sharper than that, filled by one triangle and no sharper than the input's sharpest.
+// The smallest-angle bar within the input's reach: no angle under 30 degrees but at the
+// result's sharp corners that one triangle fills, each at a corner of the input's border no
+// more than kCornerSlackDegrees wider.
 bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input);
+// The input's sharp corner at the place of the result's `corner`, if any.
+const BorderCorner* inputCornerAt(const QualityMetrics& input, const BorderCorner& corner);
 // How many of the three a result of `input` meets.
 int barsMet(const QualityMetrics& result, const QualityMetrics& input);
 

@@ -242,13 +242,19 @@ TEST(Quality, TheBarsAreMetAtTheirEdges) {
   EXPECT_EQ(kLeastAvgMinAngle, 53.0);
 }
 
-TEST(Quality, MeasuresTheSharpestCornerOfTheBorder) {
+TEST(Quality, MeasuresTheSharpCornersOfTheBorder) {
   // A sector's apex: the sum of its 12 triangles' angles there; the far corners are 90 degrees.
   const QualityMetrics sector = measureQuality(test::sector(20));
   EXPECT_NEAR(sector.sharpestBorderCorner, 20.0, 1e-9);
-  EXPECT_NEAR(sector.sharpestBorderCornerAt.norm(), 0.0, 1e-12);
+  ASSERT_EQ(sector.sharpCorners.size(), 1u);
+  EXPECT_NEAR(sector.sharpCorners[0].at.norm(), 0.0, 1e-12);
+  EXPECT_NEAR(sector.sharpCorners[0].degrees, 20.0, 1e-9);
+  EXPECT_EQ(sector.sharpCorners[0].triangles, 12);
+  EXPECT_NEAR(sector.sharpCorners[0].shorterEdge, 1.0 / 30, 1e-12);  // to the first ring
   EXPECT_EQ(sector.minAngleOffSharpCorners, sector.minAngle);  // more than one triangle there
-  EXPECT_NEAR(measureQuality(test::grid(4)).sharpestBorderCorner, 90.0, 1e-9);
+  const QualityMetrics grid = measureQuality(test::grid(4));
+  EXPECT_NEAR(grid.sharpestBorderCorner, 90.0, 1e-9);
+  EXPECT_TRUE(grid.sharpCorners.empty());
   EXPECT_EQ(measureQuality(test::cube(3, false)).sharpestBorderCorner, 360.0);  // no border
   // One triangle of 20, 70 and 90 degrees: its 20-degree corner is all the border has there.
   Mesh one;
@@ -257,26 +263,42 @@ TEST(Quality, MeasuresTheSharpestCornerOfTheBorder) {
   const QualityMetrics q = measureQuality(one);
   EXPECT_NEAR(q.minAngle, 20.0, 1e-9);
   EXPECT_NEAR(q.minAngleOffSharpCorners, 70.0, 1e-9);
+  ASSERT_EQ(q.sharpCorners.size(), 1u);
+  EXPECT_EQ(q.sharpCorners[0].triangles, 1);
+  EXPECT_NEAR(q.sharpCorners[0].shorterEdge, 1.0, 1e-12);
 }
 
 TEST(Quality, TheSmallestAngleBarIsWithinTheInputsReach) {
   // A result keeps its input's border corners: where one of 20 degrees is one triangle's, that
-  // triangle has no more there.
+  // triangle's angle there is the corner's.
+  const Vec3 tip(1, 2, 3);
   QualityMetrics input, result;
-  input.sharpestBorderCorner = 20.0;
+  input.sharpCorners = {{tip, 20.0, 3, 0.1}};
   result.minAngle = 20.0;
   result.minAngleOffSharpCorners = 35.0;
+  result.sharpCorners = {{tip, 20.0, 1, 0.12}};
   EXPECT_TRUE(meetsMinAngleBar(result, input));
+  result.sharpCorners[0].degrees = result.minAngle = 19.6;  // sides curving outward: a little sharper
+  EXPECT_TRUE(meetsMinAngleBar(result, input));
+  result.sharpCorners[0].degrees = result.minAngle = 19.4;  // sharper than that: the result's doing
+  EXPECT_FALSE(meetsMinAngleBar(result, input));
+  result.sharpCorners[0].degrees = result.minAngle = 20.0;
+  result.sharpCorners[0].at = tip + Vec3(0.01, 0, 0);  // elsewhere than the input's corner
+  EXPECT_FALSE(meetsMinAngleBar(result, input));
+  result.sharpCorners[0].at = tip;
+  result.sharpCorners[0].triangles = 2;  // two triangles in it: each sharper than it need be
+  EXPECT_FALSE(meetsMinAngleBar(result, input));
+  result.sharpCorners[0].triangles = 1;
   result.minAngleOffSharpCorners = 29.9;  // a small angle elsewhere too
   EXPECT_FALSE(meetsMinAngleBar(result, input));
+  const QualityMetrics square;  // no sharp corner: no less than 30
   result.minAngleOffSharpCorners = 35.0;
-  result.minAngle = 19.99;  // a corner sharper than any of the input's
-  EXPECT_FALSE(meetsMinAngleBar(result, input));
-  input.sharpestBorderCorner = 90.0;  // a square's corners ask for no less than 30
+  EXPECT_FALSE(meetsMinAngleBar(result, square));
+  result = QualityMetrics{};
   result.minAngle = 29.99;
-  EXPECT_FALSE(meetsMinAngleBar(result, input));
+  EXPECT_FALSE(meetsMinAngleBar(result, square));
   result.minAngle = 30.0;
-  EXPECT_TRUE(meetsMinAngleBar(result, input));
+  EXPECT_TRUE(meetsMinAngleBar(result, square));
   result.irregularBoundaryAware = 100;  // and barsMet counts it
-  EXPECT_EQ(barsMet(result, input), 1);
+  EXPECT_EQ(barsMet(result, square), 1);
 }

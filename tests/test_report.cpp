@@ -453,26 +453,31 @@ TEST(Report, AResultThatFoldsWhereTheInputDoesNotIsWarnedOf) {
 // CGAL's holes model clipped in half: its cut grazes a hole's rim and leaves a border corner of
 // 13 degrees, which the result keeps; the report says why no remeshing reaches 30 there.
 TEST(Report, ASmallestAngleAtTheInputsSharpBorderCornerIsExplained) {
+  const Vec3 tip(0.285, -0.658, -2.233);
   QualityMetrics before, after;
   after.minAngle = 13.0;
   after.minAngleOffSharpCorners = 35.0;
+  after.sharpCorners = {{tip, 13.0, 1, 0.05}};
   EXPECT_EQ(sharpCornerText(before, after), "");  // the input has no such corner: the result's own
-  before.sharpestBorderCorner = 13.0;
-  before.sharpestBorderCornerAt = Vec3(0.285, -0.658, -2.233);
+  before.sharpCorners = {{tip, 13.01, 4, 0.01}};
   const std::string text = sharpCornerText(before, after);
-  EXPECT_EQ(text.rfind("The input's border has a corner of 13.0 degrees at (0.285, -0.658, -2.233)", 0), 0u) << text;
+  EXPECT_EQ(text.rfind("The smallest angle, 13.0 degrees, is at a corner of the input's border (13.0 degrees at "
+                       "(0.285, -0.658, -2.233))",
+                       0),
+            0u)
+      << text;
   EXPECT_NE(text.find("no angle elsewhere is under 30"), std::string::npos) << text;
   RemeshResult r;
   r.before = before;
   r.after = after;
-  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("the 30-degree bar is out of reach"), std::string::npos);
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("no remeshing that keeps the border reaches 30"), std::string::npos);
   after.minAngleOffSharpCorners = 29.0;  // the triangles beside it squeezed too: said
   EXPECT_NE(sharpCornerText(before, after).find("elsewhere the smallest angle is 29.0 degrees"), std::string::npos)
       << sharpCornerText(before, after);
   after.minAngleOffSharpCorners = 12.5;  // smaller away from the corners: not the corner's doing
   EXPECT_EQ(sharpCornerText(before, after), "");
   after.minAngleOffSharpCorners = 35.0;
-  after.minAngle = 12.0;  // a corner sharper than the input's
+  after.minAngle = after.sharpCorners[0].degrees = 12.0;  // a corner sharper than the input's
   EXPECT_EQ(sharpCornerText(before, after), "");
   after.minAngle = 31.0;
   EXPECT_EQ(sharpCornerText(before, after), "");
