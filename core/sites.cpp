@@ -108,8 +108,9 @@ void keepBumps(const Mesh& mesh, const std::vector<int>& loop, const std::vector
 
 // Beside a corner of the border sharper than kGradedCorner degrees, the samples on its two sides
 // are spaced in a geometric progression from it, staggered between the sides, each gap about the
-// wedge's width there: a strip of triangles across the wedge then has no angle under 50 degrees
-// (20 degrees: ratio 1.43, 53 degrees), where evenly spaced samples squeeze the triangles beside
+// wedge's width there: a strip of triangles across the wedge then has no angle under about 50
+// degrees (20 degrees: ratio 1.43, 53; 30 degrees: 50; less under 11.5 degrees, where the ratio
+// is held at 1.25: 36 at 5), where evenly spaced samples squeeze the triangles beside
 // the corner's own (a 20-degree sector at 300 vertices: 22.9 degrees). Under 30 degrees only:
 // a wider corner's strip is mended by the polish's border slides (polish.h), and graded it came
 // out no better on the five clipped halves with such corners.
@@ -119,8 +120,8 @@ constexpr double kGradedCorner = 30.0;
 double gradedRatio(double cornerDegrees) { return std::max(1.25, 1 + 2.5 * std::sin(cornerDegrees * M_PI / 360)); }
 
 // The distances from such a corner of its side's graded samples, nearest first: down from
-// where the gap reaches `spacing` to half a spacing; the side arriving at the corner (`arriving`)
-// is staggered by the square root of the ratio.
+// where the gap reaches about a spacing to half a spacing; the side arriving at the corner
+// (`arriving`) is staggered by the square root of the ratio.
 std::vector<double> gradedFromCorner(double cornerDegrees, double spacing, bool arriving) {
   const double q = gradedRatio(cornerDegrees);
   std::vector<double> at;
@@ -128,6 +129,42 @@ std::vector<double> gradedFromCorner(double cornerDegrees, double spacing, bool 
   std::reverse(at.begin(), at.end());
   return at;
 }
+
+}  // namespace
+
+std::vector<double> borderSamplePositions(double length, double spacing, int pieces, double beginDegrees,
+                                          double endDegrees) {
+  std::vector<double> t;
+  const auto graded = [&](double degrees, bool arriving) {
+    if (degrees >= kGradedCorner) return std::vector<double>();
+    std::vector<double> at = gradedFromCorner(degrees, spacing, arriving);
+    at.erase(std::remove_if(at.begin(), at.end(), [&](double x) { return x > 0.5 * length; }), at.end());
+    return at;
+  };
+  std::vector<double> fromBegin = graded(beginDegrees, false), fromEnd = graded(endDegrees, true);
+  if (fromBegin.empty() && fromEnd.empty()) {
+    for (int s = 0; s < pieces; ++s) t.push_back(length * s / pieces);
+    return t;
+  }
+  // Two graded ends that meet mid-stretch (corners of different angles, a short stretch) could
+  // leave their last samples a hair apart: the farther of the two goes until they are half a
+  // spacing apart (13 and 20 degrees, 5.5 spacings apart: 0.005 spacings).
+  while (!fromBegin.empty() && !fromEnd.empty() && length - fromEnd.back() - fromBegin.back() < 0.5 * spacing)
+    (fromBegin.back() > fromEnd.back() ? fromBegin : fromEnd).pop_back();
+  // The graded samples at both ends, evenly between them (as many times more as `pieces` is
+  // more than the stretch's length in spacings).
+  const double a = fromBegin.empty() ? 0.0 : fromBegin.back();
+  const double b = length - (fromEnd.empty() ? 0.0 : fromEnd.back());
+  const int byLength = std::max(1, static_cast<int>(std::lround(length / spacing)));
+  const int middle = std::max(1, static_cast<int>(std::lround((b - a) / spacing))) * std::max(1, pieces / byLength);
+  t.push_back(0.0);
+  t.insert(t.end(), fromBegin.begin(), fromBegin.end());
+  for (int s = 1; s < middle; ++s) t.push_back(a + (b - a) * s / middle);
+  for (auto x = fromEnd.rbegin(); x != fromEnd.rend(); ++x) t.push_back(length - *x);
+  return t;
+}
+
+namespace {
 
 // Samples along the border at 3D arc-length spacing close to `spacing`, corners kept: those of
 // the surface (a border vertex where the surface's angles sum to far from 180 degrees) and
@@ -213,31 +250,12 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     // between them by over half a spacing (in the map): sites between a chord and the border
     // would lie outside the samples' polygon, in no triangle (a sphere with a small hole, on a
     // square at 2000 sites: its 3 samples made half the square a triangle, and 875 vertices).
-    // Graded beside a sharp corner of the surface at either end (not on a seam: its two copies
-    // run it in opposite directions and must be sampled alike).
-    const auto graded = [&](int corner, bool arriving) {
-      const double degrees = angles[loop[corner % n]];
-      if (!options.onSeam.empty() || degrees >= kGradedCorner) return std::vector<double>();
-      std::vector<double> at = gradedFromCorner(degrees, spacing, arriving);
-      at.erase(std::remove_if(at.begin(), at.end(), [&](double x) { return x > 0.5 * length.back(); }), at.end());
-      return at;
-    };
-    const std::vector<double> fromBegin = graded(begin, false), fromEnd = graded(end, true);
+    // Graded beside a sharp corner of the surface at either end, but not on a cut or charted
+    // surface (sampled with its seams: their two copies run a stretch in opposite directions and
+    // must be sampled alike).
+    const auto cornerAt = [&](int corner) { return options.onSeam.empty() ? angles[loop[corner % n]] : 180.0; };
     const auto targets = [&](int pieces) {
-      std::vector<double> t;
-      if (fromBegin.empty() && fromEnd.empty()) {
-        for (int s = 0; s < pieces; ++s) t.push_back(length.back() * s / pieces);
-        return t;
-      }
-      // The graded samples at both ends, evenly between them (as many more as `pieces` is).
-      const double a = fromBegin.empty() ? 0.0 : fromBegin.back();
-      const double b = length.back() - (fromEnd.empty() ? 0.0 : fromEnd.back());
-      const int middle = std::max(1, static_cast<int>(std::lround((b - a) / spacing))) * pieces / std::max(1, byLength);
-      t.push_back(0.0);
-      t.insert(t.end(), fromBegin.begin(), fromBegin.end());
-      for (int s = 1; s < middle; ++s) t.push_back(a + (b - a) * s / middle);
-      for (auto x = fromEnd.rbegin(); x != fromEnd.rend(); ++x) t.push_back(length.back() - *x);
-      return t;
+      return borderSamplePositions(length.back(), spacing, pieces, cornerAt(begin), cornerAt(end));
     };
     const auto place = [&](const std::vector<double>& targets, std::vector<Vec2>& uvs, std::vector<Vec3>& at) {
       int segment = 0;

@@ -55,6 +55,13 @@ constexpr int kSmallestRemeshedShare = 20, kMostRemeshedVertices = 1000000;
 // up a spike 10^6 tall and 1 wide took thousands for 9, in 55 s).
 constexpr int kMostBorderPerVertex = 10;
 
+// Where to sample a stretch of the border `length` long between two of its corners, as distances
+// from its start (the first is 0, the corner itself): `pieces` evenly; but beside a corner of
+// the surface under 30 degrees (`beginDegrees`, `endDegrees`: the sums of the angles at the two
+// corners), graded towards it, each gap about the wedge's width, and evenly between.
+std::vector<double> borderSamplePositions(double length, double spacing, int pieces, double beginDegrees,
+                                          double endDegrees);
+
 // Throws Error where the border takes over kMostBorderPerVertex times the vertices asked.
 InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const Domain& domain,
                           const SiteOptions& options, const std::string& name);

@@ -184,3 +184,39 @@ TEST(Sites, ASquashedBorderLeavesSitesInside) {
   for (const Vec3& p : r.output.points) top = std::max(top, p.z());
   EXPECT_GT(top, 25);
 }
+
+// A stretch of the border is sampled evenly between corners, but graded towards a corner under
+// 30 degrees: each gap about the wedge's width there, from half a spacing out.
+TEST(Sites, TheBorderIsSampledCloserTowardsASharpCorner) {
+  const std::vector<double> even = borderSamplePositions(10, 1, 10, 90, 180);
+  ASSERT_EQ(even.size(), 10u);
+  for (size_t i = 0; i < even.size(); ++i) EXPECT_DOUBLE_EQ(even[i], static_cast<double>(i));
+  const std::vector<double> graded = borderSamplePositions(10, 1, 10, 20, 180);
+  ASSERT_GT(graded.size(), 4u);
+  EXPECT_EQ(graded[0], 0.0);  // the corner itself
+  EXPECT_GE(graded[1], 0.5);
+  EXPECT_LT(graded[1], 1.0);
+  const double ratio = 1 + 2.5 * std::sin(10 * M_PI / 180);
+  EXPECT_NEAR(graded[2] / graded[1], ratio, 1e-12);  // a geometric progression from the corner
+  EXPECT_NEAR(graded[3] / graded[2], ratio, 1e-12);
+  for (size_t i = 2; i < graded.size(); ++i) {  // the gaps the wedge's width, up to about a spacing
+    EXPECT_GT(graded[i] - graded[i - 1], 0.2) << i;
+    EXPECT_LT(graded[i] - graded[i - 1], 1.5) << i;
+  }
+  EXPECT_NEAR(graded.back() + (graded.back() - graded[graded.size() - 2]), 10.0, 1e-9);  // evenly to the end
+  EXPECT_NEAR(graded[graded.size() - 1] - graded[graded.size() - 2], 1.0, 0.3);
+}
+
+// Two sharp corners of different angles at the two ends of a short stretch: their graded
+// samples met mid-stretch 0.005 spacings apart, a sliver of a border edge (found by review).
+TEST(Sites, GradedSamplesFromTwoSharpCornersKeepApart) {
+  for (const auto& [length, begin, end] : {std::tuple{5.518, 13.0, 20.0}, std::tuple{4.608, 20.0, 25.0},
+                                           std::tuple{3.0, 10.0, 29.0}, std::tuple{1.2, 20.0, 20.0}}) {
+    const std::vector<double> at = borderSamplePositions(length, 1, std::max(1, static_cast<int>(std::lround(length))), begin, end);
+    EXPECT_EQ(at[0], 0.0);
+    // No gap under the smallest a progression makes (half a spacing times its least ratio 1.25,
+    // less one).
+    for (size_t i = 1; i < at.size(); ++i) EXPECT_GE(at[i] - at[i - 1], 0.12) << length << " " << i;
+    EXPECT_GE(length - at.back(), 0.12) << length;
+  }
+}
