@@ -186,8 +186,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
   if (input_) inputTopology_ = analyzeTopology(*input_);  // before a chart or component stands for it
-  if (!result_.resampleDropped.empty())
-    runNotes_ = withoutResamplingText(result_.resampleDropped);
+  if (!result_.resampleDropped.empty()) runNotes_ = withNoteFirst(withoutResamplingText(result_.resampleDropped), "");
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
   noteFirst(slitTrialText(result_));
@@ -203,18 +202,20 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   inputCharts_ = result_.charts;
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
-    runNotes_ = chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
-                "largest chart (on its own); the input and final columns and \"show the final result\" "
-                "are the whole surface. " + runNotes_;
+    runNotes_ = withNoteFirst(chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
+                              "largest chart (on its own); the input and final columns and \"show the final result\" "
+                              "are the whole surface",
+                              runNotes_);
   } else if (result_.chartTrial) {
     noteFirst(chartTrialText(result_));  // kept as one disk, and why
   }
   if (result_.components > 1) {
     if (input_) input_ = largestComponent(*input_);  // what the panes show, and Restart steps
-    runNotes_ = meshName_ + " has " + std::to_string(result_.components) +
-                " connected components, each remeshed on its own: the panes, the iteration "
-                "column and Restart follow the largest; the input and final columns and \"show "
-                "the final result\" are all of them. " + runNotes_;
+    runNotes_ = withNoteFirst(meshName_ + " has " + std::to_string(result_.components) +
+                                  " connected components, each remeshed on its own: the panes, the iteration "
+                                  "column and Restart follow the largest; the input and final columns and \"show "
+                                  "the final result\" are all of them",
+                              runNotes_);
   }
   std::snprintf(meshPath_, sizeof meshPath_, "%s", meshName.c_str());
   std::snprintf(recordingPath_, sizeof recordingPath_, "run.lsrec");
@@ -230,7 +231,7 @@ Inspector::~Inspector() {
 }
 
 void Inspector::noteFirst(const std::string& text) {
-  if (!text.empty()) runNotes_ = text + (runNotes_.empty() ? "" : ". " + runNotes_);
+  runNotes_ = withNoteFirst(text, runNotes_);
 }
 
 namespace {
@@ -345,7 +346,7 @@ void Inspector::startSession(const Mesh& input, const std::string& name) {
   forgetResult();
   options_ = settings_;  // the Settings pane's, from now on the run's
   session_ = std::move(session);
-  runNotes_ = notes;
+  runNotes_ = withNoteFirst(notes, "");
   result_.paramUsed = session_->paramUsed();
   result_.distortion = session_->distortion();
   // The 2D pane shows the simplified input's map.
@@ -425,8 +426,10 @@ void Inspector::finishSession() {
     result_.recording = Recording{};  // the replay holds its iterations already
   } catch (const Error& e) {  // the seams did not stitch: the iterations stay to look at
     forgetResult();
-    runNotes_ = std::string(e.what()) +
-               (usesResampling(options_) ? " (inspect --no-resample makes it without the first resampling, as remesh does by itself)" : "");
+    runNotes_ = withNoteFirst(std::string(e.what()) + (usesResampling(options_) ? " (inspect --no-resample makes it without "
+                                                                                 "the first resampling, as remesh does by itself)"
+                                                                               : ""),
+                              "");
   }
   session_.reset();
 }

@@ -600,6 +600,12 @@ std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& 
          "there; " + elsewhere;
 }
 
+std::string withNoteFirst(const std::string& note, const std::string& notes) {
+  if (note.empty()) return notes;
+  const std::string sentence = note.back() == '.' ? note : note + ".";
+  return notes.empty() ? sentence : sentence + "\n" + notes;
+}
+
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
   if (asked <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};

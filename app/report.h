@@ -180,6 +180,11 @@ std::string foldsText(const QualityMetrics& before, const QualityMetrics& after)
 // else "".
 std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& after);
 
+// The inspector's notes on how a result was made: `note` put before `notes`, each a sentence on
+// a line of its own (run together as one paragraph, four trials' notes read as one, and "bars
+// met ... 2 and 2. The smallest angle" as a count). An empty note adds nothing.
+std::string withNoteFirst(const std::string& note, const std::string& notes);
+
 // Where a retriangulated result has more or fewer vertices than were asked: both counts, and
 // why; else empty.
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options);

@@ -505,3 +505,15 @@ TEST(Report, AVertexCountOtherThanAskedIsSaid) {
   options.sites.count = 0;  // none asked: as many as the input
   EXPECT_EQ(vertexCountText(r, options), "");
 }
+
+// The inspector's notes each start a line of their own, as sentences: run together, four trials'
+// notes read as one paragraph, and "bars met ... 2 and 2. The smallest angle" as a count.
+TEST(Report, EachNoteStartsALineOfItsOwn) {
+  EXPECT_EQ(withNoteFirst("", ""), "");
+  EXPECT_EQ(withNoteFirst("Kept slit open", ""), "Kept slit open.");
+  EXPECT_EQ(withNoteFirst("", "Kept slit open."), "Kept slit open.");
+  EXPECT_EQ(withNoteFirst("Warning: the result folds back on itself.", "Kept slit open."),
+            "Warning: the result folds back on itself.\nKept slit open.");
+  EXPECT_EQ(withNoteFirst("bars met 2 and 2", withNoteFirst("The smallest angle, 13.0 degrees", "")),
+            "bars met 2 and 2.\nThe smallest angle, 13.0 degrees.");
+}
