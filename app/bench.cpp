@@ -225,7 +225,8 @@ void runBench(const BenchOptions& options) {
               << format("%.3f", r.fidelity.rmsPercent) << " |\n";
   std::cout << "\nLloydscope (defaults) against CGAL on the same input: time ratio (<= 1 is the "
                "target) and the quality bar (irregular <= 15%, min >= 30 but at the input's own border "
-               "corners sharper than that, avg >= 53, Hausdorff <= CGAL's)\n\n| model | size | time ratio | quality |\n|---|---|---|---|\n"
+               "corners sharper than that, avg >= 53, Hausdorff <= CGAL's)\n\n"
+               "| model | size | time ratio | quality |\n|---|---|---|---|\n"
             << verdicts.str();
   std::cout << "\nWhere the time goes: the input (the report's Table I before), then Lloydscope's stages "
                "(defaults, ms) and CGAL's whole run. The other way: the runs a result was compared with "

@@ -584,11 +584,10 @@ std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& 
   // The smallest angle fills a corner of the border alone, at a corner of the input's (CGAL's
   // holes model clipped in half: its cut grazes a hole's rim, 13 degrees).
   if (after.minAngle >= kLeastMinAngle || after.minAngleOffSharpCorners <= after.minAngle) return "";
-  const auto corner = std::find_if(after.sharpCorners.begin(), after.sharpCorners.end(),
-                                   [](const BorderCorner& c) { return c.triangles == 1; });
+  const auto corner = std::find_if(after.sharpCorners.begin(), after.sharpCorners.end(), filledByOneTriangle);
   if (corner == after.sharpCorners.end()) return "";
-  const BorderCorner* own = inputCornerAt(before, *corner);
-  if (!own || corner->degrees < own->degrees - kCornerSlackDegrees) return "";
+  const BorderCorner* own = inputCornerKept(before, *corner);
+  if (!own) return "";
   const std::string elsewhere =
       meetsMinAngleBar(after, before) ? "no angle elsewhere is under 30 (the trials count the bar as met)"
       : after.minAngleOffSharpCorners < kLeastMinAngle

@@ -42,9 +42,10 @@ int worstTriangle(const Mesh& mesh) {
   return worst;
 }
 
-const BorderCorner* inputCornerAt(const QualityMetrics& input, const BorderCorner& corner) {
+const BorderCorner* inputCornerKept(const QualityMetrics& input, const BorderCorner& corner) {
   for (const BorderCorner& c : input.sharpCorners)
-    if ((c.at - corner.at).norm() <= 1e-6 * std::min(c.shorterEdge, corner.shorterEdge)) return &c;
+    if ((c.at - corner.at).norm() <= 1e-6 * std::min(c.shorterEdge, corner.shorterEdge))
+      return corner.degrees >= c.degrees - kCornerSlackDegrees ? &c : nullptr;
   return nullptr;
 }
 
@@ -53,9 +54,8 @@ bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input)
   if (result.minAngleOffSharpCorners < kLeastMinAngle) return false;
   bool any = false;  // the smallest angle is at one of them
   for (const BorderCorner& corner : result.sharpCorners) {
-    if (corner.triangles != 1 || corner.degrees >= kLeastMinAngle) continue;
-    const BorderCorner* own = inputCornerAt(input, corner);
-    if (!own || corner.degrees < own->degrees - kCornerSlackDegrees) return false;
+    if (!filledByOneTriangle(corner)) continue;
+    if (!inputCornerKept(input, corner)) return false;
     any = true;
   }
   return any;

@@ -60,8 +60,12 @@ constexpr double kLeastAvgMinAngle = 53.0;
 // result's sharp corners that one triangle fills, each at a corner of the input's border no
 // more than kCornerSlackDegrees wider.
 bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input);
-// The input's sharp corner at the place of the result's `corner`, if any.
-const BorderCorner* inputCornerAt(const QualityMetrics& input, const BorderCorner& corner);
+// A corner of the border under 30 degrees that one triangle fills: that triangle's angle there is
+// the corner's.
+inline bool filledByOneTriangle(const BorderCorner& c) { return c.triangles == 1 && c.degrees < kLeastMinAngle; }
+// The input's own sharp corner that the result's `corner` keeps: at the same place, and no more
+// than kCornerSlackDegrees wider; else null.
+const BorderCorner* inputCornerKept(const QualityMetrics& input, const BorderCorner& corner);
 // How many of the three a result of `input` meets.
 int barsMet(const QualityMetrics& result, const QualityMetrics& input);
 

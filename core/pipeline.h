@@ -86,15 +86,16 @@ struct SlitTrial {
   bool bothMeetTheBars() const { return slitBars == 3 && wholeBars == 3; }
   // The whole one is kept where it meets more of issue 5's bars (irregular <= 15%, smallest
   // angle >= 30 but at the input's own sharp border corners, average >= 53; barsMet); where
-  // both meet all three, where it is closer to the input
-  // (the fourth bar: CGAL's lion head at 500 vertices, slit 2.99% and 53.87 degrees against
-  // whole 3.68% and 53.99, CGAL's own 3.28%); else where its average smallest angle is larger.
+  // both meet all three, where it is closer to the input (the fourth bar: CGAL's lion head at
+  // 500 vertices, slit 2.99% and 53.87 degrees against whole 3.68% and 53.99, CGAL's own
+  // 3.28%); else where its average smallest angle is larger.
   bool wholeBetter() const;
 };
 
 // Both trials' first rule: a result that meets more of issue 5's bars that need no reference
 // (irregular at most 15%, no angle under 30 degrees but at the input's own sharp border
-// corners, an average smallest angle of 53 or more: barsMet) than another, and is at most 1.25 times as far from the input (Hausdorff), is the better.
+// corners, an average smallest angle of 53 or more: barsMet) than another, and is at most 1.25
+// times as far from the input (Hausdorff), is the better.
 // (Without the bars, CGAL's anchor at 2000 vertices kept a one cut with a 1.2 degree triangle
 // over charts with 35.3, 1.7 degrees rounder on average but 1.11 times as far; without the
 // bound on the distance, CGAL's dino would take its charts, 1.36 times as far, for the bar of
