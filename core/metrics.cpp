@@ -294,8 +294,18 @@ OneSided climbToFarthest(const Mesh& from, const Triangle& t, const Vec3& farthe
   return farthest;
 }
 
-OneSided oneSided(const Mesh& from, const SurfaceProjection& to) {
-  const Samples samples = samplePoints(from, 10000 + 10 * from.faceCount());
+// Area-weighted samples of `from`: 10,000 and ten per triangle, but ten per triangle of the two
+// surfaces' coarser one at most (twice its count, for the other at a similar size). Against `to`
+// the distance varies at the scale of `to`'s triangles; `from`'s own vertices and edges are
+// sampled however fine it is, and the climb finds the peak between samples. A 1000-vertex result
+// against a 25,905-vertex face scan: 652,000 samples -> 154,000, the Hausdorff distance the same,
+// RMS 1.7% lower (0.1566 -> 0.1539%).
+int randomSampleCount(int fromFaces, int toFaces) {
+  return 10000 + 10 * std::min(fromFaces, 2 * toFaces);
+}
+
+OneSided oneSided(const Mesh& from, const SurfaceProjection& to, int toFaces) {
+  const Samples samples = samplePoints(from, randomSampleCount(from.faceCount(), toFaces));
   const std::vector<double> squared = to.squaredDistances(samples.points);
   OneSided all;
   all.count = static_cast<int>(samples.points.size());
@@ -346,8 +356,8 @@ Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference) {
 Fidelity measureFidelity(const Mesh& mesh, const SearchableSurface& reference) {
   Fidelity f;
   if (mesh.triangles.empty() || reference.mesh.triangles.empty()) return f;
-  const OneSided fromMesh = oneSided(mesh, reference.projection),
-                 fromReference = oneSided(reference.mesh, SurfaceProjection(mesh));
+  const OneSided fromMesh = oneSided(mesh, reference.projection, reference.mesh.faceCount()),
+                 fromReference = oneSided(reference.mesh, SurfaceProjection(mesh), mesh.faceCount());
   const double diagonal = boundingBoxDiagonal(reference.mesh);
   f.samples = fromMesh.count + fromReference.count;
   f.farthestOnReference = fromReference.maxSquared > fromMesh.maxSquared;

@@ -168,6 +168,25 @@ TEST(Fidelity, SamplesEveryVertexAndEdgeOnce) {
   EXPECT_EQ(measureFidelity(triangle, triangle).samples, 2 * (3 + 3 + 10010));
 }
 
+// A fine surface is sampled at the coarser one's scale (its vertices and edges all the same): a
+// 20,000-triangle grid against a 32-triangle one took 200,000 random samples (ten per triangle),
+// now 640 (twenty per triangle of the coarse one) and 10,000. The farthest point between them is
+// still found: the fine grid's middle vertex raised by 0.2, where no coarse vertex is.
+TEST(Fidelity, AFineSurfaceIsSampledAtTheCoarserOnesScale) {
+  Mesh fine = test::grid(100);
+  const int middle = 50 * 101 + 50;
+  ASSERT_NEAR((fine.points[middle] - Vec3(0.5, 0.5, 0)).norm(), 0.0, 1e-12);
+  fine.points[middle].z() = 0.2;
+  const Mesh coarse = test::grid(4);
+  const int fineSamples = fine.vertexCount() + (3 * 100 * 100 + 2 * 100) + 10000 + 20 * coarse.faceCount();
+  const int coarseSamples = coarse.vertexCount() + (3 * 4 * 4 + 2 * 4) + 10000 + 10 * coarse.faceCount();
+  const Fidelity f = measureFidelity(coarse, fine);
+  EXPECT_EQ(f.samples, fineSamples + coarseSamples);
+  EXPECT_TRUE(f.farthestOnReference);
+  EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.2 / std::sqrt(2.04), 1e-9);  // the raised grid's diagonal
+  EXPECT_NEAR((f.farthestPoint - Vec3(0.5, 0.5, 0.2)).norm(), 0.0, 1e-12);
+}
+
 // The RMS distance is Metro's, one-sided over the area, the larger of the two sides: the whole
 // unit square against its half x <= 0.5 is sqrt(integral of (x - 0.5)^2 for x in 0.5..1) =
 // sqrt(1/24) from it, and the half 0 from the whole. Both sides pooled said about 0.7 of that.
