@@ -95,16 +95,19 @@ int countFoldedEdges(const Mesh& mesh) {
   return folded;
 }
 
-// The shorter of the border edges at `v` (an edge of one triangle): a scan of all the triangles,
-// made for the few sharp corners only.
-double shorterBorderEdge(const Mesh& mesh, int v) {
-  std::map<int, int> uses;  // the other end of each edge at v: its triangles
+// The shorter of the border edges (edges of one triangle) at each of `corners`, in one scan of
+// the triangles (a scan per corner took 1.1 s on a comb of 20,000 teeth).
+std::vector<double> shorterBorderEdges(const Mesh& mesh, const std::vector<int>& corners) {
+  std::vector<int> cornerOf(mesh.points.size(), -1);
+  for (size_t c = 0; c < corners.size(); ++c) cornerOf[corners[c]] = static_cast<int>(c);
+  std::vector<std::map<int, int>> uses(corners.size());  // the other end of each edge at it: its triangles
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k)
-      if (t[k] == v) ++uses[t[(k + 1) % 3]], ++uses[t[(k + 2) % 3]];
-  double shorter = std::numeric_limits<double>::infinity();
-  for (const auto& [w, count] : uses)
-    if (count == 1) shorter = std::min(shorter, (mesh.points[w] - mesh.points[v]).norm());
+      if (const int c = cornerOf[t[k]]; c >= 0) ++uses[c][t[(k + 1) % 3]], ++uses[c][t[(k + 2) % 3]];
+  std::vector<double> shorter(corners.size(), std::numeric_limits<double>::infinity());
+  for (size_t c = 0; c < corners.size(); ++c)
+    for (const auto& [w, count] : uses[c])
+      if (count == 1) shorter[c] = std::min(shorter[c], (mesh.points[w] - mesh.points[corners[c]]).norm());
   return shorter;
 }
 
@@ -150,11 +153,16 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   }
   m.avgMinAngle = sumMin / mesh.faceCount();
   m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
+  std::vector<int> corners;
   for (size_t v = 0; v < angleSum.size(); ++v) {
     if (!boundary[v]) continue;
     m.sharpestBorderCorner = std::min(m.sharpestBorderCorner, angleSum[v]);
-    if (angleSum[v] < kSharpCornerDegrees)
-      m.sharpCorners.push_back({mesh.points[v], angleSum[v], trianglesAt[v], shorterBorderEdge(mesh, static_cast<int>(v))});
+    if (angleSum[v] < kSharpCornerDegrees) corners.push_back(static_cast<int>(v));
+  }
+  const std::vector<double> shorterEdge = shorterBorderEdges(mesh, corners);
+  for (size_t c = 0; c < corners.size(); ++c) {
+    const int v = corners[c];
+    m.sharpCorners.push_back({mesh.points[v], angleSum[v], trianglesAt[v], shorterEdge[c]});
   }
   std::sort(m.sharpCorners.begin(), m.sharpCorners.end(),
             [](const BorderCorner& a, const BorderCorner& b) { return a.degrees < b.degrees; });
