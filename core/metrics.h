@@ -80,9 +80,8 @@ struct Fidelity {
   bool farthestOnReference = false;
 };
 
-// Samples each surface (vertices, edge midpoints unless it has over twice the other's triangles,
-// and area-weighted random points, fixed seed: 10,000 and ten per triangle, but twenty per
-// triangle of the other surface at most)
+// Samples each surface (vertices, edge midpoints and area-weighted random points, fixed seed:
+// 10,000 and ten per triangle, but twenty per triangle of the other surface at most)
 // and measures the distance to the other with an AABB tree, in both directions, as Metro does;
 // then searches the triangles of the farthest samples for the farthest point between them.
 // The Hausdorff distance is the larger of the two one-sided ones, the RMS distance the larger

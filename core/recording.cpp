@@ -94,8 +94,8 @@ class Reader {
 
 std::string encodePayload(const Recording& r) {
   Writer w;
-  // Its size ahead, the iterations' share exact: grown by doubling, it held up to twice that
-  // while the last doubling copied it.
+  // Its size ahead (a little over): grown by doubling, it held up to twice that while the last
+  // doubling copied it.
   size_t sites = 0;
   for (const IterationRecord& it : r.iterations) sites += it.sites.size();
   w.bytes().reserve(1024 + r.settings.size() + 24 * r.input.points.size() + 12 * r.input.triangles.size() +

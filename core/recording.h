@@ -54,7 +54,8 @@ constexpr const char* kNoIterationWhy = "every part of the mesh was kept as it i
 // Written through a temporary and renamed (writeAtomically), so an existing file is replaced
 // whole or not at all. Throws Error("<path>: ...") where the run has no iteration, or the
 // recording would not read back (loadRecording's checks): nothing is written then. Takes one
-// copy of the file's bytes beside the recording while it saves.
+// copy of the file's bytes beside the recording while it saves, and for the check one of its
+// mesh, map and first iteration.
 void saveRecording(const Recording& recording, const std::string& path);
 // The same, saved with the other files of `batch` (FileBatch, core/files.h) when it commits.
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch);

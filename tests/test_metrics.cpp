@@ -168,24 +168,54 @@ TEST(Fidelity, SamplesEveryVertexAndEdgeOnce) {
   EXPECT_EQ(measureFidelity(triangle, triangle).samples, 2 * (3 + 3 + 10010));
 }
 
-// A fine surface is sampled at the coarser one's scale (its vertices all the same): a 20,000-
-// triangle grid against a 32-triangle one took 200,000 random samples (ten per triangle), now
-// 640 (twenty per triangle of the coarse one) and 10,000, and its 30,200 edges' midpoints are
-// left out. The farthest point between them is still found: the fine grid's middle vertex raised
-// by 0.2, where no coarse vertex is.
+// A fine surface is sampled at the coarser one's scale (its vertices and edges all the same): a
+// 20,000-triangle grid against a 32-triangle one took 200,000 random samples (ten per triangle),
+// now 640 (twenty per triangle of the coarse one) and 10,000. The farthest point is still found:
+// the fine grid's middle vertex raised by 0.2 off the coarse grid's plane.
 TEST(Fidelity, AFineSurfaceIsSampledAtTheCoarserOnesScale) {
   Mesh fine = test::grid(100);
   const int middle = 50 * 101 + 50;
   ASSERT_NEAR((fine.points[middle] - Vec3(0.5, 0.5, 0)).norm(), 0.0, 1e-12);
   fine.points[middle].z() = 0.2;
   const Mesh coarse = test::grid(4);
-  const int fineSamples = fine.vertexCount() + 10000 + 20 * coarse.faceCount();
+  const int fineSamples = fine.vertexCount() + (3 * 100 * 100 + 2 * 100) + 10000 + 20 * coarse.faceCount();
   const int coarseSamples = coarse.vertexCount() + (3 * 4 * 4 + 2 * 4) + 10000 + 10 * coarse.faceCount();
   const Fidelity f = measureFidelity(coarse, fine);
   EXPECT_EQ(f.samples, fineSamples + coarseSamples);
   EXPECT_TRUE(f.farthestOnReference);
   EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.2 / std::sqrt(2.04), 1e-9);  // the raised grid's diagonal
   EXPECT_NEAR((f.farthestPoint - Vec3(0.5, 0.5, 0.2)).norm(), 0.0, 1e-12);
+}
+
+// A thin triangle of the input across a hole of the result, its corners on the result's border:
+// it has next to no area for the random samples, and its long edge's midpoint, a quarter from the
+// result, is where the input is farthest from it. Without the edges' midpoints (sampling a much
+// finer surface by its vertices and random points alone) it measured 0.
+TEST(Fidelity, AThinTriangleAcrossAHoleIsMeasured) {
+  const auto holed = [](int n) {
+    Mesh m = test::grid(n);
+    std::vector<Triangle> kept;
+    for (const Triangle& t : m.triangles) {
+      const Vec3 c = (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3;
+      if (std::abs(c.x() - 0.5) > 0.25 || std::abs(c.y() - 0.5) > 0.25) kept.push_back(t);
+    }
+    return assemble(kept, m.points);  // no vertex left in the hole
+  };
+  const Mesh result = holed(4);
+  Mesh input = holed(100);
+  const auto vertexAt = [&](const Vec3& p) {
+    for (int v = 0; v < input.vertexCount(); ++v)
+      if ((input.points[v] - p).norm() < 1e-12) return v;
+    return -1;
+  };
+  const int left = vertexAt({0.25, 0.5, 0}), right = vertexAt({0.75, 0.5, 0});
+  ASSERT_GE(left, 0);
+  ASSERT_GE(right, 0);
+  input.points.emplace_back(0.75, 0.500001, 0);
+  input.triangles.push_back({left, right, input.vertexCount() - 1});
+  const Fidelity f = measureFidelity(result, input);
+  EXPECT_TRUE(f.farthestOnReference);
+  EXPECT_NEAR(f.hausdorffPercent, 100.0 * 0.25 / std::sqrt(2.0), 1e-3);
 }
 
 // The RMS distance is Metro's, one-sided over the area, the larger of the two sides: the whole
