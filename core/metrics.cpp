@@ -6,6 +6,7 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -71,8 +72,7 @@ namespace {
 // Each inside edge once, from the triangle where it runs from its smaller end to its larger
 // (the other runs it back), its other triangle found among its smaller end's: no sort of all
 // the edges, as measureQuality runs for every iteration the inspector shows.
-int countFoldedEdges(const Mesh& mesh) {
-  const Rings rings(mesh);
+int countFoldedEdges(const Mesh& mesh, const Rings& rings) {
   std::vector<Vec3> normal(mesh.triangles.size(), Vec3::Zero());
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Vec3 n = faceNormal(mesh, mesh.triangles[f]);
@@ -95,19 +95,15 @@ int countFoldedEdges(const Mesh& mesh) {
   return folded;
 }
 
-// The shorter of the border edges (edges of one triangle) at each of `corners`, in one scan of
-// the triangles (a scan per corner took 1.1 s on a comb of 20,000 teeth).
-std::vector<double> shorterBorderEdges(const Mesh& mesh, const std::vector<int>& corners) {
-  std::vector<int> cornerOf(mesh.points.size(), -1);
-  for (size_t c = 0; c < corners.size(); ++c) cornerOf[corners[c]] = static_cast<int>(c);
-  std::vector<std::map<int, int>> uses(corners.size());  // the other end of each edge at it: its triangles
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      if (const int c = cornerOf[t[k]]; c >= 0) ++uses[c][t[(k + 1) % 3]], ++uses[c][t[(k + 2) % 3]];
-  std::vector<double> shorter(corners.size(), std::numeric_limits<double>::infinity());
-  for (size_t c = 0; c < corners.size(); ++c)
-    for (const auto& [w, count] : uses[c])
-      if (count == 1) shorter[c] = std::min(shorter[c], (mesh.points[w] - mesh.points[corners[c]]).norm());
+// The shorter of the border edges at `v` (edges of one triangle), from its own triangles.
+double shorterBorderEdge(const Mesh& mesh, const Rings& rings, int v) {
+  std::map<int, int> uses;  // the other end of each edge at v: its triangles
+  for (int i = rings.offset[v]; i < rings.offset[v + 1]; ++i)
+    for (int w : mesh.triangles[rings.faces[i]])
+      if (w != v) ++uses[w];
+  double shorter = std::numeric_limits<double>::infinity();
+  for (const auto& [w, count] : uses)
+    if (count == 1) shorter = std::min(shorter, (mesh.points[w] - mesh.points[v]).norm());
   return shorter;
 }
 
@@ -137,14 +133,13 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   double sumMin = 0;
   int under30 = 0;
   std::vector<double> angleSum(mesh.points.size(), 0.0);
-  std::vector<int> trianglesAt(mesh.points.size(), 0);
-  std::vector<double> smallest;
-  smallest.reserve(mesh.triangles.size());
+  std::vector<std::array<double, 3>> cornerAngles;
+  cornerAngles.reserve(mesh.triangles.size());
   for (const Triangle& t : mesh.triangles) {
     const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-    for (int k = 0; k < 3; ++k) angleSum[t[k]] += angles[k], ++trianglesAt[t[k]];
+    cornerAngles.push_back(angles);
+    for (int k = 0; k < 3; ++k) angleSum[t[k]] += angles[k];
     const double lo = *std::min_element(angles.begin(), angles.end());
-    smallest.push_back(lo);
     m.minAngle = std::min(m.minAngle, lo);
     m.maxAngle = std::max(m.maxAngle, *std::max_element(angles.begin(), angles.end()));
     sumMin += lo;
@@ -153,32 +148,25 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   }
   m.avgMinAngle = sumMin / mesh.faceCount();
   m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
-  std::vector<int> corners;
+  const Rings rings(mesh);
+  std::vector<bool> filledCorner(mesh.points.size(), false);  // filledByOneTriangle
   for (size_t v = 0; v < angleSum.size(); ++v) {
     if (!boundary[v]) continue;
     m.sharpestBorderCorner = std::min(m.sharpestBorderCorner, angleSum[v]);
-    if (angleSum[v] < kSharpCornerDegrees) corners.push_back(static_cast<int>(v));
-  }
-  const std::vector<double> shorterEdge = shorterBorderEdges(mesh, corners);
-  for (size_t c = 0; c < corners.size(); ++c) {
-    const int v = corners[c];
-    m.sharpCorners.push_back({mesh.points[v], angleSum[v], trianglesAt[v], shorterEdge[c]});
+    if (angleSum[v] >= kSharpCornerDegrees) continue;
+    const BorderCorner corner{mesh.points[v], angleSum[v], rings.offset[v + 1] - rings.offset[v],
+                              shorterBorderEdge(mesh, rings, static_cast<int>(v))};
+    filledCorner[v] = filledByOneTriangle(corner);
+    m.sharpCorners.push_back(corner);
   }
   std::sort(m.sharpCorners.begin(), m.sharpCorners.end(),
             [](const BorderCorner& a, const BorderCorner& b) { return a.degrees < b.degrees; });
-  const auto sharpCorner = [&](int v) { return boundary[v] && trianglesAt[v] == 1 && angleSum[v] < kLeastMinAngle; };
   m.minAngleOffSharpCorners = 180;
-  for (int f = 0; f < m.faces; ++f) {
-    const Triangle& t = mesh.triangles[f];
-    if (!sharpCorner(t[0]) && !sharpCorner(t[1]) && !sharpCorner(t[2])) {
-      m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, smallest[f]);
-      continue;
-    }
-    const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  for (int f = 0; f < m.faces; ++f)
     for (int k = 0; k < 3; ++k)
-      if (!sharpCorner(t[k])) m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, angles[k]);
-  }
-  m.foldedEdges = countFoldedEdges(mesh);
+      if (!filledCorner[mesh.triangles[f][k]])
+        m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, cornerAngles[f][k]);
+  m.foldedEdges = countFoldedEdges(mesh, rings);
   return m;
 }
 
