@@ -318,28 +318,21 @@ TEST(Quality, MeasuresTheSharpCornersOfTheBorder) {
   EXPECT_NEAR(q.sharpCorners[0].shorterEdge, 1.0, 1e-12);
 }
 
-// Each corner's own shorter border edge, the corners found in one scan of the triangles: a strip
+// Each corner's own shorter border edge, read from its own triangles: a strip
 // with three teeth on top, of widths 1, 2 and 0.5 and height 4 (tips of 14.3, 28.1 and 7.2
 // degrees); each tooth's shorter border edge is its side, sqrt(4^2 + (w/2)^2).
 TEST(Quality, EachSharpCornerHasItsOwnShorterBorderEdge) {
   const double widths[3] = {1, 2, 0.5};
+  // Points 0-3 along y = 0, 4-7 along y = 1 (the teeth's bases), 8-10 the tips.
   Mesh comb;
-  double x = 0;
-  for (double w : widths) {
-    const int a = comb.vertexCount();
-    comb.points.insert(comb.points.end(), {{x, 0, 0}, {x + w, 0, 0}, {x + w, 1, 0}, {x, 1, 0}, {x + w / 2, 5, 0}});
-    comb.triangles.insert(comb.triangles.end(), {{a, a + 1, a + 2}, {a, a + 2, a + 3}, {a + 3, a + 2, a + 4}});
-    x += w;
+  double x[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 3; ++i) x[i + 1] = x[i] + widths[i];
+  for (double y : {0.0, 1.0})
+    for (double xi : x) comb.points.emplace_back(xi, y, 0);
+  for (int i = 0; i < 3; ++i) {
+    comb.points.emplace_back(x[i] + widths[i] / 2, 5, 0);
+    comb.triangles.insert(comb.triangles.end(), {{i, i + 1, i + 5}, {i, i + 5, i + 4}, {i + 4, i + 5, 8 + i}});
   }
-  // The teeth's bases share their sides: weld the points at one place.
-  comb = assemble(comb.triangles, comb.points);
-  for (int v = comb.vertexCount() - 1; v >= 0; --v)
-    for (int w = 0; w < v; ++w)
-      if ((comb.points[v] - comb.points[w]).norm() < 1e-12)
-        for (Triangle& t : comb.triangles)
-          for (int& c : t)
-            if (c == v) c = w;
-  comb = assemble(comb.triangles, comb.points);
   const QualityMetrics q = measureQuality(comb);
   ASSERT_EQ(q.sharpCorners.size(), 3u);  // sharpest first: the widths 0.5, 1, 2
   const double sorted[3] = {0.5, 1, 2};
