@@ -438,8 +438,9 @@ class AngleRaiser {
     double bestScore = before;
     Vec3 best = start;
     const Vec3 across = up.unitOrthogonal(), along = up.cross(across);
-    const SurfaceProjection& surface = close().projection();
-    Vec3 near = surface.closestPoint(start);  // the searches start from the last point found
+    // Every point tried is within a few steps of start: searched over the triangles near it.
+    const SurfaceProjection::Nearby surface = close().projection().nearby(start, spacing);
+    Vec3 near = close().projection().closestPoint(start);  // the searches start from the last point found
     for (double step = 0.25 * spacing; step > 0.01 * spacing; step *= 0.5) {
       for (bool better = true; better;) {  // steps this long while one of 8 directions gains
         better = false;

@@ -101,6 +101,43 @@ std::vector<double> SurfaceProjection::squaredDistances(const std::vector<Vec3>&
   return squared;
 }
 
+SurfaceProjection::Nearby SurfaceProjection::nearby(const Vec3& centre, double reach) const {
+  Nearby n;
+  n.surface_ = this;
+  n.centre_ = centre;
+  n.reach_ = reach;
+  std::vector<AabbTree::Primitive_id> found;
+  const CGAL::Bbox_3 box(centre.x() - reach, centre.y() - reach, centre.z() - reach, centre.x() + reach,
+                         centre.y() + reach, centre.z() + reach);
+  tree_->tree.all_intersected_primitives(box, std::back_inserter(found));
+  for (const auto& id : found) {
+    const CGAL::Bbox_3 b = id->bbox();
+    n.triangles_.push_back(static_cast<int>(id - tree_->triangles.cbegin()));
+    n.low_.emplace_back(b.xmin(), b.ymin(), b.zmin());
+    n.high_.emplace_back(b.xmax(), b.ymax(), b.zmax());
+  }
+  return n;
+}
+
+Vec3 SurfaceProjection::Nearby::closestPoint(const Vec3& p, const Vec3& onSurface) const {
+  const Kernel kernel;
+  const Point3 q = point(p);
+  Point3 best = point(onSurface);  // as the tree's search: a triangle replaces it only if closer
+  double bestSquared = CGAL::squared_distance(q, best);
+  for (size_t i = 0; i < triangles_.size(); ++i) {
+    const Vec3 outsideBox = (low_[i] - p).cwiseMax(p - high_[i]).cwiseMax(0.0);
+    if (outsideBox.squaredNorm() > bestSquared) continue;
+    const Point3 c = kernel.construct_projected_point_3_object()(surface_->tree_->triangles[triangles_[i]], q);
+    if (kernel.compare_distance_3_object()(q, c, best) == CGAL::SMALLER) {
+      best = c;
+      bestSquared = CGAL::squared_distance(q, c);
+    }
+  }
+  const double radius = std::sqrt(bestSquared) * (1 + 1e-9);
+  if (((p - centre_).cwiseAbs().array() + radius <= reach_).all()) return Vec3(best.x(), best.y(), best.z());
+  return surface_->closestPoint(p, onSurface);
+}
+
 template <class Fn>
 void SurfaceProjection::inSpatialOrder(const std::vector<Vec3>& points, int threadCount, const Fn& fn) const {
   if (points.size() < 16) {  // a handful (a local check in the polish): ordering them costs more than it saves

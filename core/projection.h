@@ -28,6 +28,25 @@ class SurfaceProjection {
   std::vector<Vec3> closestPoints(const std::vector<Vec3>& points, int threads = 0) const;
   std::vector<double> squaredDistances(const std::vector<Vec3>& points) const;
 
+  // The surface's triangles that meet the cube of half-side `reach` around `centre`, for many
+  // searches near it (a vertex's moves in the last steps).
+  class Nearby {
+   public:
+    // closestPoint(p, onSurface) over those triangles alone (several times faster on a
+    // surface as fine as the result); over the whole tree where the sphere around p through
+    // the point found leaves the cube (a triangle outside it could be closer).
+    Vec3 closestPoint(const Vec3& p, const Vec3& onSurface) const;
+
+   private:
+    friend class SurfaceProjection;
+    const SurfaceProjection* surface_ = nullptr;
+    Vec3 centre_;
+    double reach_ = 0;
+    std::vector<int> triangles_;
+    std::vector<Vec3> low_, high_;  // each triangle's bounding box
+  };
+  Nearby nearby(const Vec3& centre, double reach) const;
+
  private:
   // fn(i, closest point to points[i]) for each, the points taken in a spatial (Morton) order
   // and each search started from the closest point of the one before: a tight first bound

@@ -255,6 +255,29 @@ TEST(Projection, BatchAndStartedQueriesAnswerEachPointAsASingleQueryDoes) {
   for (size_t i = 0; i < few.size(); ++i) ASSERT_EQ(fewSquared[i], squared[i]) << i;
 }
 
+// A search over the triangles near a point answers as the whole tree does: near it, from its own
+// few triangles; farther (the sphere through the point found leaves the cube), from the tree.
+// Without that fallback, points far from the cube got the closest point within it (0.69 off).
+TEST(Projection, ANearbySearchAnswersAsTheWholeTreeNearAndFar) {
+  const Mesh surface = test::torus();
+  const SurfaceProjection projection(surface);
+  const Vec3 centre = surface.points[40];
+  const SurfaceProjection::Nearby nearby = projection.nearby(centre, 0.4);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  int far = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double spread = i < 1000 ? 0.3 : 5.0;  // the cube's half-side is 0.4
+    const Vec3 p = centre + spread * Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+    const Vec3 hint = projection.closestPoint(centre + 0.1 * Vec3(coordinate(rng), coordinate(rng), 0.0));
+    const Vec3 expected = projection.closestPoint(p);
+    far += (expected - centre).cwiseAbs().maxCoeff() > 0.4;
+    // Within rounding: two triangles may give a point on their shared edge a bit apart.
+    ASSERT_LT((nearby.closestPoint(p, hint) - expected).norm(), 1e-12) << i;
+  }
+  EXPECT_GT(far, 500);
+}
+
 // The three bars that need no reference, at their edges: 15% irregular is met, 30 and 53
 // degrees are met; a hair beyond each is not. Every trial's choice (slit or whole, with or
 // without the first pass, one disk or charts) counts them.
