@@ -103,39 +103,42 @@ std::vector<double> SurfaceProjection::squaredDistances(const std::vector<Vec3>&
 
 SurfaceProjection::Nearby SurfaceProjection::nearby(const Vec3& centre, double reach) const {
   Nearby n;
-  n.surface_ = this;
-  n.centre_ = centre;
-  n.reach_ = reach;
+  n.tree_ = tree_.get();
+  n.low_ = centre - Vec3::Constant(reach);
+  n.high_ = centre + Vec3::Constant(reach);
   std::vector<AabbTree::Primitive_id> found;
-  const CGAL::Bbox_3 box(centre.x() - reach, centre.y() - reach, centre.z() - reach, centre.x() + reach,
-                         centre.y() + reach, centre.z() + reach);
-  tree_->tree.all_intersected_primitives(box, std::back_inserter(found));
+  const CGAL::Bbox_3 cube(n.low_.x(), n.low_.y(), n.low_.z(), n.high_.x(), n.high_.y(), n.high_.z());
+  tree_->tree.all_intersected_primitives(cube, std::back_inserter(found));
   for (const auto& id : found) {
     const CGAL::Bbox_3 b = id->bbox();
     n.triangles_.push_back(static_cast<int>(id - tree_->triangles.cbegin()));
-    n.low_.emplace_back(b.xmin(), b.ymin(), b.zmin());
-    n.high_.emplace_back(b.xmax(), b.ymax(), b.zmax());
+    n.triangleLow_.emplace_back(b.xmin(), b.ymin(), b.zmin());
+    n.triangleHigh_.emplace_back(b.xmax(), b.ymax(), b.zmax());
   }
   return n;
 }
 
-Vec3 SurfaceProjection::Nearby::closestPoint(const Vec3& p, const Vec3& onSurface) const {
+Vec3 SurfaceProjection::Nearby::closestPoint(const Vec3& p, const Vec3& onSurface, bool* searchedTree) const {
   const Kernel kernel;
   const Point3 q = point(p);
-  Point3 best = point(onSurface);  // as the tree's search: a triangle replaces it only if closer
+  // As the tree's search: from the hint, each triangle's point taken unless farther (ties go to
+  // the later one, in the tree's order, which all_intersected_primitives keeps).
+  Point3 best = point(onSurface);
   double bestSquared = CGAL::squared_distance(q, best);
   for (size_t i = 0; i < triangles_.size(); ++i) {
-    const Vec3 outsideBox = (low_[i] - p).cwiseMax(p - high_[i]).cwiseMax(0.0);
-    if (outsideBox.squaredNorm() > bestSquared) continue;
-    const Point3 c = kernel.construct_projected_point_3_object()(surface_->tree_->triangles[triangles_[i]], q);
-    if (kernel.compare_distance_3_object()(q, c, best) == CGAL::SMALLER) {
+    const Vec3 outsideBox = (triangleLow_[i] - p).cwiseMax(p - triangleHigh_[i]).cwiseMax(0.0);
+    if (outsideBox.squaredNorm() > bestSquared * (1 + 1e-9)) continue;  // a tie kept, rounding and all
+    const Point3 c = kernel.construct_projected_point_3_object()(tree_->triangles[triangles_[i]], q);
+    if (kernel.compare_distance_3_object()(q, c, best) != CGAL::LARGER) {
       best = c;
       bestSquared = CGAL::squared_distance(q, c);
     }
   }
-  const double radius = std::sqrt(bestSquared) * (1 + 1e-9);
-  if (((p - centre_).cwiseAbs().array() + radius <= reach_).all()) return Vec3(best.x(), best.y(), best.z());
-  return surface_->closestPoint(p, onSurface);
+  const Vec3 radius = Vec3::Constant(std::sqrt(bestSquared) * (1 + 1e-9));
+  const bool inside = ((p - radius).array() >= low_.array()).all() && ((p + radius).array() <= high_.array()).all();
+  if (searchedTree) *searchedTree = !inside;
+  if (!inside) best = tree_->tree.closest_point(q, point(onSurface));
+  return Vec3(best.x(), best.y(), best.z());
 }
 
 template <class Fn>

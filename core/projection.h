@@ -9,6 +9,8 @@
 namespace lloydscope {
 
 class SurfaceProjection {
+  struct Tree;
+
  public:
   explicit SurfaceProjection(const Mesh& surface);
   ~SurfaceProjection();
@@ -34,16 +36,16 @@ class SurfaceProjection {
    public:
     // closestPoint(p, onSurface) over those triangles alone (several times faster on a
     // surface as fine as the result); over the whole tree where the sphere around p through
-    // the point found leaves the cube (a triangle outside it could be closer).
-    Vec3 closestPoint(const Vec3& p, const Vec3& onSurface) const;
+    // the point found leaves the cube (a triangle outside it could be closer), which
+    // `searchedTree` tells.
+    Vec3 closestPoint(const Vec3& p, const Vec3& onSurface, bool* searchedTree = nullptr) const;
 
    private:
     friend class SurfaceProjection;
-    const SurfaceProjection* surface_ = nullptr;
-    Vec3 centre_;
-    double reach_ = 0;
+    const Tree* tree_ = nullptr;  // the projection's own, which a move of it keeps
+    Vec3 low_, high_;             // the cube, as searched
     std::vector<int> triangles_;
-    std::vector<Vec3> low_, high_;  // each triangle's bounding box
+    std::vector<Vec3> triangleLow_, triangleHigh_;  // each one's bounding box
   };
   Nearby nearby(const Vec3& centre, double reach) const;
 
@@ -54,7 +56,6 @@ class SurfaceProjection {
   template <class Fn>
   void inSpatialOrder(const std::vector<Vec3>& points, int threads, const Fn& fn) const;
 
-  struct Tree;
   std::unique_ptr<Tree> tree_;
 };
 
