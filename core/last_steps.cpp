@@ -438,7 +438,8 @@ class AngleRaiser {
     double bestScore = before;
     Vec3 best = start;
     const Vec3 across = up.unitOrthogonal(), along = up.cross(across);
-    // Every point tried is within a few steps of start: searched over the triangles near it.
+    // The points tried are near start (within a mean edge length but where the search drifts
+    // on): searched over the input's triangles there.
     const SurfaceProjection::Nearby surface = close().projection().nearby(start, spacing);
     Vec3 near = close().projection().closestPoint(start);  // the searches start from the last point found
     for (double step = 0.25 * spacing; step > 0.01 * spacing; step *= 0.5) {

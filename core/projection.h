@@ -34,10 +34,10 @@ class SurfaceProjection {
   // searches near it (a vertex's moves in the last steps).
   class Nearby {
    public:
-    // closestPoint(p, onSurface) over those triangles alone (several times faster on a
-    // surface as fine as the result); over the whole tree where the sphere around p through
-    // the point found leaves the cube (a triangle outside it could be closer), which
-    // `searchedTree` tells.
+    // closestPoint(p, onSurface) over those triangles alone; over the whole tree where the
+    // sphere around p through the point found leaves the cube (a triangle outside it could be
+    // closer), which `searchedTree` tells. (The raise of mean angles on nefertiti at 1000
+    // vertices, 45,000 points tried: 36-38 ms instead of 49-53.)
     Vec3 closestPoint(const Vec3& p, const Vec3& onSurface, bool* searchedTree = nullptr) const;
 
    private:
