@@ -23,24 +23,19 @@ EdgeFlips::EdgeFlips(Mesh& mesh, const std::vector<int>* stitched) : mesh_(mesh)
   if (stitched_)
     for (const Triangle& t : mesh_.triangles)
       for (int k = 0; k < 3; ++k) ++stitchedEdges_[stitchedEdge(t[k], t[(k + 1) % 3])];
-  faceOf_.reserve(3 * mesh_.triangles.size());
   facesOf_.resize(mesh_.vertexCount());
-  for (int f = 0; f < mesh_.faceCount(); ++f) {
-    addFace(f);
+  for (int f = 0; f < mesh_.faceCount(); ++f)
     for (int v : mesh_.triangles[f]) facesOf_[v].push_back(f);
-  }
   VertexEdges edges = vertexEdges(mesh_);
   valence_ = std::move(edges.valence);
   border_ = std::move(edges.onBoundary);
 }
 
 std::optional<EdgeFlips::Candidate> EdgeFlips::candidate(int a, int b) const {
-  const auto e1 = faceOf_.find(directed(a, b)), e2 = faceOf_.find(directed(b, a));
-  if (e1 == faceOf_.end() || e2 == faceOf_.end()) return std::nullopt;  // border, or gone
-  const int f1 = e1->second, f2 = e2->second;
+  const int f1 = faceWith(a, b), f2 = faceWith(b, a);
+  if (f1 < 0 || f2 < 0) return std::nullopt;  // border, or gone
   const int c = third(f1, a, b), d = third(f2, a, b);
-  if (c < 0 || d < 0 || c == d || faceOf_.count(directed(c, d)) || faceOf_.count(directed(d, c)))
-    return std::nullopt;
+  if (c < 0 || d < 0 || c == d || faceWith(c, d) >= 0 || faceWith(d, c) >= 0) return std::nullopt;
   if (stitched_ && ((border_[c] && border_[d]) || stitchedEdges_.count(stitchedEdge(c, d))))
     return std::nullopt;
   const Quad quad{mesh_.points[a], mesh_.points[b], mesh_.points[c], mesh_.points[d],
@@ -67,30 +62,25 @@ std::vector<std::pair<int, int>> EdgeFlips::edgesAround(std::initializer_list<in
     for (int f : facesOf_[v])
       for (int k = 0; k < 3; ++k) {
         const int a = mesh_.triangles[f][k], b = mesh_.triangles[f][(k + 1) % 3];
-        if (faceOf_.count(directed(b, a))) edges.emplace_back(std::min(a, b), std::max(a, b));
+        if (faceWith(b, a) >= 0) edges.emplace_back(std::min(a, b), std::max(a, b));
       }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;
 }
 
-void EdgeFlips::addFace(int f) {
-  for (int k = 0; k < 3; ++k)
-    faceOf_[directed(mesh_.triangles[f][k], mesh_.triangles[f][(k + 1) % 3])] = f;
-}
-
-void EdgeFlips::removeFace(int f) {
-  for (int k = 0; k < 3; ++k)
-    faceOf_.erase(directed(mesh_.triangles[f][k], mesh_.triangles[f][(k + 1) % 3]));
+int EdgeFlips::faceWith(int a, int b) const {
+  for (int f : facesOf_[a]) {
+    const Triangle& t = mesh_.triangles[f];
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == a && t[(k + 1) % 3] == b) return f;
+  }
+  return -1;
 }
 
 void EdgeFlips::replace(const Candidate& k, const Triangle& t1, const Triangle& t2, int sign) {
-  removeFace(k.f1);
-  removeFace(k.f2);
   mesh_.triangles[k.f1] = t1;
   mesh_.triangles[k.f2] = t2;
-  addFace(k.f1);
-  addFace(k.f2);
   valence_[k.a] += sign, valence_[k.b] += sign, valence_[k.c] -= sign, valence_[k.d] -= sign;
   // a leaves f2 and b f1 (or come back); c joins f2 and d f1 (or leave).
   for (auto [v, from, to] : {std::tuple{k.a, k.f2, -1}, std::tuple{k.b, k.f1, -1},

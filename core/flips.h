@@ -12,13 +12,10 @@
 #include <initializer_list>
 #include <map>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 namespace lloydscope {
-
-using EdgeKey = long long;
 
 // What a flip rule sees of edge (a, b) between triangles (a, b, c) and (b, a, d), which the
 // flip would turn into (c, a, d) and (d, b, c).
@@ -93,7 +90,6 @@ class EdgeFlips {
   std::vector<std::pair<int, int>> edgesAround(std::initializer_list<int> vertices) const;
 
  private:
-  long long directed(int a, int b) const { return static_cast<long long>(a) * mesh_.vertexCount() + b; }
   std::pair<int, int> stitchedEdge(int a, int b) const {
     const int sa = (*stitched_)[a], sb = (*stitched_)[b];
     return {std::min(sa, sb), std::max(sa, sb)};
@@ -103,15 +99,14 @@ class EdgeFlips {
       if (v != a && v != b) return v;
     return -1;
   }
-  void addFace(int f);
-  void removeFace(int f);
+  // The face with the directed edge a -> b, found among a's faces; -1 where there is none.
+  int faceWith(int a, int b) const;
   // Sets faces f1, f2 of `k` to t1, t2; `sign` -1 for the flip, +1 for its undoing.
   void replace(const Candidate& k, const Triangle& t1, const Triangle& t2, int sign);
 
   Mesh& mesh_;
   const std::vector<int>* stitched_;
   std::map<std::pair<int, int>, int> stitchedEdges_;  // each triangle side counted once
-  std::unordered_map<EdgeKey, int> faceOf_;            // directed edge a -> b to its face
   std::vector<std::vector<int>> facesOf_;              // each vertex's faces
   std::vector<int> valence_;
   std::vector<bool> border_;
