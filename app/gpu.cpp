@@ -8,12 +8,6 @@
 
 namespace lloydscope::gpu {
 
-void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS)
-    throw GpuError(std::string("Vulkan: ") + what + " failed (VkResult " + std::to_string(result) +
-                   ")");
-}
-
 namespace {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,

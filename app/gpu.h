@@ -14,7 +14,19 @@ namespace lloydscope::gpu {
 struct GpuError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-void check(VkResult result, const char* what);
+inline void check(VkResult result, const char* what) {
+  if (result != VK_SUCCESS)
+    throw GpuError(std::string("Vulkan: ") + what + " failed (VkResult " + std::to_string(result) + ")");
+}
+// What vkAcquireNextImageKHR or vkQueuePresentKHR says of a window's swapchain: true where it
+// no longer fits the window and is to be made again (out of date; or suboptimal, which still
+// shows the frame), false where it fits. Any other failure (the surface or the device lost)
+// throws: ignored, it left the next frame waiting on a semaphore that nothing would signal.
+inline bool swapchainOutOfDate(VkResult result, const char* what) {
+  if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return true;
+  check(result, what);
+  return false;
+}
 
 struct Buffer {
   VkBuffer buffer = VK_NULL_HANDLE;

@@ -36,6 +36,10 @@ struct Swapchain {
   std::vector<VkImage> images;
   std::vector<VkImageView> views;
   std::vector<VkFramebuffer> framebuffers;
+  // Signalled when an image's frame is drawn, waited on by its presentation: one per image,
+  // because a present holds its semaphore until the image comes back, which may be after the
+  // next frame is submitted (one for all was signalled again while still waited on).
+  std::vector<VkSemaphore> rendered;
   gpu::Image depth;
   bool readable = false;  // frames can be copied out (for exports)
 
@@ -92,6 +96,10 @@ struct Swapchain {
       VkFramebuffer framebuffer;
       gpu::check(vkCreateFramebuffer(gpu.device, &fb, nullptr, &framebuffer), "creating a framebuffer");
       framebuffers.push_back(framebuffer);
+      VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+      VkSemaphore semaphore;
+      gpu::check(vkCreateSemaphore(gpu.device, &semaphoreInfo, nullptr, &semaphore), "creating a semaphore");
+      rendered.push_back(semaphore);
     }
   }
 
@@ -99,6 +107,7 @@ struct Swapchain {
     vkDeviceWaitIdle(gpu.device);
     for (VkFramebuffer f : framebuffers) vkDestroyFramebuffer(gpu.device, f, nullptr);
     for (VkImageView v : views) vkDestroyImageView(gpu.device, v, nullptr);
+    for (VkSemaphore s : rendered) vkDestroySemaphore(gpu.device, s, nullptr);
     gpu.destroy(depth);
     if (swapchain) vkDestroySwapchainKHR(gpu.device, swapchain, nullptr);
     *this = Swapchain{};
@@ -312,9 +321,8 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     gpu::initImGuiRenderer(gpu, pass, static_cast<uint32_t>(chain.images.size()));
 
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    VkSemaphore acquired, rendered;
+    VkSemaphore acquired;
     vkCreateSemaphore(gpu.device, &semaphoreInfo, nullptr, &acquired);
-    vkCreateSemaphore(gpu.device, &semaphoreInfo, nullptr, &rendered);
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VkFence done;
     vkCreateFence(gpu.device, &fenceInfo, nullptr, &done);
@@ -331,24 +339,23 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
       Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
       inspector.setWake(glfwPostEmptyEvent);  // thread-safe: ends the wait for events
       view.applyTo(inspector);
+      bool outOfDate = false;  // the swapchain no longer fits the window
       while (!glfwWindowShouldClose(window)) {
         awaitNextFrame(window, inspector);
         int w, h;
         glfwGetFramebufferSize(window, &w, &h);
         if (w == 0 || h == 0) continue;  // minimized
-        if (static_cast<uint32_t>(w) != chain.extent.width ||
+        if (outOfDate || static_cast<uint32_t>(w) != chain.extent.width ||
             static_cast<uint32_t>(h) != chain.extent.height) {
           chain.destroy(gpu);
           chain.create(gpu, surface, pass, format, window);
         }
         uint32_t index;
-        VkResult r = vkAcquireNextImageKHR(gpu.device, chain.swapchain, UINT64_MAX, acquired,
-                                           VK_NULL_HANDLE, &index);
-        if (r == VK_ERROR_OUT_OF_DATE_KHR) {
-          chain.destroy(gpu);
-          chain.create(gpu, surface, pass, format, window);
-          continue;
-        }
+        const VkResult acquiredResult = vkAcquireNextImageKHR(gpu.device, chain.swapchain, UINT64_MAX,
+                                                              acquired, VK_NULL_HANDLE, &index);
+        outOfDate = gpu::swapchainOutOfDate(acquiredResult, "acquiring a swapchain image");
+        // Suboptimal gives an image still, drawn and shown before the chain is made again.
+        if (acquiredResult == VK_ERROR_OUT_OF_DATE_KHR) continue;  // no image to draw into
         deliverInput(window);
         ImGui_ImplVulkan_NewFrame();
         ImGui_ImplGlfw_NewFrame();
@@ -371,15 +378,15 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
         submit.commandBufferCount = 1;
         submit.pCommandBuffers = &cmd;
         submit.signalSemaphoreCount = 1;
-        submit.pSignalSemaphores = &rendered;
+        submit.pSignalSemaphores = &chain.rendered[index];
         gpu::check(vkQueueSubmit(gpu.queue, 1, &submit, done), "submitting a frame");
         VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
         present.waitSemaphoreCount = 1;
-        present.pWaitSemaphores = &rendered;
+        present.pWaitSemaphores = &chain.rendered[index];
         present.swapchainCount = 1;
         present.pSwapchains = &chain.swapchain;
         present.pImageIndices = &index;
-        vkQueuePresentKHR(gpu.queue, &present);
+        outOfDate |= gpu::swapchainOutOfDate(vkQueuePresentKHR(gpu.queue, &present), "presenting a frame");
         inspector.prepare();  // while lavapipe renders: the iteration the slider chose
         vkWaitForFences(gpu.device, 1, &done, VK_TRUE, UINT64_MAX);  // one frame in flight
         vkResetFences(gpu.device, 1, &done);
@@ -393,7 +400,6 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     gpu.destroy(pixels);
     vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
     vkDestroyFence(gpu.device, done, nullptr);
-    vkDestroySemaphore(gpu.device, rendered, nullptr);
     vkDestroySemaphore(gpu.device, acquired, nullptr);
     ImGui_ImplVulkan_Shutdown();
     ImGui_ImplGlfw_Shutdown();

@@ -729,3 +729,21 @@ TEST(Inspector, APaneIsClearedOnlyWithinTheFramebuffer) {
   EXPECT_EQ(c.extent.width, 70u);
   EXPECT_EQ(c.extent.height, 10u);
 }
+
+// The window's acquire and present results: a swapchain out of date or suboptimal is made
+// again, and any other failure says what failed (both results were ignored: a lost surface
+// left the next frame waiting on a semaphore nothing would signal).
+TEST(Inspector, TheWindowRemakesAnOutdatedSwapchainAndReportsOtherFailures) {
+  EXPECT_FALSE(gpu::swapchainOutOfDate(VK_SUCCESS, "presenting a frame"));
+  EXPECT_TRUE(gpu::swapchainOutOfDate(VK_ERROR_OUT_OF_DATE_KHR, "presenting a frame"));
+  EXPECT_TRUE(gpu::swapchainOutOfDate(VK_SUBOPTIMAL_KHR, "acquiring a swapchain image"));
+  for (VkResult failure : {VK_ERROR_SURFACE_LOST_KHR, VK_ERROR_DEVICE_LOST, VK_TIMEOUT, VK_NOT_READY}) {
+    try {
+      gpu::swapchainOutOfDate(failure, "presenting a frame");
+      ADD_FAILURE() << "no error for VkResult " << failure;
+    } catch (const gpu::GpuError& e) {
+      EXPECT_NE(std::string(e.what()).find("presenting a frame failed (VkResult " + std::to_string(failure)),
+                std::string::npos) << e.what();
+    }
+  }
+}
