@@ -164,12 +164,12 @@ class StaysClose {
     strayAnywhere_ = kStrayAnywhere * farthestChordPoint(m, projection_, all);
     // The input's vertices by the result's triangle nearest them; flips and moves keep each
     // triangle's place in the list.
-    const SurfaceProjection result(m);
+    std::vector<double> squared;
+    const std::vector<int> under = SurfaceProjection(m).closestTriangles(surface.points, squared);
     inputUnder_.resize(m.faceCount());
     for (int i = 0; i < surface.vertexCount(); ++i) {
-      double squared;
-      inputUnder_[result.closestTriangle(surface.points[i], &squared)].push_back(i);
-      uncoveredAnywhere_ = std::max(uncoveredAnywhere_, kStrayAnywhere * std::sqrt(squared));
+      inputUnder_[under[i]].push_back(i);
+      uncoveredAnywhere_ = std::max(uncoveredAnywhere_, kStrayAnywhere * std::sqrt(squared[i]));
     }
   }
 

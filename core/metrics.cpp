@@ -250,7 +250,8 @@ constexpr int kTrianglesSearched = 64;
 // diagonal at the farthest of 30,000 samples, 1.163% at the point between them).
 OneSided climbToFarthest(const Mesh& from, const Triangle& t, const Vec3& farthestSample, const SurfaceProjection& to) {
   const Vec3 &p0 = from.points[t[0]], e1 = from.points[t[1]] - p0, e2 = from.points[t[2]] - p0;
-  const auto squaredAt = [&](double a, double b) { return to.squaredDistance(p0 + a * e1 + b * e2); };
+  Vec3 near = to.closestPoint(farthestSample);  // each search starts from the point found before
+  const auto squaredAt = [&](double a, double b) { return to.squaredDistance(p0 + a * e1 + b * e2, near); };
   // From the triangle's farthest sample, or a grid point farther still.
   Eigen::Matrix2d gram;
   gram << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);

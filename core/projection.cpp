@@ -84,6 +84,12 @@ double SurfaceProjection::squaredDistance(const Vec3& p) const {
   return tree_->tree.squared_distance(point(p));
 }
 
+double SurfaceProjection::squaredDistance(const Vec3& p, Vec3& onSurface) const {
+  const Point3 c = tree_->tree.closest_point(point(p), point(onSurface));
+  onSurface = Vec3(c.x(), c.y(), c.z());
+  return CGAL::squared_distance(point(p), c);
+}
+
 Vec3 SurfaceProjection::closestPoint(const Vec3& p, const Vec3& onSurface) const {
   const Point3 c = tree_->tree.closest_point(point(p), point(onSurface));
   return Vec3(c.x(), c.y(), c.z());
@@ -91,14 +97,24 @@ Vec3 SurfaceProjection::closestPoint(const Vec3& p, const Vec3& onSurface) const
 
 std::vector<Vec3> SurfaceProjection::closestPoints(const std::vector<Vec3>& points, int threads) const {
   std::vector<Vec3> closest(points.size());
-  inSpatialOrder(points, threads, [&](size_t i, const Point3& c) { closest[i] = Vec3(c.x(), c.y(), c.z()); });
+  inSpatialOrder(points, threads, [&](size_t i, const Point3& c, int) { closest[i] = Vec3(c.x(), c.y(), c.z()); });
   return closest;
 }
 
 std::vector<double> SurfaceProjection::squaredDistances(const std::vector<Vec3>& points) const {
   std::vector<double> squared(points.size());
-  inSpatialOrder(points, 0, [&](size_t i, const Point3& c) { squared[i] = CGAL::squared_distance(point(points[i]), c); });
+  inSpatialOrder(points, 0, [&](size_t i, const Point3& c, int) { squared[i] = CGAL::squared_distance(point(points[i]), c); });
   return squared;
+}
+
+std::vector<int> SurfaceProjection::closestTriangles(const std::vector<Vec3>& points, std::vector<double>& squared) const {
+  std::vector<int> closest(points.size());
+  squared.resize(points.size());
+  inSpatialOrder(points, 0, [&](size_t i, const Point3& c, int triangle) {
+    closest[i] = triangle;
+    squared[i] = CGAL::squared_distance(point(points[i]), c);
+  });
+  return closest;
 }
 
 SurfaceProjection::Nearby SurfaceProjection::nearby(const Vec3& centre, double reach) const {
@@ -143,8 +159,11 @@ Vec3 SurfaceProjection::Nearby::closestPoint(const Vec3& p, const Vec3& onSurfac
 
 template <class Fn>
 void SurfaceProjection::inSpatialOrder(const std::vector<Vec3>& points, int threadCount, const Fn& fn) const {
+  const auto found = [&](size_t i, const AabbTree::Point_and_primitive_id& c) {
+    fn(i, c.first, static_cast<int>(c.second - tree_->triangles.cbegin()));
+  };
   if (points.size() < 16) {  // a handful (a local check in the polish): ordering them costs more than it saves
-    for (size_t i = 0; i < points.size(); ++i) fn(i, tree_->tree.closest_point(point(points[i])));
+    for (size_t i = 0; i < points.size(); ++i) found(i, tree_->tree.closest_point_and_primitive(point(points[i])));
     return;
   }
   const std::vector<size_t> order = mortonOrder(points);
@@ -153,10 +172,10 @@ void SurfaceProjection::inSpatialOrder(const std::vector<Vec3>& points, int thre
                                               : std::max(1u, std::thread::hardware_concurrency());
   parallelFor(order.size(), threads, [&](size_t begin, size_t end) {
     // The search is exact whatever the hint: only its speed depends on it.
-    Point3 hint = tree_->tree.closest_point(point(points[order[begin]]));
+    auto hint = tree_->tree.closest_point_and_primitive(point(points[order[begin]]));
     for (size_t i = begin; i < end; ++i) {
-      hint = tree_->tree.closest_point(point(points[order[i]]), hint);
-      fn(order[i], hint);
+      hint = tree_->tree.closest_point_and_primitive(point(points[order[i]]), hint);
+      found(order[i], hint);
     }
   });
 }

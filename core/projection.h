@@ -24,11 +24,17 @@ class SurfaceProjection {
   // the squared distance to it.
   int closestTriangle(const Vec3& p, double* squaredDistance = nullptr) const;
   double squaredDistance(const Vec3& p) const;  // thread-safe, as closestPoint
+  // The same, the search started from `onSurface` as closestPoint(p, onSurface) does, which
+  // then holds the point found: for searches in turn along a path (the climb to the farthest
+  // point of a triangle in the Hausdorff distance).
+  double squaredDistance(const Vec3& p, Vec3& onSurface) const;
 
   // closestPoint, squaredDistance of each, several times faster for many points (inSpatialOrder),
   // split over `threads` threads (0: all cores; one under a thousand points).
   std::vector<Vec3> closestPoints(const std::vector<Vec3>& points, int threads = 0) const;
   std::vector<double> squaredDistances(const std::vector<Vec3>& points) const;
+  // closestTriangle of each, the same way (the squared distances in `squared`).
+  std::vector<int> closestTriangles(const std::vector<Vec3>& points, std::vector<double>& squared) const;
 
   // The surface's triangles that meet the cube of half-side `reach` around `centre`, for many
   // searches near it (a vertex's moves in the last steps).
@@ -50,9 +56,9 @@ class SurfaceProjection {
   Nearby nearby(const Vec3& centre, double reach) const;
 
  private:
-  // fn(i, closest point to points[i]) for each, the points taken in a spatial (Morton) order
-  // and each search started from the closest point of the one before: a tight first bound
-  // prunes most of the tree.
+  // fn(i, closest point to points[i], the index of its triangle) for each, the points taken
+  // in a spatial (Morton) order and each search started from the closest point of the one
+  // before: a tight first bound prunes most of the tree.
   template <class Fn>
   void inSpatialOrder(const std::vector<Vec3>& points, int threads, const Fn& fn) const;
 

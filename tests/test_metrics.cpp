@@ -242,17 +242,36 @@ TEST(Projection, BatchAndStartedQueriesAnswerEachPointAsASingleQueryDoes) {
   for (Vec3& p : points) p = Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
   const std::vector<double> squared = projection.squaredDistances(points);
   const std::vector<Vec3> closest = projection.closestPoints(points);
+  std::vector<double> triangleSquared;
+  const std::vector<int> triangle = projection.closestTriangles(points, triangleSquared);
   ASSERT_EQ(squared.size(), points.size());
   ASSERT_EQ(closest.size(), points.size());
+  ASSERT_EQ(triangle.size(), points.size());
   for (size_t i = 0; i < points.size(); ++i) {
     ASSERT_EQ(squared[i], projection.squaredDistance(points[i])) << i;
     ASSERT_EQ(closest[i], projection.closestPoint(points[i])) << i;
+    // The triangle that holds the closest point: where that is on an edge or a corner, the
+    // search may name any triangle there (the one started from another point's may differ).
+    Mesh held;
+    held.points = surface.points;
+    held.triangles = {surface.triangles.at(triangle[i])};
+    ASSERT_EQ(SurfaceProjection(held).squaredDistance(points[i]), squared[i]) << i;
+    ASSERT_EQ(triangleSquared[i], squared[i]) << i;
     if (i > 0) ASSERT_EQ(projection.closestPoint(points[i], closest[i - 1]), closest[i]) << i;  // from another's
+    Vec3 onSurface = closest[i > 0 ? i - 1 : 0];  // the same, and the point found given back
+    ASSERT_EQ(projection.squaredDistance(points[i], onSurface), squared[i]) << i;
+    ASSERT_EQ(onSurface, closest[i]) << i;
   }
   EXPECT_TRUE(projection.squaredDistances({}).empty());
   const std::vector<Vec3> few(points.begin(), points.begin() + 10);  // taken one by one
   const std::vector<double> fewSquared = projection.squaredDistances(few);
-  for (size_t i = 0; i < few.size(); ++i) ASSERT_EQ(fewSquared[i], squared[i]) << i;
+  std::vector<double> fewTriangleSquared;
+  const std::vector<int> fewTriangles = projection.closestTriangles(few, fewTriangleSquared);
+  for (size_t i = 0; i < few.size(); ++i) {
+    ASSERT_EQ(fewSquared[i], squared[i]) << i;
+    ASSERT_EQ(fewTriangles[i], projection.closestTriangle(few[i])) << i;
+    ASSERT_EQ(fewTriangleSquared[i], squared[i]) << i;
+  }
 }
 
 // A search over the triangles near a point answers as the whole tree does: near it, from its own
