@@ -18,7 +18,7 @@ PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgt
 # the lion (5 boundary loops), whose charts' seams meet its border close together; the camel,
 # the bull, the triceratops and the armadillo clipped in half are disks with limbs and horns.
 CGAL_SAMPLES=(nefertiti mushroom three_peaks lion-head mannequin-devil eight elephant femur cow
-              triceratops lion camel bull armadillo)
+              triceratops lion camel bull armadillo man)
 
 install_missing() {
   local missing=()

@@ -455,6 +455,11 @@ void measureFidelityOf(RemeshResult& result, const PreparedInput& input) {
   result.ms.total += ms;
 }
 
+// remeshCharts' refusal where its charts, small ones merged into their neighbours, come to one.
+struct OneChartCoversIt : Error {
+  using Error::Error;
+};
+
 }  // namespace
 
 // Each chart gets its share of the vertices by area and half its seam samples more (each is
@@ -470,7 +475,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   result.ms.simplify = stage.lap();
   const int asked = verticesAsked(options) > 0 ? verticesAsked(options) : mesh.vertexCount();
   const Charts charts = splitIntoCharts(mesh, asked, charting);
-  if (charts.charts.size() < 2) throw Error(name + ": one chart covers it");
+  if (charts.charts.size() < 2) throw OneChartCoversIt(name + ": one chart covers it");
   const double area = surfaceArea(mesh);
   const double spacing = equilateralEdgeLength(area, asked);
   result.ms.cut = stage.lap();
@@ -531,6 +536,29 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
 
 namespace {
 
+// remeshCharts, and where its charts fail, again with smaller ones allowed (a chart too small
+// for its share of the vertices is merged into a neighbour, ChartOptions::smallestShare, and the
+// union can bend more than any map of it holds, or leave seams that do not stitch: CGAL's bull
+// clipped at 70% of its height, the camel clipped so, the man clipped front to back), down to
+// a quarter of the share at first. With `evenOneChart`, also where the charts came to one: where
+// the one disk failed, any charts are better than none; where it holds, the surface is one
+// chart at this size (a tall cone of 33 vertices, in 5 smaller charts, had 87). The last
+// failure is thrown.
+RemeshResult remeshChartsSmallerWhereTheyFail(const Mesh& input, const RemeshOptions& options, const std::string& name,
+                                              const PreparedInput& prepared, bool evenOneChart) {
+  constexpr int kSmallestChartShare = 5;
+  for (ChartOptions charting;; charting.smallestShare /= 2) {
+    const bool last = charting.smallestShare / 2 < kSmallestChartShare;
+    try {
+      return remeshCharts(input, options, name, &prepared, charting);
+    } catch (const OneChartCoversIt&) {
+      if (last || !evenOneChart) throw;
+    } catch (const Error&) {
+      if (last) throw;
+    }
+  }
+}
+
 // The surface remeshed chart by chart too (remeshCharts), and the charts kept in `kept`'s place
 // if ChartTrial::chartsBetter(); both are measured against the input to tell. Where no
 // conformal map of the one disk holds (LSCM folds or its border overlaps itself, and a map
@@ -543,7 +571,7 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
   RemeshOptions once = options;
   once.measureFidelity = false;
   try {
-    RemeshResult charted = remeshCharts(input, once, name, &prepared);
+    RemeshResult charted = remeshChartsSmallerWhereTheyFail(input, once, name, prepared, /*evenOneChart=*/false);
     measureFidelityOf(kept, prepared);
     measureFidelityOf(charted, prepared);
     ChartTrial trial;
@@ -568,29 +596,22 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
 // Where the one cut fails (every map of it folds or collapses: a badly shaped input whose
 // protrusions the slits do not all reach, as CGAL's bull clipped lengthwise, 3 of 98 clipped
 // halves of CGAL's samples), the surface chart by chart: each chart is nearly flat, and its own
-// projection holds. A chart too small for its share of the vertices is merged into a neighbour
-// (ChartOptions::smallestShare), and the union can bend more than any map of it holds (CGAL's
-// bull clipped at 70% of its height, at 500 vertices: a leg's charts merged into one whose
-// normals spread over 170 degrees, and even Tutte's map collapsed triangles of it) or leave
-// seams that do not stitch (the camel clipped so); where the charts fail, smaller ones are
-// allowed, down to kSmallestChartShare. If they all fail, the one cut's error stands.
+// projection holds (at 500 vertices, a leg of the bull clipped at 70% of its height was one
+// chart whose normals spread over 170 degrees, and even Tutte's map collapsed triangles of it:
+// smaller charts hold). If they all fail, the one cut's error stands.
 RemeshResult chartsInstead(const Mesh& input, const RemeshOptions& options, const std::string& name,
                            const PreparedInput& prepared, const Error& oneCut) {
-  constexpr int kSmallestChartShare = 5;
-  for (ChartOptions charting;; charting.smallestShare /= 2) {
-    try {
-      RemeshResult charted = remeshCharts(input, options, name, &prepared, charting);
-      charted.chartTrial = ChartTrial{};
-      charted.chartTrial->charts = charted.charts;
-      charted.chartTrial->chartsAvgMinAngle = charted.after.avgMinAngle;
-      charted.chartTrial->chartsBars = barsMet(charted.after, charted.before);
-      charted.chartTrial->oneCutFailed = problemOf(oneCut, name);
-      return charted;
-    } catch (const Error& e) {
-      // Both ways said: the one disk's problem alone hid why the charts failed too.
-      if (charting.smallestShare / 2 < kSmallestChartShare)
-        throw Error(std::string(oneCut.what()) + "; chart by chart it failed too: " + problemOf(e, name));
-    }
+  try {
+    RemeshResult charted = remeshChartsSmallerWhereTheyFail(input, options, name, prepared, /*evenOneChart=*/true);
+    charted.chartTrial = ChartTrial{};
+    charted.chartTrial->charts = charted.charts;
+    charted.chartTrial->chartsAvgMinAngle = charted.after.avgMinAngle;
+    charted.chartTrial->chartsBars = barsMet(charted.after, charted.before);
+    charted.chartTrial->oneCutFailed = problemOf(oneCut, name);
+    return charted;
+  } catch (const Error& e) {
+    // Both ways said: the one disk's problem alone hid why the charts failed too.
+    throw Error(std::string(oneCut.what()) + "; chart by chart it failed too: " + problemOf(e, name));
   }
 }
 
