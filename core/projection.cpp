@@ -85,9 +85,8 @@ double SurfaceProjection::squaredDistance(const Vec3& p) const {
 }
 
 double SurfaceProjection::squaredDistance(const Vec3& p, Vec3& onSurface) const {
-  const Point3 c = tree_->tree.closest_point(point(p), point(onSurface));
-  onSurface = Vec3(c.x(), c.y(), c.z());
-  return CGAL::squared_distance(point(p), c);
+  onSurface = closestPoint(p, onSurface);
+  return CGAL::squared_distance(point(p), point(onSurface));
 }
 
 Vec3 SurfaceProjection::closestPoint(const Vec3& p, const Vec3& onSurface) const {
