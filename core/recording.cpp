@@ -29,23 +29,34 @@ std::uint64_t fnv1a(const char* data, size_t size) {
 }
 
 // Little-endian host assumed (x86-64, arm64); the format stores native doubles and integers.
+// Appends values' bytes; or, counting, only how many they would be (a first pass that sizes
+// the buffer: grown by doubling, it held up to twice the payload while the last doubling
+// copied it).
 class Writer {
  public:
+  explicit Writer(bool counting = false) : counting_(counting) {}
   template <class T>
   void put(const T& value) {
-    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
+    putBytes(&value, sizeof(T));
+  }
+  void putBytes(const void* data, size_t size) {
+    if (counting_) counted_ += size;
+    else bytes_.append(static_cast<const char*>(data), size);
   }
   void putString(const std::string& s) {
     put<std::uint32_t>(static_cast<std::uint32_t>(s.size()));
-    bytes_ += s;
+    putBytes(s.data(), s.size());
   }
   void putPoints(const std::vector<Vec2>& points) {
     put<std::uint32_t>(static_cast<std::uint32_t>(points.size()));
     for (const Vec2& p : points) put(p.x()), put(p.y());
   }
   std::string& bytes() { return bytes_; }
+  size_t counted() const { return counted_; }
 
  private:
+  bool counting_;
+  size_t counted_ = 0;
   std::string bytes_;
 };
 
@@ -92,15 +103,7 @@ class Reader {
   const std::string& path_;
 };
 
-std::string encodePayload(const Recording& r) {
-  Writer w;
-  // Its size ahead (a little over): grown by doubling, it held up to twice that while the last
-  // doubling copied it.
-  size_t sites = 0;
-  for (const IterationRecord& it : r.iterations) sites += it.sites.size();
-  w.bytes().reserve(1024 + r.settings.size() + 24 * r.input.points.size() + 12 * r.input.triangles.size() +
-                    16 * (r.uv.size() + r.fixedSites.size()) + 24 * r.density.size() + 4 * r.movableVertex.size() +
-                    8 * r.sharedSeams.size() + 52 * r.iterations.size() + 8 * sites);
+void encodeInto(Writer& w, const Recording& r) {
   w.putString(r.settings);
   w.put<std::uint8_t>(r.method == RemeshMethod::Relocate ? 0 : 1);
   w.put(r.distanceThreshold);
@@ -126,8 +129,16 @@ std::string encodePayload(const Recording& r) {
     w.put(it.fractionMoving);
     w.put(it.milliseconds);
     w.put<std::uint32_t>(static_cast<std::uint32_t>(it.sites.size()));
-    for (std::uint32_t q : it.sites.raw()) w.put(q);
+    const std::vector<std::uint32_t>& coordinates = it.sites.raw();
+    w.putBytes(coordinates.data(), coordinates.size() * sizeof(std::uint32_t));
   }
+}
+
+std::string encodePayload(const Recording& r) {
+  Writer size(/*counting=*/true), w;
+  encodeInto(size, r);
+  w.bytes().reserve(size.counted());
+  encodeInto(w, r);
   return std::move(w.bytes());
 }
 
