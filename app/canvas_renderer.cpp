@@ -106,7 +106,7 @@ void CanvasRenderer::draw(VkCommandBuffer cmd, const CanvasDraw& d) const {
     vkCmdPushConstants(cmd, pipeline->layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                        0, sizeof(Push), &push);
     vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
-    if (pipeline == &linePipeline_) vkCmdSetLineWidth(cmd, gpu_.wideLines ? d.lineWidth : 1.0f);
+    if (pipeline == &linePipeline_) vkCmdSetLineWidth(cmd, gpu_.wideLines ? d.lineWidth * gpu::pixelsPerUnit() : 1.0f);
     vkCmdDraw(cmd, count, 1, 0, 0);
   }
   // The same map as a matrix: clip = transform.xy * uv + transform.zw.

@@ -34,11 +34,11 @@ struct CanvasGeometry {
 };
 
 struct CanvasDraw {
-  float viewport[4];  // pane: x, y, width, height in framebuffer pixels
+  float viewport[4];  // pane: x, y, width, height in units of the layout
   // Screen = centre + (uv - 0.5) * scale, v pointing up.
   float centerX, centerY, scale;
   VkClearColorValue background = {{1.0f, 1.0f, 1.0f, 1.0f}};  // the pane is cleared to it
-  float lineWidth = 1.0f;  // pixels, where the device has wide lines
+  float lineWidth = 1.0f;  // units of the layout, where the device has wide lines
 };
 
 class CanvasRenderer {

@@ -379,14 +379,24 @@ void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes
 
 namespace {
 VkExtent2D gRenderArea{0, 0};
+float gPixelsPerUnit = 1.0f;
 }  // namespace
 
-void setRenderArea(VkExtent2D extent) { gRenderArea = extent; }
+void setRenderArea(VkExtent2D extent, float pixelsPerUnit) {
+  gRenderArea = extent;
+  gPixelsPerUnit = pixelsPerUnit;
+}
 
-VkRect2D withinRenderArea(const float (&rect)[4]) { return clipped(rect, gRenderArea); }
+float pixelsPerUnit() { return gPixelsPerUnit; }
+
+VkRect2D withinRenderArea(const float (&rect)[4]) {
+  const float s = gPixelsPerUnit, pixels[4] = {rect[0] * s, rect[1] * s, rect[2] * s, rect[3] * s};
+  return clipped(pixels, gRenderArea);
+}
 
 void setViewport(VkCommandBuffer cmd, const float (&rect)[4]) {
-  const VkViewport viewport{rect[0], rect[1], rect[2], rect[3], 0.0f, 1.0f};
+  const float s = gPixelsPerUnit;
+  const VkViewport viewport{rect[0] * s, rect[1] * s, rect[2] * s, rect[3] * s, 0.0f, 1.0f};
   const VkRect2D scissor = withinRenderArea(rect);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);

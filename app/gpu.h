@@ -112,7 +112,13 @@ void uploadVertices(Context& gpu, Buffer& buffer, const void* data, size_t bytes
 // The render pass's area, which a pane's scissor and clear must lie in: set as each frame's
 // pass begins. A pane beyond it (a window shrunk to 200x150 in a lesson, whose panes were laid
 // out below its foot) was cleared outside the framebuffer, and lavapipe crashed.
-void setRenderArea(VkExtent2D extent);
+// `pixelsPerUnit`: framebuffer pixels per unit of ImGui's layout (ImGuiIO's
+// DisplayFramebufferScale, 2 on a screen of twice the usual density): the panes are laid out in
+// units, and the functions below take their rectangles in units.
+void setRenderArea(VkExtent2D extent, float pixelsPerUnit);
+// The frame's pixels per unit of layout (setRenderArea): what sizes given in pixels (a dot's
+// diameter, a wire's width) are multiplied by to look the same on a denser screen.
+float pixelsPerUnit();
 // `rect` (x, y, width, height in framebuffer pixels) within `area`; empty (zero extent)
 // where they do not meet.
 inline VkRect2D clipped(const float (&rect)[4], VkExtent2D area) {
@@ -124,7 +130,7 @@ inline VkRect2D clipped(const float (&rect)[4], VkExtent2D area) {
 }
 // The same within the render area.
 VkRect2D withinRenderArea(const float (&rect)[4]);
-// Viewport and scissor to a pane: x, y, width, height in framebuffer pixels. The viewport may
+// Viewport and scissor to a pane: x, y, width, height in units of the layout. The viewport may
 // reach past the framebuffer (a pane cut by the window's edge); the scissor does not.
 void setViewport(VkCommandBuffer cmd, const float (&rect)[4]);
 // Clears a pane (in a render pass) to the given values: colour, depth or both; the part of it

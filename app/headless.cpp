@@ -4,6 +4,7 @@
 #include "gpu.h"
 #include "inspector.h"
 #include "png.h"
+#include "report.h"
 #include "stopwatch.h"
 
 #include <backends/imgui_impl_vulkan.h>
@@ -21,7 +22,9 @@ namespace {
 // buffer for the pixels.
 class OffscreenRenderer {
  public:
-  OffscreenRenderer(int width, int height, bool validation)
+  // `pixelsPerUnit`: the inspector laid out in width x height over it (ImGuiIO's
+  // DisplayFramebufferScale), as on a screen that many times as dense.
+  OffscreenRenderer(int width, int height, bool validation, float pixelsPerUnit = 1.0f)
       : width_(width), height_(height), gpu_({}, false, validation) {
     renderPass_ = gpu::createRenderPass(gpu_.device, VK_FORMAT_R8G8B8A8_UNORM,
                                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
@@ -45,10 +48,11 @@ class OffscreenRenderer {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // reproducible pictures: no saved layout
-    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+    io.DisplaySize = ImVec2(width / pixelsPerUnit, height / pixelsPerUnit);
+    io.DisplayFramebufferScale = ImVec2(pixelsPerUnit, pixelsPerUnit);
     io.DeltaTime = 1.0f / 60.0f;
     ImGui::StyleColorsLight();
-    addInspectorFonts();
+    addInspectorFonts(pixelsPerUnit);
     gpu::initImGuiRenderer(gpu_, renderPass_, 2);
   }
 
@@ -120,16 +124,20 @@ std::string pictureSizes() {
          largest;
 }
 
-void requirePictureSize(long long width, long long height) {
+void requirePictureSize(long long width, long long height, double uiScale) {
   if (width < kSmallestWidth || height < kSmallestHeight || width > kLargestSide || height > kLargestSide)
     throw Error("--size must be " + pictureSizes() + ", not '" + std::to_string(width) + "x" +
                 std::to_string(height) + "'");
+  if (width / uiScale < kSmallestWidth || height / uiScale < kSmallestHeight)
+    throw Error("--size " + std::to_string(width) + "x" + std::to_string(height) + " at --ui-scale " + format("%g", uiScale) +
+                " leaves the inspector less than " + std::to_string(kSmallestWidth) + "x" +
+                std::to_string(kSmallestHeight) + " to lay out in: a larger --size or a smaller --ui-scale");
 }
 
 void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
                       RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
-  requirePictureSize(shot.width, shot.height);
-  OffscreenRenderer renderer(shot.width, shot.height, shot.validation);
+  requirePictureSize(shot.width, shot.height, shot.uiScale);
+  OffscreenRenderer renderer(shot.width, shot.height, shot.validation, static_cast<float>(shot.uiScale));
   {
     Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result),
                         std::move(input));

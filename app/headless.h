@@ -13,8 +13,9 @@ namespace lloydscope {
 std::string pictureSizes();
 
 // Throws Error("--size must be between 960x600 and 8192x8192, not 'WxH'") for a picture size outside
-// them (renderScreenshot() and benchmarkScrub() take no other).
-void requirePictureSize(long long width, long long height);
+// them (renderScreenshot() and benchmarkScrub() take no other), or where the picture over
+// `uiScale` leaves less than 960x600 to lay the inspector out in.
+void requirePictureSize(long long width, long long height, double uiScale = 1.0);
 
 struct ScreenshotOptions {
   ExportJob picture;  // the PNG (or numbered PNGs), the pane, the iterations
@@ -22,6 +23,7 @@ struct ScreenshotOptions {
   OpeningView view;  // iteration, pinned cells and triangles, camera
   bool validation = false;
   bool timings = true;  // off: the picture depends only on the mesh and the settings
+  double uiScale = 1.0;  // pixels per unit of the layout: the picture as on a screen that many times as dense
 };
 
 struct FrameTimes {

@@ -141,7 +141,7 @@ void Inspector::recordFrame(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffe
   begin.clearValueCount = 2;
   begin.pClearValues = clear;
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  gpu::setRenderArea(extent);
+  gpu::setRenderArea(extent, ImGui::GetDrawData()->FramebufferScale.x);
   gCommandBuffer = cmd;
   ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
   vkCmdEndRenderPass(cmd);
@@ -793,9 +793,11 @@ void Inspector::frame() {
   ImFont* presentationFont = presentationFonts_[presentationFonts_[1] && textSize > 31.5f ? 1 : 0];
   const bool bigFont = presentation_ && presentationFont;
   if (bigFont) ImGui::PushFont(presentationFont);
-  ImGui::GetIO().FontGlobalScale = !presentation_ ? 1.0f
+  // The fonts are drawn at the screen's density (addInspectorFonts), the layout is in units.
+  const float unitsPerPixel = 1.0f / ImGui::GetIO().DisplayFramebufferScale.x;
+  ImGui::GetIO().FontGlobalScale = !presentation_ ? unitsPerPixel
                                    : bigFont      ? textSize / presentationFont->FontSize
-                                                  : 1.6f * textSize / 21.0f;  // ImGui's own font, 13 px
+                                                  : 1.6f * textSize / 21.0f * unitsPerPixel;  // ImGui's own font, 13 units
   // Presentation: no controls pane, a taller timeline; a lesson stage adds its caption on top.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float line = ImGui::GetTextLineHeightWithSpacing();
@@ -815,9 +817,10 @@ void Inspector::frame() {
                              {left, plotsTop, display.x - left, plotsHeight}};
   if (exportJob_) {
     const float* rect = rects[static_cast<int>(exportJob_->pane)];
-    exportRequest_ = ExportRequest{exportPath(*exportJob_, exportNext_),
-                                   {static_cast<int>(rect[0]), static_cast<int>(rect[1]),
-                                    static_cast<int>(rect[2]), static_cast<int>(rect[3])}};
+    const auto pixels = [&](int k) {  // the layout's units in the framebuffer's pixels (rounding kept off)
+      return static_cast<int>(rect[k] * ImGui::GetIO().DisplayFramebufferScale.x + 1e-3f);
+    };
+    exportRequest_ = ExportRequest{exportPath(*exportJob_, exportNext_), {pixels(0), pixels(1), pixels(2), pixels(3)}};
   }
   if (!presentation_) controlsPane(ImVec2(0, 0), ImVec2(left, display.y));
   if (shownCaption) captionPane(*shownCaption, ImVec2(left, 0), ImVec2(display.x - left, captionHeight));

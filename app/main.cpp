@@ -370,6 +370,7 @@ struct InspectCommand {
   ScreenshotOptions shot;
   std::string size, pane = "window", iterations, fill, stage;
   bool noTimings = false;
+  double uiScale = 0;  // none given: the screen's in a window, 1 in a picture
 
   void add(CLI::App& app) {
     cmd = app.add_subcommand("inspect", "Open the inspector on a mesh or a recording; with --screenshot, render it "
@@ -410,6 +411,11 @@ struct InspectCommand {
     cmd->add_option("--size", size, "Picture size WxH, " + pictureSizes() + " (default 1280x800)");
     cmd->add_flag("--validation", shot.validation, "Enable the Vulkan validation layer; fail if it reports anything");
     cmd->add_flag("--no-timings", noTimings, "Leave timings out of the picture, so that it is the same on every run");
+    cmd->add_option("--ui-scale", uiScale,
+                    "Draw the inspector this many times as large, for a screen that many times as dense as "
+                    "96 dpi (default: in a window the screen's own scale, from its Xft.dpi; in a picture 1, "
+                    "and --size is in pixels)")
+        ->check(CLI::Range(0.5, 4.0));
     addRemeshOptions(*cmd, args);
   }
 
@@ -425,6 +431,7 @@ struct InspectCommand {
 
   int run() {
     parseSize(size, shot.width, shot.height);
+    if (uiScale > 0) shot.uiScale = uiScale;
     shot.timings = !noTimings;
     shot.picture.pane = parsePane(pane);
     if (!stage.empty()) shot.view.stage = parseStage(stage);
@@ -436,8 +443,9 @@ struct InspectCommand {
     if (shot.picture.path.empty()) {
       requireDisplay();  // before minutes of work that no window would show
       RemeshResult result = openForInspection(args, *cmd, options, &input);
-      return runWindow(args.input, options, std::move(result), shot.validation, std::move(input), shot.view);
+      return runWindow(args.input, options, std::move(result), shot.validation, std::move(input), shot.view, uiScale);
     }
+    requirePictureSize(shot.width, shot.height, shot.uiScale);  // before minutes of work
     requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
     refuseReplacing(shot.picture, args.input);
     RemeshResult result = openForInspection(args, *cmd, options, &input);

@@ -1,5 +1,6 @@
 #include "marker_renderer.h"
 
+#include <algorithm>
 #include <cstdint>
 // Generated from shaders/ by glslangValidator at build time.
 #include "marker.frag.h"
@@ -22,7 +23,7 @@ MarkerRenderer::MarkerRenderer(gpu::Context& gpu, VkRenderPass renderPass, bool 
                         {2, 0, VK_FORMAT_R32_SFLOAT, offsetof(Marker, shape)},
                         {3, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(Marker, color)}},
                        sizeof(Marker), VK_PRIMITIVE_TOPOLOGY_POINT_LIST, depthTest,
-                       sizeof(float) * 16});
+                       sizeof(float) * 17});
 }
 
 MarkerRenderer::~MarkerRenderer() {
@@ -41,8 +42,12 @@ void MarkerRenderer::draw(VkCommandBuffer cmd, const float (&viewport)[4],
   if (count_ == 0) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline);
   gpu::setViewport(cmd, viewport);
+  // The diameters are in units of the layout: on a denser screen, as many pixels more.
+  std::array<float, 17> push;
+  std::copy(transform.begin(), transform.end(), push.begin());
+  push[16] = gpu::pixelsPerUnit();
   vkCmdPushConstants(cmd, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                     sizeof(float) * 16, transform.data());
+                     sizeof(push), push.data());
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &markers_.buffer, &offset);
   vkCmdDraw(cmd, count_, 1, 0, 0);

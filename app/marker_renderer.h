@@ -16,7 +16,7 @@ enum class MarkerShape { Dot, Ring, Square };
 
 struct Marker {
   float position[3];
-  float diameter;  // pixels
+  float diameter;  // units of the layout (pixels at ImGui's usual scale)
   float shape;     // MarkerShape, as the shader reads it
   uint32_t color;  // RGBA8, as ImGui's IM_COL32
 };

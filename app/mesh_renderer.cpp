@@ -93,7 +93,7 @@ void MeshRenderer::draw(VkCommandBuffer cmd, const MeshDraw& d) const {
   Push push{};
   std::memcpy(push.viewProjection, d.viewProjection.data(), sizeof(push.viewProjection));
   push.options[0] = d.wireframe ? 1.0f : 0.0f;
-  push.options[1] = d.wireWidth;
+  push.options[1] = d.wireWidth * gpu::pixelsPerUnit();
   vkCmdPushConstants(cmd, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(Push), &push);
   const VkDeviceSize offset = 0;

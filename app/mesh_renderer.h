@@ -14,9 +14,9 @@ namespace lloydscope {
 
 struct MeshDraw {
   std::array<float, 16> viewProjection;  // column-major, Vulkan clip space
-  float viewport[4];                     // x, y, width, height in framebuffer pixels
+  float viewport[4];                     // x, y, width, height in units of the layout
   bool wireframe = true;
-  float wireWidth = 1.2f;
+  float wireWidth = 1.2f;                // units of the layout
   VkClearColorValue background = {{0.93f, 0.94f, 0.96f, 1.0f}};  // the pane is cleared to it
 };
 

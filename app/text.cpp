@@ -9,9 +9,13 @@
 
 namespace lloydscope {
 
-void addInspectorFonts() {
+void addInspectorFonts(float pixelsPerUnit) {
   ImGuiIO& io = ImGui::GetIO();
-  io.Fonts->AddFontDefault();
+  ImFontConfig small;  // as AddFontDefault() without one, but its size
+  small.SizePixels = 13.0f * pixelsPerUnit;  // ImGui's own font is made for 13 px
+  small.OversampleH = small.OversampleV = 1;
+  small.PixelSnapH = true;
+  io.Fonts->AddFontDefault(&small);
   // Greek, sub- and superscripts, arrows, maths: what the captions' formulas use beyond Latin-1.
   static const ImWchar maths[] = {0x0370, 0x03FF, 0x1D62, 0x1D62, 0x2070, 0x209F, 0x2190, 0x21FF,
                                   0x2200, 0x22FF, 0x2C7C, 0x2C7C, 0};
@@ -22,10 +26,10 @@ void addInspectorFonts() {
   // caption outside presentation mode showed "c? = ? x ? dA".
   ImFontConfig merged;
   merged.MergeMode = true;
-  io.Fonts->AddFontFromFileTTF(font, 13.0f, &merged, maths);
+  io.Fonts->AddFontFromFileTTF(font, 13.0f * pixelsPerUnit, &merged, maths);
   for (float size : {21.0f, 42.0f}) {  // presentation mode's
-    io.Fonts->AddFontFromFileTTF(font, size, nullptr, latin);
-    io.Fonts->AddFontFromFileTTF(font, size, &merged, maths);
+    io.Fonts->AddFontFromFileTTF(font, size * pixelsPerUnit, nullptr, latin);
+    io.Fonts->AddFontFromFileTTF(font, size * pixelsPerUnit, &merged, maths);
   }
 }
 

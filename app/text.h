@@ -12,7 +12,10 @@ namespace lloydscope {
 // DejaVu Sans (fonts-dejavu-core) only ImGui's own font is there.
 // Fonts[0] the small one, [1] and [2] presentation mode's at 21 and 42 px (where DejaVu Sans is
 // there): the larger for large windows, so that a projector's type is drawn, not magnified.
-void addInspectorFonts();
+// Each is drawn `pixelsPerUnit` times as large (on a screen of twice the usual density, 2: see
+// ImGuiIO::DisplayFramebufferScale), and ImGuiIO::FontGlobalScale brings it back to its size in
+// the layout: sharp, not magnified.
+void addInspectorFonts(float pixelsPerUnit = 1.0f);
 
 // The size of presentation mode's type in a window `height` pixels tall: 21 px up to 800, and
 // the same part of the height above (at 2560x1600 it was a hundredth of the picture).

@@ -2,6 +2,7 @@
 
 #include "keys.h"
 #include "text.h"
+#include "ui_scale.h"
 #include "frame_pacing.h"
 #include "gpu.h"
 #include "inspector.h"
@@ -13,6 +14,7 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <cstdlib>
 #include <optional>
@@ -287,11 +289,15 @@ void requireDisplay() {
 
 int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
               bool validation, std::optional<Mesh> input,
-              const OpeningView& view) {
+              const OpeningView& view, double uiScale) {
   requireDisplay();
   if (!glfwInit()) throw Error("cannot open a window (GLFW could not start on this display)");
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-  GLFWwindow* window = glfwCreateWindow(1280, 800, "Lloydscope", nullptr, nullptr);
+  float monitorScale = 1, unused;
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) glfwGetMonitorContentScale(monitor, &monitorScale, &unused);
+  const float pixelsPerUnit = uiScale > 0 ? static_cast<float>(uiScale) : std::clamp(monitorScale, 1.0f, 4.0f);
+  GLFWwindow* window = glfwCreateWindow(static_cast<int>(std::lround(1280 * pixelsPerUnit)),
+                                        static_cast<int>(std::lround(800 * pixelsPerUnit)), "Lloydscope", nullptr, nullptr);
   if (!window) {
     glfwTerminate();
     throw Error("cannot open a window on this display");
@@ -317,7 +323,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
     ImGui::StyleColorsLight();
     ImGui_ImplGlfw_InitForVulkan(window, true);
     queueKeys(window);
-    addInspectorFonts();
+    addInspectorFonts(pixelsPerUnit);
     gpu::initImGuiRenderer(gpu, pass, static_cast<uint32_t>(chain.images.size()));
 
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
@@ -360,6 +366,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
         ImGui_ImplVulkan_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         holdMouseButtons(window);
+        layOutInUnits(pixelsPerUnit);
         ImGui::NewFrame();
         inspector.frame();
         ImGui::Render();

@@ -695,6 +695,9 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"bench-frames " + mesh + " --size 100000x100000", "--size must be between 960x600 and 8192x8192, not '100000x100000'"},
       {"inspect " + mesh + " --size 4294968256x600 --screenshot x.png", "--size must be between 960x600 and 8192x8192"},
       {"inspect " + mesh + " --size 1280x800x --screenshot x.png", "--size must look like 1280x800, not '1280x800x'"},
+      {"inspect " + mesh + " --size 1280x800 --ui-scale 2 --screenshot x.png",
+       "--size 1280x800 at --ui-scale 2 leaves the inspector less than 960x600 to lay out in"},
+      {"inspect " + mesh + " --ui-scale 5 --screenshot x.png", "--ui-scale"},
       {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
       {"inspect " + mesh + " --iterations 99999999999999999999:1 --screenshot x.png", "expected FIRST:LAST"},
       // No file name (an unset variable): the run went on and wrote nothing.

@@ -163,6 +163,42 @@ TEST(Inspector, The3DViewIsCentredUnderItsLabel) {
       << "label's box ends at " << labelBottom << ", the disc spans " << discTop << "-" << discBottom;
 }
 
+// On a screen twice as dense (--ui-scale 2, as a window takes it from the screen's Xft.dpi),
+// the inspector is the same picture drawn with twice the pixels: panes, type, dots and rings.
+// Halved, it differs from the 960x600 one on 2.9% of the pixels (the type's antialiasing).
+// Before, a 1920x1200 picture laid out 1920x1200 of 13-pixel type: 25.8%; with the 3D and 2D
+// panes' viewports left unscaled, 8.4%; with the dots and rings left their size in pixels, the
+// centroids' orange rings had 0.28 of their pixels.
+TEST(Inspector, ADenserScreenDrawsTheSamePictureWithTwiceThePixels) {
+  const std::string small = test::tempPath("scale1.png"), large = test::tempPath("scale2.png");
+  const std::string cap = test::assetPath("sphere_cap.off") + " --final --no-timings --screenshot ";
+  ASSERT_EQ(run("inspect " + cap + small + " --size 960x600"), 0);
+  ASSERT_EQ(run("inspect " + cap + large + " --size 1920x1200 --ui-scale 2"), 0);
+  const Picture a = readPng(small), b = readPng(large);
+  ASSERT_EQ(b.width, 2 * a.width);
+  ASSERT_EQ(b.height, 2 * a.height);
+  Picture halved = a;  // b, each 2x2 block of pixels averaged
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        halved.rgba[4 * (static_cast<size_t>(y) * a.width + x) + c] = static_cast<unsigned char>(
+            (b.at(2 * x, 2 * y)[c] + b.at(2 * x + 1, 2 * y)[c] + b.at(2 * x, 2 * y + 1)[c] + b.at(2 * x + 1, 2 * y + 1)[c] + 2) / 4);
+  size_t differing = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(halved.at(x, y)[c] - a.at(x, y)[c]) > 48) {
+          ++differing;
+          break;
+        }
+  EXPECT_LT(differing, a.rgba.size() / 4 * 5 / 100) << differing << " pixels differ";
+  const auto orange = [](const Picture& p) {
+    return pixelsWhere(p, [](const unsigned char* c) { return c[0] > 170 && c[1] > 40 && c[1] < 120 && c[2] < 80; });
+  };
+  ASSERT_GT(orange(a), 100);
+  EXPECT_NEAR(static_cast<double>(orange(halved)) / orange(a), 1.0, 0.4) << orange(a) << " and " << orange(halved);
+}
+
 // With the final result shown, the worst triangle pinned is the final result's, ringed over it:
 // it was the iteration's, which the final result hides (0 teal pixels).
 TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
