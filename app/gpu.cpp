@@ -389,15 +389,24 @@ void setRenderArea(VkExtent2D extent, float pixelsPerUnit) {
 
 float pixelsPerUnit() { return gPixelsPerUnit; }
 
+namespace {
+// `rect` (units of the layout) in framebuffer pixels.
+void toPixels(const float (&rect)[4], float (&pixels)[4]) {
+  for (int k = 0; k < 4; ++k) pixels[k] = rect[k] * gPixelsPerUnit;
+}
+}  // namespace
+
 VkRect2D withinRenderArea(const float (&rect)[4]) {
-  const float s = gPixelsPerUnit, pixels[4] = {rect[0] * s, rect[1] * s, rect[2] * s, rect[3] * s};
+  float pixels[4];
+  toPixels(rect, pixels);
   return clipped(pixels, gRenderArea);
 }
 
 void setViewport(VkCommandBuffer cmd, const float (&rect)[4]) {
-  const float s = gPixelsPerUnit;
-  const VkViewport viewport{rect[0] * s, rect[1] * s, rect[2] * s, rect[3] * s, 0.0f, 1.0f};
-  const VkRect2D scissor = withinRenderArea(rect);
+  float pixels[4];
+  toPixels(rect, pixels);
+  const VkViewport viewport{pixels[0], pixels[1], pixels[2], pixels[3], 0.0f, 1.0f};
+  const VkRect2D scissor = clipped(pixels, gRenderArea);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
