@@ -206,6 +206,7 @@ const Row kRows[] = {
     {"Avg. min angle (deg)", "%.1f", &QualityMetrics::avgMinAngle},
     {"Triangles under 30 deg (%)", "%.1f", &QualityMetrics::percentUnder30},
     {"Max angle (deg)", "%.1f", &QualityMetrics::maxAngle},
+    {"Curvature (60-deg defects, %)", "%.1f", &QualityMetrics::curvatureDefects},
 };
 
 void line(std::ostringstream& out, const std::string& label, const std::string& a,
@@ -228,6 +229,7 @@ nlohmann::json toJson(const QualityMetrics& m) {
           {"avg_min_angle_deg", m.avgMinAngle},
           {"percent_under_30_deg", m.percentUnder30},
           {"max_angle_deg", m.maxAngle},
+          {"curvature_defects_percent", m.curvatureDefects},
           {"angle_histogram_10deg", m.angleHistogram},
           {"folded_edges", m.foldedEdges},
           {"min_angle_off_sharp_corners_deg", m.minAngleOffSharpCorners},

@@ -148,6 +148,10 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   }
   m.avgMinAngle = sumMin / mesh.faceCount();
   m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
+  double defects = 0;  // in units of 60 degrees
+  for (size_t v = 0; v < angleSum.size(); ++v)
+    if (valence[v] > 0) defects += std::abs((boundary[v] ? 180.0 : 360.0) - angleSum[v]) / 60.0;
+  m.curvatureDefects = 100.0 * defects / used;
   const Rings rings(mesh);
   std::vector<bool> filledCorner(mesh.points.size(), false);  // filledByOneTriangle
   for (size_t v = 0; v < angleSum.size(); ++v) {

@@ -26,6 +26,17 @@ struct QualityMetrics {
   double minAngle = 0, maxAngle = 0; // degrees, over all triangles
   double avgMinAngle = 0;            // mean of each triangle's smallest angle
   double percentUnder30 = 0;         // triangles whose smallest angle is under 30 degrees
+  // How much the surface curves at the mesh's size, in valence defects per 100 vertices: the
+  // angles at an inside vertex sum to 360 degrees less its angle defect (the curvature around
+  // it), at a border vertex to 180 less its turn; each |defect| in units of 60 degrees,
+  // summed. With every angle 60 degrees a vertex of valence d has a defect of exactly
+  // |6 - d| (|4 - d| on the border) such units, so this is the irregularity (%) a mesh of the
+  // same vertices with equilateral triangles would have where each irregular vertex is one
+  // off (a 5 or a 7 inside).
+  // A remesher goes under it only by bending angles away from 60 degrees; more vertices
+  // share the same curvature and lower it. It depends on where the vertices are, not on how
+  // they are joined (a flat region adds nothing, whatever its valences).
+  double curvatureDefects = 0;
   std::array<int, 18> angleHistogram{};  // all corner angles in 10-degree bins, 0..180
   // Inside edges whose two triangles' normals turn more than kFoldDegrees: the surface folds
   // back on itself there (a fin, or a result's triangles bridging the two sides of a thin flap:

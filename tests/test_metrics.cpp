@@ -48,6 +48,44 @@ TEST(Quality, EquilateralLatticeIsPerfectInside) {
   EXPECT_EQ(q.angleHistogram[5] + q.angleHistogram[6], 3 * 54);  // 60 degrees, give or take
 }
 
+// With every angle 60 degrees, a vertex's defect is its valence's distance from 6 (4 on the
+// border) in units of 60 degrees: the curvature is the irregularity where each irregular vertex
+// is one off. The lattice's six border corners are 3s (two triangles, 120 degrees: one unit each).
+TEST(Quality, OnEquilateralTrianglesTheCurvatureIsTheIrregularity) {
+  const QualityMetrics lattice = measureQuality(hexPatch(3));
+  EXPECT_NEAR(lattice.curvatureDefects, 100.0 * 6 / 37, 1e-9);
+  EXPECT_NEAR(lattice.curvatureDefects, lattice.irregularBoundaryAware, 1e-9);
+}
+
+// Gauss-Bonnet: a closed convex surface curves by 720 degrees in all, 12 units, however it is
+// meshed and wherever its curvature is: at the cube's 8 corners (90 degrees each), or spread
+// over a sphere's vertices.
+TEST(Quality, AClosedConvexSurfaceCurvesByTwelveDefects) {
+  for (const auto& [n, onSphere] : {std::pair{3, false}, {3, true}, {6, true}}) {
+    const QualityMetrics q = measureQuality(test::cube(n, onSphere));
+    EXPECT_NEAR(q.curvatureDefects * q.vertices / 100.0, 12.0, 1e-9) << n << " " << onSphere;
+  }
+}
+
+// The curvature is the surface's at the vertices, not the triangulation's: a flat square curves
+// only at its 4 corners (90 degrees from straight: 1.5 units each), whichever diagonals split
+// its cells, while the valences, hence the irregularity, follow the diagonals.
+TEST(Quality, TheCurvatureDependsOnWhereTheVerticesAreNotOnHowTheyAreJoined) {
+  const Mesh alike = test::grid(4);
+  Mesh alternating = alike;
+  for (size_t f = 0; f < alternating.triangles.size(); f += 2) {
+    const int cell = static_cast<int>(f / 2), i = cell % 4, j = cell / 4;
+    if ((i + j) % 2 == 0) continue;
+    auto at = [](int x, int y) { return y * 5 + x; };  // the other diagonal
+    alternating.triangles[f] = {at(i, j), at(i + 1, j), at(i, j + 1)};
+    alternating.triangles[f + 1] = {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+  }
+  const QualityMetrics a = measureQuality(alike), b = measureQuality(alternating);
+  EXPECT_NEAR(a.curvatureDefects, 100.0 * 6 / 25, 1e-9);
+  EXPECT_NEAR(b.curvatureDefects, a.curvatureDefects, 1e-9);
+  EXPECT_NE(b.irregularBoundaryAware, a.irregularBoundaryAware);
+}
+
 TEST(Quality, RightIsoscelesGrid) {
   const QualityMetrics q = measureQuality(test::grid(3));
   EXPECT_NEAR(q.minAngle, 45.0, 1e-9);

@@ -517,3 +517,16 @@ TEST(Report, EachNoteStartsALineOfItsOwn) {
   EXPECT_EQ(withNoteFirst("bars met 2 and 2", withNoteFirst("The smallest angle, 13.0 degrees", "")),
             "bars met 2 and 2.\nThe smallest angle, 13.0 degrees.");
 }
+
+// The curvature per vertex is shown beside the irregularity it explains: in the before/after
+// table (remesh, metrics) and in the JSON.
+TEST(Report, TheCurvatureIsInTheTableAndTheJson) {
+  RemeshResult r;
+  r.before.curvatureDefects = 6.6;
+  r.after.curvatureDefects = 24.0;
+  const std::string table = qualityTable(r.before, r.after, nullptr);
+  EXPECT_NE(table.find("| Curvature (60-deg defects, %)      |        6.6 |       24.0 |"), std::string::npos) << table;
+  const nlohmann::json json = toJson(r, RemeshOptions{});
+  EXPECT_EQ(json["input"]["curvature_defects_percent"], 6.6);
+  EXPECT_EQ(json["output"]["curvature_defects_percent"], 24.0);
+}
