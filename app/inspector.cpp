@@ -122,6 +122,37 @@ void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, cons
   boxedText(dl, ImVec2(at.x + width + 4, at.y + height - 0.6f * font), bottom);
 }
 
+// The valence fill's kinds, from the most over a regular vertex's valence to the most under
+// it: a diverging map, red where cells have too many sides, blue too few, regular pale.
+struct ValenceKind {
+  ImU32 color;
+  const char* label;  // inside (on the border)
+};
+const std::array<ValenceKind, 5>& valenceKinds() {
+  static const std::array<ValenceKind, 5> kinds = {{{rgb(0.65f, 0.08f, 0.08f), "8+ (6+)"},
+                                                    {rgb(0.96f, 0.45f, 0.35f), "7 (5)"},
+                                                    {rgb(0.9f, 0.9f, 0.86f), "6 (4)"},
+                                                    {rgb(0.4f, 0.62f, 0.95f), "5 (3)"},
+                                                    {rgb(0.08f, 0.22f, 0.65f), "4- (2-)"}}};
+  return kinds;
+}
+ImU32 valenceColor(const SiteValence& s) {
+  if (!s.isVertex()) return rgb(0.6f, 0.6f, 0.6f);
+  return valenceKinds()[2 - std::clamp(s.offset(), -2, 2)].color;
+}
+
+// A legend for a few kinds: a swatch each, top to bottom, its label beside it.
+void drawSwatches(ImDrawList* dl, ImVec2 at, float height, const std::array<ValenceKind, 5>& kinds) {
+  const float font = ImGui::GetFontSize();
+  const float step = std::max(height / kinds.size(), 1.2f * font);
+  for (size_t i = 0; i < kinds.size(); ++i) {
+    const ImVec2 a(at.x, at.y + i * step + 1), b(at.x + kColorBarWidth, at.y + (i + 1) * step - 1);
+    dl->AddRectFilled(a, b, kinds[i].color);
+    dl->AddRect(a, b, rgb(0.2f, 0.2f, 0.2f));
+    boxedText(dl, ImVec2(b.x + 4, 0.5f * (a.y + b.y) - 0.5f * font), kinds[i].label);
+  }
+}
+
 void drawMeshCallback(const ImDrawList*, const ImDrawCmd* cmd) {
   const auto* draw = static_cast<const std::pair<const MeshRenderer*, MeshDraw>*>(cmd->UserCallbackData);
   draw->first->draw(gCommandBuffer, draw->second);
@@ -554,7 +585,8 @@ void Inspector::setCamera(const std::string& text) {
 CellFill parseCellFill(const std::string& name) {
   constexpr NamedValue<CellFill> kFillNames[] = {{CellFill::None, "none"},         {CellFill::Mass, "mass"},
                                                  {CellFill::Area, "area"},         {CellFill::Energy, "energy"},
-                                                 {CellFill::ToCentroid, "distance"}, {CellFill::Moved, "moved"}};
+                                                 {CellFill::ToCentroid, "distance"}, {CellFill::Moved, "moved"},
+                                                 {CellFill::Valence, "valence"}};
   return parseName(kFillNames, name, "fill");
 }
 
@@ -1115,10 +1147,10 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::Checkbox("parameter triangles", &triangles)) showTriangles_ = triangles;
   if (ImGui::Checkbox("site -> centroid arrows", &arrows)) showArrows_ = arrows;
   const char* fills[] = {"no fill", "mass", "area", "energy", "distance to centroid",
-                         "moved since k-1"};
+                         "moved since k-1", "valence"};
   int fill = static_cast<int>(fill_);
   if (stage_) ImGui::EndDisabled();  // a fill shows over the lesson's cells too
-  if (ImGui::Combo("cell fill", &fill, fills, 6)) fill_ = static_cast<CellFill>(fill);
+  if (ImGui::Combo("cell fill", &fill, fills, IM_ARRAYSIZE(fills))) fill_ = static_cast<CellFill>(fill);
   if (stage_) ImGui::BeginDisabled();
   ImGui::TextUnformatted("3D view");
   if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
@@ -1528,7 +1560,12 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 // What the cells' colours mean: the quantity, and its colour bar (or its one value).
 void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at) const {
   constexpr const char* kNames[] = {"", "mass M = ∫ ρ dA", "area in (u, v)", "energy ∫ ρ |x - s|² dA",
-                                    "distance |c - s|", "moved since k-1"};
+                                    "distance |c - s|", "moved since k-1", "valence inside (on the border)"};
+  if (fill_ == CellFill::Valence) {
+    boxedText(dl, at, kNames[static_cast<int>(fill_)]);
+    drawSwatches(dl, ImVec2(at.x, at.y + fillLegendTop() - 4), kFillBarHeight, valenceKinds());
+    return;
+  }
   const std::string name = std::string(kNames[static_cast<int>(fill_)]) + (fillScale_.log ? " (log scale)" : "");
   if (fillScale_.flat()) {
     boxedText(dl, at, (name + ": " + format("%.2e", fillScale_.lo) + " for every cell").c_str());
@@ -1545,36 +1582,47 @@ float Inspector::fillLegendWidth() const {
   return 10 + kColorBarWidth + 4 + ImGui::CalcTextSize("0.00e-00").x + 8;
 }
 
+// Each cell's colour under the fill: its kind of valence, or its quantity on fillScale_.
+std::vector<ImU32> Inspector::cellColors(const IterationView& view) {
+  std::vector<ImU32> colors;
+  if (fill_ == CellFill::Valence) {
+    for (const SiteValence& s : siteValences(view)) colors.push_back(valenceColor(s));
+    return colors;
+  }
+  auto quantity = [&](size_t i) {
+    const BoundedCell& c = view.cells[i];
+    switch (fill_) {
+      case CellFill::Mass: return c.mass;
+      case CellFill::Area: return c.area;
+      case CellFill::Energy: return c.energy;
+      case CellFill::Moved: return siteMoved(replay_->recording(), view.index, i);
+      default: return (c.centroid - view.sites[i]).norm();
+    }
+  };
+  // The fixed border sites never move: their distance to the centroid, 10^3 times the
+  // movable sites' at convergence, made the scale and left every movable cell one colour.
+  // They are grey, outside the scale, for the two quantities of the sites' moves.
+  const bool movableOnly = fill_ == CellFill::ToCentroid || fill_ == CellFill::Moved;
+  const size_t first = movableOnly ? replay_->recording().fixedSites.size() : 0;
+  std::vector<double> values;
+  for (size_t i = first; i < view.cells.size(); ++i) values.push_back(quantity(i));
+  fillScale_ = fillScale(values);
+  for (size_t i = 0; i < view.cells.size(); ++i)
+    colors.push_back(i < first ? rgb(0.85f, 0.85f, 0.85f) : quantityColor(fillScale_.at(quantity(i)), 0.85f));
+  return colors;
+}
+
 CanvasGeometry Inspector::buildCanvas(float scale) {
   CanvasGeometry g;
   const Domain& domain = replay_->domain();
   const IterationView& view = replay_->view(iteration_);
   const size_t fixedCount = replay_->recording().fixedSites.size();
   if (fill_ != CellFill::None && layers().cells2D) {
-    auto quantity = [&](size_t i) {
-      const BoundedCell& c = view.cells[i];
-      switch (fill_) {
-        case CellFill::Mass: return c.mass;
-        case CellFill::Area: return c.area;
-        case CellFill::Energy: return c.energy;
-        case CellFill::Moved: return siteMoved(replay_->recording(), view.index, i);
-        default: return (c.centroid - view.sites[i]).norm();
-      }
-    };
-    // The fixed border sites never move: their distance to the centroid, 10^3 times the
-    // movable sites' at convergence, made the scale and left every movable cell one colour.
-    // They are grey, outside the scale, for the two quantities of the sites' moves.
-    const bool movableOnly = fill_ == CellFill::ToCentroid || fill_ == CellFill::Moved;
-    const size_t first = movableOnly ? fixedCount : 0;
-    std::vector<double> values;
-    for (size_t i = first; i < view.cells.size(); ++i) values.push_back(quantity(i));
-    fillScale_ = fillScale(values);
-    for (size_t i = 0; i < view.cells.size(); ++i) {
-      const ImU32 color = i < first ? rgb(0.85f, 0.85f, 0.85f) : quantityColor(fillScale_.at(quantity(i)), 0.85f);
+    const std::vector<ImU32> colors = cellColors(view);
+    for (size_t i = 0; i < view.cells.size(); ++i)
       for (const CellPiece& piece : view.cells[i].pieces)
         for (size_t k = 1; k + 1 < piece.polygon.size(); ++k)
-          g.fill(piece.polygon[0], piece.polygon[k], piece.polygon[k + 1], color);
-    }
+          g.fill(piece.polygon[0], piece.polygon[k], piece.polygon[k + 1], colors[i]);
   }
   // A projector washes colours out: darker lines, stronger colours, bigger marks.
   const bool strong = presentation_;

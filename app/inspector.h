@@ -33,9 +33,10 @@ struct Camera {
 };
 
 // What colours the 2D cells: Moved is how far each site went from iteration k-1 to k, where
-// the diagram is still changing.
-enum class CellFill { None, Mass, Area, Energy, ToCentroid, Moved };
-// "none", "mass", "area", "energy", "distance" (to the centroid), "moved"; throws Error.
+// the diagram is still changing; Valence the valence of each site's vertex in the iteration's
+// result, regular or how far from it (an inside cell's number of sides).
+enum class CellFill { None, Mass, Area, Energy, ToCentroid, Moved, Valence };
+// "none", "mass", "area", "energy", "distance" (to the centroid), "moved", "valence"; throws Error.
 CellFill parseCellFill(const std::string& name);
 
 class Inspector;
@@ -190,6 +191,7 @@ class Inspector {
   const QualityMetrics& currentQuality();  // of the current iteration's result, cached
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks
+  std::vector<ImU32> cellColors(const IterationView& view);  // under the fill
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;

@@ -397,7 +397,8 @@ struct InspectCommand {
                   "Pin the triangle with the smallest angle in the result at the iteration shown (with --final: in the final result)");
     cmd->add_option("--fill", fill,
                     "What colours the 2D cells: none, mass, area, energy, distance (site to "
-                    "centroid) or moved (since the iteration before)");
+                    "centroid), moved (since the iteration before) or valence (of the site's vertex in "
+                    "the result: 5s blue, 7s red)");
     cmd->add_flag("--compare-solvers", shot.view.compareSolvers,
                   "Also relax the run's start with the other two solvers and plot their curves");
     cmd->add_flag("--presentation", shot.view.presentation,

@@ -53,10 +53,16 @@ CellDetails describeCell(const Recording& recording, const Domain& domain,
     d.surfaceArea += pieceArea * stretch;
   }
   d.moved = siteMoved(recording, view.index, cell);
-  const auto vertex = std::find(view.outputSite.begin(), view.outputSite.end(), cell);
-  if (vertex != view.outputSite.end())
-    d.valence = vertexEdges(view.output).valence[vertex - view.outputSite.begin()];
+  d.valence = siteValences(view)[cell].valence;
   return d;
+}
+
+std::vector<SiteValence> siteValences(const IterationView& view) {
+  std::vector<SiteValence> valences(view.sites.size());
+  const VertexEdges edges = vertexEdges(view.output);
+  for (size_t v = 0; v < view.outputSite.size(); ++v)
+    if (view.outputSite[v] >= 0) valences[view.outputSite[v]] = {edges.valence[v], edges.onBoundary[v]};
+  return valences;
 }
 
 double siteMoved(const Recording& recording, int k, size_t cell) {

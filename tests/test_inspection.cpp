@@ -90,6 +90,39 @@ TEST(Inspection, CellValenceIsTheSiteVertexDegreeInTheResult) {
   EXPECT_GT(inside, view.output.vertexCount() / 2);
 }
 
+// The sites' valences make the result's irregularity, relocated as retriangulated: a movable
+// site's vertex in a relocated result is the input vertex it started at (the jittered grid's
+// vertices are not in the sites' order, border first).
+TEST(Inspection, TheSitesValencesAreTheResultsIrregularity) {
+  RemeshOptions relocate = referencePreset(RemeshMethod::Relocate);
+  relocate.lloyd.maxIterations = 8;
+  relocate.measureFidelity = false;
+  const RemeshResult relocated = remesh(readMesh(test::assetPath("jittered_grid.off")).mesh, relocate, "grid");
+  for (RemeshMethod method : {RemeshMethod::Retriangulate, RemeshMethod::Relocate}) {
+    const Recording& r = method == RemeshMethod::Relocate ? relocated.recording : uniformRun(method).recording;
+    Replay replay(r);
+    const IterationView& view = replay.view(7);
+    const std::vector<SiteValence> valences = siteValences(view);
+    ASSERT_EQ(valences.size(), view.sites.size());
+    int vertices = 0, irregular = 0;
+    for (const SiteValence& s : valences) {
+      vertices += s.isVertex();
+      irregular += s.isVertex() && s.offset() != 0;
+    }
+    EXPECT_EQ(vertices, view.output.vertexCount());
+    EXPECT_GT(irregular, 0);
+    EXPECT_NEAR(100.0 * irregular / vertices, measureQuality(view.output).irregularBoundaryAware, 1e-9);
+    if (method != RemeshMethod::Relocate) continue;
+    const VertexEdges input = vertexEdges(r.input);
+    for (size_t i = 0; i < r.movableVertex.size(); ++i) {
+      const SiteValence& s = valences[r.fixedSites.size() + i];
+      EXPECT_EQ(s.valence, input.valence[r.movableVertex[i]]) << "site " << i;
+      EXPECT_FALSE(s.onBorder);
+      EXPECT_EQ(s.offset(), input.valence[r.movableVertex[i]] - 6);
+    }
+  }
+}
+
 TEST(Inspection, CellAtIsTheNearestSiteInsideTheDomain) {
   const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
   Replay replay(r);

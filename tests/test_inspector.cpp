@@ -391,7 +391,7 @@ TEST(Inspector, SelectionAndCameraErrorsAreOneLine) {
            {"--final --select-triangle 5000", "(the final result has 934, numbered from 0)"},
            {"--select-triangle 5000", "(the result at iteration 112 has 934, numbered from 0)"},
            {"--pane x", "unknown pane 'x' (window, 3d, 2d, plots)"},
-           {"--fill y", "unknown fill 'y' (none, mass, area, energy, distance, moved)"},
+           {"--fill y", "unknown fill 'y' (none, mass, area, energy, distance, moved, valence)"},
            {"--camera 'one two'", "camera"},
            {"--camera '0 0 -1 0 0 0'", "camera"},
            // read as infinite: it was refused as if not above 0
@@ -531,6 +531,12 @@ TEST(Inspector, TheLessonsLastStageShowsTheFinalResult) {
 // outside the scale: their distances made it, and every movable cell was one dark colour.
 TEST(Inspector, FillsTheCellsByTheirDistanceToTheCentroid) {
   checkScene("inspector_fill_distance.png", "--iteration 60 --fill distance --pane 2d");
+}
+
+// The cells coloured by their site's valence in the result: pale where regular, red with too
+// many sides (a 7), blue with too few (a 5); the pairs of a 5 and a 7 are Lloyd's dislocations.
+TEST(Inspector, FillsTheCellsByTheirValence) {
+  checkScene("inspector_fill_valence.png", "--fill valence --pane 2d");
 }
 
 TEST(Inspector, OpensASimplifiedMesh) {
