@@ -347,7 +347,8 @@ void Inspector::openReplay(Recording recording) {
   // lesson kept playing the old plan, clamped to iteration 0).
   if (lesson_.playing()) toggleLesson();
   exportJob_.reset();
-  uploadedIteration_ = measuredIteration_ = edgesIteration_ = -1;
+  uploaded_ = Shown3D{};
+  measuredIteration_ = edgesIteration_ = -1;
   canvasKey_ = CanvasKey{};
   iteration_ = std::max(0, replay_->iterationCount() - 1);
   fitCamera();
@@ -757,17 +758,26 @@ void Inspector::uploadMesh() {
         const Vec3 &a = cut.points[t[k]], &b = cut.points[t[(k + 1) % 3]], &c = cut.points[t[(k + 2) % 3]];
         seam3D_.push_back({a, b, (b - a).cross(c - a).normalized()});
       }
+  // With the valence fill, the irregular sites are dots of its colours: the 5s where the
+  // surface bulges, the 7s at its saddles, beside the 2D pane's cells.
   std::vector<Marker> sites;
-  if (shown.sites3D && !final)
-    for (const Vec3& s : view.liftedSites)
-      sites.push_back(marker(toGpu(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+  const Shown3D now = shown3D();
+  const std::vector<SiteValence> valences = now.valences ? siteValences(view) : std::vector<SiteValence>();
+  for (size_t i = 0; i < view.liftedSites.size() && now.sites && !final; ++i) {
+    const Vec3 at = toGpu(view.liftedSites[i]);
+    if (!valences.empty() && valences[i].isVertex() && valences[i].offset() != 0)
+      sites.push_back(marker(at, 7.0f, MarkerShape::Dot, valenceColor(valences[i])));
+    else
+      sites.push_back(marker(at, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+  }
   renderer_.uploadMarkers(sites);
-  uploadedIteration_ = iteration_;
-  uploadedInput_ = shown.input3D;
-  uploadedMapped_ = shown.mapped3D;
-  uploadedSites_ = shown.sites3D;
-  uploadedFinal_ = final;
-  uploadedMethod_ = replay_->method();
+  uploaded_ = now;
+}
+
+Inspector::Shown3D Inspector::shown3D() {
+  const Layers shown = layers();
+  return {iteration_,   shown.input3D,   shown.mapped3D, shown.sites3D, finalShown(),
+          colorByAngle_, fill_ == CellFill::Valence && shown.cells2D, replay_->method()};
 }
 
 void Inspector::showMessage(std::string text) {
@@ -1163,10 +1173,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   }
   if (result_.output.triangles.empty() || stage_) ImGui::EndDisabled();
   bool byAngle = colorByAngle_;
-  if (ImGui::Checkbox("colour by minimum angle", &byAngle)) {
-    colorByAngle_ = byAngle;
-    uploadedIteration_ = -1;
-  }
+  if (ImGui::Checkbox("colour by minimum angle", &byAngle)) colorByAngle_ = byAngle;
   ImGui::Checkbox("wireframe", &wireframe_);
   cameraControls();
   settingsControls();
@@ -1401,10 +1408,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   // lines of the final result's label covered the top of the lion's head).
   const std::string wrapped = wrappedLines(viewLabel3D(facts), extent.x - 20);
   const float labelBand = std::min(ImGui::CalcTextSize(wrapped.c_str()).y + 8, 0.3f * extent.y);
-  if (uploadedIteration_ != iteration_ || uploadedInput_ != shown.input3D || uploadedMapped_ != shown.mapped3D ||
-      uploadedSites_ != shown.sites3D || uploadedFinal_ != finalShown() ||
-      uploadedMethod_ != replay_->method())
-    uploadMesh();
+  if (!(uploaded_ == shown3D())) uploadMesh();
 
   if (clickedNotDragged()) pick3D(io.MousePos, p0, extent, labelBand);  // not the end of an orbit
   if (fitPending_) {

@@ -24,6 +24,7 @@
 #include <thread>
 #include <memory>
 #include <string>
+#include <tuple>
 
 namespace lloydscope {
 
@@ -267,8 +268,7 @@ class Inspector {
   float fillLegendTop() const;    // the 2D pane's room for the legend: its name's line
   float fillLegendWidth() const;  // and, under it, its colour bar's strip
   int iteration_ = 0;
-  int uploadedIteration_ = -1, measuredIteration_ = -1;
-  RemeshMethod uploadedMethod_ = RemeshMethod::Retriangulate;
+  int measuredIteration_ = -1;
   RemeshMethod measuredMethod_ = RemeshMethod::Retriangulate;
   QualityMetrics quality_;
   std::vector<std::pair<Vec2, Vec2>> cellEdges_;
@@ -277,8 +277,17 @@ class Inspector {
   };
   std::vector<SeamEdge> seam3D_;  // of the mesh uploaded to the 3D pane
   int edgesIteration_ = -1;
-  bool showInput_ = false, uploadedInput_ = false, uploadedMapped_ = false, uploadedSites_ = false;
-  bool showFinal_ = false, uploadedFinal_ = false;
+  bool showInput_ = false, showFinal_ = false;
+  // What the 3D pane's buffers show: uploaded again when what it should show differs.
+  struct Shown3D {
+    int iteration = -1;
+    bool input = false, mapped = false, sites = false, final = false, byAngle = false, valences = false;
+    RemeshMethod method = RemeshMethod::Retriangulate;
+    auto tied() const { return std::tie(iteration, input, mapped, sites, final, byAngle, valences, method); }
+    bool operator==(const Shown3D& o) const { return tied() == o.tied(); }
+  };
+  Shown3D uploaded_;
+  Shown3D shown3D();
   bool finalShown() const;
   const Mesh& resultIn3D() const;  // the final result or the iteration's, as the 3D view shows
   // The map is of the mesh opened itself (no first remeshing, cut or simplification).

@@ -13,8 +13,8 @@ $bin inspect assets/bumpy_disk.off --no-timings --no-resample --iteration 1 --pr
   --select-cell 400 --screenshot docs/inspector_lesson.png
 $bin inspect assets/bumpy_disk.off --no-timings --compare-solvers --pane plots \
   --screenshot docs/inspector_compared.png
-# The converged cells coloured by their site's valence: 5s and 7s in pairs where rows meet.
-$bin inspect assets/bumpy_disk.off --no-timings --fill valence --pane 2d --size 1280x800 \
+# The converged cells coloured by their site's valence, the irregular sites marked in 3D too.
+$bin inspect assets/bumpy_disk.off --no-timings --fill valence --size 1280x800 \
   --screenshot docs/inspector_valence.png
 # Results on two of the bench's inputs (CGAL's samples, extracted by ./build.sh into data/cgal).
 tmp=$(mktemp -d)

@@ -57,6 +57,14 @@ int magentaPixels(const Picture& picture) {
   return pixelsWhere(picture, [](const unsigned char* c) { return c[0] > 170 && c[1] < 60 && c[2] > 130; });
 }
 
+// Pixels of the valence fill's 7 (red, 245 115 89) and 5 (blue, 102 158 242), give or take.
+int valencePixels(const Picture& picture) {
+  auto near = [](const unsigned char* c, int r, int g, int b) {
+    return std::abs(c[0] - r) < 25 && std::abs(c[1] - g) < 25 && std::abs(c[2] - b) < 25;
+  };
+  return pixelsWhere(picture, [&](const unsigned char* c) { return near(c, 245, 115, 89) || near(c, 102, 158, 242); });
+}
+
 // Pixels of rows [firstRow, endRow) that differ between two pictures of one size: a channel
 // off by more than `tolerance` (antialiasing stays under 24).
 size_t differingPixels(const Picture& a, const Picture& b, int firstRow, int endRow, int tolerance = 24) {
@@ -537,6 +545,16 @@ TEST(Inspector, FillsTheCellsByTheirDistanceToTheCentroid) {
 // many sides (a 7), blue with too few (a 5); the pairs of a 5 and a 7 are Lloyd's dislocations.
 TEST(Inspector, FillsTheCellsByTheirValence) {
   checkScene("inspector_fill_valence.png", "--fill valence --pane 2d");
+}
+
+// With the valence fill the 3D view marks the same irregular sites, in the same colours, where
+// they are on the surface; without it, none.
+TEST(Inspector, TheValenceFillMarksTheIrregularSitesIn3D) {
+  const std::string with = test::tempPath("valence_3d.png"), without = test::tempPath("plain_3d.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --fill valence --pane 3d", with), 0);
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --pane 3d", without), 0);
+  EXPECT_GT(valencePixels(readPng(with)), 300);
+  EXPECT_LT(valencePixels(readPng(without)), 20);
 }
 
 TEST(Inspector, OpensASimplifiedMesh) {
