@@ -743,10 +743,11 @@ void Inspector::uploadMesh() {
   const Mesh& cut = !shown.input3D ? view.output : replay_->recording().input;
   seam3D_.clear();
   std::set<std::pair<int, int>> seams;
-  if (!replay_->seams().empty() && !final)  // the final result is stitched: no seam is apart
-    for (const auto& e : !shown.input3D ? seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut))
-                                        : replay_->seams())
-      seams.insert(e);
+  if (!replay_->seams().empty() && !final) {  // the final result is stitched: no seam is apart
+    const std::vector<std::pair<int, int>> apart =
+        !shown.input3D ? seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut)) : replay_->seams();
+    seams.insert(apart.begin(), apart.end());
+  }
   if (!final)  // a chart's seams with the others, either way round
     for (const auto& [a, b] : !shown.input3D ? replay_->sharedSeamsOnOutput() : replay_->recording().sharedSeams) {
       seams.insert({a, b});
@@ -758,19 +759,22 @@ void Inspector::uploadMesh() {
         const Vec3 &a = cut.points[t[k]], &b = cut.points[t[(k + 1) % 3]], &c = cut.points[t[(k + 2) % 3]];
         seam3D_.push_back({a, b, (b - a).cross(c - a).normalized()});
       }
-  // With the valence fill, the irregular sites are dots of its colours: the 5s where the
-  // surface bulges, the 7s at its saddles, beside the 2D pane's cells.
-  std::vector<Marker> sites;
+  std::vector<Marker> marks;
   const Shown3D now = shown3D();
-  const std::vector<SiteValence> valences = now.valences ? siteValences(view) : std::vector<SiteValence>();
-  for (size_t i = 0; i < view.liftedSites.size() && now.sites && !final; ++i) {
-    const Vec3 at = toGpu(view.liftedSites[i]);
-    if (!valences.empty() && valences[i].isVertex() && valences[i].offset() != 0)
-      sites.push_back(marker(at, 7.0f, MarkerShape::Dot, valenceColor(valences[i])));
-    else
-      sites.push_back(marker(at, 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+  // With the valence fill, the irregular vertices of the mesh shown are dots of its colours
+  // (an iteration's result's vertices are its lifted sites): the 5s where the surface bulges,
+  // the 7s at its saddles, beside their cells in 2D. First: a site's square at the same depth
+  // after it would cover its middle.
+  if (now.valences) {
+    const VertexEdges edges = vertexEdges(mesh);
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (const SiteValence s{edges.valence[v], edges.onBoundary[v]}; s.isVertex() && s.offset() != 0)
+        marks.push_back(marker(toGpu(mesh.points[v]), 7.0f, MarkerShape::Dot, valenceColor(s)));
   }
-  renderer_.uploadMarkers(sites);
+  if (now.sites && !final)
+    for (const Vec3& s : view.liftedSites)
+      marks.push_back(marker(toGpu(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+  renderer_.uploadMarkers(marks);
   uploaded_ = now;
 }
 

@@ -547,14 +547,17 @@ TEST(Inspector, FillsTheCellsByTheirValence) {
   checkScene("inspector_fill_valence.png", "--fill valence --pane 2d");
 }
 
-// With the valence fill the 3D view marks the same irregular sites, in the same colours, where
-// they are on the surface; without it, none.
-TEST(Inspector, TheValenceFillMarksTheIrregularSitesIn3D) {
-  const std::string with = test::tempPath("valence_3d.png"), without = test::tempPath("plain_3d.png");
-  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --fill valence --pane 3d", with), 0);
-  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --pane 3d", without), 0);
-  EXPECT_GT(valencePixels(readPng(with)), 300);
-  EXPECT_LT(valencePixels(readPng(without)), 20);
+// With the valence fill the 3D view marks the irregular vertices of the mesh it shows, the
+// iteration's result (whose vertices are the sites) or the final one, in the same colours;
+// without it, none.
+TEST(Inspector, TheValenceFillMarksTheIrregularVerticesIn3D) {
+  for (const std::string shown : {"", " --final"}) {
+    const std::string with = test::tempPath("valence_3d.png"), without = test::tempPath("plain_3d.png");
+    ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + shown + " --fill valence --pane 3d", with), 0);
+    ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + shown + " --pane 3d", without), 0);
+    EXPECT_GT(valencePixels(readPng(with)), 300) << shown;
+    EXPECT_LT(valencePixels(readPng(without)), 20) << shown;
+  }
 }
 
 TEST(Inspector, OpensASimplifiedMesh) {
