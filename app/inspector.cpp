@@ -744,8 +744,9 @@ void Inspector::uploadMesh() {
   seam3D_.clear();
   std::set<std::pair<int, int>> seams;
   if (!replay_->seams().empty() && !final) {  // the final result is stitched: no seam is apart
-    const std::vector<std::pair<int, int>> apart =
-        !shown.input3D ? seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut)) : replay_->seams();
+    std::vector<std::pair<int, int>> ofTheResult;
+    if (!shown.input3D) ofTheResult = seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut));
+    const auto& apart = shown.input3D ? replay_->seams() : ofTheResult;
     seams.insert(apart.begin(), apart.end());
   }
   if (!final)  // a chart's seams with the others, either way round
@@ -761,15 +762,19 @@ void Inspector::uploadMesh() {
       }
   std::vector<Marker> marks;
   const Shown3D now = shown3D();
-  // With the valence fill, the irregular vertices of the mesh shown are dots of its colours
-  // (an iteration's result's vertices are its lifted sites): the 5s where the surface bulges,
-  // the 7s at its saddles, beside their cells in 2D. First: a site's square at the same depth
-  // after it would cover its middle.
-  if (now.valences) {
+  // With the valence fill, the irregular sites are dots of its colours, as their cells are in
+  // 2D (the 5s where the surface bulges, the 7s at its saddles); without the sites (the final
+  // result shown), the irregular vertices of the mesh shown. First: a site's square at the
+  // same depth after it would cover its middle.
+  auto markIrregular = [&](const Vec3& at, const SiteValence& s) {
+    if (s.isVertex() && s.offset() != 0) marks.push_back(marker(toGpu(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
+  };
+  if (now.valences && now.sites && !final) {
+    const std::vector<SiteValence> valences = siteValences(view);
+    for (size_t i = 0; i < valences.size(); ++i) markIrregular(view.liftedSites[i], valences[i]);
+  } else if (now.valences) {
     const VertexEdges edges = vertexEdges(mesh);
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-      if (const SiteValence s{edges.valence[v], edges.onBoundary[v]}; s.isVertex() && s.offset() != 0)
-        marks.push_back(marker(toGpu(mesh.points[v]), 7.0f, MarkerShape::Dot, valenceColor(s)));
+    for (int v = 0; v < mesh.vertexCount(); ++v) markIrregular(mesh.points[v], {edges.valence[v], edges.onBoundary[v]});
   }
   if (now.sites && !final)
     for (const Vec3& s : view.liftedSites)

@@ -547,9 +547,8 @@ TEST(Inspector, FillsTheCellsByTheirValence) {
   checkScene("inspector_fill_valence.png", "--fill valence --pane 2d");
 }
 
-// With the valence fill the 3D view marks the irregular vertices of the mesh it shows, the
-// iteration's result (whose vertices are the sites) or the final one, in the same colours;
-// without it, none.
+// With the valence fill the 3D view marks the irregular sites, in the same colours as their
+// cells, or the final result's irregular vertices where it is shown; without it, none.
 TEST(Inspector, TheValenceFillMarksTheIrregularVerticesIn3D) {
   for (const std::string shown : {"", " --final"}) {
     const std::string with = test::tempPath("valence_3d.png"), without = test::tempPath("plain_3d.png");
