@@ -136,7 +136,7 @@ const std::array<ValenceKind, 5>& valenceKinds() {
                                                     {rgb(0.08f, 0.22f, 0.65f), "4- (2-)"}}};
   return kinds;
 }
-ImU32 valenceColor(const SiteValence& s) {
+ImU32 valenceColor(const VertexValence& s) {
   if (!s.isVertex()) return rgb(0.6f, 0.6f, 0.6f);
   return valenceKinds()[2 - std::clamp(s.offset(), -2, 2)].color;
 }
@@ -766,11 +766,11 @@ void Inspector::uploadMesh() {
   // 2D (the 5s where the surface bulges, the 7s at its saddles); without the sites (the final
   // result shown), the irregular vertices of the mesh shown. First: a site's square at the
   // same depth after it would cover its middle.
-  auto markIrregular = [&](const Vec3& at, const SiteValence& s) {
+  auto markIrregular = [&](const Vec3& at, const VertexValence& s) {
     if (s.isVertex() && s.offset() != 0) marks.push_back(marker(toGpu(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
   };
   if (now.valences && now.sites && !final) {
-    const std::vector<SiteValence> valences = siteValences(view);
+    const std::vector<VertexValence> valences = siteValences(view);
     for (size_t i = 0; i < valences.size(); ++i) markIrregular(view.liftedSites[i], valences[i]);
   } else if (now.valences) {
     const VertexEdges edges = vertexEdges(mesh);
@@ -783,7 +783,7 @@ void Inspector::uploadMesh() {
   uploaded_ = now;
 }
 
-Inspector::Shown3D Inspector::shown3D() {
+Inspector::Shown3D Inspector::shown3D() const {
   const Layers shown = layers();
   return {iteration_,   shown.input3D,   shown.mapped3D, shown.sites3D, finalShown(),
           colorByAngle_, fill_ == CellFill::Valence && shown.cells2D, replay_->method()};
@@ -1599,7 +1599,7 @@ float Inspector::fillLegendWidth() const {
 std::vector<ImU32> Inspector::cellColors(const IterationView& view) {
   std::vector<ImU32> colors;
   if (fill_ == CellFill::Valence) {
-    for (const SiteValence& s : siteValences(view)) colors.push_back(valenceColor(s));
+    for (const VertexValence& s : siteValences(view)) colors.push_back(valenceColor(s));
     return colors;
   }
   auto quantity = [&](size_t i) {

@@ -287,7 +287,7 @@ class Inspector {
     bool operator==(const Shown3D& o) const { return tied() == o.tied(); }
   };
   Shown3D uploaded_;
-  Shown3D shown3D();
+  Shown3D shown3D() const;
   bool finalShown() const;
   const Mesh& resultIn3D() const;  // the final result or the iteration's, as the 3D view shows
   // The map is of the mesh opened itself (no first remeshing, cut or simplification).

@@ -57,8 +57,8 @@ CellDetails describeCell(const Recording& recording, const Domain& domain,
   return d;
 }
 
-std::vector<SiteValence> siteValences(const IterationView& view) {
-  std::vector<SiteValence> valences(view.sites.size());
+std::vector<VertexValence> siteValences(const IterationView& view) {
+  std::vector<VertexValence> valences(view.sites.size());
   const VertexEdges edges = vertexEdges(view.output);
   for (size_t v = 0; v < view.outputSite.size(); ++v)
     if (view.outputSite[v] >= 0) valences[view.outputSite[v]] = {edges.valence[v], edges.onBoundary[v]};

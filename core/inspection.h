@@ -34,17 +34,18 @@ struct CellDetails {
 CellDetails describeCell(const Recording& recording, const Domain& domain,
                          const IterationView& view, int cell);
 
-// Each site's vertex in the view's result: its valence (-1 where the site is no vertex of it:
-// one on top of another, or outside the border samples' polygon) and whether it is on the
-// result's border. Together they make the result's irregularity: the "valence" fill.
-struct SiteValence {
+// A vertex's valence (-1: no vertex) and whether it is on its mesh's border.
+struct VertexValence {
   int valence = -1;
   bool onBorder = false;
   bool isVertex() const { return valence >= 0; }
   // Less a regular vertex's, 6 inside and 4 on the border: -1 for a 5 inside, +1 for a 7.
   int offset() const { return valence - (onBorder ? 4 : 6); }
 };
-std::vector<SiteValence> siteValences(const IterationView& view);
+// Each site's vertex in the view's result (valence -1 where the site is no vertex of it: one on
+// top of another, or outside the border samples' polygon). Together they make the result's
+// irregularity: the "valence" fill.
+std::vector<VertexValence> siteValences(const IterationView& view);
 
 // Where site i was at every recorded iteration.
 std::vector<Vec2> siteTrajectory(const Recording& recording, int site);

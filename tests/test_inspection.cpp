@@ -102,10 +102,10 @@ TEST(Inspection, TheSitesValencesAreTheResultsIrregularity) {
     const Recording& r = method == RemeshMethod::Relocate ? relocated.recording : uniformRun(method).recording;
     Replay replay(r);
     const IterationView& view = replay.view(7);
-    const std::vector<SiteValence> valences = siteValences(view);
+    const std::vector<VertexValence> valences = siteValences(view);
     ASSERT_EQ(valences.size(), view.sites.size());
     int vertices = 0, irregular = 0;
-    for (const SiteValence& s : valences) {
+    for (const VertexValence& s : valences) {
       vertices += s.isVertex();
       irregular += s.isVertex() && s.offset() != 0;
     }
@@ -115,7 +115,7 @@ TEST(Inspection, TheSitesValencesAreTheResultsIrregularity) {
     if (method != RemeshMethod::Relocate) continue;
     const VertexEdges input = vertexEdges(r.input);
     for (size_t i = 0; i < r.movableVertex.size(); ++i) {
-      const SiteValence& s = valences[r.fixedSites.size() + i];
+      const VertexValence& s = valences[r.fixedSites.size() + i];
       EXPECT_EQ(s.valence, input.valence[r.movableVertex[i]]) << "site " << i;
       EXPECT_FALSE(s.onBorder);
       EXPECT_EQ(s.offset(), input.valence[r.movableVertex[i]] - 6);
