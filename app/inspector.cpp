@@ -230,6 +230,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   noteFirst(farFromTheInputText(result_.fidelity));
   noteFirst(foldsText(result_.before, result_.after));
   noteFirst(sharpCornerText(result_.before, result_.after));
+  noteFirst(curvatureText(result_.after));
   inputCharts_ = result_.charts;
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps

@@ -179,6 +179,10 @@ std::string foldsText(const QualityMetrics& before, const QualityMetrics& after)
 // input has too: that the bar is out of reach there, where, and the smallest angle elsewhere;
 // else "".
 std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& after);
+// Where the result is over kMostIrregularPercent irregular and the surface curves for its
+// vertices by as much (QualityMetrics::curvatureDefects): that equilateral triangles would be
+// as irregular there, and what may help; else "".
+std::string curvatureText(const QualityMetrics& after);
 
 // The inspector's notes on how a result was made: `note` put before `notes`, each a sentence on
 // a line of its own (run together as one paragraph, four trials' notes read as one, and "bars

@@ -34,3 +34,12 @@ $bin inspect data/cgal/eight.off --no-timings --screenshot docs/result_eight_sea
 # A closed surface of genus 3 whose one cut has no conformal map: remeshed chart by chart.
 $bin inspect data/cgal/elephant.off --simplify 1000 --final --no-timings \
   --screenshot docs/result_elephant_charts.png --size 1280x800
+# A surface that curves much for its vertices: CGAL's armadillo halved along y (docs/clip_half.py,
+# which needs python3) at 500 vertices, its final result's irregular vertices marked.
+if command -v python3 > /dev/null; then
+  python3 docs/clip_half.py data/cgal/armadillo.off "$tmp/armadillo_1.off" 1 > /dev/null
+  $bin inspect "$tmp/armadillo_1.off" --sites 500 --fill valence --final --no-timings \
+    --screenshot docs/result_armadillo_half_valence.png --size 1280x800
+else
+  echo "python3 not found: docs/result_armadillo_half_valence.png not remade" >&2
+fi

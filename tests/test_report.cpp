@@ -530,3 +530,24 @@ TEST(Report, TheCurvatureIsInTheTableAndTheJson) {
   EXPECT_EQ(json["input"]["curvature_defects_percent"], 6.6);
   EXPECT_EQ(json["output"]["curvature_defects_percent"], 24.0);
 }
+
+// Where the result misses the irregularity bar on a surface that curves as much for its
+// vertices, the report says so and what may help; not where either is under the bar (the
+// curvature asks little, or the result is regular enough).
+TEST(Report, IrregularityOnACurvedSurfaceIsExplained) {
+  RemeshResult r;
+  r.after.irregularBoundaryAware = 19.0;
+  r.after.curvatureDefects = 24.0;
+  const std::string text = curvatureText(r.after);
+  EXPECT_EQ(text.rfind("19.0% of the vertices are irregular where the surface curves by 24.0 units of 60 degrees per "
+                       "100 vertices at this size",
+                       0),
+            0u)
+      << text;
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find(text), std::string::npos);
+  r.after.curvatureDefects = 8.0;  // a flatter surface: the irregularity has other causes
+  EXPECT_EQ(curvatureText(r.after), "");
+  r.after.curvatureDefects = 24.0;
+  r.after.irregularBoundaryAware = 11.0;  // under the bar
+  EXPECT_EQ(curvatureText(r.after), "");
+}
