@@ -126,14 +126,14 @@ void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, cons
 // it: a diverging map, red where cells have too many sides, blue too few, regular pale.
 struct ValenceKind {
   ImU32 color;
-  const char* label;  // inside (on the border)
+  const char* label;  // inside; on the border, two less
 };
 const std::array<ValenceKind, 5>& valenceKinds() {
-  static const std::array<ValenceKind, 5> kinds = {{{rgb(0.65f, 0.08f, 0.08f), "8+ (6+)"},
-                                                    {rgb(0.96f, 0.45f, 0.35f), "7 (5)"},
-                                                    {rgb(0.9f, 0.9f, 0.86f), "6 (4)"},
-                                                    {rgb(0.4f, 0.62f, 0.95f), "5 (3)"},
-                                                    {rgb(0.08f, 0.22f, 0.65f), "4- (2-)"}}};
+  static const std::array<ValenceKind, 5> kinds = {{{rgb(0.65f, 0.08f, 0.08f), "8+"},
+                                                    {rgb(0.96f, 0.45f, 0.35f), "7"},
+                                                    {rgb(0.9f, 0.9f, 0.86f), "6"},
+                                                    {rgb(0.4f, 0.62f, 0.95f), "5"},
+                                                    {rgb(0.08f, 0.22f, 0.65f), "4-"}}};
   return kinds;
 }
 ImU32 valenceColor(const VertexValence& s) {
@@ -144,7 +144,7 @@ ImU32 valenceColor(const VertexValence& s) {
 // A legend for a few kinds: a swatch each, top to bottom, its label beside it.
 void drawSwatches(ImDrawList* dl, ImVec2 at, float height, const std::array<ValenceKind, 5>& kinds) {
   const float font = ImGui::GetFontSize();
-  const float step = std::max(height / kinds.size(), 1.2f * font);
+  const float step = std::max(height / kinds.size(), 0.9f * font);  // as tall as a colour bar
   for (size_t i = 0; i < kinds.size(); ++i) {
     const ImVec2 a(at.x, at.y + i * step + 1), b(at.x + kColorBarWidth, at.y + (i + 1) * step - 1);
     dl->AddRectFilled(a, b, kinds[i].color);
@@ -784,10 +784,12 @@ void Inspector::uploadMesh() {
   uploaded_ = now;
 }
 
+CellFill Inspector::fillShown() const { return stage_ == Stage::Valence ? CellFill::Valence : fill_; }
+
 Inspector::Shown3D Inspector::shown3D() const {
   const Layers shown = layers();
   return {iteration_,   shown.input3D,   shown.mapped3D, shown.sites3D, finalShown(),
-          colorByAngle_, fill_ == CellFill::Valence && shown.cells2D, replay_->method()};
+          colorByAngle_, fillShown() == CellFill::Valence && shown.cells2D, replay_->method()};
 }
 
 void Inspector::showMessage(std::string text) {
@@ -960,6 +962,12 @@ CaptionFacts Inspector::captionFacts() {
   if (stage_ == Stage::Move)
     f.arrowScale = moveArrowScale(replay_->view(iteration_), replay_->recording().fixedSites.size());
   f.percentMoving = 100.0 * it.fractionMoving;
+  if (stage_ == Stage::Valence)
+    for (const VertexValence& v : siteValences(replay_->view(iteration_))) {
+      if (!v.isVertex() || v.offset() == 0) continue;
+      const bool inside = !v.onBorder;
+      (inside && v.offset() == -1 ? f.fives : inside && v.offset() == 1 ? f.sevens : f.otherIrregular) += 1;
+    }
   // The cell pinned last (pinning a second one while the class looks on, the caption stayed on
   // the first), unless this run lacks it (cell 900 after a restart with 500 sites read "Cell -1").
   if (!selection_.cells().empty())
@@ -1498,7 +1506,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   const float legendHeight = ImGui::CalcTextSize(legend.c_str()).y;
   // A fill's legend (its name over a colour bar, top left) has its own room too: over the
   // domain it hid a square domain's corner cells.
-  const bool filled = fill_ != CellFill::None && shown.cells2D;
+  const bool filled = fillShown() != CellFill::None && shown.cells2D;
   const float fillTop = filled ? fillLegendTop() : 0.0f;
   const float fillLeft = filled ? fillLegendWidth() : 0.0f;
   const float fitWidth = std::max(1.0f, extent.x - fillLeft);
@@ -1526,7 +1534,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
-  const CanvasKey key{iteration_, fill_, layers(), presentation_, scale};
+  const CanvasKey key{iteration_, fillShown(), layers(), presentation_, scale};
   if (!(key == canvasKey_)) {
     canvas_.upload(buildCanvas(scale));
     canvasKey_ = key;
@@ -1574,13 +1582,14 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 // What the cells' colours mean: the quantity, and its colour bar (or its one value).
 void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at) const {
   constexpr const char* kNames[] = {"", "mass M = ∫ ρ dA", "area in (u, v)", "energy ∫ ρ |x - s|² dA",
-                                    "distance |c - s|", "moved since k-1", "valence inside (on the border)"};
-  if (fill_ == CellFill::Valence) {
-    boxedText(dl, at, kNames[static_cast<int>(fill_)]);
+                                    "distance |c - s|", "moved since k-1", "valence (on the border: 2 less)"};
+  const CellFill fill = fillShown();
+  if (fill == CellFill::Valence) {
+    boxedText(dl, at, kNames[static_cast<int>(fill)]);
     drawSwatches(dl, ImVec2(at.x, at.y + fillLegendTop() - 4), kFillBarHeight, valenceKinds());
     return;
   }
-  const std::string name = std::string(kNames[static_cast<int>(fill_)]) + (fillScale_.log ? " (log scale)" : "");
+  const std::string name = std::string(kNames[static_cast<int>(fill)]) + (fillScale_.log ? " (log scale)" : "");
   if (fillScale_.flat()) {
     boxedText(dl, at, (name + ": " + format("%.2e", fillScale_.lo) + " for every cell").c_str());
     return;
@@ -1599,13 +1608,14 @@ float Inspector::fillLegendWidth() const {
 // Each cell's colour under the fill: its kind of valence, or its quantity on fillScale_.
 std::vector<ImU32> Inspector::cellColors(const IterationView& view) {
   std::vector<ImU32> colors;
-  if (fill_ == CellFill::Valence) {
+  const CellFill fill = fillShown();
+  if (fill == CellFill::Valence) {
     for (const VertexValence& s : siteValences(view)) colors.push_back(valenceColor(s));
     return colors;
   }
   auto quantity = [&](size_t i) {
     const BoundedCell& c = view.cells[i];
-    switch (fill_) {
+    switch (fill) {
       case CellFill::Mass: return c.mass;
       case CellFill::Area: return c.area;
       case CellFill::Energy: return c.energy;
@@ -1616,7 +1626,7 @@ std::vector<ImU32> Inspector::cellColors(const IterationView& view) {
   // The fixed border sites never move: their distance to the centroid, 10^3 times the
   // movable sites' at convergence, made the scale and left every movable cell one colour.
   // They are grey, outside the scale, for the two quantities of the sites' moves.
-  const bool movableOnly = fill_ == CellFill::ToCentroid || fill_ == CellFill::Moved;
+  const bool movableOnly = fill == CellFill::ToCentroid || fill == CellFill::Moved;
   const size_t first = movableOnly ? replay_->recording().fixedSites.size() : 0;
   std::vector<double> values;
   for (size_t i = first; i < view.cells.size(); ++i) values.push_back(quantity(i));
@@ -1631,7 +1641,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   const Domain& domain = replay_->domain();
   const IterationView& view = replay_->view(iteration_);
   const size_t fixedCount = replay_->recording().fixedSites.size();
-  if (fill_ != CellFill::None && layers().cells2D) {
+  if (fillShown() != CellFill::None && layers().cells2D) {
     const std::vector<ImU32> colors = cellColors(view);
     for (size_t i = 0; i < view.cells.size(); ++i)
       for (const CellPiece& piece : view.cells[i].pieces)
@@ -1641,7 +1651,7 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   // A projector washes colours out: darker lines, stronger colours, bigger marks.
   const bool strong = presentation_;
   // Over a fill, the light triangles were the brightest lines in the pane: faint there.
-  const bool filled = fill_ != CellFill::None && layers().cells2D;
+  const bool filled = fillShown() != CellFill::None && layers().cells2D;
   const ImU32 triangleColor = strong ? rgb(0.62f, 0.64f, 0.7f, filled ? 0.4f : 1.0f)
                                      : rgb(0.82f, 0.84f, 0.88f, filled ? 0.3f : 1.0f);
   const ImU32 edgeColor = strong ? rgb(0.0f, 0.1f, 0.45f) : rgb(0.2f, 0.35f, 0.7f);

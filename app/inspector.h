@@ -193,6 +193,7 @@ class Inspector {
   const std::vector<std::pair<Vec2, Vec2>>& cellEdges();  // of the current iteration, cached
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks
   std::vector<ImU32> cellColors(const IterationView& view);  // under the fill
+  CellFill fillShown() const;  // the user's, or the lesson stage's (Valence)
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;

@@ -405,7 +405,7 @@ struct InspectCommand {
                   "Classroom mode: large fonts, thick lines, no controls pane");
     cmd->add_option("--stage", stage,
                     "Show one stage of the lesson with its caption: load, parameterize, "
-                    "voronoi, centroids, move, lift or result");
+                    "voronoi, centroids, move, lift, result or valence");
     cmd->add_option("--camera", shot.view.camera,
                     "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
                     "the point x y z looked at (the inspector's Copy view)");

@@ -21,7 +21,8 @@ std::string format(const char* pattern, Args... args) {
 
 constexpr NamedValue<Stage> kStageNames[] = {
     {Stage::Load, "load"}, {Stage::Parameterize, "parameterize"}, {Stage::Voronoi, "voronoi"},
-    {Stage::Centroids, "centroids"}, {Stage::Move, "move"}, {Stage::Lift, "lift"}, {Stage::Result, "result"}};
+    {Stage::Centroids, "centroids"}, {Stage::Move, "move"}, {Stage::Lift, "lift"}, {Stage::Result, "result"},
+    {Stage::Valence, "valence"}};
 
 const char* toString(Stage stage) { return nameOf(kStageNames, stage); }
 
@@ -29,7 +30,7 @@ Stage parseStage(const std::string& name) { return parseName(kStageNames, name, 
 
 Layers layersFor(Stage stage) {
   Layers l;
-  l.input3D = stage != Stage::Result;
+  l.input3D = stage < Stage::Result;
   l.mapped3D = stage != Stage::Load;  // from Parameterize on, the mesh the map is of
   l.sites3D = stage >= Stage::Voronoi;
   l.triangles2D = stage != Stage::Load;
@@ -58,6 +59,7 @@ std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations) {
   const int last = std::max(0, iterationCount - 1);
   plan.push_back({Stage::Lift, last, 4.0f});
   plan.push_back({Stage::Result, last, 6.0f});
+  plan.push_back({Stage::Valence, last, 8.0f});
   return plan;
 }
 
@@ -100,8 +102,8 @@ constexpr double kNearlyEquilateral = 50;
 
 Caption caption(Stage stage, const CaptionFacts& f) {
   Caption c;
-  constexpr const char* kTitles[] = {"Load",      "Parameterize", "Voronoi", "Centroids",
-                                     "Move",      "Lift",         "Result"};
+  constexpr const char* kTitles[] = {"Load", "Parameterize", "Voronoi", "Centroids",
+                                     "Move", "Lift",         "Result",  "Valence"};
   c.title = format("%d  %s", static_cast<int>(stage) + 1, kTitles[static_cast<int>(stage)]);
   const CellDetails* cell = f.cell ? &*f.cell : nullptr;
   switch (stage) {
@@ -201,6 +203,15 @@ Caption caption(Stage stage, const CaptionFacts& f) {
                          f.input.irregularPercent, f.result.irregularPercent,
                          f.input.minAngle, f.result.minAngle, f.input.avgMinAngle,
                          f.result.avgMinAngle);
+      break;
+    case Stage::Valence:
+      c.formula = "Angles sum to 360° around a vertex, less the surface's curvature there: with 60° "
+                  "angles a 5 (blue) sits where it bulges, a 7 (red) at a saddle. A 5 beside a 7 "
+                  "cancel: Lloyd leaves such pairs where rows of cells meet.";
+      c.numbers = format("Iteration %d: %d fives, %d sevens, %d other%s: %.1f%% irregular; "
+                         "curvature asks for %.1f%%",
+                         f.iteration, f.fives, f.sevens, f.otherIrregular, f.otherIrregular == 1 ? "" : "s",
+                         f.result.irregularBoundaryAware, f.result.curvatureDefects);
       break;
   }
   return c;

@@ -1,6 +1,6 @@
 // The classroom lesson: the pipeline told as stages (load, parameterize, then Voronoi,
-// centroids and move for each iteration, then lift and the result), what each stage shows, and
-// the caption that names it with the formulas in use and their numbers.
+// centroids and move for each iteration, then lift, the result and its valences), what each
+// stage shows, and the caption that names it with the formulas in use and their numbers.
 #pragma once
 
 #include "inspection.h"
@@ -13,7 +13,9 @@
 
 namespace lloydscope {
 
-enum class Stage { Load, Parameterize, Voronoi, Centroids, Move, Lift, Result };
+// Valence: the result's irregular vertices, its cells filled by valence (the inspector's
+// "valence" fill), and why they are where they are.
+enum class Stage { Load, Parameterize, Voronoi, Centroids, Move, Lift, Result, Valence };
 
 const char* toString(Stage stage);            // "load", "parameterize", ...
 Stage parseStage(const std::string& name);    // throws Error naming the choices
@@ -47,7 +49,8 @@ struct LessonStep {
 };
 
 // Load and parameterize, then Voronoi, centroids and move for the first `slowIterations`
-// iterations one at a time, then the other iterations quickly, then lift and the result.
+// iterations one at a time, then the other iterations quickly, then lift, the result and its
+// valences.
 std::vector<LessonStep> lessonPlan(int iterationCount, int slowIterations = 3);
 
 // Plays a plan: advance() by the frame's seconds times a speed factor. Paused, it stays on its
@@ -104,6 +107,9 @@ struct CaptionFacts {
   double energy = 0, maxToCentroid = 0, percentMoving = 0;
   double arrowScale = 1;  // the Move stage's arrows are drawn so many times as long
   std::optional<CellDetails> cell;  // the cell pinned last, if any
+  // The Valence stage: the iteration's result's irregular vertices, 5s and 7s inside and the
+  // others (further off, or on the border).
+  int fives = 0, sevens = 0, otherIrregular = 0;
 };
 
 struct Caption {

@@ -531,8 +531,14 @@ TEST(Inspector, TheCaptionQuotesTheCellPinnedLast) {
 
 // The lesson's last stage shows and quotes the final result, after the clean-up, as the
 // controls pane's Final column has it (it showed the last iteration's mesh before it).
-TEST(Inspector, TheLessonsLastStageShowsTheFinalResult) {
+TEST(Inspector, TheLessonsResultStageShowsTheFinalResult) {
   checkScene("inspector_result_stage.png", "--presentation --stage result", "", 90);
+}
+
+// The lesson's last stage fills the cells by valence whatever the fill chosen, marks the
+// irregular sites in 3D, and counts them in its caption.
+TEST(Inspector, TheLessonsValenceStageShowsTheIrregularVertices) {
+  checkScene("inspector_valence_stage.png", "--presentation --stage valence --fill area", "", 90);
 }
 
 // The cells coloured by their site's distance to its centroid, the fixed border sites grey and

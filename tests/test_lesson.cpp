@@ -8,7 +8,7 @@ using namespace lloydscope;
 
 TEST(Lesson, PlanTellsThePipelineInOrder) {
   const std::vector<LessonStep> plan = lessonPlan(5, 3);
-  ASSERT_EQ(plan.size(), 2u + 3 * 3 + 2 + 2);
+  ASSERT_EQ(plan.size(), 2u + 3 * 3 + 2 + 3);
   EXPECT_EQ(plan[0].stage, Stage::Load);
   EXPECT_EQ(plan[1].stage, Stage::Parameterize);
   const Stage cycle[] = {Stage::Voronoi, Stage::Centroids, Stage::Move};
@@ -21,11 +21,12 @@ TEST(Lesson, PlanTellsThePipelineInOrder) {
   EXPECT_EQ(plan[12].iteration, 4);
   EXPECT_LT(plan[12].seconds, plan[2].seconds);  // the later iterations go by quickly
   EXPECT_EQ(plan[13].stage, Stage::Lift);
-  EXPECT_EQ(plan.back().stage, Stage::Result);
+  EXPECT_EQ(plan[14].stage, Stage::Result);
+  EXPECT_EQ(plan.back().stage, Stage::Valence);
   EXPECT_EQ(plan.back().iteration, 4);
 }
 
-TEST(Lesson, PlayerAdvancesAndStopsOnTheResult) {
+TEST(Lesson, PlayerAdvancesAndStopsOnTheLastStage) {
   LessonPlayer player;
   EXPECT_FALSE(player.playing());
   player.start(lessonPlan(4, 1));
@@ -44,7 +45,7 @@ TEST(Lesson, PlayerAdvancesAndStopsOnTheResult) {
   player.togglePause();
   player.advance(1000.0f);
   EXPECT_TRUE(player.playing());
-  EXPECT_EQ(player.current().stage, Stage::Result);
+  EXPECT_EQ(player.current().stage, Stage::Valence);
   EXPECT_EQ(player.current().iteration, 3);
   // Nothing moves any more: the window may sleep on the result beside the slides.
   EXPECT_TRUE(player.atLastStep());
@@ -92,7 +93,7 @@ TEST(Lesson, SkipGoesBackAndOnByWholeSteps) {
   player.advance(1000.0f);
   EXPECT_EQ(player.current().iteration, 1);
   player.skip(std::numeric_limits<int>::max());
-  EXPECT_EQ(player.current().stage, Stage::Result);
+  EXPECT_EQ(player.current().stage, Stage::Valence);
   player.skip(-std::numeric_limits<int>::max());
   EXPECT_EQ(player.current().stage, Stage::Load);
 }
@@ -132,6 +133,7 @@ TEST(Lesson, StagesRevealOneLayerAtATime) {
   EXPECT_TRUE(centroids.centroids2D && !centroids.arrows2D);
   EXPECT_TRUE(move.arrows2D);
   EXPECT_FALSE(result.input3D);
+  EXPECT_TRUE(layersFor(Stage::Valence) == result);  // the same panes, the cells filled by valence
 }
 
 TEST(Lesson, CaptionsQuoteThePinnedCell) {
@@ -253,7 +255,7 @@ TEST(Lesson, TheMoveCaptionSaysItsNumberIsTheDistanceToTheCentroid) {
 // run (iteration 159): the stages before any step are at iteration 0, as in the lesson.
 TEST(Lesson, AStageShownAloneIsAtTheIterationItIsAbout) {
   const std::vector<LessonStep> plan = lessonPlan(160);
-  for (Stage stage : {Stage::Load, Stage::Parameterize, Stage::Lift, Stage::Result}) {
+  for (Stage stage : {Stage::Load, Stage::Parameterize, Stage::Lift, Stage::Result, Stage::Valence}) {
     const auto first = std::find_if(plan.begin(), plan.end(), [&](const LessonStep& s) { return s.stage == stage; });
     ASSERT_NE(first, plan.end());
     EXPECT_EQ(stageIteration(stage, 160), first->iteration) << static_cast<int>(stage);
@@ -273,7 +275,7 @@ TEST(Lesson, TheParameterizeCaptionSaysWhichMeshWasFlattened) {
 
 TEST(Lesson, StageNamesRoundTrip) {
   for (Stage s : {Stage::Load, Stage::Parameterize, Stage::Voronoi, Stage::Centroids, Stage::Move,
-                  Stage::Lift, Stage::Result})
+                  Stage::Lift, Stage::Result, Stage::Valence})
     EXPECT_EQ(parseStage(toString(s)), s);
   EXPECT_THROW(parseStage("lunch"), Error);
 }
@@ -288,4 +290,23 @@ TEST(Lesson, TheLiftCaptionSaysWhetherTheRunConverged) {
   facts.iterations = 160;
   facts.converged = true;
   EXPECT_EQ(caption(Stage::Lift, facts).numbers, "160 iterations to convergence.");
+}
+
+// The Valence stage counts the iteration's irregular vertices by kind and quotes the curvature
+// the surface asks for, beside the irregularity they make.
+TEST(Lesson, TheValenceCaptionCountsTheIrregularVertices) {
+  CaptionFacts facts;
+  facts.iteration = 159;
+  facts.result.irregularBoundaryAware = 12.6;
+  facts.result.curvatureDefects = 1.6;
+  facts.fives = 64;
+  facts.sevens = 60;
+  facts.otherIrregular = 2;
+  const Caption c = caption(Stage::Valence, facts);
+  EXPECT_EQ(c.title, "8  Valence");
+  EXPECT_NE(c.formula.find("a 5 (blue) sits where it bulges, a 7 (red) at a saddle"), std::string::npos) << c.formula;
+  EXPECT_EQ(c.numbers, "Iteration 159: 64 fives, 60 sevens, 2 others: 12.6% irregular; "
+                       "curvature asks for 1.6%");
+  facts.otherIrregular = 1;
+  EXPECT_NE(caption(Stage::Valence, facts).numbers.find(", 1 other:"), std::string::npos);
 }

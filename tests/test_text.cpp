@@ -45,7 +45,7 @@ std::vector<std::string> everyCaption() {
         if (pinned) facts.cell = cell;
         else facts.cell.reset();
         for (Stage stage : {Stage::Load, Stage::Parameterize, Stage::Voronoi, Stage::Centroids, Stage::Move,
-                            Stage::Lift, Stage::Result}) {
+                            Stage::Lift, Stage::Result, Stage::Valence}) {
           const Caption c = caption(stage, facts);
           texts.insert(texts.end(), {c.title, c.formula, c.numbers});
         }
