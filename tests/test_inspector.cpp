@@ -529,7 +529,7 @@ TEST(Inspector, TheCaptionQuotesTheCellPinnedLast) {
   EXPECT_GT(captionDiffers(withBoth, withFirst), 200u);  // the test tells the two cells apart
 }
 
-// The lesson's last stage shows and quotes the final result, after the clean-up, as the
+// The lesson's Result stage shows and quotes the final result, after the clean-up, as the
 // controls pane's Final column has it (it showed the last iteration's mesh before it).
 TEST(Inspector, TheLessonsResultStageShowsTheFinalResult) {
   checkScene("inspector_result_stage.png", "--presentation --stage result", "", 90);
