@@ -768,7 +768,7 @@ void Inspector::uploadMesh() {
   // result shown), the irregular vertices of the mesh shown. First: a site's square at the
   // same depth after it would cover its middle.
   auto markIrregular = [&](const Vec3& at, const VertexValence& s) {
-    if (s.isVertex() && s.offset() != 0) marks.push_back(marker(toGpu(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
+    if (s.irregular()) marks.push_back(marker(toGpu(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
   };
   if (now.valences && now.sites && !final) {
     const std::vector<VertexValence> valences = siteValences(view);
@@ -964,9 +964,9 @@ CaptionFacts Inspector::captionFacts() {
   f.percentMoving = 100.0 * it.fractionMoving;
   if (stage_ == Stage::Valence)
     for (const VertexValence& v : siteValences(replay_->view(iteration_))) {
-      if (!v.isVertex() || v.offset() == 0) continue;
-      const bool inside = !v.onBorder;
-      (inside && v.offset() == -1 ? f.fives : inside && v.offset() == 1 ? f.sevens : f.otherIrregular) += 1;
+      if (!v.irregular()) continue;
+      const int insideOffset = v.onBorder ? 0 : v.offset();  // -1 a 5, +1 a 7
+      ++(insideOffset == -1 ? f.fives : insideOffset == 1 ? f.sevens : f.otherIrregular);
     }
   // The cell pinned last (pinning a second one while the class looks on, the caption stayed on
   // the first), unless this run lacks it (cell 900 after a restart with 500 sites read "Cell -1").

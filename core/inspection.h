@@ -34,14 +34,6 @@ struct CellDetails {
 CellDetails describeCell(const Recording& recording, const Domain& domain,
                          const IterationView& view, int cell);
 
-// A vertex's valence (-1: no vertex) and whether it is on its mesh's border.
-struct VertexValence {
-  int valence = -1;
-  bool onBorder = false;
-  bool isVertex() const { return valence >= 0; }
-  // Less a regular vertex's, 6 inside and 4 on the border: -1 for a 5 inside, +1 for a 7.
-  int offset() const { return valence - (onBorder ? 4 : 6); }
-};
 // Each site's vertex in the view's result (valence -1 where the site is no vertex of it: one on
 // top of another, or outside the border samples' polygon). Together they make the result's
 // irregularity: the "valence" fill.

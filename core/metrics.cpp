@@ -124,7 +124,7 @@ QualityMetrics measureQuality(const Mesh& mesh) {
     ++used;
     if (boundary[v]) ++m.boundaryVertices;
     if (valence[v] != 6) ++irregular;
-    if (valence[v] != (boundary[v] ? 4 : 6)) ++irregularAware;
+    if (VertexValence{valence[v], boundary[v]}.irregular()) ++irregularAware;
   }
   m.irregularPercent = 100.0 * irregular / used;
   m.irregularBoundaryAware = 100.0 * irregularAware / used;

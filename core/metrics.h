@@ -19,6 +19,16 @@ struct BorderCorner {
   double shorterEdge = 0;
 };
 
+// A vertex's valence (-1: no vertex) and whether it is on its mesh's border.
+struct VertexValence {
+  int valence = -1;
+  bool onBorder = false;
+  bool isVertex() const { return valence >= 0; }
+  // Less a regular vertex's, 6 inside and 4 on the border: -1 for a 5 inside, +1 for a 7.
+  int offset() const { return valence - (onBorder ? 4 : 6); }
+  bool irregular() const { return isVertex() && offset() != 0; }  // what irregularBoundaryAware counts
+};
+
 struct QualityMetrics {
   int vertices = 0, faces = 0, boundaryVertices = 0;
   double irregularPercent = 0;       // vertices of valence != 6, all of them (the reference)

@@ -107,7 +107,7 @@ TEST(Inspection, TheSitesValencesAreTheResultsIrregularity) {
     int vertices = 0, irregular = 0;
     for (const VertexValence& s : valences) {
       vertices += s.isVertex();
-      irregular += s.isVertex() && s.offset() != 0;
+      irregular += s.irregular();
     }
     EXPECT_EQ(vertices, view.output.vertexCount());
     EXPECT_GT(irregular, 0);
