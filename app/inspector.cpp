@@ -1089,7 +1089,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   row(" border-aware", oneDecimal(&QualityMetrics::irregularBoundaryAware));
   row("Min angle", oneDecimal(&QualityMetrics::minAngle));
   row("Avg min angle", oneDecimal(&QualityMetrics::avgMinAngle));
-  row("Under 30 deg %", oneDecimal(&QualityMetrics::percentUnder30));
+  row("Under 30\u00b0 %", oneDecimal(&QualityMetrics::percentUnder30));
   if (ImGui::BeginTable("metrics", columnCount + 1, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
     const char* headers[] = {first, iterationHeader.c_str(), "Final"};
@@ -1102,7 +1102,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     for (const auto& [label, cells] : rows) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      wrappedText(label);  // in a narrow pane (960x600) "Under 30 deg %" ran into its value
+      wrappedText(label);  // in a narrow pane (960x600) a long label ran into its value
       for (int k = 0; k < columnCount; ++k) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(cells[k].c_str());
