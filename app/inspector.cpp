@@ -141,12 +141,20 @@ ImU32 valenceColor(const VertexValence& s) {
   return valenceKinds()[2 - std::clamp(s.offset(), -2, 2)].color;
 }
 
-// A legend for a few kinds: a swatch each, top to bottom, its label beside it.
-void drawSwatches(ImDrawList* dl, ImVec2 at, float height, const std::array<ValenceKind, 5>& kinds) {
+// A legend for a few kinds: a swatch each, top to bottom, its label beside it; as tall as a
+// colour bar where the pane has the room, else in as many columns as it takes to fit `room` (in
+// presentation mode at 960x600 the 2D pane's own legend hid the last swatch).
+void drawSwatches(ImDrawList* dl, ImVec2 at, float room, const std::array<ValenceKind, 5>& kinds) {
   const float font = ImGui::GetFontSize();
-  const float step = std::max(height / kinds.size(), 0.9f * font);  // as tall as a colour bar
-  for (size_t i = 0; i < kinds.size(); ++i) {
-    const ImVec2 a(at.x, at.y + i * step + 1), b(at.x + kColorBarWidth, at.y + (i + 1) * step - 1);
+  const int count = static_cast<int>(kinds.size());
+  const float step = std::max(kFillBarHeight / count, 0.9f * font);
+  const int rows = std::clamp(static_cast<int>(room / step), 1, count);
+  float labelWidth = 0;
+  for (const ValenceKind& kind : kinds) labelWidth = std::max(labelWidth, ImGui::CalcTextSize(kind.label).x);
+  const float columnWidth = kColorBarWidth + 4 + labelWidth + 8;
+  for (int i = 0; i < count; ++i) {
+    const float x = at.x + (i / rows) * columnWidth, y = at.y + (i % rows) * step;
+    const ImVec2 a(x, y + 1), b(x + kColorBarWidth, y + step - 1);
     dl->AddRectFilled(a, b, kinds[i].color);
     dl->AddRect(a, b, rgb(0.2f, 0.2f, 0.2f));
     boxedText(dl, ImVec2(b.x + 4, 0.5f * (a.y + b.y) - 0.5f * font), kinds[i].label);
@@ -1560,8 +1568,9 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
       }
   selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale, shown.cells2D,
                     shown.sites2D);
-  if (filled) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4));
-  boxedText(dl, ImVec2(p0.x + 8, p0.y + extent.y - legendHeight - 5), legend.c_str());
+  const float legendTop = p0.y + extent.y - legendHeight - 5;
+  if (filled) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4), legendTop - 4);
+  boxedText(dl, ImVec2(p0.x + 8, legendTop), legend.c_str());
   // Sites a few pixels apart are a blob of dots and rings (1000 sites in presentation mode at
   // 960x600): the pane says how to see them. Where they are closest, not on average: a map
   // squeezes some parts of the surface (the camel head's middle, 2-5 px where the mean was 9).
@@ -1580,13 +1589,15 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 }
 
 // What the cells' colours mean: the quantity, and its colour bar (or its one value).
-void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at) const {
+void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at, float bottom) const {
   constexpr const char* kNames[] = {"", "mass M = ∫ ρ dA", "area in (u, v)", "energy ∫ ρ |x - s|² dA",
                                     "distance |c - s|", "moved since k-1", "valence (on the border: 2 less)"};
   const CellFill fill = fillShown();
+  const ImVec2 barAt(at.x, at.y + fillLegendTop() - 4);
+  const float room = bottom - barAt.y;
   if (fill == CellFill::Valence) {
     boxedText(dl, at, kNames[static_cast<int>(fill)]);
-    drawSwatches(dl, ImVec2(at.x, at.y + fillLegendTop() - 4), kFillBarHeight, valenceKinds());
+    drawSwatches(dl, barAt, room, valenceKinds());
     return;
   }
   const std::string name = std::string(kNames[static_cast<int>(fill)]) + (fillScale_.log ? " (log scale)" : "");
@@ -1595,7 +1606,10 @@ void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at) const {
     return;
   }
   boxedText(dl, at, name.c_str());
-  drawColorBar(dl, ImVec2(at.x, at.y + fillLegendTop() - 4), kFillBarHeight, format("%.2e", fillScale_.hi).c_str(),
+  // Shorter where the pane is low (its lower label hangs under it), down to two lines of labels.
+  const float font = ImGui::GetFontSize();
+  const float height = std::clamp(room - 0.4f * font, 2.0f * font, kFillBarHeight);
+  drawColorBar(dl, barAt, height, format("%.2e", fillScale_.hi).c_str(),
                format("%.2e", fillScale_.lo).c_str(), [](float t) { return quantityColor(t); });
 }
 

@@ -265,7 +265,7 @@ class Inspector {
   };
   CanvasKey canvasKey_;
   FillScale fillScale_;  // of the cells' fill, as the canvas was last built
-  void fillLegend(ImDrawList* dl, const ImVec2& at) const;
+  void fillLegend(ImDrawList* dl, const ImVec2& at, float bottom) const;  // above `bottom`
   float fillLegendTop() const;    // the 2D pane's room for the legend: its name's line
   float fillLegendWidth() const;  // and, under it, its colour bar's strip
   int iteration_ = 0;

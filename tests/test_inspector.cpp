@@ -553,6 +553,42 @@ TEST(Inspector, FillsTheCellsByTheirValence) {
   checkScene("inspector_fill_valence.png", "--fill valence --pane 2d");
 }
 
+// The valence legend's five swatches all show whole in presentation mode at 960x600, where the
+// pane's own legend (two lines) leaves less room than five rows: there it covered the last, "4-".
+TEST(Inspector, TheValenceLegendFitsALowPane) {
+  const std::string png = test::tempPath("valence_legend.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --presentation --stage move --fill valence --pane 2d", png), 0);
+  const Picture picture = readPng(png);
+  // The swatches' colours (the cells' too, but the domain lies right of the legend's strip).
+  const int swatches[5][3] = {{166, 20, 20}, {245, 115, 89}, {230, 230, 219}, {102, 158, 242}, {20, 56, 166}};
+  for (const auto& rgb : swatches) {
+    int count = 0;
+    for (int y = 0; y < picture.height; ++y)
+      for (int x = 0; x < std::min(picture.width, 100); ++x) {
+        const unsigned char* c = picture.at(x, y);
+        count += std::abs(c[0] - rgb[0]) < 3 && std::abs(c[1] - rgb[1]) < 3 && std::abs(c[2] - rgb[2]) < 3;
+      }
+    EXPECT_GE(count, 100) << rgb[0] << " " << rgb[1] << " " << rgb[2];  // a swatch: 10 x 15 pixels inside
+  }
+}
+
+// So does a colour bar, shorter: at its full 90 pixels its foot and its lower label went under
+// the pane's legend (85 pixels of its outline showed, the label not at all); it ends above it now.
+TEST(Inspector, TheColourBarFitsALowPane) {
+  const std::string png = test::tempPath("bar_legend.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --presentation --stage move --fill distance --pane 2d", png), 0);
+  const Picture picture = readPng(png);
+  int longest = 0;  // the bar's outline: the longest dark run down a column left of the domain
+  for (int x = 0; x < std::min(picture.width, 40); ++x)
+    for (int y = 0, run = 0; y < picture.height; ++y) {
+      const unsigned char* c = picture.at(x, y);
+      run = std::max({c[0], c[1], c[2]}) < 70 ? run + 1 : 0;
+      longest = std::max(longest, run);
+    }
+  EXPECT_GE(longest, 40);  // two lines of its labels at least
+  EXPECT_LE(longest, 80);
+}
+
 // With the valence fill the 3D view marks the irregular sites, in the same colours as their
 // cells, or the final result's irregular vertices where it is shown; without it, none.
 TEST(Inspector, TheValenceFillMarksTheIrregularVerticesIn3D) {
