@@ -1666,11 +1666,15 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   const bool strong = presentation_;
   // Over a fill, the light triangles were the brightest lines in the pane: faint there.
   const bool filled = fillShown() != CellFill::None && layers().cells2D;
-  const ImU32 triangleColor = strong ? rgb(0.62f, 0.64f, 0.7f, filled ? 0.4f : 1.0f)
-                                     : rgb(0.82f, 0.84f, 0.88f, filled ? 0.3f : 1.0f);
-  const ImU32 edgeColor = strong ? rgb(0.0f, 0.1f, 0.45f) : rgb(0.2f, 0.35f, 0.7f);
+  const float spacing = scale / std::sqrt(static_cast<float>(view.sites.size()) + 1);  // between sites, in pixels
+  // Over a fill, cells a few pixels across were all lines and dots (the Valence stage at
+  // 960x600 showed a dark blue disk): as the 3D view's wire, they fade from 10 pixels down to 4.
+  const float seen = filled ? std::clamp((spacing - 4.0f) / 6.0f, 0.15f, 1.0f) : 1.0f;
+  const ImU32 triangleColor = strong ? rgb(0.62f, 0.64f, 0.7f, filled ? 0.4f * seen : 1.0f)
+                                     : rgb(0.82f, 0.84f, 0.88f, filled ? 0.3f * seen : 1.0f);
+  const ImU32 edgeColor = strong ? rgb(0.0f, 0.1f, 0.45f, seen) : rgb(0.2f, 0.35f, 0.7f, seen);
   const ImU32 orange = strong ? rgb(0.95f, 0.25f, 0.0f) : rgb(0.85f, 0.3f, 0.1f);
-  const ImU32 siteColor = strong ? rgb(0.0f, 0.0f, 0.0f) : rgb(0.1f, 0.15f, 0.45f);
+  const ImU32 siteColor = strong ? rgb(0.0f, 0.0f, 0.0f, seen) : rgb(0.1f, 0.15f, 0.45f, seen);
   const Layers shown = layers();
   if (shown.triangles2D)
     for (size_t t = 0; t < domain.triangles().size(); ++t) {
@@ -1687,7 +1691,6 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
     g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
   for (const auto& [a, b] : recording.sharedSeams)  // a chart's, with the other charts
     g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
-  const float spacing = scale / std::sqrt(static_cast<float>(view.sites.size()) + 1);  // between sites, in pixels
   // Dots a sixth of the site spacing: the cells stay visible between them.
   const float r = std::clamp(0.16f * spacing, 1.2f, 6.0f) * (strong ? 1.3f : 1.0f);
   // The lesson's Move stage is about the arrows: too short to see, they are drawn longer.

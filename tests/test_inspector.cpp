@@ -589,6 +589,23 @@ TEST(Inspector, TheColourBarFitsALowPane) {
   EXPECT_LE(longest, 80);
 }
 
+// Cells a few pixels across show their fill: at 960x600 in presentation mode the Valence
+// stage's cells, 4 pixels apart, were all edges and dots, a dark blue disk.
+TEST(Inspector, SmallCellsShowTheirFill) {
+  const std::string png = test::tempPath("small_cells.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --presentation --stage valence --pane 2d", png), 0);
+  const Picture domain = readPng(png);  // right of the legend's strip: the cells only
+  int reds = 0, blues = 0;
+  for (int y = 0; y < domain.height; ++y)
+    for (int x = 120; x < domain.width; ++x) {
+      const unsigned char* c = domain.at(x, y);
+      reds += c[0] > 150 && c[0] > c[2] + 60;
+      blues += c[2] > 150 && c[2] > c[0] + 60;
+    }
+  EXPECT_GE(reds, 150);
+  EXPECT_GE(blues, 150);
+}
+
 // With the valence fill the 3D view marks the irregular sites, in the same colours as their
 // cells, or the final result's irregular vertices where it is shown; without it, none.
 TEST(Inspector, TheValenceFillMarksTheIrregularVerticesIn3D) {
