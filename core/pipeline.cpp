@@ -11,6 +11,7 @@
 #include "stopwatch.h"
 
 #include <algorithm>
+#include <charconv>
 #include <functional>
 #include <future>
 #include <thread>
@@ -906,6 +907,17 @@ std::string problemOf(const Error& e, const std::string& name) {
   return problem.substr(0, problem.find("; try"));
 }
 
+namespace {
+
+// The shortest text that reads back as the same double (the stream's six digits gave a
+// recording's threshold 1.234567e-06 back as 1.23457e-06), and 1e-06 still as "1e-06".
+std::string exactly(double value) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+}
+
+}  // namespace
+
 std::string describe(const RemeshOptions& options) {
   const RemeshOptions o = effective(options);  // what runs: relocate has no first pass, for one
   std::ostringstream s;
@@ -913,14 +925,15 @@ std::string describe(const RemeshOptions& options) {
   s << "method=" << toString(o.method) << " resample=" << (o.resample ? "yes" : "no") << " param=" << toString(o.param.method)
     << " border=" << toString(o.param.border) << " density=" << toString(o.density.kind);
   if (o.density.kind == DensityKind::Curvature)
-    s << " alpha=" << o.density.alpha << " beta=" << o.density.beta << " floor=" << o.density.floor;
+    s << " alpha=" << exactly(o.density.alpha) << " beta=" << exactly(o.density.beta)
+      << " floor=" << exactly(o.density.floor);
   s << " sites="
     << (o.sites.fromInputVertices ? std::string("input-vertices")
         : o.sites.count > 0       ? std::to_string(o.sites.count)
                                   : std::string("as-many-as-input"))
     << " solver=" << toString(o.lloyd.solver)
-    << " distance-threshold=" << o.lloyd.distanceThreshold
-    << " percent-threshold=" << o.lloyd.percentThreshold
+    << " distance-threshold=" << exactly(o.lloyd.distanceThreshold)
+    << " percent-threshold=" << exactly(o.lloyd.percentThreshold)
     << " max-iterations=" << o.lloyd.maxIterations;
   if (o.method == RemeshMethod::Retriangulate) {
     s << " polish=" << o.polish;
@@ -943,34 +956,45 @@ std::string settingValue(const std::string& settings, const std::string& key) {
 RemeshOptions optionsFromSettings(const std::string& settings) {
   RemeshOptions o;
   // Each key describe() writes, parsed back where the line has it.
-  auto with = [&](const char* key, const std::function<void(const std::string&)>& set) {
-    const std::string value = settingValue(settings, key);
-    if (value.empty()) return;
+  std::string key;  // the setting being read
+  auto with = [&](const char* name, const std::function<void(const std::string&)>& set) {
+    key = name;
+    if (const std::string value = settingValue(settings, key); !value.empty()) set(value);
+  };
+  // The whole value, a finite number, or an error: std::stoi took "max-iterations=12abc" for 12.
+  const auto number = [&](const std::string& v, auto parse) {
+    size_t used = 0;
     try {
-      set(value);
+      if (const auto n = parse(v, &used); used == v.size() && std::isfinite(n)) return n;
     } catch (const std::logic_error&) {  // std::stoi and std::stod's
-      throw Error(std::string("setting ") + key + "=" + value + " is not a number");
     }
+    throw Error("setting " + key + "=" + v + " is not a number");
+  };
+  const auto integer = [&](const std::string& v) {
+    return number(v, [](const std::string& text, size_t* used) { return std::stoi(text, used); });
+  };
+  const auto real = [&](const std::string& v) {
+    return number(v, [](const std::string& text, size_t* used) { return std::stod(text, used); });
   };
   auto yes = [](const std::string& v) { return v == "yes"; };
-  with("simplify", [&](const std::string& v) { o.simplifyTo = std::stoi(v); });
+  with("simplify", [&](const std::string& v) { o.simplifyTo = integer(v); });
   with("method", [&](const std::string& v) { o.method = parseRemeshMethod(v); });
   with("resample", [&](const std::string& v) { o.resample = yes(v); });
   with("param", [&](const std::string& v) { o.param.method = parseParamMethod(v); });
   with("border", [&](const std::string& v) { o.param.border = parseBorder(v); });
   with("density", [&](const std::string& v) { o.density.kind = parseDensityKind(v); });
-  with("alpha", [&](const std::string& v) { o.density.alpha = std::stod(v); });
-  with("beta", [&](const std::string& v) { o.density.beta = std::stod(v); });
-  with("floor", [&](const std::string& v) { o.density.floor = std::stod(v); });
+  with("alpha", [&](const std::string& v) { o.density.alpha = real(v); });
+  with("beta", [&](const std::string& v) { o.density.beta = real(v); });
+  with("floor", [&](const std::string& v) { o.density.floor = real(v); });
   with("sites", [&](const std::string& v) {
     o.sites.fromInputVertices = v == "input-vertices";
-    o.sites.count = v == "input-vertices" || v == "as-many-as-input" ? 0 : std::stoi(v);
+    o.sites.count = v == "input-vertices" || v == "as-many-as-input" ? 0 : integer(v);
   });
   with("solver", [&](const std::string& v) { o.lloyd.solver = parseCvtSolver(v); });
-  with("distance-threshold", [&](const std::string& v) { o.lloyd.distanceThreshold = std::stod(v); });
-  with("percent-threshold", [&](const std::string& v) { o.lloyd.percentThreshold = std::stod(v); });
-  with("max-iterations", [&](const std::string& v) { o.lloyd.maxIterations = std::stoi(v); });
-  with("polish", [&](const std::string& v) { o.polish = std::stoi(v); });
+  with("distance-threshold", [&](const std::string& v) { o.lloyd.distanceThreshold = real(v); });
+  with("percent-threshold", [&](const std::string& v) { o.lloyd.percentThreshold = real(v); });
+  with("max-iterations", [&](const std::string& v) { o.lloyd.maxIterations = integer(v); });
+  with("polish", [&](const std::string& v) { o.polish = integer(v); });
   with("polish-target", [&](const std::string& v) { o.polishTarget = parsePolishTarget(v); });
   with("snap", [&](const std::string& v) { o.snapToTips = yes(v); });
   with("fit", [&](const std::string& v) { o.fit = yes(v); });

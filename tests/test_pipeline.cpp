@@ -475,6 +475,20 @@ TEST(Pipeline, TheSettingsLineGivesBackItsOptions) {
   EXPECT_EQ(settingValue("polish=3", "param-used"), "");
   EXPECT_THROW(optionsFromSettings("solver=quick"), Error);
   EXPECT_THROW(optionsFromSettings("max-iterations=many"), Error);
+  // The whole value, and a finite one (std::stoi read "12abc" as 12).
+  EXPECT_THROW(optionsFromSettings("max-iterations=12abc"), Error);
+  EXPECT_THROW(optionsFromSettings("distance-threshold=1e-6x"), Error);
+  EXPECT_THROW(optionsFromSettings("alpha=nan"), Error);
+  // Every digit of a double comes back (six of them did: 1.234567e-06 came back 1.23457e-06),
+  // and a round one stays short.
+  RemeshOptions fine;
+  fine.lloyd.distanceThreshold = 1.234567e-6;
+  fine.density.kind = DensityKind::Curvature;
+  fine.density.floor = 0.1 + 0.2;  // 0.30000000000000004
+  const RemeshOptions back = optionsFromSettings(describe(fine));
+  EXPECT_EQ(back.lloyd.distanceThreshold, fine.lloyd.distanceThreshold);
+  EXPECT_EQ(back.density.floor, fine.density.floor);
+  EXPECT_NE(describe(RemeshOptions()).find(" distance-threshold=1e-06 "), std::string::npos) << describe(RemeshOptions());
 
   RemeshOptions quick;
   quick.lloyd.maxIterations = 2;
