@@ -662,7 +662,12 @@ RawMesh readPly(const std::string& path, std::string_view text) {
           for (long long k = 0; k < static_cast<long long>(value); ++k) {
             double item = 0;
             if (!values.read(property.type, item)) truncated();
-            if (isIndexList) raw.indices.push_back(static_cast<long long>(item));
+            if (!isIndexList) continue;
+            // Past long long's range the cast is undefined (9223372036854775807 read back as
+            // -9223372036854775808); no mesh reaches 2^62 vertices anyway.
+            if (!(std::abs(item) < 0x1p62))
+              fail(path, element.name + " " + str(i) + " has a vertex index past any mesh's size");
+            raw.indices.push_back(static_cast<long long>(item));
           }
           if (isIndexList) raw.endPolygon();
         }

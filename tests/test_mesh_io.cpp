@@ -565,6 +565,13 @@ TEST(MeshIoErrors, FaceIndexOutOfRange) {
                   "face 2 uses vertex 9 but there are 3 vertices");
   expectFileError("relative.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n", "face 1 uses vertex -3");
   expectFileError("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "uses vertex 0");
+  // A PLY index at long long's end: read through a double, its cast back was undefined (it came
+  // out as -9223372036854775808).
+  expectFileError("huge.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                  "0 0 0\n1 0 0\n0 1 0\n3 0 1 9223372036854775807\n",
+                  "face 0 has a vertex index past any mesh's size");
 }
 
 TEST(MeshIoErrors, FaceWithTooFewVertices) {
