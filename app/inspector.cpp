@@ -901,7 +901,7 @@ bool Inspector::mapIsOfTheInput() const {
 
 bool Inspector::finalShown() const {
   if (result_.output.triangles.empty()) return false;
-  // The lesson's last stage at the last iteration shows what remesh writes, as its caption
+  // The lesson's Result stage at the last iteration shows what remesh writes, as its caption
   // quotes it (it showed the last iteration's mesh before the clean-up, and quoted that).
   if (stage_) return *stage_ == Stage::Result && iteration_ == replay_->iterationCount() - 1;
   return showFinal_;

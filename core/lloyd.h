@@ -22,8 +22,9 @@ constexpr CvtSolver kCvtSolvers[] = {CvtSolver::Lloyd, CvtSolver::Lbfgs, CvtSolv
 
 struct LloydOptions {
   CvtSolver solver = CvtSolver::Lbfgs;
-  // Converged when fewer than percentThreshold % of the movable sites moved more than
-  // distanceThreshold (a fraction of the domain size, which is 1) in the last iteration.
+  // Converged when fewer than percentThreshold % of the movable sites are farther than
+  // distanceThreshold (a fraction of the domain size, which is 1) from their cells' centroids:
+  // the move Lloyd's step would make (the report's test), whatever step the solver takes.
   double distanceThreshold = 1e-6;
   double percentThreshold = 5.0;
   int maxIterations = 1000;
