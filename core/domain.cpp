@@ -155,9 +155,26 @@ const Location* Domain::stranded(const Vec2& p) const {
 }
 
 Location Domain::locate(const Vec2& p) const {
+  if (index_->triangles.empty()) return Location{};
+  if (const Location* own = stranded(p)) return *own;
+  return locateInArea(p);
+}
+
+Location Domain::locate(const Vec2& p, int hint) const {
+  if (const Location* own = stranded(p)) return *own;
+  return locateInArea(p, hint);
+}
+
+Location Domain::locateInArea(const Vec2& p, int hint) const {
+  for (int t = hint, step = 0; t >= 0 && step < 64; ++step) {
+    const Eigen::Vector3d w = barycentric(t, p);
+    int k;
+    if (w.minCoeff(&k) >= 0.0) return {t, w, true};
+    t = neighbours_[t][k];  // across the edge opposite the most negative weight
+  }
+  // Left the domain, too far from the hint, or no hint.
   Location l;
   if (index_->triangles.empty()) return l;
-  if (const Location* own = stranded(p)) return *own;
   const Index& g = *index_;
   if (g.inBox(p)) {
     const int c = g.cellOf(p);
@@ -174,18 +191,6 @@ Location Domain::locate(const Vec2& p) const {
   l.weights /= l.weights.sum();
   l.inside = (q - p).squaredNorm() == 0.0;
   return l;
-}
-
-Location Domain::locate(const Vec2& p, int hint) const {
-  if (const Location* own = stranded(p)) return *own;
-  int t = hint;
-  for (int step = 0; t >= 0 && step < 64; ++step) {
-    const Eigen::Vector3d w = barycentric(t, p);
-    int k;
-    if (w.minCoeff(&k) >= 0.0) return {t, w, true};
-    t = neighbours_[t][k];  // across the edge opposite the most negative weight
-  }
-  return locate(p);  // left the domain, or too far from the hint
 }
 
 Eigen::Vector3d Domain::barycentric(int triangle, const Vec2& p) const {

@@ -40,6 +40,10 @@ class Domain {
   // The same, walking from triangle `hint` across shared edges first (cheap when p is near the
   // hint, as a site is to where it was in the previous iteration).
   Location locate(const Vec2& p, int hint) const;
+  // As locate(), always in a triangle with an area and its neighbours (hint: one such, or -1):
+  // where a walk across the domain starts. locate() puts a vertex whose triangles are all flat
+  // (an ear on a square border's side) in one of those, at its own corner, for its lift.
+  Location locateInArea(const Vec2& p, int hint = -1) const;
   Vec2 pointAt(const Location& l) const;
   // Whether a location lies on an edge of the domain's border (its weight off that edge at
   // most kOnBorderEdge).

@@ -523,9 +523,9 @@ std::vector<BoundedCell> computeCells(const Domain& domain, const std::vector<Ve
     for (size_t k = begin; k < end; ++k) {
       const Delaunay::Vertex_handle v = vertices[k];
       const int id = v->info();
-      const int hint = hints->triangle[id];
-      const int start =
-          (hint >= 0 ? domain.locate(sites[id], hint) : domain.locate(sites[id])).triangle;
+      // In a triangle with neighbours: a fixed site on an ear of a square border, located in
+      // the ear's flat triangle, had an empty cell and left a hole in the domain.
+      const int start = domain.locateInArea(sites[id], hints->triangle[id]).triangle;
       hints->triangle[id] = start;
       BoundedCell& cell = cells[id];
       voronoiPolygon(v, w.polygon);
