@@ -125,6 +125,9 @@ std::vector<Triangle> triangulateSites(const std::vector<Vec2>& border,
     borderVertex.push_back(cdt.insert(Point2(border[i].x(), border[i].y())));
     borderVertex.back()->info() = static_cast<int>(i);
   }
+  // On one line or at one point, the border encloses nothing to triangulate (a damaged
+  // recording's: marking the domain of a triangulation of dimension 1 crashed).
+  if (cdt.dimension() < 2) throw Error("the border of the parameter domain encloses no area");
   // Samples at the same place (where a map squeezes part of the border to a point) are one
   // vertex of the triangulation, and a constraint from a vertex to itself crashes CGAL's: the
   // later sample stands for both, the earlier is left out of the triangles.

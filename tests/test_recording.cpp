@@ -105,6 +105,11 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       // the replay failed on it with an error that named no file
       {[](Recording& r) { std::swap(r.fixedSites[0], r.fixedSites[r.fixedSites.size() / 2]); },
        "the border of the parameter domain crosses itself"},
+      // a segfault: the border, all on one line or at one point, was triangulated (found by fuzzing)
+      {[](Recording& r) { for (Vec2& p : r.fixedSites) p.y() = 0.5; },
+       "the border of the parameter domain encloses no area"},
+      {[](Recording& r) { std::fill(r.fixedSites.begin(), r.fixedSites.end(), Vec2(0.5, 0.5)); },
+       "the border of the parameter domain encloses no area"},
       {[](Recording& r) { std::swap(r.input.triangles[10][0], r.input.triangles[10][1]); },
        "a parameter triangle is turned over"},
       // info printed these (inspect refused the first), the escape sequence to the terminal
