@@ -416,7 +416,7 @@ struct InspectCommand {
                     "Draw the inspector this many times as large, for a screen that many times as dense as "
                     "96 dpi (default: in a window the screen's own scale, from its Xft.dpi; in a picture 1, "
                     "and --size is in pixels)")
-        ->check(CLI::Range(0.5, 4.0));
+        ->check(finiteNumber(0.5, "a number from 0.5 to 4", 4.0));
     addRemeshOptions(*cmd, args);
   }
 

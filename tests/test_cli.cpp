@@ -698,6 +698,7 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --size 1280x800 --ui-scale 2 --screenshot x.png",
        "--size 1280x800 at --ui-scale 2 leaves the inspector less than 960x600 to lay out in"},
       {"inspect " + mesh + " --ui-scale 5 --screenshot x.png", "--ui-scale"},
+      {"inspect " + mesh + " --ui-scale nan --screenshot x.png", "expected a number from 0.5 to 4, not 'nan'"},  // was taken
       {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
       {"inspect " + mesh + " --iterations 99999999999999999999:1 --screenshot x.png", "expected FIRST:LAST"},
       // No file name (an unset variable): the run went on and wrote nothing.
