@@ -621,7 +621,8 @@ std::string withNoteFirst(const std::string& note, const std::string& notes) {
 
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
-  if (asked <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
+  // No final result (a recording opened alone: the inspector said "0 vertices for the 200 asked").
+  if (asked <= 0 || got <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
   return std::to_string(got) + " vertices for the " + std::to_string(asked) +
          " asked: the clean-up adds or removes a few (seams stitched, short border edges merged, "
          "flat triangles removed)" +

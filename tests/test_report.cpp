@@ -504,6 +504,9 @@ TEST(Report, AVertexCountOtherThanAskedIsSaid) {
   options.method = RemeshMethod::Retriangulate;
   options.sites.count = 0;  // none asked: as many as the input
   EXPECT_EQ(vertexCountText(r, options), "");
+  options.sites.count = 500;
+  r.after = QualityMetrics();  // no final result: a recording opened alone (it said "0 vertices")
+  EXPECT_EQ(vertexCountText(r, options), "");
 }
 
 // The inspector's notes each start a line of their own, as sentences: run together, four trials'
