@@ -360,11 +360,20 @@ RawMesh readOff(const std::string& path, std::string_view text) {
 // "12", "12/4", "12//7", "12/4/7" and negative (relative) forms; returns the 0-based index.
 long long objIndex(const std::string& path, int line, long long face, std::string_view token,
                    long long verticesSoFar) {
-  const std::string_view number = token.substr(0, token.find('/'));
-  long long index;
-  if (!parseInteger(number, index)) {
-    fail(path, atLine(line) + shown(token) + " is not a vertex index");
+  // The texture and normal indices are not used, but must be numbers (or left out): "1/x/y"
+  // and "1/1/1/1" were read as vertex 1, where "v 0.0abc" is refused.
+  std::vector<std::string_view> parts;
+  for (size_t start = 0;;) {
+    const size_t slash = token.find('/', start);
+    parts.push_back(token.substr(start, slash == std::string_view::npos ? slash : slash - start));
+    if (slash == std::string_view::npos) break;
+    start = slash + 1;
   }
+  long long index, unused;
+  const bool wellFormed = parts.size() <= 3 && parseInteger(parts[0], index) &&
+                          std::all_of(parts.begin() + 1, parts.end(),
+                                      [&](std::string_view p) { return p.empty() || parseInteger(p, unused); });
+  if (!wellFormed) fail(path, atLine(line) + shown(token) + " is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
   if (index == 0) fail(path, atLine(line) + "face " + str(face) + " uses vertex 0 (OBJ counts vertices from 1)");
   if (index > 0) return index - 1;  // may refer to a later vertex; range-checked after reading
   if (index < -verticesSoFar) {

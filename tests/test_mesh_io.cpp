@@ -526,6 +526,9 @@ TEST(MeshIoErrors, NumberDoesNotParse) {
   expectFileError("suffix.obj", "v 0 0 0\nv 1 0 0abc\nv 0 1 0\nf 1 2 3\n", "'0abc' is not a number");
   expectFileError("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", "'1.5' is not an integer");
   expectFileError("index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 b 3\n", "'b' is not a vertex index");
+  // The texture and normal indices too, which are not used (both were read as vertex 1).
+  expectFileError("texture.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x/y 2 3\n", "'1/x/y' is not a vertex index");
+  expectFileError("slashes.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "'1/1/1/1' is not a vertex index");
   expectFileError("word.ply",
                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
