@@ -9,8 +9,6 @@ namespace lloydscope {
 
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // The angles of a 2D triangle, in degrees (the 3D formula with z = 0).
 std::array<double, 3> cornerAnglesDeg(const Vec2& a, const Vec2& b, const Vec2& c) {
   auto flat = [](const Vec2& p) { return Vec3(p.x(), p.y(), 0.0); };

@@ -132,9 +132,11 @@ double distanceToSegmentOf(const Point& p, const Point& a, const Point& b) {
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) { return distanceToSegmentOf(p, a, b); }
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) { return distanceToSegmentOf(p, a, b); }
 
-double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const Vec2 u = b - a, v = c - a;
-  return 0.5 * (u.x() * v.y() - u.y() * v.x());
+double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c) { return 0.5 * cross(b - a, c - a); }
+
+size_t pickByShare(const std::vector<double>& cumulative, double at) {
+  const size_t index = std::upper_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin();
+  return std::min(index, cumulative.size() - 1);
 }
 
 Rings::Rings(const Mesh& m) : offset(m.vertexCount() + 1, 0) {

@@ -78,6 +78,21 @@ double equilateralEdgeLength(double area, int vertices);
 // Appends `part`'s vertices and triangles to `to` (as another component).
 void append(Mesh& to, const Mesh& part);
 double triangleArea(const Vec2& a, const Vec2& b, const Vec2& c);  // signed, > 0 if CCW
+// The z of the cross product of two vectors of the plane: the signed area of their parallelogram.
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+// A point of triangle (a, b, c) uniformly at random, from two independent uniform numbers in
+// [0, 1) (a point past the diagonal is reflected back into the triangle).
+template <class Point>
+Point pointInTriangle(const Point& a, const Point& b, const Point& c, double s, double t) {
+  if (s + t > 1) {
+    s = 1 - s;
+    t = 1 - t;
+  }
+  return a + s * (b - a) + t * (c - a);
+}
+// The index of the first of the running totals `cumulative` over `at` (the last where none is):
+// `at` uniform up to the last total picks each index by its share of the total.
+size_t pickByShare(const std::vector<double>& cumulative, double at);
 // A parameter triangle with no more than this share of its map's whole area is flat: an ear of
 // a straight border (which covers none of the domain), or a triangle squeezed to nothing.
 constexpr double kFlatAreaShare = 1e-14;

@@ -222,16 +222,11 @@ Samples samplePoints(const Mesh& mesh, int randomCount) {
   samples.triangle.resize(samples.points.size());
   parallelFor(draws.size(), std::max(1u, std::thread::hardware_concurrency()), [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
-      auto [at, a, b] = draws[i];
-      const size_t f = std::min<size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin(),
-                                        cumulative.size() - 1);
-      if (a + b > 1) {
-        a = 1 - a;
-        b = 1 - b;
-      }
-      const Triangle& t = mesh.triangles[f];
-      samples.points[samples.firstRandom + i] = mesh.points[t[0]] + a * (mesh.points[t[1]] - mesh.points[t[0]]) +
-                                                b * (mesh.points[t[2]] - mesh.points[t[0]]);
+      const auto [at, s, t] = draws[i];
+      const size_t f = pickByShare(cumulative, at);
+      const Triangle& corners = mesh.triangles[f];
+      samples.points[samples.firstRandom + i] =
+          pointInTriangle(mesh.points[corners[0]], mesh.points[corners[1]], mesh.points[corners[2]], s, t);
       samples.triangle[samples.firstRandom + i] = static_cast<int>(f);
     }
   });

@@ -312,17 +312,9 @@ std::vector<Vec2> sampleDensity(const Domain& domain, int count, std::uint64_t s
   std::mt19937_64 rng(seed);
   std::vector<Vec2> points;
   for (int i = 0; i < count; ++i) {
-    const double pick = uniform01(rng) * total;
-    const size_t t = std::min<size_t>(
-        std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin(),
-        cumulative.size() - 1);
-    double a = uniform01(rng), b = uniform01(rng);
-    if (a + b > 1) {
-      a = 1 - a;
-      b = 1 - b;
-    }
-    const Triangle& tri = domain.triangles()[t];
-    points.push_back(uv[tri[0]] + a * (uv[tri[1]] - uv[tri[0]]) + b * (uv[tri[2]] - uv[tri[0]]));
+    const Triangle& t = domain.triangles()[pickByShare(cumulative, uniform01(rng) * total)];
+    const double s = uniform01(rng);
+    points.push_back(pointInTriangle(uv[t[0]], uv[t[1]], uv[t[2]], s, uniform01(rng)));
   }
   return points;
 }

@@ -27,8 +27,6 @@ using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 constexpr int kDummy = -1;
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // A point within this distance (in the unit parameter domain) of a triangle's side is on it.
 constexpr double kOnSide = 1e-9;
 
