@@ -1,3 +1,8 @@
+// GCC 12 warns that CGAL's Garland-Heckbert quadrics (Eigen 4x4 matrices) may be used
+// uninitialized, inside Eigen's own headers, on every build: a false alarm. Off before the
+// first include, which is where Eigen's headers come in for this file.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 #include "simplify.h"
 
 #include "cgal_types.h"
