@@ -1149,10 +1149,25 @@ void validateMesh(const Mesh& mesh, const std::string& name) {
   checkSurface(mesh, name, Numbering{});
 }
 
+// The extension a file's first word says it should have: ".ply" for "ply", ".off" for an OFF
+// header (OFF, COFF, NOFF, STOFF, 4OFF ...), else "" (an OBJ starts with anything).
+std::string extensionByContent(std::string_view text) {
+  const size_t start = std::find_if_not(text.begin(), text.end(), isSpace) - text.begin();
+  const std::string_view word = text.substr(start, std::find_if(text.begin() + start, text.end(), isSpace) - text.begin() - start);
+  if (word == "ply") return ".ply";
+  const bool off = word.size() >= 3 && word.size() <= 8 && word.substr(word.size() - 3) == "OFF";
+  return off ? ".off" : "";
+}
+
 ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = lowercaseExtension(path);
   if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, unknownExtension(path));
   const std::string text = loadFile(path);
+  // An OFF named .obj was refused as "the mesh has no faces", which named nothing wrong.
+  if (const std::string says = extensionByContent(text); !says.empty() && says != ext)
+    fail(path, "its first word is that of a" + std::string(says == ".off" ? "n OFF" : " PLY") +
+                   " file, not of a" + (ext == ".obj" ? "n OBJ" : ext == ".off" ? "n OFF" : " PLY") +
+                   " one: rename it " + says);
   const RawMesh raw = ext == ".off" ? readOff(path, text) : ext == ".obj" ? readObj(path, text) : readPly(path, text);
 
   checkHasFaces(raw.polygonCount(), path);

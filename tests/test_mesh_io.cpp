@@ -420,6 +420,16 @@ TEST(MeshIoErrors, EmptyFile) {
   expectFileError("blank.ply", " \n\n", "empty");
 }
 
+// A file whose first word says it is of another format (an OFF named .obj was refused as "the
+// mesh has no faces", which named nothing wrong).
+TEST(MeshIoErrors, AFileOfAnotherFormatThanItsExtensionSays) {
+  expectFileError("cube.obj", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                  "its first word is that of an OFF file, not of an OBJ one: rename it .off");
+  expectFileError("cube.off", "ply\nformat ascii 1.0\nend_header\n",
+                  "its first word is that of a PLY file, not of an OFF one: rename it .ply");
+  expectFileError("cube.ply", "  COFF\n3 1 0\n", "rename it .off");
+}
+
 TEST(MeshIoErrors, UnknownExtension) {
   expectFileError("mesh.stl", kSquareOff, "unknown extension '.stl'");
   expectFileError("mesh", kSquareOff, "no extension");
