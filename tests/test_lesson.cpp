@@ -305,7 +305,7 @@ TEST(Lesson, TheValenceCaptionCountsTheIrregularVertices) {
   const Caption c = caption(Stage::Valence, facts);
   EXPECT_EQ(c.title, "8  Valence");
   EXPECT_NE(c.formula.find("a 5 (blue) sits where it bulges, a 7 (red) at a saddle"), std::string::npos) << c.formula;
-  EXPECT_EQ(c.numbers, "Iteration 159: 64 fives, 60 sevens, 2 others: 12.6% irregular; "
+  EXPECT_EQ(c.numbers, "Iteration 159: 64 fives, 60 sevens, 2 others: 12.6% irregular (border-aware); "
                        "curvature asks for 1.6%");
   facts.otherIrregular = 1;
   EXPECT_NE(caption(Stage::Valence, facts).numbers.find(", 1 other:"), std::string::npos);
