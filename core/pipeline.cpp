@@ -798,9 +798,16 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
 }  // namespace
 
 namespace {
-std::string shortNumber(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2g", x);
+// Two digits, or as many more as `x` needs not to read as `limit`, the bound it is past, in two
+// (a strip's area of 9.99e-07 against the least, 1e-06, read "1e-06 (the least is 1e-06)").
+std::string shortNumber(double x, double limit = std::nan("")) {
+  const auto digits = [](double v, int n) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", n, v);
+    return std::string(text);
+  };
+  std::string text = digits(x, 2);
+  for (int n = 3; n <= 17 && text == digits(limit, 2); ++n) text = digits(x, n);
   return text;
 }
 }  // namespace
@@ -809,14 +816,14 @@ void requireExactPredicatesRange(const Mesh& input, const std::string& name, con
   double largest = 0;
   for (const Vec3& p : input.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
   if (largest > kLargestCoordinate)
-    throw Error(name + ": coordinates as large as " + shortNumber(largest) + " are beyond what can be " + task +
+    throw Error(name + ": coordinates as large as " + shortNumber(largest, kLargestCoordinate) + " are beyond what can be " + task +
                 " in double precision (up to " + shortNumber(kLargestCoordinate) + "); scale the mesh down");
   const double diagonal = boundingBoxDiagonal(input);
   if (diagonal < kSmallestDiagonal)
     throw Error(name + ": too small to be " + task + " in double precision: its bounding box's diagonal is " +
-                shortNumber(diagonal) + " (the least is " + shortNumber(kSmallestDiagonal) + "); scale it up");
+                shortNumber(diagonal, kSmallestDiagonal) + " (the least is " + shortNumber(kSmallestDiagonal) + "); scale it up");
   if (largest > kFarthestPerSize * diagonal)
-    throw Error(name + ": too far from the origin for its size: " + shortNumber(largest / diagonal) +
+    throw Error(name + ": too far from the origin for its size: " + shortNumber(largest / diagonal, kFarthestPerSize) +
                 " times its diagonal away (at most " + shortNumber(kFarthestPerSize) +
                 "), double precision leaves too few digits for its shape; move it nearer");
 }
@@ -826,7 +833,7 @@ void requireRemeshableSize(const Mesh& input, const Topology& topology, int vert
   const double diagonal = boundingBoxDiagonal(input);
   const double area = surfaceArea(input);
   if (area < kThinnestArea * diagonal * diagonal)
-    throw Error(name + ": too thin to remesh: its area is " + shortNumber(area / (diagonal * diagonal)) +
+    throw Error(name + ": too thin to remesh: its area is " + shortNumber(area / (diagonal * diagonal), kThinnestArea) +
                 " times its bounding box's diagonal squared (the least is " + shortNumber(kThinnestArea) +
                 "): a sliver of a surface, or a vertex far off the rest");
   // The border is sampled at the spacing of the vertices asked (core/sites), however many that

@@ -526,6 +526,9 @@ TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
   EXPECT_EQ(far.rfind("m.off: too far from the origin", 0), 0u) << far;
   EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-9 * p.y(), p.z()); })).rfind("m.off: too thin to remesh", 0), 0u);
   EXPECT_EQ(why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-7 * p.y(), p.z()); })).rfind("m.off: too thin to remesh", 0), 0u);
+  // Just past the limit, in as many digits as tell it from the limit (it read "1e-06 ... (the least is 1e-06)").
+  const std::string thin = why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 0.999e-6 * p.y(), p.z()); }));
+  EXPECT_NE(thin.find("its area is 9.99e-07 times its bounding box's diagonal squared (the least is 1e-06)"), std::string::npos) << thin;
   // A strip 10^4 to 1 at its 81 vertices: sampled at their spacing, its border alone takes 1676
   // (the result had 1676 vertices; at 10^6 to 1, 16,751 in 31 s).
   const std::string few = why(transformed([](const Vec3& p) -> Vec3 { return Vec3(p.x(), 1e-4 * p.y(), p.z()); }));
