@@ -252,6 +252,11 @@ Recording decodePayload(Reader& in, const std::string& path, Keep keep = Keep::A
     it.meanDisplacement = in.get<double>();
     it.fractionMoving = in.get<double>();
     it.milliseconds = in.get<double>();
+    // What a run measures is never negative, nor a fraction over 1 (info printed "nan").
+    const auto measure = [](double v) { return std::isfinite(v) && v >= 0; };
+    if (!measure(it.energy) || !measure(it.maxDisplacement) || !measure(it.meanDisplacement) ||
+        !measure(it.milliseconds) || !(it.fractionMoving >= 0 && it.fractionMoving <= 1))
+      throw Error(path + ": damaged recording (an iteration's energy, distances, share moving or time is out of range)");
     std::vector<std::uint32_t> coords(2 * size_t(in.getCount(8)));
     for (std::uint32_t& q : coords) q = in.get<std::uint32_t>();
     it.sites = PackedSites::fromRaw(std::move(coords));

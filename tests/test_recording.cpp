@@ -110,6 +110,11 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
        "the border of the parameter domain encloses no area"},
       {[](Recording& r) { std::fill(r.fixedSites.begin(), r.fixedSites.end(), Vec2(0.5, 0.5)); },
        "the border of the parameter domain encloses no area"},
+      // info printed them as "nan", the plots drew what they could
+      {[&](Recording& r) { r.iterations.back().energy = nan; },
+       "an iteration's energy, distances, share moving or time is out of range"},
+      {[](Recording& r) { r.iterations.back().fractionMoving = 2; },
+       "an iteration's energy, distances, share moving or time is out of range"},
       {[](Recording& r) { std::swap(r.input.triangles[10][0], r.input.triangles[10][1]); },
        "a parameter triangle is turned over"},
       // info printed these (inspect refused the first), the escape sequence to the terminal
