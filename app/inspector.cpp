@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <set>
 
@@ -619,7 +620,18 @@ void refuseReplacing(const std::string& path, const std::string& shown, const st
 }
 
 void refuseReplacing(const ExportJob& job, const std::string& shown) {
-  for (int k = std::max(job.first, 0); k <= std::max(job.last, 0); ++k) refuseReplacing(exportPath(job, k), shown, "picture");
+  if (job.first < 0) return refuseReplacing(job.path, shown, "picture");
+  // Of a sequence's names only the one with the shown file's own number can be it: one check,
+  // not one per picture (--iterations 0:2000000000 ran for minutes before its range was refused).
+  std::error_code ignored;
+  const std::string name =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(shown, ignored), ignored).filename().string();
+  const size_t dot = name.rfind('.'), underscore = name.rfind('_', dot);
+  if (dot == std::string::npos || underscore == std::string::npos) return;
+  const std::string digits = name.substr(underscore + 1, dot - underscore - 1);
+  if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return;
+  if (const int k = std::stoi(digits); k >= job.first && k <= job.last)
+    refuseReplacing(exportPath(job, k), shown, "picture");
 }
 
 void Inspector::startExport(ExportJob job) {
