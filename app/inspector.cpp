@@ -1056,8 +1056,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
               replay_->recording().iterations.empty()
                   ? size_t(0)
                   : replay_->recording().iterations[0].sites.size());
-  ImGui::Text("Thresholds: %.0e, %.0f%%", options_.lloyd.distanceThreshold,
-              options_.lloyd.percentThreshold);
+  ImGui::TextUnformatted(thresholdsText(options_.lloyd).c_str());
   ImGui::Separator();
   int method = replay_->method() == RemeshMethod::Relocate ? 0 : 1;
   ImGui::TextUnformatted("Result");

@@ -619,6 +619,12 @@ std::string withNoteFirst(const std::string& note, const std::string& notes) {
   return notes.empty() ? sentence : sentence + "\n" + notes;
 }
 
+std::string thresholdsText(const LloydOptions& options) {
+  // In %g: "%.0e, %.0f%%" showed 1.5e-06 and 2.5 as "2e-06, 2%", beside "2.3% moving" and
+  // "converged".
+  return format("Thresholds: %g, %g%%", options.distanceThreshold, options.percentThreshold);
+}
+
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
   // No final result (a recording opened alone: the inspector said "0 vertices for the 200 asked").

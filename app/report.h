@@ -193,6 +193,9 @@ std::string withNoteFirst(const std::string& note, const std::string& notes);
 // why; else empty.
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options);
 
+// "Thresholds: 1e-06, 5%": the run's convergence thresholds as given, not rounded.
+std::string thresholdsText(const LloydOptions& options);
+
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);

@@ -483,6 +483,15 @@ TEST(Report, ASmallestAngleAtTheInputsSharpBorderCornerIsExplained) {
   EXPECT_EQ(sharpCornerText(before, after), "");
 }
 
+// The thresholds as given ("%.0e, %.0f%%" read 1.5e-06 and 2.5 as "2e-06, 2%").
+TEST(Report, TheThresholdsAreShownAsGiven) {
+  LloydOptions o;
+  EXPECT_EQ(thresholdsText(o), "Thresholds: 1e-06, 5%");
+  o.distanceThreshold = 1.5e-6;
+  o.percentThreshold = 2.5;
+  EXPECT_EQ(thresholdsText(o), "Thresholds: 1.5e-06, 2.5%");
+}
+
 // A result with more or fewer vertices than asked says so, and why (CGAL's femur at 500: 510,
 // with nothing said; --help promised the number asked).
 TEST(Report, AVertexCountOtherThanAskedIsSaid) {
