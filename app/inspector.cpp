@@ -1553,7 +1553,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
-  const CanvasKey key{iteration_, fillShown(), layers(), presentation_, scale};
+  const CanvasKey key{iteration_, fillShown(), layers(), presentation_, scale, replay_->method()};
   if (!(key == canvasKey_)) {
     canvas_.upload(buildCanvas(scale));
     canvasKey_ = key;

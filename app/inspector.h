@@ -258,9 +258,11 @@ class Inspector {
     Layers layers;
     bool presentation = false;
     float scale = 0;
+    // The valence fill is of the result, which relocate and retriangulate make differently.
+    RemeshMethod method = RemeshMethod::Retriangulate;
     bool operator==(const CanvasKey& o) const {
       return iteration == o.iteration && fill == o.fill && scale == o.scale &&
-             presentation == o.presentation && layers == o.layers;
+             presentation == o.presentation && layers == o.layers && method == o.method;
     }
   };
   CanvasKey canvasKey_;
