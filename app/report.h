@@ -57,9 +57,10 @@ PlotAxis plotAxis(const std::vector<double>& values, const std::vector<std::vect
                   double threshold, bool log);
 
 // How a cell fill's values map to colours (0 the lowest colour, 1 the highest): linear from
-// the smallest value to the largest, or over their logarithms where all are positive and the
-// largest is over 100 times the smallest (one cell of the camel head, 3·10⁶ times the
-// smallest mass, left every other cell the lowest colour).
+// the smallest value to the largest, or over their logarithms where all are positive, the
+// largest is over 10 times the smallest, and the logarithm puts the median cell nearer the
+// middle of the bar (one cell of the camel head, 3·10⁶ times the smallest mass, left every
+// other cell the lowest colour).
 struct FillScale {
   double lo = 0, hi = 0;
   bool log = false;
