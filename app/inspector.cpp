@@ -1281,7 +1281,8 @@ void Inspector::settingsControls() {
   };
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("simplify to (0: no)", &settings_.simplifyTo, 100, 1000);
-  settings_.simplifyTo = settings_.simplifyTo > 0 ? std::max(kSmallestRemeshedShare, settings_.simplifyTo) : 0;
+  settings_.simplifyTo =
+      settings_.simplifyTo > 0 ? std::clamp(settings_.simplifyTo, kSmallestRemeshedShare, kMostRemeshedVertices) : 0;
   int param = static_cast<int>(settings_.param.method);
   if (combo("parameterization", param, "auto\0authalic\0conformal\0mean-value\0tutte\0lscm\0"))
     settings_.param.method = static_cast<ParamMethod>(param);
@@ -1291,11 +1292,16 @@ void Inspector::settingsControls() {
   int density = static_cast<int>(settings_.density.kind);
   if (combo("density", density, "uniform\0area\0curvature\0"))
     settings_.density.kind = static_cast<DensityKind>(density);
+  // A weight as the command line takes it, finite and not negative (the step buttons went
+  // below 0, and a negative weight made negative densities), else the one before.
+  const auto weight = [](const char* label, double& value) {
+    const double before = value;
+    ImGui::SetNextItemWidth(130);
+    if (ImGui::InputDouble(label, &value, 0.1, 1.0, "%.2f") && !(value >= 0 && std::isfinite(value))) value = before;
+  };
   if (settings_.density.kind == DensityKind::Curvature) {
-    ImGui::SetNextItemWidth(130);
-    ImGui::InputDouble("alpha", &settings_.density.alpha, 0.1, 1.0, "%.2f");
-    ImGui::SetNextItemWidth(130);
-    ImGui::InputDouble("beta", &settings_.density.beta, 0.1, 1.0, "%.2f");
+    weight("alpha", settings_.density.alpha);
+    weight("beta", settings_.density.beta);
   }
   int method = settings_.method == RemeshMethod::Relocate ? 0 : 1;
   if (combo("method", method, "relocate\0retriangulate\0"))
@@ -1323,7 +1329,7 @@ void Inspector::settingsControls() {
   settings_.lloyd.percentThreshold = std::min(settings_.lloyd.percentThreshold, 100.0);
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("polish (-1: none)", &settings_.polish, 1, 1);
-  settings_.polish = std::max(-1, settings_.polish);
+  settings_.polish = std::clamp(settings_.polish, -1, kMostPolishPasses);
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("max iterations", &settings_.lloyd.maxIterations, 10, 100);
   settings_.lloyd.maxIterations = std::clamp(settings_.lloyd.maxIterations, 1, kMostIterations);

@@ -205,7 +205,7 @@ const CLI::Validator kFileName(
 // (the default is 3) and frames bench-frames times: more is a slip of the keyboard that would
 // run for hours.
 const CLI::Validator kVerticesAsked = wholeNumber(kSmallestRemeshedShare, kMostRemeshedVertices);
-constexpr int kMostPolishPasses = 100, kMostFrames = 100000;
+constexpr int kMostFrames = 100000;
 
 // The options that say how a mesh is remeshed, under a heading of their own in the help: a
 // recording, which replays its own run, refuses them (refuseRemeshingOptions).

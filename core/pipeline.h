@@ -21,6 +21,8 @@
 
 namespace lloydscope {
 
+constexpr int kMostPolishPasses = 100;  // RemeshOptions::polish, from the command line or the window
+
 struct RemeshOptions {
   // > 0: quadric edge collapse to this many vertices first, and as many in the result (without
   // sites.count): a coarser input is remeshed finer, to that size too.
@@ -41,7 +43,7 @@ struct RemeshOptions {
   LloydOptions lloyd;
   bool measureFidelity = true;
   // Retriangulate's last clean-up in 3D (core/polish): -1 none, 0 Delaunay flips only, k > 0
-  // flips and k relaxation passes on the surface.
+  // flips and k relaxation passes on the surface (at most kMostPolishPasses).
   int polish = 3;
   PolishTarget polishTarget = PolishTarget::Centroid;
   bool snapToTips = true;  // the polish's last step (core/last_steps: snapToTips), when polish > 0
