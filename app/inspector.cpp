@@ -1399,15 +1399,21 @@ void Inspector::fileControls() {
   ImGui::SameLine();
   if (ImGui::Button("Open recording")) {
     try {
-      Recording r = loadRecording(recordingPath_);  // before the run stops, as for a mesh
+      RecordedRun run = recordedRun(loadRecording(recordingPath_));  // before the run stops, as for a mesh
       stopRun();
       session_.reset();
       input_.reset();
       inputTopology_.reset();  // the recording holds its disk only
       inputCharts_ = 0;
-      result_.before = measureQuality(r.input);
       forgetResult();
-      openReplay(std::move(r));
+      // Its own name, settings, map and iterations, as `inspect` opens it (the last run's name,
+      // solver and thresholds stayed on show, and Compare ran the recording's own solver again).
+      options_ = settings_ = run.options;
+      slitDisksAsked_ = options_.slitDisks;
+      result_ = std::move(run.result);
+      openReplay(std::move(result_.recording));
+      result_.recording = Recording{};  // the replay holds it
+      meshName_ = fileNameOf(recordingPath_);
       shownPath_ = recordingPath_;
       message_.clear();
     } catch (const Error& e) {

@@ -320,14 +320,9 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
   // By its name, or by its first bytes where it was saved under another (--record takes any).
   if ((in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) || isRecording(in)) {
     refuseRemeshingOptions(cmd, in);
-    RemeshResult result;
-    result.recording = loadRecording(in);  // its settings checked there
-    options = optionsFromSettings(result.recording.settings);
-    result.paramUsed = recordedParamMethod(result.recording.settings);
-    result.before = measureQuality(result.recording.input);
-    result.iterations = static_cast<int>(result.recording.iterations.size());
-    result.converged = result.recording.converged();
-    return result;
+    RecordedRun run = recordedRun(loadRecording(in));  // its settings checked there
+    options = run.options;
+    return std::move(run.result);
   }
   Mesh mesh = load(in, a.repair);
   RemeshResult result = remesh(mesh, options, in);

@@ -1017,6 +1017,18 @@ ParamMethod recordedParamMethod(const std::string& settings) {
   return used == toString(ParamMethod::Given) ? ParamMethod::Given : parseParamMethod(used);
 }
 
+RecordedRun recordedRun(Recording recording) {
+  RecordedRun run;
+  run.options = optionsFromSettings(recording.settings);
+  RemeshResult& r = run.result;
+  r.paramUsed = recordedParamMethod(recording.settings);
+  r.before = measureQuality(recording.input);
+  r.iterations = static_cast<int>(recording.iterations.size());
+  r.converged = recording.converged();
+  r.recording = std::move(recording);
+  return run;
+}
+
 constexpr NamedValue<RemeshMethod> kRemeshMethodNames[] = {{RemeshMethod::Relocate, "relocate"},
                                                             {RemeshMethod::Retriangulate, "retriangulate"}};
 

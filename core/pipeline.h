@@ -341,6 +341,15 @@ RemeshOptions optionsFromSettings(const std::string& settings);
 // ParamMethod::Given), else the one asked (older recordings). Throws Error as optionsFromSettings.
 ParamMethod recordedParamMethod(const std::string& settings);
 
+// A run as its recording tells it: the options it was made with, and a result holding the
+// recording, its map's method, its iterations and the quality of its mapped mesh (a recording
+// keeps no final result). The command line and the window's Open recording both open one so.
+struct RecordedRun {
+  RemeshOptions options;
+  RemeshResult result;
+};
+RecordedRun recordedRun(Recording recording);
+
 const char* toString(RemeshMethod method);
 RemeshMethod parseRemeshMethod(const std::string& text);  // throws Error on unknown names
 

@@ -495,6 +495,14 @@ TEST(Pipeline, TheSettingsLineGivesBackItsOptions) {
   quick.measureFidelity = false;
   const RemeshResult r = remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, quick, "cap");
   EXPECT_EQ(settingValue(r.recording.settings, "param-used"), toString(r.paramUsed));
+  // Opened again (inspect, and the window's Open recording): the run's options, map and
+  // iterations, and the quality of the mesh that was mapped.
+  const RecordedRun opened = recordedRun(r.recording);
+  EXPECT_EQ(describe(opened.options), describe(quick));
+  EXPECT_EQ(opened.result.paramUsed, r.paramUsed);
+  EXPECT_EQ(opened.result.iterations, 2);
+  EXPECT_EQ(opened.result.before.vertices, r.recording.input.vertexCount());
+  EXPECT_EQ(opened.result.recording.iterations.size(), r.recording.iterations.size());
 }
 
 // Sizes double precision cannot remesh are refused in one line saying which and why: they crashed
