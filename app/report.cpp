@@ -695,6 +695,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
 
 std::string metricsReport(const QualityMetrics& m, const Fidelity* fidelity) {
   std::ostringstream out;
+  // A markdown table, as remesh's: without its header row it rendered as lines of text.
+  out << "| Measure | Value |\n|---|---|\n";
   out << "| Vertices | " << m.vertices << " |\n| Faces | " << m.faces << " |\n";
   for (const Row& row : kRows) out << "| " << row.label << " | " << format(row.pattern, m.*row.field) << " |\n";
   if (fidelity) {

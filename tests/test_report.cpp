@@ -10,6 +10,15 @@ using namespace lloydscope;
 
 // A run without the measurement (--no-fidelity) says so, rather than "Hausdorff 0.000%": the
 // inspector's picture of ./build.sh run (then made with --no-fidelity) claimed a perfect fit.
+// `metrics` prints a markdown table: a header row and its separator first (without them the
+// rows rendered as lines of text), then one row per measure.
+TEST(Report, TheMetricsAreAMarkdownTable) {
+  QualityMetrics m;
+  m.vertices = 4;
+  const std::string table = metricsReport(m, nullptr);
+  EXPECT_EQ(table.rfind("| Measure | Value |\n|---|---|\n| Vertices | 4 |\n", 0), 0u) << table;
+}
+
 TEST(Report, TheDistanceToTheInputIsShownOnlyWhereMeasured) {
   RemeshOptions options;
   options.sites.count = 60;
