@@ -235,11 +235,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   settings_ = options_;
   noteFirst(firstPassTrialText(result_));
   noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
-  noteFirst(vertexCountText(result_, options_));
-  noteFirst(farFromTheInputText(result_.fidelity));
-  noteFirst(foldsText(result_.before, result_.after));
-  noteFirst(sharpCornerText(result_.before, result_.after));
-  noteFirst(curvatureText(result_.after));
+  noteTheResult();
   inputCharts_ = result_.charts;
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
@@ -273,6 +269,16 @@ Inspector::~Inspector() {
 
 void Inspector::noteFirst(const std::string& text) {
   runNotes_ = withNoteFirst(text, runNotes_);
+}
+
+// What the final result itself calls for a word on: the same for a run opened from the command
+// line and one made here (Restart and Run, Open mesh), which showed none of them.
+void Inspector::noteTheResult() {
+  noteFirst(vertexCountText(result_, options_));
+  noteFirst(farFromTheInputText(result_.fidelity));
+  noteFirst(foldsText(result_.before, result_.after));
+  noteFirst(sharpCornerText(result_.before, result_.after));
+  noteFirst(curvatureText(result_.after));
 }
 
 namespace {
@@ -466,6 +472,7 @@ void Inspector::finishSession() {
   try {
     result_ = session_->finish();
     result_.recording = Recording{};  // the replay holds its iterations already
+    noteTheResult();
   } catch (const Error& e) {  // the seams did not stitch: the iterations stay to look at
     forgetResult();
     runNotes_ = withNoteFirst(std::string(e.what()) + (usesResampling(options_) ? " (inspect --no-resample makes it without "

@@ -178,6 +178,7 @@ class Inspector {
   void startSession(const Mesh& input, const std::string& name);
   // Puts `text` (if any) before the run's notes so far.
   void noteFirst(const std::string& text);
+  void noteTheResult();  // the final result's own notes (folds, far from the input ...)
   // Before a new run or recording: the last run's result, and its notes, are not shown with it.
   void forgetResult();
   void startRun();
