@@ -813,10 +813,12 @@ void Inspector::uploadMesh() {
 
 CellFill Inspector::fillShown() const { return stage_ == Stage::Valence ? CellFill::Valence : fill_; }
 
+bool Inspector::cellsFilled() const { return fillShown() != CellFill::None && layers().cells2D; }
+
 Inspector::Shown3D Inspector::shown3D() const {
   const Layers shown = layers();
   return {iteration_,   shown.input3D,   shown.mapped3D, shown.sites3D, finalShown(),
-          colorByAngle_, fillShown() == CellFill::Valence && shown.cells2D, replay_->method()};
+          colorByAngle_, cellsFilled() && fillShown() == CellFill::Valence, replay_->method()};
 }
 
 void Inspector::showMessage(std::string text) {
@@ -1544,7 +1546,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   const float legendHeight = ImGui::CalcTextSize(legend.c_str()).y;
   // A fill's legend (its name over a colour bar, top left) has its own room too: over the
   // domain it hid a square domain's corner cells.
-  const bool filled = fillShown() != CellFill::None && shown.cells2D;
+  const bool filled = cellsFilled();
   const float fillTop = filled ? fillLegendTop() : 0.0f;
   const float fillLeft = filled ? fillLegendWidth() : 0.0f;
   const float fitWidth = std::max(1.0f, extent.x - fillLeft);
@@ -1685,7 +1687,8 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   const Domain& domain = replay_->domain();
   const IterationView& view = replay_->view(iteration_);
   const size_t fixedCount = replay_->recording().fixedSites.size();
-  if (fillShown() != CellFill::None && layers().cells2D) {
+  const bool filled = cellsFilled();
+  if (filled) {
     const std::vector<ImU32> colors = cellColors(view);
     for (size_t i = 0; i < view.cells.size(); ++i)
       for (const CellPiece& piece : view.cells[i].pieces)
@@ -1695,7 +1698,6 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   // A projector washes colours out: darker lines, stronger colours, bigger marks.
   const bool strong = presentation_;
   // Over a fill, the light triangles were the brightest lines in the pane: faint there.
-  const bool filled = fillShown() != CellFill::None && layers().cells2D;
   const float spacing = scale / std::sqrt(static_cast<float>(view.sites.size()) + 1);  // between sites, in pixels
   // Over a fill, cells a few pixels across were all lines and dots (the Valence stage at
   // 960x600 showed a dark blue disk): as the 3D view's wire, they fade from 10 pixels down to 4.

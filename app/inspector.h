@@ -195,6 +195,7 @@ class Inspector {
   CanvasGeometry buildCanvas(float scale);  // the 2D pane's lines, fills and marks
   std::vector<ImU32> cellColors(const IterationView& view);  // under the fill
   CellFill fillShown() const;  // the user's, or the lesson stage's (Valence)
+  bool cellsFilled() const;    // the 2D cells are shown, with a fill
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;
