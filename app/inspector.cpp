@@ -801,8 +801,8 @@ void Inspector::uploadMesh() {
     const std::vector<VertexValence> valences = siteValences(view);
     for (size_t i = 0; i < valences.size(); ++i) markIrregular(view.liftedSites[i], valences[i]);
   } else if (now.valences) {
-    const VertexEdges edges = vertexEdges(mesh);
-    for (int v = 0; v < mesh.vertexCount(); ++v) markIrregular(mesh.points[v], {edges.valence[v], edges.onBoundary[v]});
+    const std::vector<VertexValence> valences = vertexValences(mesh);
+    for (int v = 0; v < mesh.vertexCount(); ++v) markIrregular(mesh.points[v], valences[v]);
   }
   if (now.sites && !final)
     for (const Vec3& s : view.liftedSites)

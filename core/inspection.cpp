@@ -57,9 +57,9 @@ CellDetails describeCell(const Recording& recording, const Domain& domain,
 
 std::vector<VertexValence> siteValences(const IterationView& view) {
   std::vector<VertexValence> valences(view.sites.size());
-  const VertexEdges edges = vertexEdges(view.output);
+  const std::vector<VertexValence> ofVertices = vertexValences(view.output);
   for (size_t v = 0; v < view.outputSite.size(); ++v)
-    if (view.outputSite[v] >= 0) valences[view.outputSite[v]] = {edges.valence[v], edges.onBoundary[v]};
+    if (view.outputSite[v] >= 0) valences[view.outputSite[v]] = ofVertices[v];
   return valences;
 }
 

@@ -109,6 +109,13 @@ double shorterBorderEdge(const Mesh& mesh, const Rings& rings, int v) {
 
 }  // namespace
 
+std::vector<VertexValence> vertexValences(const Mesh& mesh) {
+  const VertexEdges edges = vertexEdges(mesh);
+  std::vector<VertexValence> valences(mesh.points.size());
+  for (size_t v = 0; v < valences.size(); ++v) valences[v] = {edges.valence[v], edges.onBoundary[v]};
+  return valences;
+}
+
 QualityMetrics measureQuality(const Mesh& mesh) {
   QualityMetrics m;
   m.vertices = mesh.vertexCount();

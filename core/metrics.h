@@ -28,6 +28,8 @@ struct VertexValence {
   int offset() const { return valence - (onBorder ? 4 : 6); }
   bool irregular() const { return isVertex() && offset() != 0; }  // what irregularBoundaryAware counts
 };
+// Every vertex's, from vertexEdges().
+std::vector<VertexValence> vertexValences(const Mesh& mesh);
 
 struct QualityMetrics {
   int vertices = 0, faces = 0, boundaryVertices = 0;
