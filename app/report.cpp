@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -245,28 +246,45 @@ nlohmann::json toJson(const Fidelity& f) {
           {"farthest_on", f.farthestOnReference ? "input" : "output"}};
 }
 
+namespace {
+
+// A settings line (core's describe(), as the text report and a recording write it) as an
+// object: one key a word ('-' read as '_'), numbers as numbers, yes/no as booleans. Every
+// setting the line names is there, and only those (alpha, beta and floor with the curvature
+// density, polish and fit with retriangulate ...).
+nlohmann::json settingsJson(const std::string& line) {
+  nlohmann::json settings = nlohmann::json::object();
+  std::istringstream words(line);
+  for (std::string word; words >> word;) {
+    const size_t equals = word.find('=');
+    if (equals == std::string::npos) continue;
+    std::string key = word.substr(0, equals);
+    std::replace(key.begin(), key.end(), '-', '_');
+    const std::string value = word.substr(equals + 1);
+    const char* const end = value.data() + value.size();
+    long long integer = 0;
+    double real = 0;
+    if (value == "yes" || value == "no")
+      settings[key] = value == "yes";
+    else if (const auto read = std::from_chars(value.data(), end, integer); read.ec == std::errc() && read.ptr == end)
+      settings[key] = integer;
+    else if (const auto read = std::from_chars(value.data(), end, real); read.ec == std::errc() && read.ptr == end)
+      settings[key] = real;
+    else
+      settings[key] = value;
+  }
+  return settings;
+}
+
+}  // namespace
+
 nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
   nlohmann::json output = toJson(r.after);
   // null where it was not measured (--no-fidelity): zeros would read as a perfect fit
   output["fidelity"] = r.fidelity.samples > 0 ? toJson(r.fidelity) : nlohmann::json();
-  return {{"settings",
-           {{"method", toString(o.method)},
-            {"param", toString(o.param.method)},
-            {"param_used", toString(r.paramUsed)},
-            {"border", toString(o.param.border)},
-            {"density", toString(o.density.kind)},
-            {"alpha", o.density.alpha},
-            {"beta", o.density.beta},
-            {"floor", o.density.floor},
-            {"sites", o.sites.fromInputVertices ? nlohmann::json("input-vertices")
-                                                : nlohmann::json(o.sites.count)},
-            {"solver", toString(o.lloyd.solver)},
-            {"distance_threshold", o.lloyd.distanceThreshold},
-            {"percent_threshold", o.lloyd.percentThreshold},
-            {"max_iterations", o.lloyd.maxIterations},
-            {"polish", o.polish},
-            {"snap_to_tips", o.snapToTips},
-            {"fit", o.fit && o.method == RemeshMethod::Retriangulate}}},
+  nlohmann::json settings = settingsJson(describe(o));
+  settings["param_used"] = toString(r.paramUsed);
+  return {{"settings", settings},
           {"input", toJson(r.before)},
           {"output", output},
           {"components", r.components},
@@ -715,7 +733,7 @@ nlohmann::json recordingSummary(const Recording& r) {
                           {"mean_displacement", it.meanDisplacement},
                           {"percent_moving", 100.0 * it.fractionMoving},
                           {"milliseconds", it.milliseconds}});
-  return {{"settings", r.settings},
+  return {{"settings", settingsJson(r.settings)},
           {"parameterized_vertices", r.input.vertexCount()},  // the mesh the map is of, not always the input
           {"parameterized_faces", r.input.faceCount()},
           {"fixed_sites", r.fixedSites.size()},

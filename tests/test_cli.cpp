@@ -98,7 +98,7 @@ TEST(Cli, NoSnapLeavesTheTipsAlone) {
   const auto snapped = run(""), unsnapped = run(" --no-snap");
   EXPECT_GE(snapped["snapped_tips"].get<int>(), 1);
   EXPECT_EQ(unsnapped["snapped_tips"].get<int>(), 0);
-  EXPECT_FALSE(unsnapped["settings"]["snap_to_tips"].get<bool>());
+  EXPECT_FALSE(unsnapped["settings"]["snap"].get<bool>());
   EXPECT_LT(snapped["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>(),
             unsnapped["output"]["fidelity"]["hausdorff_percent_diagonal"].get<double>());
 }
@@ -154,6 +154,33 @@ TEST(Cli, TooFewVerticesAskedIsAnError) {
   }
   EXPECT_NE(runCli("remesh --help").out.find("--sites INT:20..1000000"), std::string::npos);
   EXPECT_EQ(runCli("remesh " + path + " --sites 20 --no-fidelity -o " + test::tempPath("twenty.off")).code, 0);
+}
+
+// The JSON's settings are the text report's settings line, every key of it: "sites" read 0 for
+// "as many as the input" and for relocate's input vertices, and resample, the polish's target
+// and the slits were left out. A recording's summary has the same object.
+TEST(Cli, TheJsonSettingsAreTheSettingsLine) {
+  const std::string grid = test::assetPath("jittered_grid.off"), rec = test::tempPath("settings.lsrec");
+  auto settings = [&](const std::string& command) {
+    const CliRun r = runCli(command);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out)["settings"];
+  };
+  const auto relocated = settings("remesh " + grid + " --method relocate --no-fidelity --json");
+  EXPECT_EQ(relocated["sites"], "input-vertices");
+  EXPECT_EQ(relocated["resample"], false);
+  EXPECT_FALSE(relocated.contains("fit"));  // relocate has no fit
+  const auto retriangulated =
+      settings("remesh " + grid + " --no-fidelity --no-slit --max-iterations 3 --record " + rec + " --json");
+  EXPECT_EQ(retriangulated["sites"], "as-many-as-input");
+  EXPECT_EQ(retriangulated["resample"], true);
+  EXPECT_EQ(retriangulated["polish_target"], "centroid");
+  EXPECT_EQ(retriangulated["slit_disks"], false);
+  EXPECT_EQ(retriangulated["max_iterations"], 3);
+  EXPECT_EQ(retriangulated["distance_threshold"], 1e-6);
+  EXPECT_EQ(retriangulated["param_used"], "lscm");
+  const auto recorded = settings("info " + rec + " --json");
+  for (const auto& [key, value] : retriangulated.items()) EXPECT_EQ(recorded[key], value) << key;
 }
 
 TEST(Cli, TheCurvatureDensitysFloorIsAnOption) {
