@@ -142,7 +142,6 @@ void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
     Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result),
                         std::move(input));
     shot.view.applyTo(inspector);
-    inspector.showTimings(shot.timings);
     // ImGui settles its layout over the first frames; the pictures come after them.
     for (int i = 0; i < 2; ++i) renderer.frame([&] { inspector.frame(); }, false);
     inspector.startExport(shot.picture);

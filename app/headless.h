@@ -22,7 +22,6 @@ struct ScreenshotOptions {
   int width = 1280, height = 800;
   OpeningView view;  // iteration, pinned cells and triangles, camera
   bool validation = false;
-  bool timings = true;  // off: the picture depends only on the mesh and the settings
   double uiScale = 1.0;  // pixels per unit of the layout: the picture as on a screen that many times as dense
 };
 

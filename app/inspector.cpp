@@ -688,6 +688,7 @@ void OpeningView::applyTo(Inspector& inspector) const {
   inspector.setPresentation(presentation);
   if (compareSolvers) inspector.compareSolvers();
   inspector.setRepairOnOpen(repair);
+  inspector.showTimings(timings);
 }
 
 // The mesh the 3D pane fits: the final result where it is shown (with several components, all

@@ -81,6 +81,7 @@ struct OpeningView {
   bool final = false;                 // the 3D pane shows the final result (showFinal)
   std::optional<CellFill> fill;       // what colours the 2D cells
   bool repair = false;                // "Open mesh" repairs what it reads (--repair)
+  bool timings = true;                // off: no milliseconds shown, so a picture is the same on every run
   void applyTo(Inspector& inspector) const;
 };
 

@@ -377,9 +377,12 @@ struct InspectCommand {
         "Keys in the window: <- -> an iteration (Shift: ten; in a lesson, a stage), Home/End the first/last, "
         "Space play/pause, P presentation (classroom) mode, L the lesson, Escape unpin every cell and "
         "triangle, F (over the 3D or 2D view) fit it.");
-    cmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);
-    cmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots");
-    cmd->add_option("--iterations", iterations, "With --screenshot: FIRST:LAST, one numbered PNG per iteration");
+    // What only a picture has is refused without one (a window ignored it in silence).
+    CLI::Option* screenshot =
+        cmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);
+    cmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots")->needs(screenshot);
+    cmd->add_option("--iterations", iterations, "With --screenshot: FIRST:LAST, one numbered PNG per iteration")
+        ->needs(screenshot);
     cmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")->check(wholeNumber(0));
     cmd->add_flag("--final", shot.view.final,
                   "The 3D pane shows the final result (what remesh writes), with a red ring "
@@ -404,9 +407,10 @@ struct InspectCommand {
     cmd->add_option("--camera", shot.view.camera,
                     "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
                     "the point x y z looked at (the inspector's Copy view)");
-    cmd->add_option("--size", size, "Picture size WxH, " + pictureSizes() + " (default 1280x800)");
+    cmd->add_option("--size", size, "With --screenshot: picture size WxH, " + pictureSizes() + " (default 1280x800)")
+        ->needs(screenshot);
     cmd->add_flag("--validation", shot.validation, "Enable the Vulkan validation layer; fail if it reports anything");
-    cmd->add_flag("--no-timings", noTimings, "Leave timings out of the picture, so that it is the same on every run");
+    cmd->add_flag("--no-timings", noTimings, "Leave timings out of the picture (or the window), so that it is the same on every run");
     cmd->add_option("--ui-scale", uiScale,
                     "Draw the inspector this many times as large, for a screen that many times as dense as "
                     "96 dpi (default: in a window the screen's own scale, from its Xft.dpi; in a picture 1, "
@@ -428,7 +432,7 @@ struct InspectCommand {
   int run() {
     parseSize(size, shot.width, shot.height);
     if (uiScale > 0) shot.uiScale = uiScale;
-    shot.timings = !noTimings;
+    shot.view.timings = !noTimings;
     shot.picture.pane = parsePane(pane);
     if (!stage.empty()) shot.view.stage = parseStage(stage);
     if (!fill.empty()) shot.view.fill = parseCellFill(fill);

@@ -728,6 +728,10 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --ui-scale nan --screenshot x.png", "expected a number from 0.5 to 4, not 'nan'"},  // was taken
       {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
       {"inspect " + mesh + " --iterations 99999999999999999999:1 --screenshot x.png", "expected FIRST:LAST"},
+      // A picture's options without a picture (a window ignored them in silence).
+      {"inspect " + mesh + " --pane 2d", "--pane requires --screenshot"},
+      {"inspect " + mesh + " --iterations 0:5", "--iterations requires --screenshot"},
+      {"inspect " + mesh + " --size 960x600", "--size requires --screenshot"},
       // No file name (an unset variable): the run went on and wrote nothing.
       {"remesh " + mesh + " -o ''", "--output: expected a file name, not an empty one"},
       {"remesh " + mesh + " --record ''", "--record: expected a file name, not an empty one"},
