@@ -420,7 +420,7 @@ void Inspector::forgetResult() {
 }
 
 void Inspector::startRun() {
-  if (!session_ || !workerDone_ || session_->finished()) return;
+  if (!session_ || running() || session_->finished()) return;
   stopComparingForARun();  // the run appends to the replay the comparison reads
   if (lesson_.playing()) toggleLesson();  // its plan is of the iterations before the run
   stopRequested_ = false;
@@ -832,7 +832,7 @@ void Inspector::showMessage(std::string text) {
 }
 
 double Inspector::secondsToChange() const {
-  if (!workerDone_ || worker_.joinable() || exportJob_ || fitPending_) return 0;
+  if (running() || exportJob_ || fitPending_) return 0;
   double seconds = std::numeric_limits<double>::infinity();
   if (playing_) seconds = std::max(0.0f, 1.0f - playClock_) / playSpeed_;
   if (lesson_.playing()) seconds = std::min<double>(seconds, lesson_.secondsToNextStep() / (playSpeed_ / 10.0f));
@@ -948,7 +948,7 @@ void Inspector::toggleLesson() {
   }
   // The lesson's plan is made of the iterations there are: started during a run, it ended on
   // an iteration of the run's first second and stayed there.
-  if (!workerDone_) {
+  if (running()) {
     showMessage("A lesson plays a finished run: Stop the run, or let it finish, then start the lesson.");
     return;
   }
@@ -1146,7 +1146,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   }
   const int iterations = replay_->iterationCount();
   const char* plural = iterations == 1 ? "" : "s";
-  if (session_ && !workerDone_)
+  if (session_ && running())
     ImGui::Text("Running: %d iteration%s so far", iterations, plural);
   else if (session_ && session_->finished())  // for the frame before finishSession() (a second)
     wrappedText("Done after " + std::to_string(iterations) + " iteration" + plural + ": the clean-up on the surface follows");
@@ -1171,12 +1171,12 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   const std::string withOthers = std::string("with ") + toString(others[0]) + " and " + toString(others[1]);
   // Their curves join the convergence plots when done. During a run the button waits (it was
   // hidden, and a class did not know it was there).
-  const bool comparing = comparer_.joinable(), running = !workerDone_ || worker_.joinable();
-  if (comparing || running) ImGui::BeginDisabled();
+  const bool comparing = comparer_.joinable();
+  if (comparing || running()) ImGui::BeginDisabled();
   if (ImGui::Button(((comparing ? "Comparing " : "Compare ") + withOthers + (comparing ? "..." : "")).c_str()))
     startComparing();
-  if (comparing || running) ImGui::EndDisabled();
-  if (running && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+  if (comparing || running()) ImGui::EndDisabled();
+  if (running() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("After the run: Stop it, or let it finish");
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pick = pickTriangles2D_ ? 1 : 0;
@@ -1909,7 +1909,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   if (ImGui::Button(">|")) setIteration(last);
   ImGui::SameLine();
-  const bool running = !workerDone_;
+  const bool running = this->running();
   if (!input_) ImGui::BeginDisabled();
   if (ImGui::Button("Restart")) {  // from initial sites, with the settings
     try {
@@ -1924,9 +1924,14 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (!canStep) ImGui::BeginDisabled();
   if (ImGui::Button("Step")) {
     stopComparingForARun();
-    replay_->append(session_->step());
-    setIteration(replay_->iterationCount() - 1);
-    if (session_->finished()) finishSession();
+    try {
+      replay_->append(session_->step());
+      setIteration(replay_->iterationCount() - 1);
+      if (session_->finished()) finishSession();
+    } catch (const std::exception& e) {  // out of memory, say: said as a run's failure is (it ended the program)
+      runError_ = e.what();
+      joinWorker();
+    }
   }
   ImGui::SameLine();
   if (ImGui::Button("Run")) startRun();

@@ -182,6 +182,10 @@ class Inspector {
   void noteTheResult();  // the final result's own notes (folds, far from the input ...)
   // Before a new run or recording: the last run's result, and its notes, are not shown with it.
   void forgetResult();
+  // A worker steps the session, or has stopped and is not joined yet (the frame joins it): Step
+  // and Run wait for the join (Run started a thread over the one not joined, which ends the
+  // program).
+  bool running() const { return !workerDone_ || worker_.joinable(); }
   void startRun();
   void stopRun();
   void joinWorker();  // the worker's iterations collected, and what ended it said
