@@ -349,7 +349,7 @@ struct RemeshCommand {
   RemeshArgs args;
 
   void add(CLI::App& app) {
-    cmd = app.add_subcommand("remesh", "Remesh a disk-topology triangle mesh");
+    cmd = app.add_subcommand("remesh", "Remesh a triangle mesh (a surface that is not a disk is cut open first)");
     cmd->add_option("input", args.input, "Input mesh (OFF, OBJ or PLY)")->required();
     cmd->add_option("-o,--output", args.output, "Output mesh (OFF, OBJ or PLY)")->check(kFileName);
     cmd->add_option("--record", args.record, "Save every Lloyd iteration to this file")->check(kFileName);
@@ -472,7 +472,7 @@ struct FrameBenchCommand {
   int frames = 100;
 
   void add(CLI::App& app) {
-    cmd = app.add_subcommand("bench-frames", "Median frame time of the inspector while scrubbing a recording (headless)");
+    cmd = app.add_subcommand("bench-frames", "Median frame time of the inspector while scrubbing a run's iterations (headless)");
     cmd->add_option("input", args.input, "Mesh")->required();
     cmd->add_option("--frames", frames, "Frames to time" + defaultIs(frames))->check(wholeNumber(1, kMostFrames));
     cmd->add_option("--size", size, "Frame size WxH, " + pictureSizes() + " (default 1280x800)");
