@@ -38,7 +38,9 @@ TEST(Inspection, CellNumbersMatchTheShoelaceFormulas) {
       const Vec2 unweighted = d.shoelaceSums / (6.0 * d.shoelaceArea);
       EXPECT_NEAR((unweighted - d.centroid).norm(), 0.0, 1e-9) << i;  // rho = 1
     }
-    EXPECT_NEAR((d.moment / d.mass - d.centroid).norm(), 0.0, 1e-12);
+    // rho = 1: the mass is the area and the moment the shoelace sums / 6, each computed apart
+    EXPECT_NEAR(d.mass, d.area, 1e-14) << i;
+    EXPECT_NEAR((d.moment - d.shoelaceSums / 6.0).norm(), 0.0, 1e-14) << i;
     area += d.area;
     surface += d.surfaceArea;
   }
@@ -113,6 +115,7 @@ TEST(Inspection, TheSitesValencesAreTheResultsIrregularity) {
     EXPECT_GT(irregular, 0);
     EXPECT_NEAR(100.0 * irregular / vertices, measureQuality(view.output).irregularBoundaryAware, 1e-9);
     if (method != RemeshMethod::Relocate) continue;
+    ASSERT_FALSE(r.movableVertex.empty());  // else the replay retriangulates, and nothing below runs
     const VertexEdges input = vertexEdges(r.input);
     for (size_t i = 0; i < r.movableVertex.size(); ++i) {
       const VertexValence& s = valences[r.fixedSites.size() + i];
@@ -144,11 +147,9 @@ TEST(Inspection, TriangleNumbers) {
       shares += d.areaUV * d.areaDistortion;  // = the UV area share times r: the 3D area share
       EXPECT_NEAR(d.angles3D[0] + d.angles3D[1] + d.angles3D[2], 180.0, 1e-9);
       EXPECT_NEAR(d.anglesUV[0] + d.anglesUV[1] + d.anglesUV[2], 180.0, 1e-9);
-      EXPECT_EQ(d.minAngle, std::min({d.angles3D[0], d.angles3D[1], d.angles3D[2]}));
       total += d.area3D;
       for (int k = 0; k < 3; ++k) {
         ASSERT_GE(d.sites[k], 0);  // relocate: the border vertices are the fixed sites
-        EXPECT_EQ(d.atSite[k], view.outputUV[d.corners[k]] == view.sites[d.sites[k]]);
         if (method == RemeshMethod::Retriangulate) EXPECT_TRUE(d.atSite[k]);
       }
     }
@@ -157,11 +158,6 @@ TEST(Inspection, TriangleNumbers) {
     // shares, which sum to 1.
     EXPECT_NEAR(totalUV, mapArea(view.output, view.outputUV), 1e-12);
     EXPECT_NEAR(shares / totalUV, 1.0, 1e-9);
-    if (method == RemeshMethod::Retriangulate) {
-      // Every corner is a site.
-      const TriangleDetails d = describeTriangle(view, 10);
-      for (int s : d.sites) EXPECT_GE(s, 0);
-    }
   }
 }
 

@@ -2,6 +2,8 @@
 #include "lloyd.h"
 #include "test_support.h"
 
+#include <algorithm>
+
 using namespace lloydscope;
 
 namespace {
@@ -89,17 +91,37 @@ TEST(Lloyd, LbfgsReachesALowerEnergyInFewerIterations) {
   LloydSolver lbfgs(domain, {}, sites, options);
   lbfgs.run();
   EXPECT_LT(lbfgs.iterations().back().energy, lloyd.iterations().back().energy);
+  // ... and got below Lloyd's 40th energy in fewer than 40 iterations.
+  const auto& its = lbfgs.iterations();
+  const auto below = std::find_if(its.begin(), its.end(), [&](const IterationRecord& it) {
+    return it.energy < lloyd.iterations().back().energy;
+  });
+  EXPECT_LT(below - its.begin(), 20);  // 13 here
 }
 
+// A run stops at its first iteration with fewer than percentThreshold % of the sites farther
+// than distanceThreshold from their centroids, and not before: a looser share stops earlier
+// with sites still moving, a looser distance stops earlier too.
 TEST(Lloyd, ConvergenceUsesBothThresholds) {
   const Domain domain = unitSquare();
-  LloydOptions options;
-  options.solver = CvtSolver::Lloyd;
-  options.distanceThreshold = 0.5;  // nobody moves that far: converged after one iteration
-  LloydSolver solver(domain, {}, {{0.1, 0.1}, {0.9, 0.9}}, options);
-  solver.run();
-  EXPECT_EQ(solver.iterations().size(), 1u);
-  EXPECT_TRUE(solver.converged());
+  auto run = [&](double distance, double percent) {
+    LloydOptions options;
+    options.solver = CvtSolver::Lloyd;
+    options.maxIterations = 2000;
+    options.distanceThreshold = distance;
+    options.percentThreshold = percent;
+    LloydSolver solver(domain, {}, spiral(40), options);
+    solver.run();
+    EXPECT_TRUE(solver.converged()) << distance << " " << percent;
+    const auto& its = solver.iterations();
+    for (size_t k = 0; k + 1 < its.size(); ++k) EXPECT_GE(100 * its[k].fractionMoving, percent) << k;
+    EXPECT_LT(100 * its.back().fractionMoving, percent);
+    return its;
+  };
+  const auto strict = run(1e-4, 5), loose = run(1e-4, 50), far = run(1e-3, 5);
+  EXPECT_LT(loose.size(), strict.size());
+  EXPECT_GT(loose.back().fractionMoving, 0.0);  // the share stopped it, some sites still moving
+  EXPECT_LT(far.size(), strict.size());
 }
 
 TEST(CvtHessian, IsTheDerivativeOfTheGradient) {

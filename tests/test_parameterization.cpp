@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 #include <Eigen/Dense>
+#include <set>
 
 using namespace lloydscope;
 
@@ -104,8 +105,13 @@ TEST(Parameterization, ASquareBorderOfFourVerticesHasFourCorners) {
     o.method = method;
     o.border = Border::Square;
     testing::internal::CaptureStderr();
-    EXPECT_NO_THROW(parameterize(raised, o, "raised"));
+    Parameterization p;
+    EXPECT_NO_THROW(p = parameterize(raised, o, "raised"));
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    // Each vertex on a corner of its own.
+    std::set<std::pair<double, double>> corners;
+    for (const Vec2& uv : p.uv) corners.insert({uv.x(), uv.y()});
+    EXPECT_EQ(corners, (std::set<std::pair<double, double>>{{0, 0}, {1, 0}, {0, 1}, {1, 1}}));
   }
 }
 

@@ -232,8 +232,17 @@ TEST(Recording, SavingReplacesTheFileWholeAndLeavesNoTemporary) {
 }
 
 TEST(Recording, SavingToAnUnwritablePlaceKeepsNothingHalfWritten) {
-  const std::string path = test::tempPath("no-such-dir/x.lsrec");
-  EXPECT_THROW(saveRecording(sphereCapRun().recording, path), Error);
+  const Recording& run = sphereCapRun().recording;
+  EXPECT_THROW(saveRecording(run, test::tempPath("no-such-dir/x.lsrec")), Error);
+  // A folder where the file would go: refused, nothing left of the recording (no temporary
+  // beside it), and the folder stays.
+  const std::string folder = test::emptyFolder("unwritable"), path = folder + "/x.lsrec";
+  std::filesystem::create_directory(path);
+  EXPECT_THROW(saveRecording(run, path), Error);
+  EXPECT_EQ(test::filesIn(folder), std::vector<std::string>{"x.lsrec"});
+  EXPECT_TRUE(std::filesystem::is_directory(path));
+  // A device full at once: an error, not "saved".
+  EXPECT_THROW(saveRecording(run, "/dev/full"), Error);
 }
 
 TEST(Recording, RelaxAgainWithAnotherSolverStartsWhereTheRunStarted) {
@@ -249,7 +258,7 @@ TEST(Recording, RelaxAgainWithAnotherSolverStartsWhereTheRunStarted) {
   EXPECT_EQ(again.front().sites, r.iterations.front().sites);
   EXPECT_DOUBLE_EQ(again.front().energy, r.iterations.front().energy);
   for (size_t k = 1; k < again.size(); ++k) EXPECT_LE(again[k].energy, again[k - 1].energy + 1e-15);
-  // L-BFGS got lower in fewer iterations.
+  // The run's own L-BFGS, to convergence, ends lower than 30 iterations of Lloyd's.
   EXPECT_LT(r.iterations.back().energy, again.back().energy);
 }
 

@@ -67,6 +67,7 @@ TEST(Sites, AChamferedCornerGivesOneBorderSampleNotTwo) {
   const InitialSites sites = initialSites(cleaned, p, domain, o, "m.off");
   const double spacing = std::sqrt(2.0 * surfaceArea(cleaned) / (std::sqrt(3.0) * 50));
   const size_t n = sites.fixed.size();
+  ASSERT_GT(n, 2u);
   for (size_t i = 0; i < n; ++i) {
     const Vec3 a = lift(cleaned, domain, sites.fixed[i]);
     const Vec3 b = lift(cleaned, domain, sites.fixed[(i + 1) % n]);

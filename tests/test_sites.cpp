@@ -140,6 +140,7 @@ TEST(Sites, FixedPointsLieOnTheBorderEdges) {
   o.count = 300;
   const InitialSites sites = initialSites(grid, param, domain, o, "m.off");
   ASSERT_EQ(sites.fixedPoints.size(), sites.fixed.size());
+  ASSERT_GT(sites.fixedPoints.size(), 2u);
   const std::vector<int>& loop = param.boundaryLoop;
   for (const Vec3& p : sites.fixedPoints) {
     double nearest = INFINITY;
