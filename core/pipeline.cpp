@@ -1022,6 +1022,7 @@ RecordedRun recordedRun(Recording recording) {
   run.options = optionsFromSettings(recording.settings);
   RemeshResult& r = run.result;
   r.paramUsed = recordedParamMethod(recording.settings);
+  r.distortion = measureDistortion(recording.input, recording.uv);
   r.before = measureQuality(recording.input);
   r.iterations = static_cast<int>(recording.iterations.size());
   r.converged = recording.converged();

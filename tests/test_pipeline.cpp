@@ -503,6 +503,11 @@ TEST(Pipeline, TheSettingsLineGivesBackItsOptions) {
   EXPECT_EQ(opened.result.iterations, 2);
   EXPECT_EQ(opened.result.before.vertices, r.recording.input.vertexCount());
   EXPECT_EQ(opened.result.recording.iterations.size(), r.recording.iterations.size());
+  // The map's distortion, which the Parameterize stage quotes (it read 1.00 to 1.00, none).
+  EXPECT_GT(r.distortion.maxAreaRatio, 1.1);
+  EXPECT_DOUBLE_EQ(opened.result.distortion.minAreaRatio, r.distortion.minAreaRatio);
+  EXPECT_DOUBLE_EQ(opened.result.distortion.maxAreaRatio, r.distortion.maxAreaRatio);
+  EXPECT_DOUBLE_EQ(opened.result.distortion.meanLogAreaRatio, r.distortion.meanLogAreaRatio);
 }
 
 // Sizes double precision cannot remesh are refused in one line saying which and why: they crashed
