@@ -1607,12 +1607,13 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   // Sites a few pixels apart are a blob of dots and rings (1000 sites in presentation mode at
   // 960x600): the pane says how to see them. Where they are closest, not on average: a map
   // squeezes some parts of the surface (the camel head's middle, 2-5 px where the mean was 9).
+  // In the room right of the domain where there is some (a wide, low pane); where there is
+  // none, over its corner only while the mouse, which can zoom, is over the pane (it hid cells
+  // in every picture of a small pane, where no mouse can zoom).
+  const float room = p0.x + extent.x - (center.x + 0.5f * scale) - 12;
   if (const std::string text = crowdedSitesHint(
           closeSiteSpacing(replay_->view(iteration_).cells, replay_->recording().fixedSites.size()) * scale);
-      shown.sites2D && !text.empty()) {
-    // In the room right of the domain where there is some (a wide, low pane), over its corner
-    // where there is none.
-    const float room = p0.x + extent.x - (center.x + 0.5f * scale) - 12;
+      shown.sites2D && !text.empty() && (room >= 80 || ImGui::IsWindowHovered())) {
     const std::string hint = wrappedLines(text, room >= 80 ? room : 0.5f * extent.x);
     boxedText(dl, ImVec2(p0.x + extent.x - ImGui::CalcTextSize(hint.c_str()).x - 8, p0.y + 4 + (filled ? fillLegendTop() : 0.0f)),
               hint.c_str());

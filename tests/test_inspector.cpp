@@ -591,6 +591,23 @@ TEST(Inspector, TheValenceLegendFitsALowPane) {
   }
 }
 
+// Where no room is left beside the domain (a stage's caption over a small window), the hint
+// that the sites are crowded waits for the mouse over the pane: in a picture it covered the
+// disk's top right (421 pixels of its text's colour there, 53 without it).
+TEST(Inspector, TheCrowdedSitesHintLeavesTheCellsUncovered) {
+  const std::string png = test::tempPath("crowded.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --method relocate --max-iterations 20 --stage valence --pane 2d", png),
+            0);
+  const Picture picture = readPng(png);
+  int text = 0;
+  for (int y = picture.height / 8; y < picture.height / 2; ++y)
+    for (int x = picture.width * 6 / 10; x < picture.width; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      text += std::abs(c[0] - 25) <= 10 && std::abs(c[1] - 25) <= 10 && std::abs(c[2] - 25) <= 10;  // boxedText's
+    }
+  EXPECT_LT(text, 150);
+}
+
 // So does a colour bar, shorter: at its full 90 pixels its foot and its lower label went under
 // the pane's legend (85 pixels of its outline showed, the label not at all); it ends above it now.
 TEST(Inspector, TheColourBarFitsALowPane) {
