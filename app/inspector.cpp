@@ -887,7 +887,13 @@ void Inspector::frame() {
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float left = presentation_ ? 0.0f : std::max(280.0f, display.x * 0.23f);
   std::optional<Caption> shownCaption;
-  if (stage_) shownCaption = caption(*stage_, captionFacts());
+  if (stage_) {
+    shownCaption = caption(*stage_, captionFacts());
+    if (!bigFont) {  // ImGui's small font drew the subscripts as grey smudges
+      shownCaption->formula = inlineIndices(shownCaption->formula);
+      shownCaption->numbers = inlineIndices(shownCaption->numbers);
+    }
+  }
   const float captionHeight = shownCaption ? captionPaneHeight(*shownCaption, display.x - left) : 0;
   const float timelineHeight = (presentation_ ? 2 * line + 30 : 64.0f) + (timelineWrapped_ ? ImGui::GetFrameHeightWithSpacing() : 0);
   const float plotsHeight = presentation_ ? std::max(170.0f, display.y * 0.22f)

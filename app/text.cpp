@@ -5,7 +5,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
+#include <tuple>
+#include <utility>
 
 namespace lloydscope {
 
@@ -47,6 +50,29 @@ std::string wrappedLines(const std::string& text, float width, const std::string
   for (const std::string& line : wrapAtSpaces(text, width, measure, gap)) lines += line + "\n";
   lines.pop_back();  // wrapAtSpaces gives one line at least
   return lines;
+}
+
+std::string inlineIndices(const std::string& text) {
+  // The subscripts the captions use (UTF-8), and what each is written as.
+  static const std::pair<const char*, char> kSubscripts[] = {
+      {"\u1D62", 'i'}, {"\u2C7C", 'j'}, {"\u2096", 'k'}, {"\u2099", 'n'}, {"\u209B", 's'}, {"\u208A", '+'},
+      {"\u208B", '-'}, {"\u2080", '0'}, {"\u2081", '1'}, {"\u2082", '2'}, {"\u2083", '3'}};
+  const auto subscriptAt = [&](size_t at) -> std::pair<size_t, char> {
+    for (const auto& [utf8, plain] : kSubscripts)
+      if (text.compare(at, std::strlen(utf8), utf8) == 0) return {std::strlen(utf8), plain};
+    return {0, 0};
+  };
+  std::string out;
+  for (size_t at = 0; at < text.size();) {
+    std::string run;  // the subscripts from here on
+    for (auto [length, plain] = subscriptAt(at); length > 0; std::tie(length, plain) = subscriptAt(at)) {
+      run += plain;
+      at += length;
+    }
+    if (run.empty()) out += text[at++];
+    else out += run.size() == 1 ? "_" + run : "_(" + run + ")";
+  }
+  return out;
 }
 
 void captionText(const std::string& title, const std::string& formula, const std::string& numbers) {

@@ -30,6 +30,10 @@ std::string wrappedLines(const std::string& text, float width, const std::string
 // short at 100,000 sites.
 float numberColumnWidth(const std::string& header, const std::vector<std::string>& values);
 
+// `text` with its subscripts written inline for ImGui's small font, which draws them as smudges a
+// few pixels high: "sᵢ" as "s_i", "yⱼ₊₁" as "y_(j+1)". Other characters stay as they are.
+std::string inlineIndices(const std::string& text);
+
 // A lesson caption as its pane shows it: the title (dark red), the formula wrapped beside it,
 // the numbers (blue) wrapped under both, in the room left on the line.
 void captionText(const std::string& title, const std::string& formula, const std::string& numbers);

@@ -81,6 +81,14 @@ TEST(Fonts, EveryCaptionCharacterHasAGlyphInBothFonts) {
 // The caption pane is as tall as its caption: laid out in a pane, the caption ends where
 // captionTextHeight says, at every width (the pane was three lines tall whatever the caption,
 // and a caption of four lost its last line at 960x600).
+// In ImGui's small font the subscripts were smudges four pixels high: written inline there.
+TEST(Text, SubscriptsAreWrittenInlineForTheSmallFont) {
+  EXPECT_EQ(inlineIndices("gradient 2 Mᵢ (sᵢ − cᵢ)"), "gradient 2 M_i (s_i − c_i)");
+  EXPECT_EQ(inlineIndices("½ Σ (xⱼ yⱼ₊₁ − xⱼ₊₁ yⱼ)"), "½ Σ (x_j y_(j+1) − x_(j+1) y_j)");
+  EXPECT_EQ(inlineIndices("ρ |x − s|² dA, 30°"), "ρ |x − s|² dA, 30°");  // nothing else changes
+  EXPECT_EQ(inlineIndices(""), "");
+}
+
 TEST(Text, TheCaptionTakesTheHeightItIsGiven) {
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
