@@ -15,6 +15,7 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -174,7 +175,7 @@ CLI::Validator finiteNumber(double low, const std::string& expected,
         if (CLI::detail::lexical_cast(text, value) && std::isfinite(value) && value >= low && value <= high) return "";
         return "expected " + expected + ", not '" + text + "'";
       },
-      "NUMBER");
+      expected.substr(expected.find(' ') + 1));  // "number from 0.5 to 4" in the help, not "NUMBER"
 }
 // A whole number from `low` up (CLI11's Range said "Value abc not in range" of a word).
 CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) {
@@ -303,10 +304,17 @@ void refuseRemeshingOptions(const CLI::App& cmd, const std::string& recording) {
 // any: 100000x100000 went on to ask Vulkan for 40 GB).
 void parseSize(const std::string& text, int& width, int& height) {
   if (text.empty()) return;
+  // Digits on both sides of the x and nothing else (" 960x600" was taken, "960x600 " not).
+  const auto side = [&](std::string_view digits, long long& value) {
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos)
+      throw Error("--size must look like 1280x800, not '" + text + "'");
+    if (std::from_chars(digits.data(), digits.data() + digits.size(), value).ec != std::errc())
+      throw Error("--size must be " + pictureSizes() + ", not '" + text + "'");
+  };
+  const size_t x = text.find('x');
   long long w = 0, h = 0;
-  char rest;
-  if (std::sscanf(text.c_str(), "%lldx%lld%c", &w, &h, &rest) != 2)
-    throw Error("--size must look like 1280x800, not '" + text + "'");
+  side(std::string_view(text).substr(0, x), w);
+  side(x == std::string::npos ? std::string_view() : std::string_view(text).substr(x + 1), h);
   requirePictureSize(w, h);
   width = static_cast<int>(w);
   height = static_cast<int>(h);
@@ -381,12 +389,15 @@ struct InspectCommand {
     CLI::Option* screenshot =
         cmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);
     cmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots")->needs(screenshot);
-    cmd->add_option("--iterations", iterations, "With --screenshot: FIRST:LAST, one numbered PNG per iteration")
-        ->needs(screenshot);
-    cmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")->check(wholeNumber(0));
-    cmd->add_flag("--final", shot.view.final,
-                  "The 3D pane shows the final result (what remesh writes), with a red ring "
-                  "where it is farthest from the input");
+    CLI::Option* pictures =
+        cmd->add_option("--iterations", iterations, "With --screenshot: FIRST:LAST, one numbered PNG per iteration")
+            ->needs(screenshot);
+    cmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")
+        ->check(wholeNumber(0))
+        ->excludes(pictures);
+    CLI::Option* final = cmd->add_flag("--final", shot.view.final,
+                                       "The 3D pane shows the final result (what remesh writes), with a red ring "
+                                       "where it is farthest from the input");
     cmd->add_option("--select-cell", shot.view.cells, "Pin this cell (repeatable)")->check(wholeNumber(0));
     cmd->add_option("--select-triangle", shot.view.triangles,
                     "Pin this triangle of the result (with --final: of the final result; repeatable)")
@@ -401,9 +412,11 @@ struct InspectCommand {
                   "Also relax the run's start with the other two solvers and plot their curves");
     cmd->add_flag("--presentation", shot.view.presentation,
                   "Classroom mode: large fonts, thick lines, no controls pane");
+    // A stage shows the result its lesson step shows (the Result stage: the final one).
     cmd->add_option("--stage", stage,
                     "Show one stage of the lesson with its caption: load, parameterize, "
-                    "voronoi, centroids, move, lift, result or valence");
+                    "voronoi, centroids, move, lift, result or valence")
+        ->excludes(final);
     cmd->add_option("--camera", shot.view.camera,
                     "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
                     "the point x y z looked at (the inspector's Copy view)");
@@ -434,8 +447,9 @@ struct InspectCommand {
     if (uiScale > 0) shot.uiScale = uiScale;
     shot.view.timings = !noTimings;
     shot.picture.pane = parsePane(pane);
-    if (!stage.empty()) shot.view.stage = parseStage(stage);
-    if (!fill.empty()) shot.view.fill = parseCellFill(fill);
+    if (cmd->count("--stage")) shot.view.stage = parseStage(stage);
+    if (cmd->count("--fill")) shot.view.fill = parseCellFill(fill);
+    requireFillShown();
     shot.view.repair = args.repair;
     if (!iterations.empty()) parseIterations();
     RemeshOptions options;
@@ -453,6 +467,16 @@ struct InspectCommand {
     return 0;
   }
 
+  // A stage draws its own layers: a fill it would not show is refused, not left out in silence.
+  void requireFillShown() const {
+    if (!shot.view.stage || !shot.view.fill || *shot.view.fill == CellFill::None) return;
+    const std::string stageName = toString(*shot.view.stage);
+    if (*shot.view.stage == Stage::Valence && *shot.view.fill != CellFill::Valence)
+      throw Error("--fill " + fill + ": the valence stage fills the cells by valence");
+    if (!layersFor(*shot.view.stage).cells2D)
+      throw Error("--fill " + fill + ": the " + stageName + " stage shows no cells to fill");
+  }
+
   // --iterations FIRST:LAST
   void parseIterations() {
     long long first = 0, last = 0;
@@ -460,6 +484,7 @@ struct InspectCommand {
     if (std::sscanf(iterations.c_str(), "%lld:%lld%c", &first, &last, &rest) != 2 || first < 0 ||
         first > std::numeric_limits<int>::max() || last > std::numeric_limits<int>::max())  // 0:4294967296 wrapped to 0:0
       throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
+    if (first > last) throw Error("--iterations " + iterations + ": FIRST comes after LAST (the pictures go from FIRST up to LAST)");
     shot.picture.first = static_cast<int>(first);
     shot.picture.last = static_cast<int>(last);
   }

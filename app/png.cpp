@@ -6,6 +6,7 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <vector>
 
 namespace lloydscope {
@@ -39,8 +40,12 @@ void writePng(const std::string& path, const unsigned char* pixels, int width, i
 }
 
 void requirePngPath(const std::string& path) {
-  if (lowercaseExtension(path) != ".png")  // .png or .PNG, as meshes take .off or .OFF
-    throw Error(path + ": exports are PNG files (end the name with .png)");
+  if (lowercaseExtension(path) != ".png") {  // .png or .PNG, as meshes take .off or .OFF
+    // ".png" alone is a name with no extension, not an extension with no name
+    const bool nameMissing = lowercaseExtension("x" + std::filesystem::path(path).filename().string()) == ".png";
+    throw Error(path + (nameMissing ? ": a picture needs a name before its .png"
+                                    : ": exports are PNG files (end the name with .png)"));
+  }
   requireWritable(path);
 }
 

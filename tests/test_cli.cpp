@@ -728,6 +728,18 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --ui-scale nan --screenshot x.png", "expected a number from 0.5 to 4, not 'nan'"},  // was taken
       {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
       {"inspect " + mesh + " --iterations 99999999999999999999:1 --screenshot x.png", "expected FIRST:LAST"},
+      // Options a picture would not show, refused (they were left out in silence).
+      {"inspect " + mesh + " --stage voronoi --final --screenshot x.png", "--final excludes --stage"},
+      {"inspect " + mesh + " --iteration 3 --iterations 0:2 --screenshot x.png", "--iterations excludes --iteration"},
+      {"inspect " + mesh + " --stage valence --fill mass --screenshot x.png", "--fill mass: the valence stage fills the cells by valence"},
+      {"inspect " + mesh + " --stage parameterize --fill energy --screenshot x.png",
+       "--fill energy: the parameterize stage shows no cells to fill"},
+      {"inspect " + mesh + " --fill '' --screenshot x.png", "unknown fill ''"},  // was taken for none
+      {"inspect " + mesh + " --size ' 960x600' --screenshot x.png", "--size must look like 1280x800, not ' 960x600'"},
+      {"inspect " + mesh + " --size 99999999999999999999x600 --screenshot x.png",
+       "--size must be between 960x600 and 8192x8192, not '99999999999999999999x600'"},
+      {"inspect " + mesh + " --iterations 5:2 --screenshot x.png", "--iterations 5:2: FIRST comes after LAST"},
+      {"inspect " + mesh + " --screenshot .png", ".png: a picture needs a name before its .png"},  // "end the name with .png"
       // A picture's options without a picture (a window ignored them in silence).
       {"inspect " + mesh + " --pane 2d", "--pane requires --screenshot"},
       {"inspect " + mesh + " --iterations 0:5", "--iterations requires --screenshot"},
@@ -763,6 +775,8 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
   // The picture sizes' help says both limits, as the refusal does.
   for (const char* command : {"inspect --help", "bench-frames --help"})
     EXPECT_NE(runCli(command).out.find("between 960x600 and 8192x8192"), std::string::npos) << command;
+  // A number's range is in the help, as a count's is (it said FLOAT:NUMBER).
+  EXPECT_NE(runCli("inspect --help").out.find("--ui-scale FLOAT:number from 0.5 to 4"), std::string::npos);
   // inspect's help lists the window's keys (they were in the guide alone).
   const std::string keys = runCli("inspect --help").out;
   for (const char* key : {"Space play/pause", "P presentation", "L the lesson", "Escape unpin", "F (over"})

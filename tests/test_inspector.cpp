@@ -554,10 +554,11 @@ TEST(Inspector, TheLessonsResultStageShowsTheFinalResult) {
   checkScene("inspector_result_stage.png", "--presentation --stage result", "", 90);
 }
 
-// The lesson's last stage fills the cells by valence whatever the fill chosen, marks the
-// irregular sites in 3D, and counts them in its caption.
+// The lesson's last stage fills the cells by valence (in the window, whatever the fill chosen;
+// inspect refuses another --fill with it), marks the irregular sites in 3D, and counts them in
+// its caption.
 TEST(Inspector, TheLessonsValenceStageShowsTheIrregularVertices) {
-  checkScene("inspector_valence_stage.png", "--presentation --stage valence --fill area", "", 90);
+  checkScene("inspector_valence_stage.png", "--presentation --stage valence", "", 90);
 }
 
 // The cells coloured by their site's distance to its centroid, the fixed border sites grey and
