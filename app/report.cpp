@@ -254,13 +254,8 @@ namespace {
 // density, polish and fit with retriangulate ...).
 nlohmann::json settingsJson(const std::string& line) {
   nlohmann::json settings = nlohmann::json::object();
-  std::istringstream words(line);
-  for (std::string word; words >> word;) {
-    const size_t equals = word.find('=');
-    if (equals == std::string::npos) continue;
-    std::string key = word.substr(0, equals);
+  for (auto [key, value] : settingPairs(line)) {
     std::replace(key.begin(), key.end(), '-', '_');
-    const std::string value = word.substr(equals + 1);
     const char* const end = value.data() + value.size();
     long long integer = 0;
     double real = 0;

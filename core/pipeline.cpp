@@ -952,11 +952,18 @@ std::string describe(const RemeshOptions& options) {
   return s.str();
 }
 
-std::string settingValue(const std::string& settings, const std::string& key) {
+std::vector<std::pair<std::string, std::string>> settingPairs(const std::string& settings) {
+  std::vector<std::pair<std::string, std::string>> pairs;
   std::istringstream words(settings);
   for (std::string word; words >> word;)
-    if (word.size() > key.size() && word.compare(0, key.size(), key) == 0 && word[key.size()] == '=')
-      return word.substr(key.size() + 1);
+    if (const size_t equals = word.find('='); equals != std::string::npos)
+      pairs.emplace_back(word.substr(0, equals), word.substr(equals + 1));
+  return pairs;
+}
+
+std::string settingValue(const std::string& settings, const std::string& key) {
+  for (const auto& [name, value] : settingPairs(settings))
+    if (name == key) return value;
   return "";
 }
 

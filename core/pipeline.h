@@ -18,6 +18,8 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lloydscope {
 
@@ -329,6 +331,8 @@ void requireRemeshableSize(const Mesh& input, const Topology& topology, int vert
 // One line naming every setting, stored in recordings and printed by the command line.
 std::string describe(const RemeshOptions& options);
 
+// A describe() line's key=value words, in order (a word without '=' left out).
+std::vector<std::pair<std::string, std::string>> settingPairs(const std::string& settings);
 // The value of `key` in a describe() line, "" where the line does not name it. A recording's
 // line also names the map "auto" chose (param-used=lscm), and the size a large input was
 // simplified to first (coarse-input=10000; RemeshOptions::coarsenInput).
