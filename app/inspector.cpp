@@ -524,7 +524,7 @@ void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& exte
   const glm::vec3 through = glm::vec3(far) / far.w - eye;  // the same way in the GPU's frame as in the mesh's
   const int hit = triangleOnRay(resultIn3D(), fromGpu(eye), Vec3(through.x, through.y, through.z));
   if (finalShown()) selection_.toggleFinalTriangle(hit);
-  else selection_.toggleTriangle(hit);
+  else selection_.toggleTriangle(replay_->view(iteration_), hit);
 }
 
 const Mesh& Inspector::resultIn3D() const {
@@ -546,7 +546,7 @@ void Inspector::pinTriangle(int triangle) {
                 (finalShown() ? "the final result" : "the result at iteration " + std::to_string(iteration_)) +
                 " has " + std::to_string(count) + ", numbered from 0)");
   if (finalShown()) selection_.pinFinalTriangle(triangle);
-  else selection_.pinTriangle(triangle);
+  else selection_.pinTriangle(replay_->view(iteration_), triangle);
 }
 
 void Inspector::pinWorstTriangle() {
@@ -555,7 +555,7 @@ void Inspector::pinWorstTriangle() {
 
 void Inspector::pick2D(const Vec2& uv) {
   const IterationView& view = replay_->view(iteration_);
-  if (pickTriangles2D_) selection_.toggleTriangle(triangleAtUV(view, uv));
+  if (pickTriangles2D_) selection_.toggleTriangle(view, triangleAtUV(view, uv));
   else selection_.toggleCell(cellAt(replay_->domain(), view, uv));
 }
 

@@ -6,25 +6,37 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace lloydscope {
 
 namespace {
 
-bool pinned(const std::vector<int>& pins, int index) {
-  return std::find(pins.begin(), pins.end(), index) != pins.end();
+template <class Pin>
+bool pinned(const std::vector<Pin>& pins, const Pin& pin) {
+  return std::find(pins.begin(), pins.end(), pin) != pins.end();
 }
 
-void toggle(std::vector<int>& pins, int index) {
-  if (index < 0) return;
-  const auto found = std::find(pins.begin(), pins.end(), index);
+template <class Pin>
+void toggle(std::vector<Pin>& pins, const Pin& pin) {
+  const auto found = std::find(pins.begin(), pins.end(), pin);
   if (found != pins.end()) pins.erase(found);
-  else pins.push_back(index);
+  else pins.push_back(pin);
 }
 
-void pin(std::vector<int>& pins, int index) {
-  if (!pinned(pins, index)) toggle(pins, index);
+template <class Pin>
+void pin(std::vector<Pin>& pins, const Pin& pin) {
+  if (!pinned(pins, pin)) toggle(pins, pin);
+}
+
+// "site 12, site 40 and site 41" (a corner that is no site: "vertex 7").
+std::string cornersText(const TriangleCorners& corners) {
+  std::string text;
+  for (int k = 0; k < 3; ++k)
+    text += std::string(k == 0 ? "" : k == 1 ? ", " : " and ") +
+            (corners[k] >= 0 ? "site " + std::to_string(corners[k]) : "vertex " + std::to_string(-1 - corners[k]));
+  return text;
 }
 
 // A pinned triangle, filled and outlined, and ringed: a sliver of the result is a few pixels,
@@ -80,13 +92,27 @@ ImU32 Selection::triangleColor(float alpha) {
   return ImGui::ColorConvertFloat4ToU32(ImVec4(0.0f, 0.55f, 0.45f, alpha));
 }
 
-void Selection::toggleCell(int cell) { toggle(cells_, cell); }
-void Selection::toggleTriangle(int triangle) { toggle(triangles_, triangle); }
+// Index -1: the click hit nothing.
+void Selection::toggleCell(int cell) {
+  if (cell >= 0) toggle(cells_, cell);
+}
+void Selection::toggleTriangle(const IterationView& view, int triangle) {
+  if (triangle >= 0) toggle(triangles_, cornersOf(view, triangle));
+}
 void Selection::pinCell(int cell) { pin(cells_, cell); }
-void Selection::pinTriangle(int triangle) { pin(triangles_, triangle); }
+void Selection::pinTriangle(const IterationView& view, int triangle) { pin(triangles_, cornersOf(view, triangle)); }
 bool Selection::cellPinned(int cell) const { return pinned(cells_, cell); }
-void Selection::toggleFinalTriangle(int triangle) { toggle(finalTriangles_, triangle); }
+void Selection::toggleFinalTriangle(int triangle) {
+  if (triangle >= 0) toggle(finalTriangles_, triangle);
+}
 void Selection::pinFinalTriangle(int triangle) { pin(finalTriangles_, triangle); }
+
+std::vector<int> Selection::trianglesIn(const IterationView& view) const {
+  std::vector<int> found;
+  for (const TriangleCorners& corners : triangles_)
+    if (const int triangle = triangleWithCorners(view, corners); triangle >= 0) found.push_back(triangle);
+  return found;
+}
 void Selection::clear() {
   cells_.clear();
   triangles_.clear();
@@ -108,8 +134,7 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
     const float r = std::clamp(0.3f * scale / std::sqrt(float(view.sites.size()) + 1), 3.0f, 8.0f);
     dl->AddCircle(screen(view.sites[cell]), r, cellColor(), 0, 2.0f);
   }
-  for (int triangle : resultShown ? triangles_ : std::vector<int>{}) {
-    if (triangle >= static_cast<int>(view.output.triangles.size())) continue;
+  for (int triangle : resultShown ? trianglesIn(view) : std::vector<int>{}) {
     const Triangle& t = view.output.triangles[triangle];
     const ImVec2 corners[3] = {screen(view.outputUV[t[0]]), screen(view.outputUV[t[1]]),
                                screen(view.outputUV[t[2]])};
@@ -128,7 +153,7 @@ void Selection::draw3D(ImDrawList* dl, const Recording& recording, const Domain&
         dl->AddLine(a, b, cellColor(), 2.5f);
     if (screen(view.liftedSites[cell], a)) dl->AddCircleFilled(a, 4.0f, cellColor());
   }
-  if (resultShown) drawPinnedTriangles3D(dl, view.output, triangles_, screen, eye);
+  if (resultShown) drawPinnedTriangles3D(dl, view.output, trianglesIn(view), screen, eye);
 }
 
 void Selection::drawFinal3D(ImDrawList* dl, const Mesh& final, const ScreenOf3D& screen, const Vec3& eye) const {
@@ -141,7 +166,8 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     greyedText("Click a cell (2D) or a triangle (3D) to pin it; click again to unpin, Escape clears all.");
     return;
   }
-  int unpinCell = -1, unpinTriangle = -1;
+  int unpinCell = -1;
+  std::optional<TriangleCorners> unpinTriangle;
   // Each table's rows are formatted first: the value column takes the widest value (at most
   // two thirds of the pane) and the labels wrap in what is left. A fixed width cut the 3D
   // coordinates of a model in millimetres short.
@@ -186,9 +212,18 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     ImGui::PopID();
     return unpin;
   };
-  for (int triangle : triangles_)
-    if (const TriangleDetails d = describeTriangle(view, triangle); d.index >= 0)
-      if (triangleTable(d, "triangle", "Triangle " + std::to_string(triangle), true)) unpinTriangle = triangle;
+  // Each pinned triangle as this iteration has it, under its number here; where its corners make
+  // no triangle here, said (scrubbing on shows it again). Its number changed from iteration to
+  // iteration, and a pin by number showed another triangle at each.
+  std::string notTriangles;
+  for (const TriangleCorners& corners : triangles_)
+    if (const int triangle = triangleWithCorners(view, corners); triangle >= 0) {
+      if (triangleTable(describeTriangle(view, triangle), "triangle", "Triangle " + std::to_string(triangle), true))
+        unpinTriangle = corners;
+    } else {
+      notTriangles += (notTriangles.empty() ? "" : " ") + ("The pinned triangle of " + cornersText(corners) +
+                                                          " is not one of this iteration's.");
+    }
   int unpinFinal = -1;
   for (int triangle : finalTriangles_)
     if (const TriangleDetails d = describeTriangle(final, triangle); d.index >= 0)
@@ -196,10 +231,8 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
         unpinFinal = triangle;
   // Pins this view cannot show (a run with fewer sites, an iteration with fewer triangles) are
   // said, not dropped: scrubbing back shows them again.
-  const std::string notShown[] = {
-      pinsNotShown(cells_, view.cells.size(), "cell", "this iteration"),
-      pinsNotShown(triangles_, view.output.triangles.size(), "triangle", "the result at this iteration"),
-      pinsNotShown(finalTriangles_, final.triangles.size(), "triangle", "the final result")};
+  const std::string notShown[] = {pinsNotShown(cells_, view.cells.size(), "cell", "this iteration"), notTriangles,
+                                  pinsNotShown(finalTriangles_, final.triangles.size(), "triangle", "the final result")};
   bool anyNotShown = false;
   for (const std::string& note : notShown)
     if (!note.empty()) {
@@ -208,7 +241,7 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     }
   if (anyNotShown) greyedText("Escape unpins every cell and triangle.");
   toggleCell(unpinCell);
-  toggleTriangle(unpinTriangle);
+  if (unpinTriangle) toggle(triangles_, *unpinTriangle);
   toggleFinalTriangle(unpinFinal);
 }
 

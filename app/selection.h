@@ -1,5 +1,7 @@
-// Pinned cells and triangles: they stay selected, by index, while the user scrubs, so one cell
-// can be watched as it evolves. Drawn in both views and described in a details panel.
+// Pinned cells and triangles: they stay selected while the user scrubs, so one cell can be
+// watched as it evolves. A cell by its site's number; a triangle of an iteration's result by
+// its corners' sites (its number changes with the triangulation), one of the final result by
+// its number. Drawn in both views and described in a details panel.
 #pragma once
 
 #include "inspection.h"
@@ -18,12 +20,12 @@ using ScreenOf3D = std::function<bool(const Vec3&, ImVec2&)>;
 
 class Selection {
  public:
-  // Pins the index, or unpins it if it was pinned.
+  // Pins the index (a triangle of `view`'s result), or unpins it if it was pinned.
   void toggleCell(int cell);
-  void toggleTriangle(int triangle);
+  void toggleTriangle(const IterationView& view, int triangle);
   // Pins the index, if it is not pinned already.
   void pinCell(int cell);
-  void pinTriangle(int triangle);
+  void pinTriangle(const IterationView& view, int triangle);
   bool cellPinned(int cell) const;
   // Triangles of the final result, kept apart: it is another mesh, numbered anew, with no map.
   void toggleFinalTriangle(int triangle);
@@ -55,7 +57,10 @@ class Selection {
   static ImU32 triangleColor(float alpha = 1.0f);
 
  private:
-  std::vector<int> cells_, triangles_, finalTriangles_;
+  std::vector<int> cells_, finalTriangles_;
+  std::vector<TriangleCorners> triangles_;
+  // The pinned triangles that `view`'s result has, by their number in it.
+  std::vector<int> trianglesIn(const IterationView& view) const;
 };
 
 }  // namespace lloydscope

@@ -122,6 +122,22 @@ TriangleDetails describeTriangle(const IterationView& view, int triangle) {
   return d;
 }
 
+TriangleCorners cornersOf(const IterationView& view, int triangle) {
+  TriangleCorners corners;
+  for (int k = 0; k < 3; ++k) {
+    const int v = view.output.triangles[triangle][k];
+    corners[k] = view.outputSite[v] >= 0 ? view.outputSite[v] : -1 - v;
+  }
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+int triangleWithCorners(const IterationView& view, const TriangleCorners& corners) {
+  for (int f = 0; f < static_cast<int>(view.output.triangles.size()); ++f)
+    if (cornersOf(view, f) == corners) return f;
+  return -1;
+}
+
 int triangleAtUV(const IterationView& view, const Vec2& p) {
   for (size_t f = 0; f < view.output.triangles.size(); ++f) {
     const Triangle& t = view.output.triangles[f];

@@ -69,6 +69,14 @@ TriangleDetails describeTriangle(const IterationView& view, int triangle);
 // no UV ones, every corner "not moved".
 TriangleDetails describeTriangle(const Mesh& mesh, int triangle);
 
+// A triangle of an iteration's result by what makes it: its corners' sites, sorted (a corner
+// that is no site by -1 - its vertex's number). The sites' triangulation changes from iteration
+// to iteration and the triangles' numbers with it: a pin that holds a triangle's corners finds
+// it again in each iteration (triangleWithCorners), or finds none where they make no triangle.
+using TriangleCorners = std::array<int, 3>;
+TriangleCorners cornersOf(const IterationView& view, int triangle);
+int triangleWithCorners(const IterationView& view, const TriangleCorners& corners);  // -1: none
+
 // The output triangle whose parameter-domain image holds p, or -1.
 int triangleAtUV(const IterationView& view, const Vec2& p);
 // The output triangle the ray from `origin` along `direction` hits first, or -1.

@@ -161,6 +161,32 @@ TEST(Inspection, TriangleNumbers) {
   }
 }
 
+// A triangle pinned in one iteration is found again in another by its corners' sites: the
+// triangulation changes, and the triangle's number with it (a pin by number showed another
+// triangle at each iteration).
+TEST(Inspection, ATriangleIsFoundAgainByItsCornersSites) {
+  const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
+  Replay replay(r);
+  const IterationView last = replay.view(7);
+  int renumbered = 0, gone = 0;
+  for (int f = 0; f < static_cast<int>(last.output.triangles.size()); ++f) {
+    const TriangleCorners corners = cornersOf(last, f);
+    EXPECT_EQ(triangleWithCorners(last, corners), f);
+    const TriangleDetails there = describeTriangle(last, f);
+    for (int s : corners) EXPECT_NE(std::find(there.sites.begin(), there.sites.end(), s), there.sites.end());
+    const int first = triangleWithCorners(replay.view(0), corners);
+    if (first < 0) ++gone;
+    else if (first != f) {
+      ++renumbered;
+      TriangleCorners atFirst = describeTriangle(replay.view(0), first).sites;
+      std::sort(atFirst.begin(), atFirst.end());
+      EXPECT_EQ(atFirst, corners);
+    }
+  }
+  EXPECT_GT(renumbered, 100);  // the same sites' triangle, under another number
+  EXPECT_GT(gone, 0);          // corners that made no triangle at iteration 0
+}
+
 // A triangle of a mesh with no map (the final result): its 3D numbers and its corners'
 // valences, border ones said as such; nothing of a map or of sites.
 TEST(Inspection, AFinalTriangleHasItsValencesAndNoMap) {
