@@ -367,6 +367,8 @@ void Inspector::openReplay(Recording recording) {
   measuredIteration_ = edgesIteration_ = -1;
   canvasKey_ = CanvasKey{};
   iteration_ = std::max(0, replay_->iterationCount() - 1);
+  exportFirst_ = 0;  // a sequence of the whole run, unless the user asks less (it read 0 to 0)
+  exportLast_ = iteration_;
   fitCamera();
   fit2D();  // another domain: the last one's zoom showed a corner of it, or nothing
 }
@@ -651,16 +653,20 @@ void Inspector::startExport(ExportJob job) {
   if (job.first >= 0 && job.last >= count)
     throw Error(range + ": expected FIRST:LAST within 0:" + std::to_string(count - 1));
   exportNext_ = job.first >= 0 ? job.first : iteration_;
+  iterationBeforeExport_ = iteration_;
   exportJob_ = std::move(job);
 }
 
 void Inspector::exported(const std::string& error) {
   if (exportRequest_) showMessage(error.empty() ? "saved " + exportRequest_->path : error);
   exportRequest_.reset();
-  if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last)
+  if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last) {
     ++exportNext_;
-  else
+  } else {
+    // A sequence leaves the timeline where it was (it stayed on the last picture saved).
+    if (exportJob_ && exportJob_->first >= 0) setIteration(iterationBeforeExport_);
     exportJob_.reset();
+  }
 }
 
 void OpeningView::applyTo(Inspector& inspector) const {
@@ -1216,13 +1222,22 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::Combo("cell fill", &fill, fills, IM_ARRAYSIZE(fills))) fill_ = static_cast<CellFill>(fill);
   if (stage_) ImGui::BeginDisabled();
   ImGui::TextUnformatted("3D view");
-  if (ImGui::Checkbox("show the input instead", &showInput)) showInput_ = showInput;
+  // One or the other, the last ticked (ticking the input under the final result did nothing, and
+  // the input came back when the final result was unticked).
+  const auto setFinal = [&](bool on) {
+    showFinal_ = on;
+    if (result_.components > 1 || inputCharts_ > 0) fitCamera();
+  };
+  if (ImGui::Checkbox("show the input instead", &showInput)) {
+    showInput_ = showInput;
+    if (showInput && showFinal_) setFinal(false);
+  }
   if (result_.output.triangles.empty() && !stage_) ImGui::BeginDisabled();
   // With several components, or charts, the final result is larger than the surface the panes
   // follow (the largest component or chart): the view fits the one shown.
   if (ImGui::Checkbox("show the final result", &finalOn)) {
-    showFinal_ = finalOn;
-    if (result_.components > 1 || inputCharts_ > 0) fitCamera();
+    setFinal(finalOn);
+    if (finalOn) showInput_ = false;
   }
   if (result_.output.triangles.empty() || stage_) ImGui::EndDisabled();
   bool byAngle = colorByAngle_;
@@ -1286,7 +1301,7 @@ void Inspector::exportControls() {
   if (ImGui::InputInt("##last", &exportLast_, 0)) exportLast_ = std::max(0, exportLast_);
   ImGui::SameLine();
   if (ImGui::Button("Save sequence")) start({exportPath_, pane, exportFirst_, exportLast_});
-  ImGui::TextDisabled("a sequence is numbered: name_0000.png, ...");
+  greyedText("a sequence is numbered: name_0000.png, ...");  // wrapped: TextDisabled ran off the pane
 }
 
 void Inspector::settingsControls() {
@@ -1448,11 +1463,11 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     camera_.yaw -= io.MouseDelta.x * 0.01f;
     camera_.pitch = std::clamp(camera_.pitch + io.MouseDelta.y * 0.01f, -1.5f, 1.5f);
   }
-  // Zoomed within 10^-3..10^3 times the mesh's size: at 0 or infinity the projection was NaN,
-  // and Copy view gave a view Paste view refused.
+  // Zoomed within 0.3..20 times the mesh's size: from 10^-3 the camera went inside the mesh and
+  // the pane was empty, at 10^3 the mesh was a dot, and only F brought it back.
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
     const float size = static_cast<float>(boundingBoxDiagonal(fittedMesh()));
-    camera_.distance = std::clamp(camera_.distance * std::pow(0.9f, io.MouseWheel), 1e-3f * size, 1e3f * size);
+    camera_.distance = std::clamp(camera_.distance * std::pow(0.9f, io.MouseWheel), 0.3f * size, 20.0f * size);
   }
   if (ImGui::IsItemHovered() && letterPressed('F'))
     fitCamera();

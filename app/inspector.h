@@ -312,7 +312,7 @@ class Inspector {
   Selection selection_;
   std::optional<ExportJob> exportJob_;
   std::string runError_;  // what ended the worker's run (out of memory, say), said by joinWorker()
-  int exportNext_ = 0;
+  int exportNext_ = 0, iterationBeforeExport_ = 0;
   std::optional<ExportRequest> exportRequest_;
   char exportPath_[512] = "lloydscope.png";
   int exportPane_ = 0, exportFirst_ = 0, exportLast_ = 0;
