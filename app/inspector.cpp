@@ -1156,17 +1156,15 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     const std::string leftOut = sitesLeftOutNote(iteration_, view.sites.size(), view.output.points.size());
     if (!leftOut.empty()) greyedText(leftOut);
   }
-  const int iterations = replay_->iterationCount();
-  const char* plural = iterations == 1 ? "" : "s";
+  const std::string iterations = iterationsText(replay_->iterationCount());
   if (session_ && running())
-    ImGui::Text("Running: %d iteration%s so far", iterations, plural);
+    wrappedText("Running: " + iterations + " so far");
   else if (session_ && session_->finished())  // for the frame before finishSession() (a second)
-    wrappedText("Done after " + std::to_string(iterations) + " iteration" + plural + ": the clean-up on the surface follows");
+    wrappedText("Done after " + iterations + ": the clean-up on the surface follows");
   else if (session_)
-    wrappedText("Stopped at " + std::to_string(iterations) + " iteration" + plural + ": Step or Run goes on");
+    wrappedText("Stopped after " + iterations + ": Step or Run goes on");
   else
-    ImGui::Text("Final: %d iteration%s, %s", iterations, plural,
-                replay_->recording().converged() ? "converged" : "not converged");
+    wrappedText("Final: " + iterations + (replay_->recording().converged() ? ", converged" : ", not converged"));
   wrappedText(shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr));
   if (showTimings_ && !session_ && result_.ms.total > 0)  // a recording opened alone has no times
     ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);

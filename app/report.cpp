@@ -632,6 +632,10 @@ std::string withNoteFirst(const std::string& note, const std::string& notes) {
   return notes.empty() ? sentence : sentence + "\n" + notes;
 }
 
+std::string iterationsText(int count) {
+  return std::to_string(count) + (count == 1 ? " iteration (0)" : " iterations (0-" + std::to_string(count - 1) + ")");
+}
+
 std::string thresholdsText(const LloydOptions& options) {
   // In %g: "%.0e, %.0f%%" showed 1.5e-06 and 2.5 as "2e-06, 2%", beside "2.3% moving" and
   // "converged".

@@ -196,6 +196,9 @@ std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options)
 
 // "Thresholds: 1e-06, 5%": the run's convergence thresholds as given, not rounded.
 std::string thresholdsText(const LloydOptions& options);
+// A count of iterations with their numbers, as the timeline has them: "110 iterations (0-109)",
+// "1 iteration (0)" ("Stopped at 4 iterations" read as one more than the timeline's "0-3").
+std::string iterationsText(int count);
 
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,

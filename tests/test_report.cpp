@@ -493,6 +493,13 @@ TEST(Report, ASmallestAngleAtTheInputsSharpBorderCornerIsExplained) {
 }
 
 // The thresholds as given ("%.0e, %.0f%%" read 1.5e-06 and 2.5 as "2e-06, 2%").
+// The controls pane counts iterations with the timeline's numbers ("Stopped at 4 iterations"
+// beside "iteration 3 (0-3)" read as one too many).
+TEST(Report, IterationsAreCountedWithTheirNumbers) {
+  EXPECT_EQ(iterationsText(110), "110 iterations (0-109)");
+  EXPECT_EQ(iterationsText(1), "1 iteration (0)");
+}
+
 TEST(Report, TheThresholdsAreShownAsGiven) {
   LloydOptions o;
   EXPECT_EQ(thresholdsText(o), "Thresholds: 1e-06, 5%");
