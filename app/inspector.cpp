@@ -368,7 +368,7 @@ void Inspector::openReplay(Recording recording) {
   canvasKey_ = CanvasKey{};
   iteration_ = std::max(0, replay_->iterationCount() - 1);
   exportFirst_ = 0;  // a sequence of the whole run, unless the user asks less (it read 0 to 0)
-  exportLast_ = iteration_;
+  exportToLast_ = true;
   fitCamera();
   fit2D();  // another domain: the last one's zoom showed a corner of it, or nothing
 }
@@ -1296,9 +1296,14 @@ void Inspector::exportControls() {
   ImGui::TextUnformatted("to");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(60);
-  if (ImGui::InputInt("##last", &exportLast_, 0)) exportLast_ = std::max(0, exportLast_);
+  // The last iteration, as a run grows, until the user types another.
+  int last = exportToLast_ ? replay_->iterationCount() - 1 : exportLast_;
+  if (ImGui::InputInt("##last", &last, 0)) {
+    last = exportLast_ = std::max(0, last);
+    exportToLast_ = false;
+  }
   ImGui::SameLine();
-  if (ImGui::Button("Save sequence")) start({exportPath_, pane, exportFirst_, exportLast_});
+  if (ImGui::Button("Save sequence")) start({exportPath_, pane, exportFirst_, last});
   greyedText("a sequence is numbered: name_0000.png, ...");  // wrapped: TextDisabled ran off the pane
 }
 
@@ -1462,10 +1467,12 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
     camera_.pitch = std::clamp(camera_.pitch + io.MouseDelta.y * 0.01f, -1.5f, 1.5f);
   }
   // Zoomed within 0.3..20 times the mesh's size: from 10^-3 the camera went inside the mesh and
-  // the pane was empty, at 10^3 the mesh was a dot, and only F brought it back.
+  // the pane was empty, at 10^3 the mesh was a dot, and only F brought it back. A view pasted
+  // from outside that range is not pushed farther out of it, nor jumps into it.
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
     const float size = static_cast<float>(boundingBoxDiagonal(fittedMesh()));
-    camera_.distance = std::clamp(camera_.distance * std::pow(0.9f, io.MouseWheel), 0.3f * size, 20.0f * size);
+    camera_.distance = std::clamp(camera_.distance * std::pow(0.9f, io.MouseWheel),
+                                  std::min(0.3f * size, camera_.distance), std::max(20.0f * size, camera_.distance));
   }
   if (ImGui::IsItemHovered() && letterPressed('F'))
     fitCamera();

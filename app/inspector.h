@@ -316,6 +316,7 @@ class Inspector {
   std::optional<ExportRequest> exportRequest_;
   char exportPath_[512] = "lloydscope.png";
   int exportPane_ = 0, exportFirst_ = 0, exportLast_ = 0;
+  bool exportToLast_ = true;  // the sequence ends at the last iteration, whatever it is
   void exportControls();
   bool pickTriangles2D_ = false;  // a click in the 2D view pins a result triangle, not a cell
   bool presentation_ = false;

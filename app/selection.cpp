@@ -229,8 +229,8 @@ void Selection::detailsPanel(const Recording& recording, const Domain& domain,
     if (const TriangleDetails d = describeTriangle(final, triangle); d.index >= 0)
       if (triangleTable(d, "final triangle", "Final result, triangle " + std::to_string(triangle), false))
         unpinFinal = triangle;
-  // Pins this view cannot show (a run with fewer sites, an iteration with fewer triangles) are
-  // said, not dropped: scrubbing back shows them again.
+  // Pins this view cannot show (a cell of a run with more sites, corners that make no triangle
+  // here, a final triangle of another run) are said, not dropped: scrubbing back shows them again.
   const std::string notShown[] = {pinsNotShown(cells_, view.cells.size(), "cell", "this iteration"), notTriangles,
                                   pinsNotShown(finalTriangles_, final.triangles.size(), "triangle", "the final result")};
   bool anyNotShown = false;

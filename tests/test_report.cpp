@@ -492,7 +492,6 @@ TEST(Report, ASmallestAngleAtTheInputsSharpBorderCornerIsExplained) {
   EXPECT_EQ(sharpCornerText(before, after), "");
 }
 
-// The thresholds as given ("%.0e, %.0f%%" read 1.5e-06 and 2.5 as "2e-06, 2%").
 // The controls pane counts iterations with the timeline's numbers ("Stopped at 4 iterations"
 // beside "iteration 3 (0-3)" read as one too many).
 TEST(Report, IterationsAreCountedWithTheirNumbers) {
@@ -500,6 +499,7 @@ TEST(Report, IterationsAreCountedWithTheirNumbers) {
   EXPECT_EQ(iterationsText(1), "1 iteration (0)");
 }
 
+// The thresholds as given ("%.0e, %.0f%%" read 1.5e-06 and 2.5 as "2e-06, 2%").
 TEST(Report, TheThresholdsAreShownAsGiven) {
   LloydOptions o;
   EXPECT_EQ(thresholdsText(o), "Thresholds: 1e-06, 5%");

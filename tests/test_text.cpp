@@ -78,9 +78,6 @@ TEST(Fonts, EveryCaptionCharacterHasAGlyphInBothFonts) {
   ImGui::DestroyContext();
 }
 
-// The caption pane is as tall as its caption: laid out in a pane, the caption ends where
-// captionTextHeight says, at every width (the pane was three lines tall whatever the caption,
-// and a caption of four lost its last line at 960x600).
 // In ImGui's small font the subscripts were smudges four pixels high: written inline there.
 TEST(Text, SubscriptsAreWrittenInlineForTheSmallFont) {
   EXPECT_EQ(inlineIndices("gradient 2 Mᵢ (sᵢ − cᵢ)"), "gradient 2 M_i (s_i − c_i)");
@@ -89,6 +86,9 @@ TEST(Text, SubscriptsAreWrittenInlineForTheSmallFont) {
   EXPECT_EQ(inlineIndices(""), "");
 }
 
+// The caption pane is as tall as its caption: laid out in a pane, the caption ends where
+// captionTextHeight says, at every width (the pane was three lines tall whatever the caption,
+// and a caption of four lost its last line at 960x600).
 TEST(Text, TheCaptionTakesTheHeightItIsGiven) {
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
