@@ -1199,6 +1199,14 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     if (ImGui::Button("Pin the worst triangle")) pinWorstTriangle();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("The triangle with the smallest angle in the result the 3D view shows: this iteration's, or the final one (--select-worst)");
+    if (stage_) {  // pins listed below, beside a stage that draws them in neither view
+      const Layers shown = layers();
+      const bool resultDrawn = shown.sites2D || !(shown.input3D || finalShown());
+      if (const std::string note = pinsLeftOutByStage(toString(*stage_), !shown.cells2D && !selection_.cells().empty(),
+                                                      !resultDrawn && selection_.trianglesPinned());
+          !note.empty())
+        greyedText(note);
+    }
     selection_.detailsPanel(replay_->recording(), replay_->domain(), replay_->view(iteration_), result_.output);
   }
   ImGui::Separator();

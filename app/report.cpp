@@ -560,6 +560,12 @@ std::string qualityTable(const QualityMetrics& before, const QualityMetrics& aft
   return out.str();
 }
 
+std::string pinsLeftOutByStage(const std::string& stage, bool cellsOut, bool trianglesOut) {
+  if (!cellsOut && !trianglesOut) return "";
+  const std::string what = cellsOut && trianglesOut ? "no cells and no result" : cellsOut ? "no cells" : "no result";
+  return "The " + stage + " stage draws " + what + ": the pins show at the stages that do.";
+}
+
 std::string pinsNotShown(const std::vector<int>& pinned, size_t count, const std::string& kind,
                          const std::string& where) {
   std::string missing;

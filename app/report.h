@@ -168,6 +168,10 @@ DetailRows triangleRows(const TriangleDetails& d, bool mapped);
 // the panel showed nothing at all, not even how to pin.
 std::string pinsNotShown(const std::vector<int>& pinned, size_t count, const std::string& kind,
                          const std::string& where);
+// Where a lesson stage draws no cells, or no result, and such pins are listed beside it: that
+// the stage leaves them out ("The load stage draws no cells and no result: the pins show at the
+// stages that do."); else "". `cellsOut` / `trianglesOut`: pins of that kind the stage leaves out.
+std::string pinsLeftOutByStage(const std::string& stage, bool cellsOut, bool trianglesOut);
 
 // Where the result strays farther than kFarFromTheInputPercent of the diagonal from the input
 // (the results here are 0.1-3%): a warning that says so, and what may help; else empty.

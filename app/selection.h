@@ -34,6 +34,7 @@ class Selection {
   void clear();
   bool empty() const { return cells_.empty() && triangles_.empty() && finalTriangles_.empty(); }
   const std::vector<int>& cells() const { return cells_; }
+  bool trianglesPinned() const { return !triangles_.empty(); }  // of the iterations' results
 
   // Highlights: each pinned cell filled, with its site's path over all iterations; each pinned
   // triangle outlined (in the parameter domain by its corners' UV positions). Each only where

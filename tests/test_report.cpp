@@ -429,6 +429,16 @@ TEST(Report, PinsAViewCannotShowAreSaid) {
   EXPECT_EQ(pinsNotShown({7}, 0, "triangle", "the final result"), "Triangle 7 pinned: the final result has no triangles.");
 }
 
+// A pin listed beside a lesson stage that does not draw it (--stage load --select-cell 50: in
+// the panel, in neither view) is said to be left out by the stage.
+TEST(Report, PinsALessonStageLeavesOutAreSaid) {
+  EXPECT_EQ(pinsLeftOutByStage("voronoi", false, false), "");
+  EXPECT_EQ(pinsLeftOutByStage("load", true, true),
+            "The load stage draws no cells and no result: the pins show at the stages that do.");
+  EXPECT_EQ(pinsLeftOutByStage("lift", true, false), "The lift stage draws no cells: the pins show at the stages that do.");
+  EXPECT_EQ(pinsLeftOutByStage("load", false, true), "The load stage draws no result: the pins show at the stages that do.");
+}
+
 // A result far from the input is warned of (a tall cone came out a flat disk, 99.6% of the
 // diagonal away, with nothing said); the usual 0.1-3% is not.
 TEST(Report, AResultFarFromTheInputIsWarnedOf) {
