@@ -368,7 +368,7 @@ void Inspector::openReplay(Recording recording) {
   canvasKey_ = CanvasKey{};
   iteration_ = std::max(0, replay_->iterationCount() - 1);
   exportFirst_ = 0;  // a sequence of the whole run, unless the user asks less (it read 0 to 0)
-  exportToLast_ = true;
+  exportLast_.reset();
   fitCamera();
   fit2D();  // another domain: the last one's zoom showed a corner of it, or nothing
 }
@@ -602,12 +602,16 @@ void Inspector::setCamera(const std::string& text) {
   fitPending_ = false;
 }
 
-CellFill parseCellFill(const std::string& name) {
-  constexpr NamedValue<CellFill> kFillNames[] = {{CellFill::None, "none"},         {CellFill::Mass, "mass"},
-                                                 {CellFill::Area, "area"},         {CellFill::Energy, "energy"},
-                                                 {CellFill::ToCentroid, "distance"}, {CellFill::Moved, "moved"},
-                                                 {CellFill::Valence, "valence"}};
-  return parseName(kFillNames, name, "fill");
+constexpr NamedValue<CellFill> kFillNames[] = {{CellFill::None, "none"},         {CellFill::Mass, "mass"},
+                                               {CellFill::Area, "area"},         {CellFill::Energy, "energy"},
+                                               {CellFill::ToCentroid, "distance"}, {CellFill::Moved, "moved"},
+                                               {CellFill::Valence, "valence"}};
+
+CellFill parseCellFill(const std::string& name) { return parseName(kFillNames, name, "fill"); }
+const char* toString(CellFill fill) { return nameOf(kFillNames, fill); }
+
+CellFill fillShown(std::optional<Stage> stage, CellFill chosen) {
+  return stage == Stage::Valence ? CellFill::Valence : chosen;
 }
 
 Pane parsePane(const std::string& name) {
@@ -818,7 +822,7 @@ void Inspector::uploadMesh() {
   uploaded_ = now;
 }
 
-CellFill Inspector::fillShown() const { return stage_ == Stage::Valence ? CellFill::Valence : fill_; }
+CellFill Inspector::fillShown() const { return lloydscope::fillShown(stage_, fill_); }
 
 bool Inspector::cellsFilled() const { return fillShown() != CellFill::None && layers().cells2D; }
 
@@ -1200,9 +1204,8 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("The triangle with the smallest angle in the result the 3D view shows: this iteration's, or the final one (--select-worst)");
     if (stage_) {  // pins listed below, beside a stage that draws them in neither view
-      const Layers shown = layers();
-      const bool resultDrawn = shown.sites2D || !(shown.input3D || finalShown());
-      if (const std::string note = pinsLeftOutByStage(toString(*stage_), !shown.cells2D && !selection_.cells().empty(),
+      const bool resultDrawn = iterationResultIn2D() || iterationResultIn3D();
+      if (const std::string note = pinsLeftOutByStage(toString(*stage_), !layers().cells2D && !selection_.cells().empty(),
                                                       !resultDrawn && selection_.trianglesPinned());
           !note.empty())
         greyedText(note);
@@ -1305,11 +1308,8 @@ void Inspector::exportControls() {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(60);
   // The last iteration, as a run grows, until the user types another.
-  int last = exportToLast_ ? replay_->iterationCount() - 1 : exportLast_;
-  if (ImGui::InputInt("##last", &last, 0)) {
-    last = exportLast_ = std::max(0, last);
-    exportToLast_ = false;
-  }
+  int last = exportLast_.value_or(replay_->iterationCount() - 1);
+  if (ImGui::InputInt("##last", &last, 0)) exportLast_ = last = std::max(0, last);
   ImGui::SameLine();
   if (ImGui::Button("Save sequence")) start({exportPath_, pane, exportFirst_, last});
   greyedText("a sequence is numbered: name_0000.png, ...");  // wrapped: TextDisabled ran off the pane
@@ -1546,7 +1546,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   // over it); pinned triangles are the iteration's result's or the final result's, each drawn
   // over its own mesh.
   selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen, eye,
-                    shown.cells2D, !shown.input3D && !final);
+                    shown.cells2D, iterationResultIn3D());
   if (final) selection_.drawFinal3D(dl, result_.output, toScreen, eye);
   dl->PopClipRect();
 
@@ -1634,7 +1634,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
                     rgb(0.15f, 0.15f, 0.15f), 2.0f);
       }
   selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale, shown.cells2D,
-                    shown.sites2D);
+                    iterationResultIn2D());
   const float legendTop = p0.y + extent.y - legendHeight - 5;
   if (filled) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4), legendTop - 4);
   boxedText(dl, ImVec2(p0.x + 8, legendTop), legend.c_str());

@@ -39,6 +39,10 @@ struct Camera {
 enum class CellFill { None, Mass, Area, Energy, ToCentroid, Moved, Valence };
 // "none", "mass", "area", "energy", "distance" (to the centroid), "moved", "valence"; throws Error.
 CellFill parseCellFill(const std::string& name);
+const char* toString(CellFill fill);
+// The fill the cells get: a lesson stage's own where it has one (the Valence stage's), else the
+// one chosen (where the stage draws cells: Layers::cells2D).
+CellFill fillShown(std::optional<Stage> stage, CellFill chosen);
 
 class Inspector;
 
@@ -201,6 +205,10 @@ class Inspector {
   std::vector<ImU32> cellColors(const IterationView& view);  // under the fill
   CellFill fillShown() const;  // the user's, or the lesson stage's (Valence)
   bool cellsFilled() const;    // the 2D cells are shown, with a fill
+  // Where the iteration's result (and its pinned triangles) is drawn: in 2D with the sites, in 3D
+  // where the view shows neither the input nor the final result.
+  bool iterationResultIn2D() const { return layers().sites2D; }
+  bool iterationResultIn3D() const { return !layers().input3D && !finalShown(); }
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
   float fittingDistance(const ImVec2& extent) const;
@@ -315,8 +323,8 @@ class Inspector {
   int exportNext_ = 0, iterationBeforeExport_ = 0;
   std::optional<ExportRequest> exportRequest_;
   char exportPath_[512] = "lloydscope.png";
-  int exportPane_ = 0, exportFirst_ = 0, exportLast_ = 0;
-  bool exportToLast_ = true;  // the sequence ends at the last iteration, whatever it is
+  int exportPane_ = 0, exportFirst_ = 0;
+  std::optional<int> exportLast_;  // none: the sequence ends at the last iteration, whatever it is
   void exportControls();
   bool pickTriangles2D_ = false;  // a click in the 2D view pins a result triangle, not a cell
   bool presentation_ = false;

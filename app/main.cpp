@@ -471,8 +471,8 @@ struct InspectCommand {
   void requireFillShown() const {
     if (!shot.view.stage || !shot.view.fill || *shot.view.fill == CellFill::None) return;
     const std::string stageName = toString(*shot.view.stage);
-    if (*shot.view.stage == Stage::Valence && *shot.view.fill != CellFill::Valence)
-      throw Error("--fill " + fill + ": the valence stage fills the cells by valence");
+    if (const CellFill shown = fillShown(shot.view.stage, *shot.view.fill); shown != *shot.view.fill)
+      throw Error("--fill " + fill + ": the " + stageName + " stage fills the cells by " + toString(shown));
     if (!layersFor(*shot.view.stage).cells2D)
       throw Error("--fill " + fill + ": the " + stageName + " stage shows no cells to fill");
   }
