@@ -496,6 +496,8 @@ PlyHeader readPlyHeader(const std::string& path, std::string_view text) {
     }
 
     if (line == 1) {
+      if (lineText.size() > 4 && lineText.rfind("ply\r", 0) == 0)  // "ply\r" then more, up to the first LF
+        fail(path, "bad header: its lines end in CR alone, which a binary PLY's cannot (save it with LF line ends)");
       if (tokens.size() != 1 || tokens[0] != "ply") {
         fail(path, "bad header: a PLY file must start with a 'ply' line");
       }
@@ -1102,9 +1104,11 @@ std::string loadFile(const std::string& path) {
   // first vertex was lost with it, an OFF's header refused.
   if (data.rfind("\xEF\xBB\xBF", 0) == 0) data.erase(0, 3);
   // Lines ended by CR alone (classic Mac OS) are lines: an OBJ written so was one line, a
-  // comment, and refused as "the mesh has no faces". (A binary PLY's header ends its lines in
-  // LF, so a file without one is text.)
-  if (data.find('\n') == std::string::npos) std::replace(data.begin(), data.end(), '\r', '\n');
+  // comment, and refused as "the mesh has no faces". Only in text: a binary file's numbers hold
+  // zero bytes (a face's count, 3, as 4 bytes), and its bytes 13 were coordinates and indices,
+  // changed without a word.
+  if (data.find('\n') == std::string::npos && data.find('\0') == std::string::npos)
+    std::replace(data.begin(), data.end(), '\r', '\n');
   if (onlySpace(data)) fail(path, "the file is empty");
   return data;
 }

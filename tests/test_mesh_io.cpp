@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -191,6 +192,32 @@ TEST(MeshIo, ReadsAsciiOffWithCommentsAndColours) {
 TEST(MeshIo, ReadsLinesEndedByCarriageReturnsAlone) {
   expectUnitSquare(readMesh(writeFile("mac.obj", "# square\rv 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3\rf 1 3 4\r")).mesh);
   expectUnitSquare(readMesh(writeFile("mac.off", "OFF\r4 2 0\r0 0 0\r1 0 0\r1 1 0\r0 1 0\r3 0 1 2\r3 0 2 3\r")).mesh);
+}
+
+// A binary PLY whose header ends its lines in CR alone: its bytes 13 were read as line ends
+// and made 10, and a square of side 13 came out of side 10 and 13, without a word.
+std::string binaryPlyOfSide13(const std::string& lineEnd) {
+  std::string data;
+  for (const char* line : {"ply", "format binary_little_endian 1.0", "element vertex 4", "property uchar x",
+                           "property uchar y", "property uchar z", "element face 2",
+                           "property list uchar int vertex_indices", "end_header"})
+    data += line + lineEnd;
+  for (const std::array<std::uint8_t, 3>& p : {std::array<std::uint8_t, 3>{0, 0, 0}, {13, 0, 0}, {13, 13, 0}, {0, 13, 0}})
+    for (std::uint8_t c : p) append(data, c, false);
+  for (const std::array<std::int32_t, 3>& f : {std::array<std::int32_t, 3>{0, 1, 2}, {0, 2, 3}}) {
+    append<std::uint8_t>(data, 3, false);
+    for (std::int32_t v : f) append(data, v, false);
+  }
+  return data;
+}
+
+TEST(MeshIo, BinaryBytesAreNeverReadAsLineEnds) {
+  for (const std::string& lineEnd : {std::string("\n"), std::string("\r\n")}) {
+    const Mesh mesh = readMesh(writeFile("side13.ply", binaryPlyOfSide13(lineEnd))).mesh;
+    ASSERT_EQ(mesh.vertexCount(), 4);
+    EXPECT_EQ(mesh.points[2], Vec3(13, 13, 0));
+  }
+  expectReadError(writeFile("side13_cr.ply", binaryPlyOfSide13("\r")), "lines end in CR alone");
 }
 
 TEST(MeshIo, ReadsOffVariantsAndCountsOnTheKeywordLine) {
