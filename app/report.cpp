@@ -679,9 +679,10 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << "\n";
   out << "Lloyd iterations: " << r.iterations << (r.components > 1 ? ", all components" : "")
       << (r.converged ? " (converged)" : " (not converged)") << "\n";
-  out << "Parameterization" << (r.charts > 0 ? " (largest chart)" : "") << ": " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
-      << format("%.3g", r.distortion.maxAreaRatio)
-      << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
+  if (r.componentsKept < r.components)  // all kept as they are: nothing was parameterized
+    out << "Parameterization" << (r.charts > 0 ? " (largest chart)" : "") << ": " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
+        << format("%.3g", r.distortion.maxAreaRatio)
+        << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
   if (!r.resampleDropped.empty()) out << withoutResamplingText(r.resampleDropped) << "\n";
   if (r.charts > 0)
     out << "Split into " << r.charts << " charts along " << r.cut.seamEdges << " seam edges\n";

@@ -777,13 +777,18 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
     relaxedOn += r.coarseInput > 0 ? r.coarseInput : parts[i].vertexCount();
     simplifiedAny = simplifiedAny || r.coarseInput > 0;
     result.snappedTips += r.snappedTips;
+    result.heldBack += r.heldBack;
     result.fit += r.fit.scaled(boundingBoxDiagonal(parts[i]) / boundingBoxDiagonal(input));
-    const CutSummary cut = r.cut;
-    const std::optional<SlitTrial> slitTrial = r.slitTrial;
-    // (The total is timed around them all, in remesh().)
+    // (The total is timed around them all, in remesh().) The largest component's cut, charts and
+    // trials go with its recording and map: a component remeshed chart by chart was said to be
+    // one disk, and one chart's map the component's.
     if (addPart(result, r, "component " + std::to_string(i + 1), area, largest)) {
-      result.cut = cut;
-      result.slitTrial = slitTrial;
+      result.cut = r.cut;
+      result.slitTrial = r.slitTrial;
+      result.charts = r.charts;
+      result.largestChart = std::move(r.largestChart);
+      result.chartTrial = r.chartTrial;
+      result.firstPassTrial = r.firstPassTrial;
     }
   }
   if (simplifiedAny) result.coarseInput = relaxedOn;

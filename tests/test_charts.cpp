@@ -247,10 +247,16 @@ TEST(Charts, AreKeptWhereTheyMeetMoreBarsOrAreRounderOrCloser) {
 // result misses a bar at 500 vertices with the first pass and without (an average smallest
 // angle of 46.6 degrees: the cells bend over its edges); chart by chart, one face each, it
 // meets all three.
-TEST(Charts, ADiskThatMissesABarEitherWayIsRemeshedChartByChartToo) {
+// Four faces of an octahedron, folded at right angles: a disk no one map of which meets the bars.
+Mesh halfOctahedron() {
   Mesh pyramid;
   pyramid.points = {{0, 0, 2}, {0, 2, 0}, {-2, 0, 0}, {0, -2, 0}, {0, 0, -2}};
   pyramid.triangles = {{3, 0, 2}, {2, 0, 1}, {1, 4, 2}, {2, 4, 3}};
+  return pyramid;
+}
+
+TEST(Charts, ADiskThatMissesABarEitherWayIsRemeshedChartByChartToo) {
+  const Mesh pyramid = halfOctahedron();
   RemeshOptions o;
   o.sites.count = 500;
   const RemeshResult r = remesh(pyramid, o, "octahedron_0.off");
@@ -262,4 +268,21 @@ TEST(Charts, ADiskThatMissesABarEitherWayIsRemeshedChartByChartToo) {
   EXPECT_GE(r.after.minAngle, 30.0);
   EXPECT_GE(r.after.avgMinAngle, 53.0);
   EXPECT_TRUE(analyzeTopology(r.output).isDisk());
+}
+
+// Two of them, side by side: the larger's charts, its chart trial and its largest chart stand
+// for the run, as its recording and map do (it was said to be one disk, and one chart's map
+// its whole map).
+TEST(Charts, ComponentsSayTheChartsTheLargestWasRemeshedIn) {
+  Mesh two = halfOctahedron();
+  append(two, test::moved(halfOctahedron(), 0.5, Vec3(10, 0, 0)));
+  RemeshOptions o;
+  o.sites.count = 600;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(two, o, "two half octahedra");
+  ASSERT_EQ(r.components, 2);
+  EXPECT_EQ(r.charts, 4);
+  ASSERT_TRUE(r.chartTrial.has_value());
+  EXPECT_TRUE(r.chartTrial->forBars);
+  EXPECT_GT(r.largestChart.vertexCount(), 0);
 }

@@ -285,6 +285,20 @@ TEST(Pipeline, ALargeInputIsSimplifiedToTenVerticesPerVertexAskedFirst) {
   EXPECT_EQ(remesh(grid, o, "grid").recording.input.vertexCount(), 500);
 }
 
+// Two sphere caps relocated each on its own: the vertices held back are both's (the second's
+// were not counted).
+TEST(Pipeline, RelocatedComponentsCountTheVerticesEachHeldBack) {
+  const Mesh cap = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  Mesh two = cap;
+  append(two, test::moved(cap, 1.0, Vec3(5, 0, 0)));
+  RemeshOptions o;
+  o.method = RemeshMethod::Relocate;
+  o.measureFidelity = false;
+  const int one = remesh(cap, o, "sphere_cap.off").heldBack;
+  ASSERT_GT(one, 0);
+  EXPECT_GT(remesh(two, o, "two caps").heldBack, one);
+}
+
 // Each component is simplified on its own rule, and the result says so: two 625-vertex grids
 // at 40 vertices each are relaxed on 400 each.
 TEST(Pipeline, ComponentsSaySimplifiedTooWhenTheyAre) {

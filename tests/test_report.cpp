@@ -137,6 +137,17 @@ TEST(Report, ChartsTriedForAMissedBarSaySo) {
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["for_bars"], true);
 }
 
+// Where every component was kept as it is, too small for its share, nothing was parameterized:
+// no map's line (it said "lscm, area ratio: 1 .. 1").
+TEST(Report, NoMapIsSaidWhereEveryComponentWasKept) {
+  RemeshResult r;
+  r.components = 2;
+  r.componentsKept = 1;
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("Parameterization: "), std::string::npos);
+  r.componentsKept = 2;
+  EXPECT_EQ(remeshReport(r, RemeshOptions{}).find("Parameterization"), std::string::npos);
+}
+
 // How many times the surface was remeshed (the trials' runs) ends the time line, where more
 // than once: what a long run's time went on.
 TEST(Report, TheTimeLineCountsTheRuns) {
