@@ -52,7 +52,7 @@ void noteIgnoredOptions(const CLI::App& cmd, const RemeshOptions& o) {
                {"--border", o.param.method == ParamMethod::Lscm, "LSCM's border is free"},
                {"--polish", relocate, retriangulateOnly},
                {"--polish-target", noPolish, "it is the polish's, and there is no polish to relax with"},
-               {"--no-snap", noPolish, "the snaps are the polish's last step, and there is no polish"},
+               {"--no-snap", noPolish, "the snaps follow the polish, and there is no polish"},
                {"--no-fit", relocate, retriangulateOnly},
                {"--no-resample", relocate, "relocate parameterizes the input itself always"}};
   for (const auto& rule : rules)
@@ -266,8 +266,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_flag("--no-resample", r.noResample,
                "Parameterize the input itself, not a rough first remeshing of it");
   cmd.add_flag("--no-snap", r.noSnap,
-               "Leave out the polish's last step, which snaps a vertex onto each thin tip of the "
-               "input the result would cut off");
+               "Leave out the first step after the polish, which snaps a vertex onto each thin tip of "
+               "the input the result would cut off");
   cmd.add_flag("--no-fit", r.noFit,
                "Leave every vertex of the result on the input (by default retriangulate's last step "
                "moves them along their normals, and the border's across the border, so that the result "

@@ -28,7 +28,7 @@ struct LloydOptions {
   double distanceThreshold = 1e-6;
   double percentThreshold = 5.0;
   int maxIterations = 1000;
-  int threads = 0;  // for the cells; 0: every core (results do not depend on it)
+  int threads = 0;  // for the cells; 0: every core, or one under 500 sites (results do not depend on it)
 };
 // The most iterations a run may be asked for (the command line and the inspector's Settings):
 // every iteration is recorded, and a run that never converges (a distance threshold of 1e-300)

@@ -23,10 +23,6 @@
 
 namespace lloydscope {
 
-namespace {
-
-}  // namespace
-
 RemeshOptions referencePreset(RemeshMethod method) {
   RemeshOptions o;
   o.method = method;

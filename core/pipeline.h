@@ -48,7 +48,7 @@ struct RemeshOptions {
   // flips and k relaxation passes on the surface (at most kMostPolishPasses).
   int polish = 3;
   PolishTarget polishTarget = PolishTarget::Centroid;
-  bool snapToTips = true;  // the polish's last step (core/last_steps: snapToTips), when polish > 0
+  bool snapToTips = true;  // the first step after the polish (core/last_steps: snapToTips), when polish > 0
   // Retriangulate's very last step: the result's vertices moved along their normals so that it
   // lies closer to the input (core/fit), its border and angles kept.
   bool fit = true;
