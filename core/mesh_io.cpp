@@ -62,6 +62,8 @@ bool onlySpace(std::string_view text) { return std::all_of(text.begin(), text.en
 
 std::string unknownExtension(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
+  // A recording given where a mesh goes: `remesh run.lsrec` is a natural first try.
+  if (ext == ".lsrec") return "a recording, not a mesh (.off, .obj or .ply): lloydscope inspect or info opens it";
   return (ext.empty() ? std::string("no extension") : "unknown extension " + shown(ext)) +
          " (expected .off, .obj or .ply)";
 }
@@ -1229,8 +1231,8 @@ void requireWritableExtension(const std::string& ext, const std::string& path) {
 }  // namespace
 
 void requireMeshWritable(const std::string& path) {
+  requireWritable(path);  // first: a folder is said to be one, not to have no extension
   requireWritableExtension(lowercaseExtension(path), path);
-  requireWritable(path);
 }
 
 void writeMesh(const Mesh& mesh, const std::string& path) {

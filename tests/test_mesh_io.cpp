@@ -460,6 +460,19 @@ TEST(MeshIoErrors, AFileOfAnotherFormatThanItsExtensionSays) {
 TEST(MeshIoErrors, UnknownExtension) {
   expectFileError("mesh.stl", kSquareOff, "unknown extension '.stl'");
   expectFileError("mesh", kSquareOff, "no extension");
+  // `remesh run.lsrec`: said to be a recording, and what opens one.
+  expectFileError("run.lsrec", "LSREC", "a recording, not a mesh (.off, .obj or .ply): lloydscope inspect or info opens it");
+}
+
+// An output that is a folder is said to be one, not to have no extension ("-o results/").
+TEST(MeshIoErrors, AFolderToWriteAMeshToIsSaidToBeOne) {
+  const std::string folder = test::emptyFolder("out_folder");
+  try {
+    requireMeshWritable(folder);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), folder + ": cannot write: it is a folder");
+  }
 }
 
 TEST(MeshIoErrors, BadHeader) {
