@@ -166,8 +166,11 @@ void checkContents(const Recording& r, const std::string& path) {
   if (r.input.triangles.empty()) damaged("no triangles");
   if (!allFinite(r.input.points) || !allFinite(r.uv) || !allFinite(r.fixedSites))
     damaged("a coordinate is not a finite number");
-  if (!std::isfinite(r.distanceThreshold) || !std::isfinite(r.percentThreshold))
-    damaged("a threshold is not a finite number");
+  // As the command line takes them: a run never records others (the plots drew a threshold of
+  // -1 nowhere, and one of 200% over the top of the plot).
+  if (!(std::isfinite(r.distanceThreshold) && r.distanceThreshold > 0 && r.percentThreshold >= 0 &&
+        r.percentThreshold <= 100))
+    damaged("a threshold is not one a run takes (a distance above 0, a percentage from 0 to 100)");
   // The map as parameterize() leaves it: scaled to the unit square, counter-clockwise, no
   // triangle turned over (mirrored, it crashed the replay's point location; scaled by 1e-150
   // it raised a floating-point exception there; border sites 1e300 away made it hang).

@@ -86,6 +86,7 @@ TEST(Recording, ABorderOfFewerThanThreeSitesIsRefused) {
 // and is refused as damage.
 TEST(Recording, ContentsNoRunRecordsAreRefused) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::string kBadThreshold = "a threshold is not one a run takes (a distance above 0, a percentage from 0 to 100)";
   const std::vector<std::pair<std::function<void(Recording&)>, std::string>> edits = {
       {[](Recording& r) { r.iterations.clear(); }, "no iterations"},
       {[](Recording& r) { r.input.triangles.clear(), r.density.clear(); }, "no triangles"},
@@ -95,7 +96,10 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[](Recording& r) { std::fill(r.uv.begin(), r.uv.end(), Vec2(0, 0)); }, "its parameter domain has no area"},
       {[&](Recording& r) { r.density[5][1] = nan; }, "a density is negative or not a finite number"},
       {[](Recording& r) { r.density[5][1] = -1; }, "a density is negative or not a finite number"},
-      {[&](Recording& r) { r.distanceThreshold = nan; }, "a threshold is not a finite number"},
+      {[&](Recording& r) { r.distanceThreshold = nan; }, kBadThreshold},
+      {[](Recording& r) { r.distanceThreshold = 0; }, kBadThreshold},
+      {[](Recording& r) { r.percentThreshold = -5; }, kBadThreshold},
+      {[](Recording& r) { r.percentThreshold = 200; }, kBadThreshold},
       {[](Recording& r) { r.movableVertex.pop_back(); }, "its sites' vertices are not one per site"},
       {[](Recording& r) { r.movableVertex[0] = r.input.vertexCount(); }, "a site's vertex is out of range"},
       {[](Recording& r) { r.movableVertex[0] = -2; }, "a site's vertex is out of range"},
