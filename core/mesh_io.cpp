@@ -91,6 +91,19 @@ bool parseInteger(std::string_view token, long long& value) {
   return ec == std::errc() && stop == end;
 }
 
+// Digits past what a long long holds: parseInteger refuses them as it refuses a word, but they
+// are a number, too large (2^63 was said to be "not an integer").
+bool tooLargeAnInteger(std::string_view token) {
+  long long ignored;
+  if (parseInteger(token, ignored)) return false;
+  if (!token.empty() && (token[0] == '+' || token[0] == '-')) token.remove_prefix(1);
+  return !token.empty() && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+std::string whyNotAnInteger(std::string_view token) {
+  return tooLargeAnInteger(token) ? " is too large a number" : " is not an integer";
+}
+
 // ----------------------------------------------------------------------------------- raw mesh
 
 // What a reader produces: geometry plus polygons of any size, with 0-based indices that have
@@ -168,7 +181,7 @@ double numberAt(const std::string& path, int line, std::string_view token) {
 
 long long integerAt(const std::string& path, int line, std::string_view token) {
   long long value;
-  if (!parseInteger(token, value)) fail(path, atLine(line) + shown(token) + " is not an integer");
+  if (!parseInteger(token, value)) fail(path, atLine(line) + shown(token) + whyNotAnInteger(token));
   return value;
 }
 
@@ -227,8 +240,7 @@ bool isSupportedOffKeyword(std::string_view keyword) {
 int headerCount(const std::string& path, int line, std::string_view token, const std::string& what) {
   long long value;
   if (!parseInteger(token, value)) {
-    fail(path, "bad header: " + atLine(line) + what + " count " + shown(token) +
-                   " is not an integer");
+    fail(path, "bad header: " + atLine(line) + what + " count " + shown(token) + whyNotAnInteger(token));
   }
   if (value < 0 || value > INT_MAX) {
     fail(path, "bad header: " + atLine(line) + what + " count " + str(value) +
@@ -375,7 +387,10 @@ long long objIndex(const std::string& path, int line, long long face, std::strin
   const bool wellFormed = parts.size() <= 3 && parseInteger(parts[0], index) &&
                           std::all_of(parts.begin() + 1, parts.end(),
                                       [&](std::string_view p) { return p.empty() || parseInteger(p, unused); });
-  if (!wellFormed) fail(path, atLine(line) + shown(token) + " is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
+  if (!wellFormed)
+    fail(path, atLine(line) + shown(token) +
+                   (parts.size() <= 3 && tooLargeAnInteger(parts[0]) ? " is too large a number for a vertex index"
+                        : " is not a vertex index (v, v/vt, v//vn or v/vt/vn)"));
   if (index == 0) fail(path, atLine(line) + "face " + str(face) + " uses vertex 0 (OBJ counts vertices from 1)");
   if (index > 0) return index - 1;  // may refer to a later vertex; range-checked after reading
   if (index < -verticesSoFar) {

@@ -576,6 +576,12 @@ TEST(MeshIoErrors, NumberDoesNotParse) {
   expectFileError("suffix.obj", "v 0 0 0\nv 1 0 0abc\nv 0 1 0\nf 1 2 3\n", "'0abc' is not a number");
   expectFileError("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", "'1.5' is not an integer");
   expectFileError("index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 b 3\n", "'b' is not a vertex index");
+  // Digits past 2^63 - 1 are a number, too large: not "not an integer", as a word is.
+  expectFileError("huge.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n",
+                  "'99999999999999999999' is too large a number for a vertex index");
+  expectFileError("huge.off", "OFF\n9223372036854775808 1 0\n", "vertex count '9223372036854775808' is too large a number");
+  expectFileError("huge_index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -99999999999999999999\n",
+                  "'-99999999999999999999' is too large a number");
   // The texture and normal indices too, which are not used (both were read as vertex 1).
   expectFileError("texture.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x/y 2 3\n", "'1/x/y' is not a vertex index");
   expectFileError("slashes.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "'1/1/1/1' is not a vertex index");
