@@ -15,6 +15,14 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Triangle = std::array<int, 3>;
 
+// The sizes double precision remeshes: beyond them CGAL's exact predicates crashed (GMP on the
+// NaN of an overflowed product: coordinates of 1e80), its triangulation looped (a strip 10^9
+// times as long as wide, or one vertex 10^10 away from a unit grid), or the result lost its
+// shape to rounding (a unit grid 10^15 from the origin came out with 0-degree angles; 10^12
+// was fine). Every command refuses a mesh outside them (requireExactPredicatesRange); the
+// reader, which refuses what it cannot even measure, quotes them too.
+constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthestPerSize = 1e12;
+
 // The one exception type of the core. Its message is a single line meant for the user,
 // starting with the file it is about when there is one ("face.off: 3 faces use vertex 12 ...").
 struct Error : std::runtime_error {

@@ -732,10 +732,14 @@ void checkMeasurable(const std::vector<Vec3>& points, const std::string& name, i
   for (size_t i = 0; i < points.size(); ++i) {
     if (!points[i].allFinite()) fail(name, "vertex " + str(i + base) + " has a non-finite coordinate");
     if (const double largest = points[i].cwiseAbs().maxCoeff(); largest > kLargestMeasurableCoordinate) {
-      std::ostringstream text;
-      text << largest;
-      fail(name, "vertex " + str(i + base) + " has a coordinate of " + text.str() +
-                     ", too large to measure in double precision (lengths overflow past 1e+150)");
+      const auto asWritten = [](double x) {
+        std::ostringstream text;
+        text << x;
+        return text.str();
+      };
+      fail(name, "vertex " + str(i + base) + " has a coordinate of " + asWritten(largest) +
+                     ", too large to measure in double precision (lengths overflow past 1e+150; Lloydscope "
+                     "takes coordinates up to " + asWritten(kLargestCoordinate) + "); scale the mesh down");
     }
   }
   const auto [lo, hi] = boundingBox(points);
@@ -744,14 +748,16 @@ void checkMeasurable(const std::vector<Vec3>& points, const std::string& name, i
   if (size > 0 && size < kSmallestMeasurableSize) {
     std::ostringstream text;
     text << "the mesh is " << size << " across (its bounding box's diagonal), too small to measure in double "
-         << "precision (lengths to the fourth underflow under " << kSmallestMeasurableSize << "); scale it up";
+         << "precision (lengths to the fourth underflow under " << kSmallestMeasurableSize
+         << "; Lloydscope takes a diagonal of " << kSmallestDiagonal << " at least); scale it up";
     fail(name, text.str());
   }
   const double farthest = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
   if (size > 0 && farthest > kFarthestMeasurable * size) {
     std::ostringstream text;
     text << "the mesh lies " << farthest / size << " times its size (its bounding box's diagonal) from the origin: "
-         << "double precision keeps too few digits of its shape; move it nearer";
+         << "double precision keeps too few digits of its shape (Lloydscope takes " << kFarthestPerSize
+         << " times at most); move it nearer";
     fail(name, text.str());
   }
 }

@@ -310,14 +310,10 @@ class RemeshSession {
   std::unique_ptr<LloydSolver> solver_;
 };
 
-// The sizes double precision remeshes: beyond them CGAL's exact predicates crashed (GMP on the
-// NaN of an overflowed product: coordinates of 1e80), its triangulation looped (a strip 10^9
-// times as long as wide, or one vertex 10^10 away from a unit grid), or the result lost its
-// shape to rounding (a unit grid 10^15 from the origin came out with 0-degree angles; 10^12
-// was fine). Throws Error naming `name`, the measure and its limit, for a mesh outside them.
-constexpr double kLargestCoordinate = 1e30, kSmallestDiagonal = 1e-30, kFarthestPerSize = 1e12;
-// The first three of those, for any work of CGAL's on the mesh (`task`: "remeshed", "measured"):
-// the distance to a mesh of coordinates 1e149 raised a floating-point trap in GMP.
+// Throws Error naming `name`, the measure and its limit, for a mesh outside the sizes double
+// precision remeshes (kLargestCoordinate and the others, core/mesh.h), for any work of CGAL's on
+// the mesh (`task`: "remeshed", "measured"): the distance to a mesh of coordinates 1e149 raised
+// a floating-point trap in GMP.
 void requireExactPredicatesRange(const Mesh& mesh, const std::string& name, const std::string& task);
 // Of the diagonal squared: a ribbon 1000 to 1 has 10^-3. Under 10^-6 the border check below
 // could only be met by asking for hundreds of thousands of vertices (a rectangle 1 by 10^-7

@@ -597,12 +597,14 @@ TEST(MeshIoErrors, NonFiniteCoordinate) {
   expectFileError("inf.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", "vertex 2 has a non-finite coordinate");
   // Finite, but their squares are not ("face 0 has zero area", before).
   expectFileError("huge.off", "OFF\n3 1 0\n0 0 0\n1e308 0 0\n0 -1e308 0\n3 0 1 2\n",
-                  "vertex 1 has a coordinate of 1e+308, too large to measure in double precision (lengths overflow past 1e+150)");
+                  "vertex 1 has a coordinate of 1e+308, too large to measure in double precision (lengths overflow past "
+                  "1e+150; Lloydscope takes coordinates up to 1e+30); scale the mesh down");
   // Nor those of a mesh so small that its lengths to the fourth underflow ("face 0 has zero
   // area", before); one merely small is read.
   expectFileError("tiny.off", "OFF\n3 1 0\n0 0 0\n1e-100 0 0\n0 1e-100 0\n3 0 1 2\n",
                   "the mesh is 1.41421e-100 across (its bounding box's diagonal), too small to measure in double "
-                  "precision (lengths to the fourth underflow under 1e-75); scale it up");
+                  "precision (lengths to the fourth underflow under 1e-75; Lloydscope takes a diagonal of 1e-30 at least); "
+                  "scale it up");
   EXPECT_EQ(readMesh(writeFile("small.off", "OFF\n3 1 0\n0 0 0\n1e-70 0 0\n0 1e-70 0\n3 0 1 2\n")).mesh.faceCount(), 1);
   // So small that the diagonal's square underflows itself: "face 0 has zero area" before.
   expectFileError("tinier.off", "OFF\n3 1 0\n0 0 0\n1e-170 0 0\n0 1e-170 0\n3 0 1 2\n",
@@ -611,7 +613,7 @@ TEST(MeshIoErrors, NonFiniteCoordinate) {
   // 1e16 before); one nearer is read.
   expectFileError("far.off", "OFF\n3 1 0\n1e16 0 0\n1.0000000000000004e16 0 0\n1e16 4 0\n3 0 1 2\n",
                   "times its size (its bounding box's diagonal) from the origin: double precision keeps too few "
-                  "digits of its shape; move it nearer");
+                  "digits of its shape (Lloydscope takes 1e+12 times at most); move it nearer");
   EXPECT_EQ(readMesh(writeFile("near.off", "OFF\n3 1 0\n1e12 0 0\n1.000000000001e12 0 0\n1e12 1 0\n3 0 1 2\n")).mesh.faceCount(), 1);
 }
 
