@@ -402,8 +402,10 @@ struct InspectCommand {
     cmd->add_option("--select-triangle", shot.view.triangles,
                     "Pin this triangle of the result (with --final: of the final result; repeatable)")
         ->check(wholeNumber(0));
+    // Not with --iterations: it pinned the last iteration's worst in every picture.
     cmd->add_flag("--select-worst", shot.view.worstTriangle,
-                  "Pin the triangle with the smallest angle in the result at the iteration shown (with --final: in the final result)");
+                  "Pin the triangle with the smallest angle in the result at the iteration shown (with --final: in the final result)")
+        ->excludes(pictures);
     cmd->add_option("--fill", fill,
                     "What colours the 2D cells: none, mass, area, energy, distance (site to "
                     "centroid), moved (since the iteration before) or valence (of the site's vertex in "

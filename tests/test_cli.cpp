@@ -731,6 +731,8 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       // Options a picture would not show, refused (they were left out in silence).
       {"inspect " + mesh + " --stage voronoi --final --screenshot x.png", "--final excludes --stage"},
       {"inspect " + mesh + " --iteration 3 --iterations 0:2 --screenshot x.png", "--iterations excludes --iteration"},
+      // It pinned the last iteration's worst triangle in every picture.
+      {"inspect " + mesh + " --select-worst --iterations 0:2 --screenshot x.png", "--iterations excludes --select-worst"},
       {"inspect " + mesh + " --stage valence --fill mass --screenshot x.png", "--fill mass: the valence stage fills the cells by valence"},
       {"inspect " + mesh + " --stage parameterize --fill energy --screenshot x.png",
        "--fill energy: the parameterize stage shows no cells to fill"},
