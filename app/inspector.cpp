@@ -221,11 +221,12 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
     : renderer_(gpu, renderPass),
       meshName_(fileNameOf(meshName)),
       shownPath_(meshName),
-      options_(std::move(options)), slitDisksAsked_(options_.slitDisks), result_(std::move(result)),
+      options_(std::move(options)), asked_{options_.slitDisks, options_.resample}, result_(std::move(result)),
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
-  if (input_) inputTopology_ = analyzeTopology(*input_);  // before a chart or component stands for it
+  // Before a chart or component stands for the input.
+  inputTopology_ = input_ ? analyzeTopology(*input_) : replay_->surface();
   if (!result_.resampleDropped.empty()) runNotes_ = withNoteFirst(withoutResamplingText(result_.resampleDropped), "");
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
@@ -383,18 +384,22 @@ void Inspector::startSession(const Mesh& input, const std::string& name) {
   stopRun();
   // Made before the replay on show changes: where it fails, the last run's iterations stay.
   std::unique_ptr<RemeshSession> session;
+  RemeshOptions used = settings_;
   std::string notes;
   try {
-    session = std::make_unique<RemeshSession>(input, settings_, name);
+    session = std::make_unique<RemeshSession>(input, used, name);
   } catch (const Error& e) {
-    if (!usesResampling(settings_)) throw;
+    if (!usesResampling(used)) throw;
     // As remesh() does: without the first pass where it makes the run fail.
-    session = std::make_unique<RemeshSession>(input, withoutResampling(settings_), name);
+    used = withoutResampling(used);
+    session = std::make_unique<RemeshSession>(input, used, name);
     notes = withoutResamplingText(problemOf(e, name));
   }
   session->step();  // the panes need one iteration to show
   forgetResult();
-  options_ = settings_;  // the Settings pane's, from now on the run's
+  // The Settings pane's, from now on the run's; without the first pass where it went without
+  // (the lesson said the map was of a rough first remeshing).
+  options_ = used;
   session_ = std::move(session);
   runNotes_ = withNoteFirst(notes, "");
   result_.paramUsed = session_->paramUsed();
@@ -683,10 +688,12 @@ void OpeningView::applyTo(Inspector& inspector) const {
     // the input beside the plots and the status bar of a converged run (iteration 159).
     if (iteration >= 0) inspector.setIteration(iteration);
     else if (stage) inspector.setIteration(stageIteration(*stage, count));
-    inspector.showFinal(final);
     // Before the pins: the stage decides which result the 3D view shows, and so which one a
-    // triangle is pinned in (--stage result --select-worst pinned the iteration's, unseen).
+    // triangle is pinned in (--stage result --select-worst pinned the iteration's, unseen); and
+    // before showFinal(), which fits the view to it (the Result stage of two components framed
+    // the largest one's, off centre).
     inspector.showStage(stage);
+    inspector.showFinal(final);
     if (fill) inspector.setFill(*fill);
     for (int cell : cells) inspector.pinCell(cell);
     for (int triangle : triangles) inspector.pinTriangle(triangle);
@@ -746,8 +753,7 @@ void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const Vec3
 
 const QualityMetrics& Inspector::currentQuality() {
   if (measuredIteration_ != iteration_ || measuredMethod_ != replay_->method()) {
-    const IterationView& view = replay_->view(iteration_);
-    quality_ = measureQuality(view.stitched.triangles.empty() ? view.output : view.stitched);
+    quality_ = measureQuality(replay_->view(iteration_).measured());
     measuredIteration_ = iteration_;
     measuredMethod_ = replay_->method();
   }
@@ -957,7 +963,9 @@ Layers Inspector::layers() const {
 }
 
 void Inspector::toggleLesson() {
-  if (lesson_.playing()) {
+  // A stage opened alone (inspect --stage) ends as a lesson does: the button said "Lesson ends
+  // it", and started a lesson from its first stage.
+  if (lesson_.playing() || stage_) {
     lesson_.stop();
     stage_.reset();
     return;
@@ -975,10 +983,8 @@ void Inspector::toggleLesson() {
 CaptionFacts Inspector::captionFacts() {
   CaptionFacts f;
   f.mesh = meshName_;
-  if (inputTopology_) {  // a recording opened alone holds the disk only
-    f.surface = inputTopology_->describe();
-    f.disk = inputTopology_->isDisk();
-  }
+  f.surface = inputTopology_.describe();
+  f.disk = inputTopology_.isDisk();
   // A live run (after Restart) has no result yet: its replay has the seams.
   f.seamEdges = std::max<int>(result_.cut.seamEdges, replay_->seams().size());
   f.charts = inputCharts_;
@@ -1008,12 +1014,12 @@ CaptionFacts Inspector::captionFacts() {
   if (stage_ == Stage::Move)
     f.arrowScale = moveArrowScale(replay_->view(iteration_), replay_->recording().fixedSites.size());
   f.percentMoving = 100.0 * it.fractionMoving;
-  if (stage_ == Stage::Valence)
-    for (const VertexValence& v : siteValences(replay_->view(iteration_))) {
-      if (!v.irregular()) continue;
-      const int insideOffset = v.onBorder ? 0 : v.offset();  // -1 a 5, +1 a 7
-      ++(insideOffset == -1 ? f.fives : insideOffset == 1 ? f.sevens : f.otherIrregular);
-    }
+  if (stage_ == Stage::Valence) {  // of the mesh its percentage is of: a seam sample's two sites are one vertex
+    const IrregularCounts irregular = irregularCounts(replay_->view(iteration_).measured());
+    f.fives = irregular.fives;
+    f.sevens = irregular.sevens;
+    f.otherIrregular = irregular.others;
+  }
   // The cell pinned last (pinning a second one while the class looks on, the caption stayed on
   // the first), unless this run lacks it (cell 900 after a restart with 500 sites read "Cell -1").
   if (!selection_.cells().empty())
@@ -1226,10 +1232,15 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::Checkbox("site -> centroid arrows", &arrows)) showArrows_ = arrows;
   const char* fills[] = {"no fill", "mass", "area", "energy", "distance to centroid",
                          "moved since k-1", "valence"};
-  int fill = static_cast<int>(fill_);
-  if (stage_) ImGui::EndDisabled();  // a fill shows over the lesson's cells too
-  if (ImGui::Combo("cell fill", &fill, fills, IM_ARRAYSIZE(fills))) fill_ = static_cast<CellFill>(fill);
-  if (stage_) ImGui::BeginDisabled();
+  // A fill shows over the lesson's cells too; a stage with no cells, or its own fill, keeps it
+  // greyed at the fill it shows (the Valence stage read "no fill" beside cells filled by valence,
+  // and a choice there did nothing).
+  const bool fillChosen =
+      !stage_ || (layers().cells2D && lloydscope::fillShown(stage_, CellFill::None) == CellFill::None);
+  int fill = static_cast<int>(fillShown());
+  if (stage_ && fillChosen) ImGui::EndDisabled();
+  if (ImGui::Combo("cell fill", &fill, fills, IM_ARRAYSIZE(fills)) && fillChosen) fill_ = static_cast<CellFill>(fill);
+  if (stage_ && fillChosen) ImGui::BeginDisabled();
   ImGui::TextUnformatted("3D view");
   // One or the other, the last ticked (ticking the input under the final result did nothing, and
   // the input came back when the final result was unticked).
@@ -1405,7 +1416,8 @@ void Inspector::fileControls() {
       // the run stopped, at iteration 206, beside its error.
       ReadResult read = readMesh(meshPath_, ReadOptions{repairOnOpen_});
       const std::string name = fileNameOf(meshPath_);
-      settings_.slitDisks = slitDisksAsked_;  // not what remesh() chose for the previous mesh
+      settings_.slitDisks = asked_.slitDisks;  // not what remesh() chose for the previous mesh
+      settings_.resample = asked_.resample;
       try {
         startSession(read.mesh, name);
       } catch (const Error& e) {
@@ -1445,16 +1457,16 @@ void Inspector::fileControls() {
       stopRun();
       session_.reset();
       input_.reset();
-      inputTopology_.reset();  // the recording holds its disk only
       inputCharts_ = 0;
       forgetResult();
       // Its own name, settings, map and iterations, as `inspect` opens it (the last run's name,
       // solver and thresholds stayed on show, and Compare ran the recording's own solver again).
       options_ = settings_ = run.options;
-      slitDisksAsked_ = options_.slitDisks;
+      asked_ = {options_.slitDisks, options_.resample};
       result_ = std::move(run.result);
       openReplay(std::move(result_.recording));
       result_.recording = Recording{};  // the replay holds it
+      inputTopology_ = replay_->surface();
       meshName_ = fileNameOf(recordingPath_);
       shownPath_ = recordingPath_;
       message_.clear();
@@ -1489,12 +1501,13 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   const bool final = finalShown();
   ViewLabel3D facts;
   facts.final = final;
-  facts.hausdorffPercent = result_.fidelity.hausdorffPercent;
+  if (result_.fidelity.samples > 0) facts.hausdorffPercent = result_.fidelity.hausdorffPercent;
   facts.result = !shown.input3D;
   facts.iteration = iteration_;
   facts.method = toString(replay_->method());
   facts.input = input_ && (!shown.mapped3D || mapIsOfTheInput());
   facts.charts = inputCharts_;
+  facts.components = result_.components;
   facts.simplified = options_.simplifyTo > 0 || result_.coarseInput > 0;
   // Wrapped in the pane (the final result's ran past its edge at 960 pixels), the colour bar
   // under it. The mesh is centred and fitted in the pane under the label (at 960x600 the two
@@ -1959,6 +1972,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (!canStep) ImGui::BeginDisabled();
   if (ImGui::Button("Step")) {
     stopComparingForARun();
+    if (lesson_.playing()) toggleLesson();  // as for Run: its plan is of the iterations before
     try {
       replay_->append(session_->step());
       setIteration(replay_->iterationCount() - 1);
@@ -1978,7 +1992,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   const bool lessonWaits = running && !lesson_.playing();
   if (lessonWaits) ImGui::BeginDisabled();
-  if (ImGui::Button(lesson_.playing() ? "End lesson" : "Lesson")) toggleLesson();
+  if (ImGui::Button(lesson_.playing() || stage_ ? "End lesson" : "Lesson")) toggleLesson();
   if (lessonWaits) ImGui::EndDisabled();
   if (lessonWaits && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("After the run: Stop it, or let it finish");

@@ -230,11 +230,17 @@ class Inspector {
   RemeshOptions options_;   // the run on screen's: the header, the captions and Compare describe it
   RemeshOptions settings_;  // the Settings pane's, for the next Restart or Open mesh
   bool repairOnOpen_ = false;
-  bool slitDisksAsked_;  // options_.slitDisks as given (remesh()'s choice may override it)
+  // What remesh() may choose otherwise for a mesh (a nearly closed disk kept whole, a disk kept
+  // without the first pass), as given: the next mesh opened starts from them (it ran without the
+  // first pass because the last one had, and nothing in Settings showed it).
+  struct Asked {
+    bool slitDisks, resample;
+  } asked_;
   RemeshResult result_;
   std::unique_ptr<Replay> replay_;
   std::optional<Mesh> input_;
-  std::optional<Topology> inputTopology_;  // of the mesh opened, before a chart stood for it
+  // Of the mesh opened, before a chart stood for it; of a recording's surface, stitched.
+  Topology inputTopology_;
   int inputCharts_ = 0;  // > 0: the panes and Restart follow the largest of so many charts
   std::unique_ptr<RemeshSession> session_;
   std::thread worker_;

@@ -418,14 +418,16 @@ std::string domainLegend(bool sites, bool centroids, bool seams) {
 
 std::string viewLabel3D(const ViewLabel3D& shown) {
   if (shown.final)
-    return format("final result (red ring: farthest from the input, %.2f%%)", shown.hausdorffPercent);
+    return shown.hausdorffPercent
+               ? format("final result (red ring: farthest from the input, %.2f%%)", *shown.hausdorffPercent)
+               : "final result (its distance to the input not measured)";
   if (shown.result) return "result at iteration " + std::to_string(shown.iteration) + " (" + shown.method + ")";
   if (!shown.input) return "the mesh that was parameterized";
   // A surface made in charts: the panes follow its largest, of the input simplified where it was
   // (labelled "input mesh", its colours sat beside a caption quoting the whole input's angles).
-  if (shown.charts > 0)
-    return std::string(shown.simplified ? "the simplified input's" : "the input's") + " largest chart (of\u00a0" +
-           std::to_string(shown.charts) + ")";
+  const std::string whose = shown.simplified ? "the simplified input's" : "the input's";
+  if (shown.charts > 0) return whose + " largest chart (of\u00a0" + std::to_string(shown.charts) + ")";
+  if (shown.components > 1) return whose + " largest component (of\u00a0" + std::to_string(shown.components) + ")";
   return "input mesh";
 }
 

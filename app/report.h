@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -130,12 +131,15 @@ std::string domainLegend(bool sites, bool centroids, bool seams);
 // What the 3D view shows, in its top-left label.
 struct ViewLabel3D {
   bool final = false;          // the final result, after the clean-up
-  double hausdorffPercent = 0;  // its distance to the input (a red ring marks where)
+  // Its distance to the input, where measured (a red ring marks where); none: --no-fidelity (it
+  // read "farthest from the input, 0.00%", with no ring).
+  std::optional<double> hausdorffPercent;
   bool result = false;         // else an iteration's result
   int iteration = 0;
   std::string method;
   bool input = false;          // else the input as the user opened it, or the mesh that was mapped
   int charts = 0;              // > 0: the input stands for its largest chart of so many
+  int components = 1;          // > 1: for its largest component of so many
   bool simplified = false;     // charts of the input simplified first (--simplify)
 };
 std::string viewLabel3D(const ViewLabel3D& shown);

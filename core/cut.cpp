@@ -371,7 +371,7 @@ void dropFlatTriangles(Mesh& mesh) {
   if (flipFlatTriangles(triangles, mesh.points) || dropped) mesh = assemble(triangles, mesh.points);
 }
 
-Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex) {
+Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex, std::vector<int>* vertexOf) {
   const std::vector<int> target = seamPartners(disk, tolerance);
   // A triangle with two corners on the two copies of one sample (the ear at the tip of a slit)
   // collapses: it goes. So do two triangles that become one back to back (a slit tip with a
@@ -400,6 +400,12 @@ Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVert
       if (target[v] != v) merged[v] = merged[target[v]] = true;
     seamVertex->clear();
     for (int v : kept) seamVertex->push_back(merged[v]);
+  }
+  if (vertexOf) {
+    std::vector<int> keptAs(disk.vertexCount(), -1);
+    for (size_t i = 0; i < kept.size(); ++i) keptAs[kept[i]] = static_cast<int>(i);
+    vertexOf->resize(disk.vertexCount());
+    for (int v = 0; v < disk.vertexCount(); ++v) (*vertexOf)[v] = keptAs[target[v]];
   }
   return stitched;
 }

@@ -79,8 +79,11 @@ std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance);
 
 // Merges the border vertices of a remeshed disk that lie within `tolerance` of each other (the
 // copies of each seam sample): the cut surface's topology back. Vertices keep their order.
-// `seamVertex`, if given, receives per vertex of the result whether it was on a seam.
-Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex = nullptr);
+// `seamVertex`, if given, receives per vertex of the result whether it was on a seam;
+// `vertexOf`, per vertex of the disk, its vertex in the result (both copies of a seam sample
+// the one they became; -1 for a vertex that went).
+Mesh stitchSeams(const Mesh& disk, double tolerance, std::vector<bool>* seamVertex = nullptr,
+                 std::vector<int>* vertexOf = nullptr);
 
 // Leaves no triangle of no area, which no reader of the result takes: drops each flat ear of
 // the border (three border samples in a row on a straight border, which a map with a round

@@ -57,10 +57,21 @@ CellDetails describeCell(const Recording& recording, const Domain& domain,
 
 std::vector<VertexValence> siteValences(const IterationView& view) {
   std::vector<VertexValence> valences(view.sites.size());
-  const std::vector<VertexValence> ofVertices = vertexValences(view.output);
+  const std::vector<VertexValence> ofVertices = vertexValences(view.measured());
   for (size_t v = 0; v < view.outputSite.size(); ++v)
-    if (view.outputSite[v] >= 0) valences[view.outputSite[v]] = ofVertices[v];
+    if (const int measured = view.measuredVertex(static_cast<int>(v)); view.outputSite[v] >= 0 && measured >= 0)
+      valences[view.outputSite[v]] = ofVertices[measured];
   return valences;
+}
+
+IrregularCounts irregularCounts(const Mesh& mesh) {
+  IrregularCounts counts;
+  for (const VertexValence& v : vertexValences(mesh)) {
+    if (!v.irregular()) continue;
+    const int insideOffset = v.onBorder ? 0 : v.offset();  // -1 a 5, +1 a 7
+    ++(insideOffset == -1 ? counts.fives : insideOffset == 1 ? counts.sevens : counts.others);
+  }
+  return counts;
 }
 
 double siteMoved(const Recording& recording, int k, size_t cell) {

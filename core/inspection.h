@@ -34,10 +34,17 @@ struct CellDetails {
 CellDetails describeCell(const Recording& recording, const Domain& domain,
                          const IterationView& view, int cell);
 
-// Each site's vertex in the view's result (valence -1 where the site is no vertex of it: one on
-// top of another, or outside the border samples' polygon). Together they make the result's
-// irregularity: the "valence" fill.
+// Each site's vertex in the view's result, stitched where it was cut open (valence -1 where the
+// site is no vertex of it: one on top of another, or outside the border samples' polygon).
+// Together they make the result's irregularity: the "valence" fill.
 std::vector<VertexValence> siteValences(const IterationView& view);
+
+// The irregular vertices of `mesh` (QualityMetrics::irregularBoundaryAware's): fives and sevens
+// inside, the others (inside or on the border).
+struct IrregularCounts {
+  int fives = 0, sevens = 0, others = 0;
+};
+IrregularCounts irregularCounts(const Mesh& mesh);
 
 // Where site i was at every recorded iteration.
 std::vector<Vec2> siteTrajectory(const Recording& recording, int site);

@@ -33,6 +33,11 @@ void Replay::setMethod(RemeshMethod method) {
   method_ = method;
 }
 
+Topology Replay::surface() const {
+  const Mesh& disk = recording_.input;
+  return analyzeTopology(seams_.empty() ? disk : stitchSeams(disk, kSeamTolerance * boundingBoxDiagonal(disk)));
+}
+
 const IterationView& Replay::view(int k) {
   k = std::clamp(k, 0, std::max(0, iterationCount() - 1));
   if (view_.index == k || recording_.iterations.empty()) return view_;
@@ -60,7 +65,8 @@ const IterationView& Replay::view(int k) {
     for (size_t i = 0; i < it.sites.size(); ++i)
       next.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
   }
-  next.stitched = !seams_.empty() ? stitchSeams(next.output, kSeamTolerance * boundingBoxDiagonal(next.output)) : Mesh{};
+  if (!seams_.empty())
+    next.stitched = stitchSeams(next.output, kSeamTolerance * boundingBoxDiagonal(next.output), nullptr, &next.stitchedVertex);
   view_ = std::move(next);
   return view_;
 }

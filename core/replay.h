@@ -15,8 +15,13 @@ struct IterationView {
   std::vector<Vec2> outputUV;      // where each output vertex lies in the parameter domain
   std::vector<int> outputSite;     // the site each output vertex is, or -1
   // On a surface that was cut open (its parameterized mesh has seams): `output` with its seams
-  // stitched, what the inspector measures; empty otherwise.
+  // stitched, and per vertex of `output` its vertex there (stitchSeams' vertexOf); empty otherwise.
   Mesh stitched;
+  std::vector<int> stitchedVertex;
+  // What the inspector measures: the stitched surface where there is one.
+  const Mesh& measured() const { return stitched.triangles.empty() ? output : stitched; }
+  // The vertex of measured() that vertex v of `output` is (-1: none).
+  int measuredVertex(int v) const { return stitched.triangles.empty() ? v : stitchedVertex[v]; }
 };
 
 class Replay {
@@ -33,6 +38,9 @@ class Replay {
   // Where the parameterized mesh was cut open (seamEdges() of recording().input): empty for a
   // disk the pipeline did not cut.
   const std::vector<std::pair<int, int>>& seams() const { return seams_; }
+  // The surface the recording is of: its disk, stitched back where it was cut open (the lesson
+  // called a recording of the eight, of genus 2, "a topological disk").
+  Topology surface() const;
   // A chart's seams with the other charts (Recording::sharedSeams), as edges of the views'
   // output meshes (retriangulate: its border vertices are the fixed sites, in order).
   const std::vector<std::pair<int, int>>& sharedSeamsOnOutput() const { return sharedOnOutput_; }

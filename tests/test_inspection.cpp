@@ -126,6 +126,32 @@ TEST(Inspection, TheSitesValencesAreTheResultsIrregularity) {
   }
 }
 
+// On a surface cut open (a torus), a seam sample's two sites are one vertex of the stitched
+// result: their valence is that vertex's, never a border's (they were counted as border vertices
+// of the disk, and the Valence stage's fives and sevens did not add up to its percentage).
+TEST(Inspection, ACutSurfacesSitesHaveTheStitchedValences) {
+  RemeshOptions o;
+  o.sites.count = 300;
+  o.lloyd.maxIterations = 5;
+  o.polish = -1;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(test::torus(), o, "torus");
+  ASSERT_GT(r.cut.seamEdges, 0);
+  Replay replay(r.recording);
+  const IterationView& view = replay.view(4);
+  ASSERT_FALSE(view.stitched.triangles.empty());
+  int vertices = 0;
+  for (const VertexValence& s : siteValences(view)) {
+    vertices += s.isVertex();
+    EXPECT_FALSE(s.onBorder);
+  }
+  EXPECT_GT(vertices, view.stitched.vertexCount());  // the seam samples' two copies each
+  const IrregularCounts counts = irregularCounts(view.measured());
+  EXPECT_GT(counts.fives + counts.sevens, 0);
+  EXPECT_NEAR(100.0 * (counts.fives + counts.sevens + counts.others) / view.stitched.vertexCount(),
+              measureQuality(view.stitched).irregularBoundaryAware, 1e-9);
+}
+
 TEST(Inspection, CellAtIsTheNearestSiteInsideTheDomain) {
   const Recording& r = uniformRun(RemeshMethod::Retriangulate).recording;
   Replay replay(r);

@@ -346,6 +346,35 @@ TEST(Inspector, EveryPaneShowsTheIterationAsked) {
   }
 }
 
+// The Result stage shows the final result, and frames all of it as --final does: with two
+// components it framed the larger one's surface, both off to the right and smaller.
+TEST(Inspector, TheResultStageFramesTheWholeResult) {
+  Mesh two = test::grid(12);
+  append(two, test::moved(test::grid(8), 0.5, Vec3(2, 0, 0)));
+  const std::string mesh = test::tempPath("two_grids.off");
+  writeMesh(two, mesh);
+  // Where the mesh's pixels (greener than blue: the background is grey, the colour bar left out)
+  // lie across the pane, on average: 0 its left edge, 1 its right.
+  const auto across = [](const Picture& p) {
+    double sum = 0;
+    int count = 0;
+    for (int y = 0; y < p.height; ++y)
+      for (int x = 40; x < p.width; ++x)
+        if (p.at(x, y)[1] > p.at(x, y)[2] + 40) sum += x, ++count;
+    return count > 0 ? sum / count / p.width : -1.0;
+  };
+  const std::string stage = test::tempPath("two_grids_stage.png"), final = test::tempPath("two_grids_final.png");
+  const std::string run = mesh + " --sites 150 --no-fidelity --pane 3d ";
+  ASSERT_EQ(renderScene(run + "--stage result", stage), 0);
+  ASSERT_EQ(renderScene(run + "--final", final), 0);
+  const double framed = across(readPng(final));
+  ASSERT_GT(framed, 0.3);
+  ASSERT_LT(framed, 0.7);
+  // The stage's pane is shorter (its caption), so the mesh a little smaller: 0.45 against 0.42;
+  // framing the larger component put it at 0.59.
+  EXPECT_NEAR(across(readPng(stage)), framed, 0.06);
+}
+
 TEST(Inspector, WithoutADisplayItSaysWhatToDo) {
   const std::string err = test::tempPath("nodisplay.err");
   const int status = std::system(("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(LLOYDSCOPE_CLI) +

@@ -6,6 +6,20 @@
 
 using namespace lloydscope;
 
+// A recording holds the disk its map is of: its surface is that disk, stitched back where it
+// was cut open (a torus, here, of genus 1 and closed; a disk the pipeline did not cut, as it is).
+TEST(Replay, ARecordingsSurfaceIsItsDiskStitched) {
+  RemeshOptions o;
+  o.sites.count = 300;
+  o.lloyd.maxIterations = 2;
+  o.polish = -1;
+  o.measureFidelity = false;
+  const Topology torus = Replay(remesh(test::torus(), o, "torus").recording).surface();
+  EXPECT_EQ(torus.genus, 1);
+  EXPECT_TRUE(torus.boundaryLoops.empty());
+  EXPECT_TRUE(Replay(remesh(test::grid(10), o, "grid").recording).surface().isDisk());
+}
+
 TEST(Replay, ShowsExactlyWhatTheSolverComputed) {
   RemeshOptions o;
   o.measureFidelity = false;

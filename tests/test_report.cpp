@@ -280,6 +280,9 @@ TEST(Report, TheViewLabelSaysWhatThe3DViewShows) {
   EXPECT_EQ(viewLabel3D(shown), "the input's largest chart (of\u00a019)");
   shown.simplified = true;  // --simplify 1000: its angles are not the input's the caption quotes
   EXPECT_EQ(viewLabel3D(shown), "the simplified input's largest chart (of\u00a019)");
+  shown.charts = 0;
+  shown.components = 2;  // the panes follow the largest component; the input's numbers are all of them
+  EXPECT_EQ(viewLabel3D(shown), "the simplified input's largest component (of\u00a02)");
   shown.input = false;
   EXPECT_EQ(viewLabel3D(shown), "the mesh that was parameterized");
   shown.result = true;
@@ -289,6 +292,8 @@ TEST(Report, TheViewLabelSaysWhatThe3DViewShows) {
   shown.final = true;
   shown.hausdorffPercent = 0.131;
   EXPECT_EQ(viewLabel3D(shown), "final result (red ring: farthest from the input, 0.13%)");
+  shown.hausdorffPercent.reset();  // --no-fidelity: no ring, no distance
+  EXPECT_EQ(viewLabel3D(shown), "final result (its distance to the input not measured)");
 }
 
 // The view switches read what the views show; during a lesson what its stage set (the Result
