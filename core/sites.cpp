@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <tuple>
 
 namespace lloydscope {
 
@@ -235,13 +236,23 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     const int fewest = std::min(edges, !fromNode ? 1 : closed ? 3 : 2);
     const int byLength = static_cast<int>(std::lround(length.back() / spacing));
     if (fewest > byLength) {  // the vertex nearest by arc length: alike on both copies of a seam
+      const auto pointAt = [&](int i) -> const Vec3& { return mesh.points[loop[(begin + i) % n]]; };
       for (int s = 0, last = 0; s < fewest; ++s) {
         const double target = length.back() * s / fewest;
+        // Two vertices as near (the middle of 5 equal edges) go to the smaller point: the two
+        // copies run the stretch in opposite directions, and each took the one nearer its start
+        // (an open band's seam did not stitch).
+        const auto nearer = [&](int i, int j) {
+          const double di = std::abs(length[i] - target), dj = std::abs(length[j] - target);
+          if (std::abs(di - dj) > 1e-9 * length.back()) return di < dj;
+          const Vec3 &a = pointAt(i), &b = pointAt(j);
+          return std::make_tuple(a.x(), a.y(), a.z()) < std::make_tuple(b.x(), b.y(), b.z());
+        };
         int nearest = last + (s > 0);
         for (int i = nearest; i <= edges - (fewest - s); ++i)
-          if (std::abs(length[i] - target) < std::abs(length[nearest] - target)) nearest = i;
+          if (nearer(i, nearest)) nearest = i;
         samples.push_back(param.uv[loop[(begin + nearest) % n]]);
-        points.push_back(mesh.points[loop[(begin + nearest) % n]]);
+        points.push_back(pointAt(nearest));
         last = nearest;
       }
       continue;

@@ -463,6 +463,24 @@ TEST(Cut, ATorusIsCutAlongTwoShortLoops) {
 // A closed capsule, slit through three extremities: its conformal map still shrinks some
 // parts more than others. Asked for a tighter spread, slits through the most shrunken
 // vertices bring it down, each by a tenth at least, and the summary says so.
+// An open band cut along a seam of 5 equal edges, sampled with 2 pieces: the middle falls
+// between two vertices, and each copy of the seam, run from its own end, took the one nearer
+// its start. The seam did not stitch ("vertex 0 is non-manifold", found by a helper).
+TEST(Cut, ASeamsTwoCopiesPickTheSameVertexWhereTwoAreAsNear) {
+  const Mesh band = test::wrappedGrid(40, 5, true, false, [](double u, double v) {
+    return Vec3(std::cos(2 * M_PI * u), std::sin(2 * M_PI * u), 0.5 * v);
+  });
+  RemeshOptions o;
+  o.sites.count = 20;
+  o.resample = false;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(band, o, "band");
+  ASSERT_GT(r.cut.seamEdges, 0);
+  const Topology t = analyzeTopology(r.output);
+  EXPECT_EQ(t.genus, 0);
+  EXPECT_EQ(t.boundaryLoops.size(), 2u);
+}
+
 TEST(Cut, SlitsThroughExtremitiesBringTheAreaSpreadDown) {
   Mesh capsule = sphere();
   for (Vec3& p : capsule.points) p.z() *= 3;
