@@ -443,11 +443,12 @@ Distortion measureDistortion(const Mesh& mesh, const std::vector<Vec2>& uv) {
 Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
                               const std::string& name) {
   if (options.method == ParamMethod::Auto) {
-    // LSCM distorts least but may fold; mean value and then Tutte on a circle are one-to-one
-    // in exact arithmetic, and Tutte's positive weights hold on where rounding folds the other.
+    // LSCM distorts least but may fold; mean value and then Tutte, on the border asked (it was
+    // a circle whatever --border said), are one-to-one in exact arithmetic, and Tutte's positive
+    // weights hold on where rounding folds the other.
     std::vector<ParamOptions> tries = {{ParamMethod::Lscm, options.border, {}},
-                                       {ParamMethod::MeanValue, Border::Circle, {}},
-                                       {ParamMethod::Tutte, Border::Circle, {}}};
+                                       {ParamMethod::MeanValue, options.border, {}},
+                                       {ParamMethod::Tutte, options.border, {}}};
     if (!options.fallback.empty())
       tries.insert(tries.begin() + 1, {ParamMethod::Given, Border::Circle, options.fallback});
     for (size_t i = 0;; ++i) {

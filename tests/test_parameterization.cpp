@@ -149,6 +149,19 @@ TEST(Parameterization, OrientationIsPositiveEverywhere) {
   }
 }
 
+// A sphere with one square taken out: LSCM folds, and auto falls back to mean value, on the
+// border asked (it was a circle whatever --border said).
+TEST(Parameterization, AutosFallbackTakesTheBorderAsked) {
+  Mesh sphere = test::cube(6, true);
+  sphere.triangles.erase(sphere.triangles.begin(), sphere.triangles.begin() + 2);  // a square hole: 4 corners
+  const Parameterization p = parameterize(sphere, {ParamMethod::Auto, Border::Square, {}}, "sphere");
+  ASSERT_EQ(p.method, ParamMethod::MeanValue);
+  for (int v : p.boundaryLoop) {
+    const Vec2& uv = p.uv[v];
+    EXPECT_NEAR(std::min({uv.x(), uv.y(), 1 - uv.x(), 1 - uv.y()}), 0.0, 1e-9) << v;  // on a side
+  }
+}
+
 // Auto's fallback after LSCM (a resampled surface's points in the input's map): taken as it
 // is, scaled into the unit square; a fold in it is repaired as LSCM's are.
 TEST(Parameterization, AGivenMapIsTakenAsItIsAndChecked) {
