@@ -22,11 +22,13 @@ struct SimplifyResult {
 };
 
 // Collapses the cheapest edges by the quadric error of Garland and Heckbert until the target
-// is met or no edge can go. The boundary curve stays in place: a vertex on it never leaves
-// it (border edges collapse to a point of the edge, an edge with one border end to that end),
-// and no edge joining two border vertices through the inside collapses (it would pinch the
-// surface). A mesh far from the origin is simplified about its own centre: the quadrics lose its
-// detail there. Throws Error naming `name` for a target that is not positive or not smaller.
+// is met or no edge can go. The border stays the border: a border edge collapses to a point of
+// itself (after earlier collapses a chord of the input's border, so that a curved border's
+// vertices may come off it a little: 0.36% of the diagonal on the sphere cap at 30 vertices),
+// an edge with one border end to that end, and no edge joining two border vertices through the
+// inside collapses (it would pinch the surface). A mesh far from the origin is simplified about
+// its own centre: the quadrics lose its detail there. Throws Error naming `name` for a target
+// that is not positive; one not smaller gives the input as it is.
 SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name);
 
 // The most triangles around one vertex for which the edge collapse is quick: CGAL costs every
