@@ -37,8 +37,9 @@ struct Chart {
   // The length of its border on seams (edges with both ends on a seam): half its samples there
   // are another chart's.
   double seamLength = 0;
-  // Per chart vertex, its projection onto the plane normal to the chart's mean normal, if every
-  // face is within 75 degrees of it (a map to try where a conformal one folds); else empty.
+  // Per chart vertex, its projection onto the plane normal to the chart's mean normal: a map to
+  // try where a conformal one folds (ParamOptions::fallback: its own folds repaired as LSCM's
+  // are, or the next map tried).
   std::vector<Vec2> uv;
 };
 

@@ -18,8 +18,9 @@ constexpr double kSeamTolerance = 1e-9;
 struct CutSummary {
   int seamEdges = 0;      // cut edges inside the surface (each is two border edges of the disk)
   int extremityCuts = 0;  // slits added to bound the distortion
-  // max/min over the vertices of the conformal (LSCM) map's area scale on the disk: how much
-  // more it shrinks one part of the surface than another.
+  // The conformal (LSCM) map's area scale on the disk, its 99th percentile over its 1st (over the
+  // vertices; the extremes are a vertex or two): how much more it shrinks one part of the
+  // surface than another.
   double areaSpread = 1;
 };
 
@@ -37,7 +38,7 @@ struct CutResult {
 
 struct CutOptions {
   // Slits are added from the most shrunken vertex while the area spread is above this, each
-  // kept only if it lowers the spread.
+  // kept only if it lowers the spread by a tenth or more.
   double maxAreaSpread = 20;
   int maxExtremityCuts = 12;
   // A disk is slit only where its own map's spread is above slitDisksAbove (then, as any

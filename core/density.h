@@ -1,7 +1,7 @@
 // The density that weights Lloyd relaxation in the parameter domain: per triangle, a value at
 // each of its corners, interpolated linearly inside it. Corners of neighbouring triangles
-// need not agree: the area density is constant on each triangle (its own exact ratio), which
-// a per-vertex value cannot be where the map's scale changes fast.
+// need not agree (the curvature density's may not); the area density's do: each vertex's value
+// is from its triangles' ratios (areaDensity).
 #pragma once
 
 #include "mesh.h"
@@ -35,8 +35,8 @@ Density vertexDensity(const std::vector<Triangle>& triangles, const std::vector<
 Density computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
                        const DensityOptions& options);
 
-// The area term alone: (3D area / UV area)^2 of each triangle, at its three corners. Why
-// squared: a 2D CVT with density rho gives cells of area proportional to rho^(-1/2) (Gersho),
+// The area term alone: at each vertex, the square of its triangles' 3D area / UV area ratios
+// averaged (weighted by their 3D areas), interpolated across each triangle. Why squared: a 2D CVT with density rho gives cells of area proportional to rho^(-1/2) (Gersho),
 // so rho = ratio^2 makes every cell cover the same area of the surface.
 Density areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv);
 

@@ -9,7 +9,7 @@
 namespace lloydscope {
 
 enum class ParamMethod {
-  Auto,  // LSCM; where it folds, ParamOptions::fallback, then mean value on a circle, then Tutte
+  Auto,  // LSCM; where it folds, ParamOptions::fallback, then mean value, then Tutte (on `border`)
   Authalic, Conformal, MeanValue, Tutte, Lscm,
   Given  // ParamOptions::fallback, taken as it is (what Auto reports when it used it)
 };
