@@ -238,6 +238,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
   noteTheResult();
   inputCharts_ = result_.charts;
+  inputComponents_ = result_.components;
   if (result_.charts > 0) {
     if (input_) input_ = result_.largestChart;  // what the panes show, and Restart steps
     runNotes_ = withNoteFirst(chartTrialText(result_) + ": the panes, the iteration column and Restart follow the "
@@ -1430,6 +1431,7 @@ void Inspector::fileControls() {
       shownPath_ = meshPath_;
       inputTopology_ = analyzeTopology(*input_);
       inputCharts_ = 0;  // a session makes one run, of one disk
+      inputComponents_ = 1;
       result_.before = measureQuality(*input_);
       for (const std::string& note : read.notes) noteFirst(note);
       startRun();
@@ -1458,6 +1460,7 @@ void Inspector::fileControls() {
       session_.reset();
       input_.reset();
       inputCharts_ = 0;
+      inputComponents_ = 1;
       forgetResult();
       // Its own name, settings, map and iterations, as `inspect` opens it (the last run's name,
       // solver and thresholds stayed on show, and Compare ran the recording's own solver again).
@@ -1507,7 +1510,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   facts.method = toString(replay_->method());
   facts.input = input_ && (!shown.mapped3D || mapIsOfTheInput());
   facts.charts = inputCharts_;
-  facts.components = result_.components;
+  facts.components = inputComponents_;
   facts.simplified = options_.simplifyTo > 0 || result_.coarseInput > 0;
   // Wrapped in the pane (the final result's ran past its edge at 960 pixels), the colour bar
   // under it. The mesh is centred and fitted in the pane under the label (at 960x600 the two

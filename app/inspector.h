@@ -242,6 +242,7 @@ class Inspector {
   // Of the mesh opened, before a chart stood for it; of a recording's surface, stitched.
   Topology inputTopology_;
   int inputCharts_ = 0;  // > 0: the panes and Restart follow the largest of so many charts
+  int inputComponents_ = 1;  // > 1: ... the largest of so many components (Restart forgets result_'s)
   std::unique_ptr<RemeshSession> session_;
   std::thread worker_;
   std::atomic<bool> stopRequested_{false}, workerDone_{true};

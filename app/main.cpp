@@ -229,7 +229,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                  "where the polish moves each vertex: centroid (default: of its ring's triangles), "
                  "voronoi (of its Voronoi cell in its ring) or circumcenter (optimal Delaunay)");
   cmd.add_option("--simplify", r.simplify,
-                 "Quadric edge collapse to N vertices first (the boundary stays in place), and "
+                 "Quadric edge collapse to N vertices first (the border stays the border), and "
                  "N vertices in the result (a coarser input is remeshed finer)")
       ->check(kVerticesAsked);
   cmd.add_option("--preset", r.preset,
@@ -564,7 +564,7 @@ struct SimplifyCommand {
   bool repair = false;
 
   void add(CLI::App& app) {
-    cmd = app.add_subcommand("simplify", "Quadric edge collapse (Garland-Heckbert) to a target size, boundary in place");
+    cmd = app.add_subcommand("simplify", "Quadric edge collapse (Garland-Heckbert) to a target size, the border kept a border");
     cmd->add_option("input", input, "Mesh (OFF, OBJ, PLY)")->required();
     cmd->add_option("-o,--output", output, "Where to write the result")->required()->check(kFileName);
     auto* size = cmd->add_option_group("target", "one of");

@@ -1,7 +1,6 @@
 // The density that weights Lloyd relaxation in the parameter domain: per triangle, a value at
-// each of its corners, interpolated linearly inside it. Corners of neighbouring triangles
-// need not agree (the curvature density's may not); the area density's do: each vertex's value
-// is from its triangles' ratios (areaDensity).
+// each of its corners, interpolated linearly inside it. The corners of neighbouring triangles
+// agree in the densities made here (a value per vertex: areaDensity), but need not.
 #pragma once
 
 #include "mesh.h"

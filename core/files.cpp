@@ -43,8 +43,9 @@ std::filesystem::path targetOf(const std::string& path) {
   throw Error(path + ": cannot write in " + folder.string() + " (" + reason + ")");
 }
 
-// A folder, no name or one longer than a file name may be: refused before any run (a long
-// name failed only at the end, after the minutes of work it was to save).
+}  // namespace
+
+// A long name failed only at the end, after the minutes of work it was to save.
 void requireFileName(const std::string& path) {
   if (path.empty()) throw Error("cannot write a file of no name (an empty name was given)");
   std::error_code ignored;
@@ -56,6 +57,8 @@ void requireFileName(const std::string& path) {
     throw Error(path + ": cannot write: its name is " + std::to_string(name.size()) +
                 " bytes long, more than a file name may be here (" + std::to_string(longest) + ")");
 }
+
+namespace {
 
 // A device, a pipe or a socket (or a link to one: /dev/null, /dev/stdout) is written into as it
 // is: renaming a temporary onto it replaced it with a plain file (as root, /dev/null itself).

@@ -40,6 +40,8 @@ class FileBatch {
 // folder, no permission) or `path` is a folder: checked before a run that may take minutes.
 // Leaves nothing behind.
 void requireWritable(const std::string& path);
+// The part of that which opens nothing: a folder, no name, or one longer than a file name may be.
+void requireFileName(const std::string& path);
 
 // A new empty file of a name of its own in the system's temporary folder (TMPDIR, else /tmp),
 // ending in `suffix`, for the caller to use and remove. Throws Error where none can be made.

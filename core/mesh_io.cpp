@@ -62,8 +62,6 @@ bool onlySpace(std::string_view text) { return std::all_of(text.begin(), text.en
 
 std::string unknownExtension(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
-  // A recording given where a mesh goes: `remesh run.lsrec` is a natural first try.
-  if (ext == ".lsrec") return "a recording, not a mesh (.off, .obj or .ply): lloydscope inspect or info opens it";
   return (ext.empty() ? std::string("no extension") : "unknown extension " + shown(ext)) +
          " (expected .off, .obj or .ply)";
 }
@@ -187,6 +185,17 @@ long long integerAt(const std::string& path, int line, std::string_view token) {
 
 // ----------------------------------------------------------------------------- binary reading
 
+// A binary file's header with its lines ended by CR alone reads as one line (loadFile keeps a
+// binary file's CRs: its bytes 13 are numbers), the body's first bytes with it.
+const char* const kBinaryHeaderEndsInCr =
+    "bad header: its lines end in CR alone, which a binary file's cannot (save it with LF line ends)";
+
+// The header line at the start of `line` is a keyword ("ply", "OFF BINARY") ended by CR alone.
+bool endsInCrAlone(std::string_view line, std::string_view keyword) {
+  return line.size() > keyword.size() + 1 && line.rfind(keyword, 0) == 0 && line[keyword.size()] == '\r' &&
+         line[keyword.size() + 1] != '\n';
+}
+
 bool hostIsLittleEndian() {
   const std::uint16_t one = 1;
   unsigned char first;
@@ -307,6 +316,7 @@ RawMesh readOff(const std::string& path, std::string_view text) {
   }
   if (tokens.size() >= 2 && tokens[1] == "BINARY") {
     if (tokens[0] != "OFF") fail(path, "bad header: only plain 'OFF BINARY' is supported as binary OFF");
+    if (endsInCrAlone(text.substr(tokens[0].data() - text.data()), "OFF BINARY")) fail(path, kBinaryHeaderEndsInCr);
     return readBinaryOff(path, text.substr(lines.position()));
   }
 
@@ -513,8 +523,7 @@ PlyHeader readPlyHeader(const std::string& path, std::string_view text) {
     }
 
     if (line == 1) {
-      if (lineText.size() > 4 && lineText.rfind("ply\r", 0) == 0)  // "ply\r" then more, up to the first LF
-        fail(path, "bad header: its lines end in CR alone, which a binary PLY's cannot (save it with LF line ends)");
+      if (endsInCrAlone(lineText, "ply")) fail(path, kBinaryHeaderEndsInCr);
       if (tokens.size() != 1 || tokens[0] != "ply") {
         fail(path, "bad header: a PLY file must start with a 'ply' line");
       }
@@ -1188,6 +1197,8 @@ std::string extensionByContent(std::string_view text) {
 
 ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = lowercaseExtension(path);
+  // A recording given where a mesh goes: `remesh run.lsrec` is a natural first try.
+  if (ext == ".lsrec") fail(path, "a recording, not a mesh (.off, .obj or .ply): lloydscope inspect or info opens it");
   if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, unknownExtension(path));
   const std::string text = loadFile(path);
   // An OFF named .obj was refused as "the mesh has no faces", which named nothing wrong.
@@ -1252,8 +1263,9 @@ void requireWritableExtension(const std::string& ext, const std::string& path) {
 }  // namespace
 
 void requireMeshWritable(const std::string& path) {
-  requireWritable(path);  // first: a folder is said to be one, not to have no extension
+  requireFileName(path);  // a folder is said to be one, not to have no extension
   requireWritableExtension(lowercaseExtension(path), path);
+  requireWritable(path);  // last: it opens a pipe, which waits for a reader
 }
 
 void writeMesh(const Mesh& mesh, const std::string& path) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace lloydscope {
@@ -218,6 +219,12 @@ TEST(MeshIo, BinaryBytesAreNeverReadAsLineEnds) {
     EXPECT_EQ(mesh.points[2], Vec3(13, 13, 0));
   }
   expectReadError(writeFile("side13_cr.ply", binaryPlyOfSide13("\r")), "lines end in CR alone");
+  // A binary OFF's header likewise (it was read as one line, and said to be cut short).
+  std::string offWithCr = binaryOffSquare();
+  offWithCr[offWithCr.find('\n')] = '\r';
+  expectReadError(writeFile("square_cr.off", offWithCr), "lines end in CR alone");
+  offWithCr.insert(offWithCr.find('\r') + 1, "\n");  // CR LF
+  expectUnitSquare(readMesh(writeFile("square_crlf.off", offWithCr)).mesh);
 }
 
 TEST(MeshIo, ReadsOffVariantsAndCountsOnTheKeywordLine) {
@@ -464,8 +471,19 @@ TEST(MeshIoErrors, UnknownExtension) {
   expectFileError("run.lsrec", "LSREC", "a recording, not a mesh (.off, .obj or .ply): lloydscope inspect or info opens it");
 }
 
-// An output that is a folder is said to be one, not to have no extension ("-o results/").
+// An output that is a folder is said to be one, not to have no extension ("-o results/"); a
+// pipe of the wrong extension is refused for it before it is opened (an open waits for a reader).
 TEST(MeshIoErrors, AFolderToWriteAMeshToIsSaidToBeOne) {
+  const std::string pipe = test::tempPath("pipe.txt");
+  std::remove(pipe.c_str());
+  ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+  try {
+    requireMeshWritable(pipe);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown extension '.txt'"), std::string::npos) << e.what();
+  }
+  std::remove(pipe.c_str());
   const std::string folder = test::emptyFolder("out_folder");
   try {
     requireMeshWritable(folder);
