@@ -35,8 +35,9 @@ Density computeDensity(const Mesh& mesh, const std::vector<Vec2>& uv,
                        const DensityOptions& options);
 
 // The area term alone: at each vertex, the square of its triangles' 3D area / UV area ratios
-// averaged (weighted by their 3D areas), interpolated across each triangle. Why squared: a 2D CVT with density rho gives cells of area proportional to rho^(-1/2) (Gersho),
-// so rho = ratio^2 makes every cell cover the same area of the surface.
+// averaged (weighted by their 3D areas), interpolated across each triangle. Why squared: a 2D
+// CVT with density rho gives cells of area proportional to rho^(-1/2) (Gersho), so rho =
+// ratio^2 makes every cell cover the same area of the surface.
 Density areaDensity(const Mesh& mesh, const std::vector<Vec2>& uv);
 
 // What `density` asks of the surface itself: density / areaDensity (1 everywhere for the

@@ -842,6 +842,38 @@ struct HalfEdge {
   bool forward;       // the triangle goes lo -> hi
 };
 
+// Whether the faces can be turned to agree across every edge: each face's turn follows from a
+// neighbour's, and a Moebius strip's come back round turned the other way. `halfEdges` sorted
+// by edge, each edge of two faces at most.
+bool orientable(int faceCount, const std::vector<HalfEdge>& halfEdges) {
+  std::vector<std::vector<std::pair<int, bool>>> across(faceCount);  // neighbour, and whether it must turn
+  for (size_t i = 0; i + 1 < halfEdges.size(); ++i) {
+    const HalfEdge &x = halfEdges[i], &y = halfEdges[i + 1];
+    if (x.lo != y.lo || x.hi != y.hi) continue;
+    across[x.triangle].emplace_back(y.triangle, x.forward == y.forward);
+    across[y.triangle].emplace_back(x.triangle, x.forward == y.forward);
+  }
+  std::vector<int> turned(faceCount, -1);
+  for (int start = 0; start < faceCount; ++start) {
+    if (turned[start] >= 0) continue;
+    turned[start] = 0;
+    for (std::vector<int> stack = {start}; !stack.empty();) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (const auto& [g, turn] : across[f]) {
+        const int wanted = turned[f] ^ static_cast<int>(turn);
+        if (turned[g] < 0) {
+          turned[g] = wanted;
+          stack.push_back(g);
+        } else if (turned[g] != wanted) {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
 void checkEdges(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
   std::vector<HalfEdge> halfEdges;
   halfEdges.reserve(3 * mesh.triangles.size());
@@ -867,6 +899,10 @@ void checkEdges(const Mesh& mesh, const std::string& name, const Numbering& numb
   for (size_t i = 0; i + 1 < halfEdges.size(); ++i) {
     const HalfEdge &x = halfEdges[i], &y = halfEdges[i + 1];
     if (x.lo == y.lo && x.hi == y.hi && x.forward == y.forward) {
+      // No turning of faces mends a Moebius strip: its message said only that two faces disagree.
+      if (!orientable(mesh.faceCount(), halfEdges))
+        fail(name, "the surface is not orientable (a Moebius strip, say): no turning of its faces makes them agree "
+                   "across every edge");
       fail(name, "faces " + str(numbering.face(x.triangle)) + " and " + str(numbering.face(y.triangle)) +
                      " have opposite orientations across " + edgeName(x));
     }
