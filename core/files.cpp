@@ -21,11 +21,14 @@ namespace {
 
 // Where a write goes: through a link to its target (renaming onto the link replaced it with a
 // file and left the target as it was), a target not there yet too (a link to a file to be made
-// was replaced by the file), link after link.
+// was replaced by the file), link after link; refused after as many as the system follows (a
+// loop of links was replaced by a file).
 std::filesystem::path targetOf(const std::string& path) {
+  constexpr int kMostLinks = 40;  // Linux's MAXSYMLINKS
   std::filesystem::path target = path;
   std::error_code error;
-  for (int links = 0; links < 40 && std::filesystem::is_symlink(target, error); ++links) {
+  for (int links = 0; std::filesystem::is_symlink(target, error); ++links) {
+    if (links == kMostLinks) throw Error(path + ": cannot write: " + std::strerror(ELOOP));
     const std::filesystem::path to = std::filesystem::read_symlink(target, error);
     if (error) break;
     target = to.is_absolute() ? to : target.parent_path() / to;
