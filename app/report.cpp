@@ -331,7 +331,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"cut",
            {{"seam_edges", r.cut.seamEdges},
             {"extremity_cuts", r.cut.extremityCuts},
-            {"area_spread", r.cut.areaSpread}}},
+            {"area_spread", r.cut.areaSpread > 0 ? nlohmann::json(r.cut.areaSpread) : nlohmann::json()}}},
           {"milliseconds",
            {{"simplify", r.ms.simplify},
             {"cut", r.ms.cut},

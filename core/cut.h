@@ -20,8 +20,8 @@ struct CutSummary {
   int extremityCuts = 0;  // slits added to bound the distortion
   // The conformal (LSCM) map's area scale on the disk, its 99th percentile over its 1st (over the
   // vertices; the extremes are a vertex or two): how much more it shrinks one part of the
-  // surface than another.
-  double areaSpread = 1;
+  // surface than another. 0: not measured (a disk not offered slits: relocate, --no-slit).
+  double areaSpread = 0;
 };
 
 struct CutResult {

@@ -116,6 +116,7 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
           if (!topology.isDisk()) throw;  // the slits are an improvement for a disk, not a need
         }
         ms_.cut = stage.lap();
+        cutSummary_ = cut.summary;  // measured, slit or not (a disk kept whole said a spread of 1)
         if (cut.seam.empty()) return mesh;
         cut_ = std::move(cut);
         return cut_->disk;
@@ -369,7 +370,7 @@ RemeshResult RemeshSession::finish() {
   RemeshResult result;
   result.paramUsed = param_.method;
   result.distortion = param_.distortion;
-  if (cut_) result.cut = cut_->summary;
+  result.cut = cutSummary_;
   result.ms = ms_;
   result.iterations = iterationCount();
   result.converged = converged();

@@ -301,6 +301,7 @@ class RemeshSession {
   std::unique_ptr<const PreparedInput> ownPrepared_;
   const PreparedInput* prepared_;
   std::optional<CutResult> cut_;  // how input_ was cut open, if it was
+  CutSummary cutSummary_;          // cut_'s, or the spread of a disk that was offered slits and kept none
   Mesh input_;                    // the disk to remesh
   std::optional<Resampling> resampled_;
   Parameterization param_;

@@ -285,6 +285,21 @@ TEST(Pipeline, ALargeInputIsSimplifiedToTenVerticesPerVertexAskedFirst) {
   EXPECT_EQ(remesh(grid, o, "grid").recording.input.vertexCount(), 500);
 }
 
+// A disk offered slits says its conformal map's area spread, slit or kept whole (the sphere cap,
+// kept whole, said 1: the spread measured was dropped); where none are offered, none is measured.
+TEST(Pipeline, ADiskKeptWholeSaysItsAreaSpread) {
+  const Mesh cap = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  RemeshOptions o;
+  o.lloyd.maxIterations = 2;
+  o.polish = -1;
+  o.measureFidelity = false;
+  const RemeshResult offered = remesh(cap, o, "cap");
+  EXPECT_EQ(offered.cut.seamEdges, 0);
+  EXPECT_GT(offered.cut.areaSpread, 1.0);
+  o.slitDisks = false;
+  EXPECT_EQ(remesh(cap, o, "cap").cut.areaSpread, 0.0);
+}
+
 // Two sphere caps relocated each on its own: the vertices held back are both's (the second's
 // were not counted).
 TEST(Pipeline, RelocatedComponentsCountTheVerticesEachHeldBack) {

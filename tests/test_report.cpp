@@ -148,6 +148,14 @@ TEST(Report, NoMapIsSaidWhereEveryComponentWasKept) {
   EXPECT_EQ(remeshReport(r, RemeshOptions{}).find("Parameterization"), std::string::npos);
 }
 
+// An area spread not measured (0: a disk not offered slits) is null in the JSON, not a number.
+TEST(Report, AnAreaSpreadNotMeasuredIsNull) {
+  RemeshResult r;
+  EXPECT_TRUE(toJson(r, RemeshOptions{})["cut"]["area_spread"].is_null());
+  r.cut.areaSpread = 3.5;
+  EXPECT_EQ(toJson(r, RemeshOptions{})["cut"]["area_spread"], 3.5);
+}
+
 // How many times the surface was remeshed (the trials' runs) ends the time line, where more
 // than once: what a long run's time went on.
 TEST(Report, TheTimeLineCountsTheRuns) {
