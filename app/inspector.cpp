@@ -616,8 +616,9 @@ constexpr NamedValue<CellFill> kFillNames[] = {{CellFill::None, "none"},        
 CellFill parseCellFill(const std::string& name) { return parseName(kFillNames, name, "fill"); }
 const char* toString(CellFill fill) { return nameOf(kFillNames, fill); }
 
-CellFill fillShown(std::optional<Stage> stage, CellFill chosen) {
-  return stage == Stage::Valence ? CellFill::Valence : chosen;
+std::optional<CellFill> stageFill(std::optional<Stage> stage) {
+  if (stage == Stage::Valence) return CellFill::Valence;
+  return std::nullopt;
 }
 
 Pane parsePane(const std::string& name) {
@@ -829,7 +830,7 @@ void Inspector::uploadMesh() {
   uploaded_ = now;
 }
 
-CellFill Inspector::fillShown() const { return lloydscope::fillShown(stage_, fill_); }
+CellFill Inspector::fillShown() const { return stageFill(stage_).value_or(fill_); }
 
 bool Inspector::cellsFilled() const { return fillShown() != CellFill::None && layers().cells2D; }
 
@@ -1236,8 +1237,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   // A fill shows over the lesson's cells too; a stage with no cells, or its own fill, keeps it
   // greyed at the fill it shows (the Valence stage read "no fill" beside cells filled by valence,
   // and a choice there did nothing).
-  const bool fillChosen =
-      !stage_ || (layers().cells2D && lloydscope::fillShown(stage_, CellFill::None) == CellFill::None);
+  const bool fillChosen = !stage_ || (layers().cells2D && !stageFill(stage_));
   int fill = static_cast<int>(fillShown());
   if (stage_ && fillChosen) ImGui::EndDisabled();
   if (ImGui::Combo("cell fill", &fill, fills, IM_ARRAYSIZE(fills)) && fillChosen) fill_ = static_cast<CellFill>(fill);

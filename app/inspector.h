@@ -40,9 +40,9 @@ enum class CellFill { None, Mass, Area, Energy, ToCentroid, Moved, Valence };
 // "none", "mass", "area", "energy", "distance" (to the centroid), "moved", "valence"; throws Error.
 CellFill parseCellFill(const std::string& name);
 const char* toString(CellFill fill);
-// The fill the cells get: a lesson stage's own where it has one (the Valence stage's), else the
-// one chosen (where the stage draws cells: Layers::cells2D).
-CellFill fillShown(std::optional<Stage> stage, CellFill chosen);
+// A lesson stage's own fill, where it has one (the Valence stage's): the cells get it, whatever
+// fill is chosen (which shows where a stage draws cells and has none: Layers::cells2D).
+std::optional<CellFill> stageFill(std::optional<Stage> stage);
 
 class Inspector;
 

@@ -473,8 +473,8 @@ struct InspectCommand {
   void requireFillShown() const {
     if (!shot.view.stage || !shot.view.fill || *shot.view.fill == CellFill::None) return;
     const std::string stageName = toString(*shot.view.stage);
-    if (const CellFill shown = fillShown(shot.view.stage, *shot.view.fill); shown != *shot.view.fill)
-      throw Error("--fill " + fill + ": the " + stageName + " stage fills the cells by " + toString(shown));
+    if (const std::optional<CellFill> own = stageFill(shot.view.stage); own && *own != *shot.view.fill)
+      throw Error("--fill " + fill + ": the " + stageName + " stage fills the cells by " + toString(*own));
     if (!layersFor(*shot.view.stage).cells2D)
       throw Error("--fill " + fill + ": the " + stageName + " stage shows no cells to fill");
   }

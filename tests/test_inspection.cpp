@@ -130,12 +130,7 @@ TEST(Inspection, TheSitesValencesAreTheResultsIrregularity) {
 // result: their valence is that vertex's, never a border's (they were counted as border vertices
 // of the disk, and the Valence stage's fives and sevens did not add up to its percentage).
 TEST(Inspection, ACutSurfacesSitesHaveTheStitchedValences) {
-  RemeshOptions o;
-  o.sites.count = 300;
-  o.lloyd.maxIterations = 5;
-  o.polish = -1;
-  o.measureFidelity = false;
-  const RemeshResult r = remesh(test::torus(), o, "torus");
+  const RemeshResult r = remesh(test::torus(), test::shortRun(300, 5), "torus");
   ASSERT_GT(r.cut.seamEdges, 0);
   Replay replay(r.recording);
   const IterationView& view = replay.view(4);

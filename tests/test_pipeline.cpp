@@ -289,10 +289,7 @@ TEST(Pipeline, ALargeInputIsSimplifiedToTenVerticesPerVertexAskedFirst) {
 // kept whole, said 1: the spread measured was dropped); where none are offered, none is measured.
 TEST(Pipeline, ADiskKeptWholeSaysItsAreaSpread) {
   const Mesh cap = readMesh(test::assetPath("sphere_cap.off")).mesh;
-  RemeshOptions o;
-  o.lloyd.maxIterations = 2;
-  o.polish = -1;
-  o.measureFidelity = false;
+  RemeshOptions o = test::shortRun(0, 2);
   const RemeshResult offered = remesh(cap, o, "cap");
   EXPECT_EQ(offered.cut.seamEdges, 0);
   EXPECT_GT(offered.cut.areaSpread, 1.0);

@@ -9,11 +9,7 @@ using namespace lloydscope;
 // A recording holds the disk its map is of: its surface is that disk, stitched back where it
 // was cut open (a torus, here, of genus 1 and closed; a disk the pipeline did not cut, as it is).
 TEST(Replay, ARecordingsSurfaceIsItsDiskStitched) {
-  RemeshOptions o;
-  o.sites.count = 300;
-  o.lloyd.maxIterations = 2;
-  o.polish = -1;
-  o.measureFidelity = false;
+  const RemeshOptions o = test::shortRun(300, 2);
   const Topology torus = Replay(remesh(test::torus(), o, "torus").recording).surface();
   EXPECT_EQ(torus.genus, 1);
   EXPECT_TRUE(torus.boundaryLoops.empty());

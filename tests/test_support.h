@@ -110,6 +110,17 @@ inline Mesh cube(int n, bool onSphere) {
 }
 
 // `mesh` scaled by `scale` and moved by `offset`: a second component to append() beside it.
+// A run to look at, not to keep: `iterations` of Lloyd's at most, no clean-up on the surface, no
+// distances measured (`sites`: 0, as many as the input has).
+inline RemeshOptions shortRun(int sites, int iterations) {
+  RemeshOptions o;
+  o.sites.count = sites;
+  o.lloyd.maxIterations = iterations;
+  o.polish = -1;
+  o.measureFidelity = false;
+  return o;
+}
+
 inline Mesh moved(Mesh mesh, double scale, const Vec3& offset) {
   for (Vec3& p : mesh.points) p = scale * p + offset;
   return mesh;
