@@ -124,8 +124,12 @@ std::string pictureSizes() {
          largest;
 }
 
+bool pictureSizeAllowed(long long width, long long height) {
+  return width >= kSmallestWidth && height >= kSmallestHeight && width <= kLargestSide && height <= kLargestSide;
+}
+
 void requirePictureSize(long long width, long long height, double uiScale) {
-  if (width < kSmallestWidth || height < kSmallestHeight || width > kLargestSide || height > kLargestSide)
+  if (!pictureSizeAllowed(width, height))
     throw Error("--size must be " + pictureSizes() + ", not '" + std::to_string(width) + "x" +
                 std::to_string(height) + "'");
   if (width / uiScale < kSmallestWidth || height / uiScale < kSmallestHeight)

@@ -12,6 +12,9 @@ namespace lloydscope {
 // The picture sizes taken: "between 960x600 and 8192x8192".
 std::string pictureSizes();
 
+// Whether a picture of that size is taken (within pictureSizes()).
+bool pictureSizeAllowed(long long width, long long height);
+
 // Throws Error("--size must be between 960x600 and 8192x8192, not 'WxH'") for a picture size outside
 // them (renderScreenshot() and benchmarkScrub() take no other), or where the picture over
 // `uiScale` leaves less than 960x600 to lay the inspector out in.

@@ -300,22 +300,32 @@ void refuseRemeshingOptions(const CLI::App& cmd, const std::string& recording) {
                 "not the final result (remesh -o writes that)");
 }
 
+// "A<separator>B", digits alone on both sides (no sign, no space: " 0:5" and " 960x600" were
+// taken by one parser and not the other); nullopt for any other form. A side too large for a
+// long long reads as its largest, which every range asked refuses.
+std::optional<std::pair<long long, long long>> digitsPair(const std::string& text, char separator) {
+  const size_t at = text.find(separator);
+  if (at == std::string::npos) return std::nullopt;
+  const auto side = [](std::string_view digits) -> std::optional<long long> {
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+    long long value = 0;
+    if (std::from_chars(digits.data(), digits.data() + digits.size(), value).ec != std::errc())
+      return std::numeric_limits<long long>::max();
+    return value;
+  };
+  const auto a = side(std::string_view(text).substr(0, at)), b = side(std::string_view(text).substr(at + 1));
+  if (!a || !b) return std::nullopt;
+  return std::make_pair(*a, *b);
+}
+
 // "1280x800" -> width, height, within the sizes renderScreenshot() takes (bench-frames took
 // any: 100000x100000 went on to ask Vulkan for 40 GB).
 void parseSize(const std::string& text, int& width, int& height) {
   if (text.empty()) return;
-  // Digits on both sides of the x and nothing else (" 960x600" was taken, "960x600 " not).
-  const auto side = [&](std::string_view digits, long long& value) {
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos)
-      throw Error("--size must look like 1280x800, not '" + text + "'");
-    if (std::from_chars(digits.data(), digits.data() + digits.size(), value).ec != std::errc())
-      throw Error("--size must be " + pictureSizes() + ", not '" + text + "'");
-  };
-  const size_t x = text.find('x');
-  long long w = 0, h = 0;
-  side(std::string_view(text).substr(0, x), w);
-  side(x == std::string::npos ? std::string_view() : std::string_view(text).substr(x + 1), h);
-  requirePictureSize(w, h);
+  const auto size = digitsPair(text, 'x');
+  if (!size) throw Error("--size must look like 1280x800, not '" + text + "'");
+  const auto [w, h] = *size;
+  if (!pictureSizeAllowed(w, h)) throw Error("--size must be " + pictureSizes() + ", not '" + text + "'");
   width = static_cast<int>(w);
   height = static_cast<int>(h);
 }
@@ -481,11 +491,11 @@ struct InspectCommand {
 
   // --iterations FIRST:LAST
   void parseIterations() {
-    long long first = 0, last = 0;
-    char rest;
-    if (std::sscanf(iterations.c_str(), "%lld:%lld%c", &first, &last, &rest) != 2 || first < 0 ||
-        first > std::numeric_limits<int>::max() || last > std::numeric_limits<int>::max())  // 0:4294967296 wrapped to 0:0
+    const auto range = digitsPair(iterations, ':');
+    constexpr long long kLargest = std::numeric_limits<int>::max();  // 0:4294967296 wrapped to 0:0
+    if (!range || range->first > kLargest || range->second > kLargest)
       throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
+    const auto [first, last] = *range;
     if (first > last) throw Error("--iterations " + iterations + ": FIRST comes after LAST (the pictures go from FIRST up to LAST)");
     shot.picture.first = static_cast<int>(first);
     shot.picture.last = static_cast<int>(last);

@@ -728,6 +728,9 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --ui-scale nan --screenshot x.png", "expected a number from 0.5 to 4, not 'nan'"},  // was taken
       {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
       {"inspect " + mesh + " --iterations 99999999999999999999:1 --screenshot x.png", "expected FIRST:LAST"},
+      // Digits alone, as --size takes them (sscanf took a space and a sign).
+      {"inspect " + mesh + " --iterations ' 0:5' --screenshot x.png", "--iterations  0:5: expected FIRST:LAST"},
+      {"inspect " + mesh + " --iterations 0:+5 --screenshot x.png", "--iterations 0:+5: expected FIRST:LAST"},
       // Options a picture would not show, refused (they were left out in silence).
       {"inspect " + mesh + " --stage voronoi --final --screenshot x.png", "--final excludes --stage"},
       {"inspect " + mesh + " --iteration 3 --iterations 0:2 --screenshot x.png", "--iterations excludes --iteration"},
