@@ -323,6 +323,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                    {"mean_percent_diagonal", r.fit.meanPercent},
                    {"max_percent_diagonal", r.fit.maxPercent}}},
           {"resample_dropped", r.resampleDropped.empty() ? nlohmann::json() : nlohmann::json(r.resampleDropped)},
+          {"full_input_failed", r.fullInputFailed.empty() ? nlohmann::json() : nlohmann::json(r.fullInputFailed)},
           {"distortion",
            {{"min_area_ratio", r.distortion.minAreaRatio},
             {"max_area_ratio", r.distortion.maxAreaRatio},
@@ -396,6 +397,13 @@ std::string firstPassTrialText(const RemeshResult& r) {
          " (a bar was missed with it: remeshed without it too): bars met (irregular, smallest angle, average) " +
          std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without; Hausdorff " +
          format("%.3f", t.withHausdorff) + "% and " + format("%.3f", t.withoutHausdorff) + "%";
+}
+
+std::string fullInputFailedText(const RemeshResult& r, const RemeshOptions& options) {
+  if (r.fullInputFailed.empty()) return "";
+  const std::string asked = std::to_string(verticesAsked(options));
+  return "Simplified to " + asked + " vertices first (as --simplify " + asked + " does), as the input as it is failed: " +
+         r.fullInputFailed + "; the snaps, the fit and the distances are against the input itself";
 }
 
 std::string coarseInputText(int coarse, int inputVertices) {
@@ -686,6 +694,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << format("%.3g", r.distortion.maxAreaRatio)
         << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
   if (!r.resampleDropped.empty()) out << withoutResamplingText(r.resampleDropped) << "\n";
+  if (!r.fullInputFailed.empty()) out << fullInputFailedText(r, o) << "\n";
   if (r.charts > 0)
     out << "Split into " << r.charts << " charts along " << r.cut.seamEdges << " seam edges\n";
   else if (r.cut.seamEdges > 0)

@@ -315,6 +315,11 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
 
 int verticesAsked(const RemeshOptions& o) { return o.sites.count > 0 ? o.sites.count : o.simplifyTo; }
 
+bool simplifyingMayHelp(const RemeshOptions& o, const Mesh& input) {
+  return o.simplifyTo == 0 && o.coarsenInput && o.sites.count > 0 && !o.sites.fromInputVertices &&
+         input.vertexCount() > o.sites.count;
+}
+
 void requireStitched(const Mesh& stitched, const Topology& want, int verticesWanted, const std::string& name) {
   try {
     validateMesh(stitched, name);
@@ -859,11 +864,33 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
                 std::to_string(kSmallestRemeshedShare) + " at least");
   const Topology topology = analyzeTopology(input);
   requireRemeshableSize(input, topology, asked > 0 ? asked : input.vertexCount(), name);
-  if (topology.components <= 1) return remeshSurface(input, topology.isDisk(), options, name);
-  Stopwatch total;
-  RemeshResult result = remeshComponents(input, options, name);
-  result.ms.total = total.lap();
-  return result;
+  const auto run = [&](const RemeshOptions& o) {
+    if (topology.components <= 1) return remeshSurface(input, topology.isDisk(), o, name);
+    Stopwatch total;
+    RemeshResult result = remeshComponents(input, o, name);
+    result.ms.total = total.lap();
+    return result;
+  };
+  Stopwatch failed;
+  try {
+    return run(options);
+  } catch (const Error& e) {
+    if (!simplifyingMayHelp(options, input)) throw;
+    const double failedMs = failed.lap();
+    RemeshOptions simplified = options;
+    simplified.simplifyTo = asked;
+    RemeshResult result;
+    try {
+      result = run(simplified);
+    } catch (const Error& again) {
+      throw Error(std::string(e.what()) + "; simplified to " + std::to_string(asked) + " vertices first, it failed too: " +
+                  problemOf(again, name));
+    }
+    result.fullInputFailed = problemOf(e, name);
+    result.ms.compared += failedMs;
+    result.ms.total += failedMs;
+    return result;
+  }
 }
 
 int coarseInputSize(int vertices) {

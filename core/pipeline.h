@@ -175,6 +175,9 @@ struct RemeshResult {
   FitResult fit;  // how far RemeshOptions::fit moved the vertices
   // Not empty: the run failed with the first pass (this says why) and was made without it.
   std::string resampleDropped;
+  // Not empty: the run failed on the input as it is (this says why) and was made on the input
+  // simplified to the vertices asked first, as RemeshOptions::simplifyTo (--simplify) does.
+  std::string fullInputFailed;
   int iterations = 0;  // summed over the components
   bool converged = false;
   // Connected components of the input, each remeshed on its own (remesh()); with more than one,
@@ -225,9 +228,16 @@ class PreparedInput {
 
 // The vertices a run asks for (--sites, else --simplify); 0: as many as the input has.
 int verticesAsked(const RemeshOptions& options);
+// Whether remesh() makes a run that failed again on the input simplified to the vertices asked
+// (RemeshResult::fullInputFailed): where the input has more, and neither --simplify nor
+// --full-input was given (nor the input's own vertices asked as sites).
+bool simplifyingMayHelp(const RemeshOptions& options, const Mesh& input);
 
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
-// run fails with the first pass (options.resample), it is made again without it. Several
+// run fails with the first pass (options.resample), it is made again without it; where it fails
+// on the input as it is, again on the input simplified to the vertices asked, where that may
+// help (simplifyingMayHelp: CGAL's dino at 500 vertices, whose tail the map squeezes to nothing
+// at the input's own triangles, and the cheese at 1000). Several
 // connected components are remeshed each on its own, with shares of the vertices asked for
 // (options.simplifyTo, options.sites.count) by area.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);

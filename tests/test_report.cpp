@@ -47,6 +47,22 @@ TEST(Report, ASimplifiedInputIsSaid) {
   EXPECT_EQ(toJson(r, RemeshOptions{})["coarse_input_vertices"], 10000);
 }
 
+// An input remeshed simplified because it failed as it was says so, and why, in the report and
+// the JSON; one that did not, nothing (the JSON's null).
+TEST(Report, AnInputSimplifiedBecauseItFailedAsItWasIsSaid) {
+  RemeshResult r;
+  RemeshOptions o;
+  o.sites.count = 500;
+  EXPECT_EQ(fullInputFailedText(r, o), "");
+  EXPECT_TRUE(toJson(r, o)["full_input_failed"].is_null());
+  r.fullInputFailed = "the parameterization is not one-to-one (0 flipped and 24 collapsed of 7828 triangles)";
+  const std::string said = "Simplified to 500 vertices first (as --simplify 500 does), as the input as it is failed: " +
+                           r.fullInputFailed + "; the snaps, the fit and the distances are against the input itself";
+  EXPECT_EQ(fullInputFailedText(r, o), said);
+  EXPECT_NE(remeshReport(r, o).find(said + "\n"), std::string::npos);
+  EXPECT_EQ(toJson(r, o)["full_input_failed"], r.fullInputFailed);
+}
+
 TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
   RemeshResult r;
   EXPECT_EQ(firstPassTrialText(r), "");
