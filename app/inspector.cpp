@@ -908,14 +908,23 @@ void Inspector::frame() {
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float left = presentation_ ? 0.0f : std::max(280.0f, display.x * 0.23f);
   std::optional<Caption> shownCaption;
+  float captionHeight = 0;
   if (stage_) {
-    shownCaption = caption(*stage_, captionFacts());
-    if (!bigFont) {  // ImGui's small font drew the subscripts as grey smudges
-      shownCaption->formula = inlineIndices(shownCaption->formula);
-      shownCaption->numbers = inlineIndices(shownCaption->numbers);
-    }
+    const CaptionFacts facts = captionFacts();
+    const auto captionOf = [&](Stage stage) {
+      Caption c = caption(stage, facts);
+      if (!bigFont) {  // ImGui's small font drew the subscripts as grey smudges
+        c.formula = inlineIndices(c.formula);
+        c.numbers = inlineIndices(c.numbers);
+      }
+      return c;
+    };
+    shownCaption = captionOf(*stage_);
+    // As tall as the tallest stage's, so that the panes under it keep their place from stage to
+    // stage (at 960x600 they moved by up to 18 pixels as the lesson went on).
+    for (int stage = 0; stage <= static_cast<int>(Stage::Valence); ++stage)
+      captionHeight = std::max(captionHeight, captionPaneHeight(captionOf(static_cast<Stage>(stage)), display.x - left));
   }
-  const float captionHeight = shownCaption ? captionPaneHeight(*shownCaption, display.x - left) : 0;
   const float timelineHeight = (presentation_ ? 2 * line + 30 : 64.0f) + (timelineWrapped_ ? ImGui::GetFrameHeightWithSpacing() : 0);
   const float plotsHeight = presentation_ ? std::max(170.0f, display.y * 0.22f)
                                           : std::max(170.0f, display.y * 0.27f);
@@ -1039,8 +1048,8 @@ std::string Inspector::captionTitle(const Caption& c) const {
   return c.title + (lesson_.paused() && lesson_.playing() ? " (paused: Space plays on)" : "");
 }
 
-// Three lines at least, so that the panes under it keep their place from stage to stage; more
-// where the caption wraps to more (at 960x600 in presentation the last line was cut off).
+// Three lines at least; more where the caption wraps to more (at 960x600 in presentation the last
+// line was cut off). The pane is the tallest stage's (layout), so that the panes under it stay put.
 float Inspector::captionPaneHeight(const Caption& c, float width) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float text = captionTextHeight(captionTitle(c), c.formula, c.numbers, width - 2 * style.WindowPadding.x);

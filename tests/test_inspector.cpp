@@ -561,6 +561,31 @@ TEST(Inspector, PresentationModeShowsTheLessonStage) {
              "--iteration 1 --presentation --stage centroids --select-cell 100", "", 90);
 }
 
+// The lesson's caption pane is as tall at every stage, so that the panes under it stay put as
+// the lesson goes on: at 960x600 a stage of two lines had 70 pixels, one of four 88.
+TEST(Inspector, TheCaptionPaneIsAsTallAtEveryStage) {
+  const std::string recording = test::tempPath("caption_height.lsrec");
+  ASSERT_EQ(run("remesh " + test::assetPath("sphere_cap.off") + " --sites 300 --record " + recording + " > /dev/null"), 0);
+  // The rows from the top down to the last of the caption's cream (255, 250, 229) at the right edge.
+  const auto captionRows = [](const Picture& p) {
+    int rows = 0;
+    for (int y = 0; y < p.height; ++y) {
+      const unsigned char* c = p.at(p.width - 10, y);
+      if (std::abs(c[0] - 255) < 3 && std::abs(c[1] - 250) < 3 && std::abs(c[2] - 229) < 4) rows = y + 1;
+    }
+    return rows;
+  };
+  std::vector<int> heights;
+  for (const char* stage : {"voronoi", "parameterize", "valence"}) {
+    const std::string png = test::tempPath(std::string("caption_height_") + stage + ".png");
+    ASSERT_EQ(renderScene(recording + " --stage " + stage, png), 0);
+    heights.push_back(captionRows(readPng(png)));
+  }
+  EXPECT_GT(heights[0], 40);
+  EXPECT_EQ(heights[1], heights[0]);
+  EXPECT_EQ(heights[2], heights[0]);
+}
+
 // The caption quotes the cell pinned last: with 100 pinned after 40 it reads as with 100 alone
 // (it quoted cell 40, the first, whatever was pinned after).
 TEST(Inspector, TheCaptionQuotesTheCellPinnedLast) {
