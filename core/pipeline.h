@@ -228,16 +228,12 @@ class PreparedInput {
 
 // The vertices a run asks for (--sites, else --simplify); 0: as many as the input has.
 int verticesAsked(const RemeshOptions& options);
-// Whether remesh() makes a run that failed again on the input simplified to the vertices asked
-// (RemeshResult::fullInputFailed): where the input has more, and neither --simplify nor
-// --full-input was given (nor the input's own vertices asked as sites).
-bool simplifyingMayHelp(const RemeshOptions& options, const Mesh& input);
 
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
 // run fails with the first pass (options.resample), it is made again without it; where it fails
-// on the input as it is, again on the input simplified to the vertices asked, where that may
-// help (simplifyingMayHelp: CGAL's dino at 500 vertices, whose tail the map squeezes to nothing
-// at the input's own triangles, and the cheese at 1000). Several
+// on the input as it is, again on the input simplified to the vertices asked (RemeshResult::
+// fullInputFailed says why), unless --simplify or --full-input was given: CGAL's dino at 500
+// vertices, whose tail's tip every map squeezes to nothing, and the cheese at 1000. Several
 // connected components are remeshed each on its own, with shares of the vertices asked for
 // (options.simplifyTo, options.sites.count) by area.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
