@@ -221,7 +221,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
     : renderer_(gpu, renderPass),
       meshName_(fileNameOf(meshName)),
       shownPath_(meshName),
-      options_(std::move(options)), asked_{options_.slitDisks, options_.resample, options_.simplifyTo}, result_(std::move(result)),
+      options_(std::move(options)), asked_{options_.slitDisks, options_.resample}, result_(std::move(result)),
       replay_(std::make_unique<Replay>(result_.recording)), input_(std::move(input)),
       canvas_(gpu, renderPass) {
   result_.recording = Recording{};  // the replay holds it
@@ -234,7 +234,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   // Likewise a disk kept as remeshed without the first resampling.
   if (result_.firstPassTrial && result_.firstPassTrial->keptWithout) options_.resample = false;
   // And an input simplified because it failed as it was.
-  if (!result_.fullInputFailed.empty()) options_.simplifyTo = verticesAsked(options_);
+  if (!result_.fullInputFailed.empty()) options_.simplifyTo = simplifiedAfterFailure_ = verticesAsked(options_);
   settings_ = options_;
   noteFirst(firstPassTrialText(result_));
   noteFirst(fullInputFailedText(result_, options_));
@@ -1431,7 +1431,8 @@ void Inspector::fileControls() {
       const std::string name = fileNameOf(meshPath_);
       settings_.slitDisks = asked_.slitDisks;  // not what remesh() chose for the previous mesh
       settings_.resample = asked_.resample;
-      settings_.simplifyTo = asked_.simplifyTo;
+      if (simplifiedAfterFailure_ > 0 && settings_.simplifyTo == simplifiedAfterFailure_) settings_.simplifyTo = 0;  // a typed one stays
+      simplifiedAfterFailure_ = 0;
       try {
         startSession(read.mesh, name);
       } catch (const Error& e) {
@@ -1478,7 +1479,8 @@ void Inspector::fileControls() {
       // Its own name, settings, map and iterations, as `inspect` opens it (the last run's name,
       // solver and thresholds stayed on show, and Compare ran the recording's own solver again).
       options_ = settings_ = run.options;
-      asked_ = {options_.slitDisks, options_.resample, options_.simplifyTo};
+      asked_ = {options_.slitDisks, options_.resample};
+      simplifiedAfterFailure_ = 0;
       result_ = std::move(run.result);
       openReplay(std::move(result_.recording));
       result_.recording = Recording{};  // the replay holds it

@@ -231,13 +231,14 @@ class Inspector {
   RemeshOptions settings_;  // the Settings pane's, for the next Restart or Open mesh
   bool repairOnOpen_ = false;
   // What remesh() may choose otherwise for a mesh (a nearly closed disk kept whole, a disk kept
-  // without the first pass, an input simplified where it failed as it was), as given: the next
-  // mesh opened starts from them (it ran without the first pass because the last one had, and
-  // nothing in Settings showed it).
+  // without the first pass), as given: the next mesh opened starts from them (it ran without the
+  // first pass because the last one had, and nothing in Settings showed it).
   struct Asked {
     bool slitDisks, resample;
-    int simplifyTo;
   } asked_;
+  // > 0: remesh() simplified the input to this many vertices, as it failed as it was
+  // (RemeshResult::fullInputFailed): the next mesh opened is not, unless typed under Settings.
+  int simplifiedAfterFailure_ = 0;
   RemeshResult result_;
   std::unique_ptr<Replay> replay_;
   std::optional<Mesh> input_;

@@ -859,11 +859,18 @@ void requireRemeshableSize(const Mesh& input, const Topology& topology, int vert
 namespace {
 
 // Whether remesh() makes a run that failed again on the input simplified to the vertices asked
-// (RemeshResult::fullInputFailed): where the input has more, and neither --simplify nor
-// --full-input was given (nor the input's own vertices asked as sites).
+// (RemeshResult::fullInputFailed): where sites are asked, fewer than the input has, and neither
+// --simplify nor --full-input was given (nor the input's own vertices are the sites: relocate).
 bool simplifyingMayHelp(const RemeshOptions& o, const Mesh& input) {
-  return o.simplifyTo == 0 && o.coarsenInput && o.sites.count > 0 && !o.sites.fromInputVertices &&
+  return o.simplifyTo == 0 && o.coarsenInput && o.sites.count > 0 && !effective(o).sites.fromInputVertices &&
          input.vertexCount() > o.sites.count;
+}
+
+// "; try ..." and what follows it in an Error's text (the advice problemOf() leaves out), or "".
+std::string adviceOf(const Error& e) {
+  const std::string text = e.what();
+  const size_t at = text.find("; try");
+  return at == std::string::npos ? "" : text.substr(at);
 }
 
 }  // namespace
@@ -894,12 +901,12 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
     try {
       result = remeshWith(simplified);
     } catch (const Error& again) {
-      throw Error(std::string(e.what()) + "; simplified to " + std::to_string(asked) + " vertices first, it failed too: " +
-                  problemOf(again, name));
+      // Both problems, then the last run's advice (the first's, between them, read as the end).
+      throw Error(name + ": " + problemOf(e, name) + "; simplified to " + std::to_string(asked) +
+                  " vertices first, it failed too: " + problemOf(again, name) + adviceOf(again));
     }
     result.fullInputFailed = problemOf(e, name);
-    result.ms.compared += failedMs;  // the failed run's time counts
-    result.ms.total += failedMs;
+    result.ms.total += failedMs;  // the failed run's time counts (in no stage)
     return result;
   }
 }

@@ -231,9 +231,10 @@ int verticesAsked(const RemeshOptions& options);
 
 // `input` must be a validated mesh; `name` is used in error messages. Throws Error. Where the
 // run fails with the first pass (options.resample), it is made again without it; where it fails
-// on the input as it is, again on the input simplified to the vertices asked (RemeshResult::
-// fullInputFailed says why), unless --simplify or --full-input was given: CGAL's dino at 500
-// vertices, whose tail's tip every map squeezes to nothing, and the cheese at 1000. Several
+// on the input as it is, again on the input simplified to the sites asked where it has more
+// (RemeshResult::fullInputFailed says why), unless --simplify or --full-input was given or its
+// own vertices are the sites: CGAL's dino at 500 vertices, whose tail's tip every map squeezes
+// to nothing, and the cheese at 1000. Several
 // connected components are remeshed each on its own, with shares of the vertices asked for
 // (options.simplifyTo, options.sites.count) by area.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);

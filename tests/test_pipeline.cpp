@@ -5,6 +5,7 @@
 #include "topology.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
@@ -204,7 +205,7 @@ TEST(Pipeline, ADiskThatMissesABarIsRemeshedWithoutTheFirstPassToo) {
 // CGAL's dino (3916 vertices, closed) at 500: every map of it as it is collapses triangles at
 // its tail's tip (rounding), and chart by chart its seams do not stitch; the run is made again
 // on it simplified to 500 vertices, as --simplify 500 (which the error advised) does. It
-// failed with that error. With --full-input, or simplified already, it still fails, saying so.
+// failed with that error. With --full-input it still fails, as it did.
 TEST(Pipeline, AnInputThatFailsAsItIsIsRemeshedSimplified) {
   const std::string path = test::cgalSample("dino.off");
   SKIP_UNLESS_EXTRACTED(path);
@@ -212,13 +213,17 @@ TEST(Pipeline, AnInputThatFailsAsItIsIsRemeshedSimplified) {
   RemeshOptions o;
   o.sites.count = 500;
   o.polish = 1;
+  const auto started = std::chrono::steady_clock::now();
   const RemeshResult r = remesh(input, o, path);
+  const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   EXPECT_NE(r.fullInputFailed.find("the parameterization is not one-to-one"), std::string::npos) << r.fullInputFailed;
   EXPECT_EQ(r.fullInputFailed.find(path), std::string::npos);  // the problem, not the file's name again
   EXPECT_NEAR(r.output.vertexCount(), 500, 10);
   EXPECT_EQ(analyzeTopology(r.output).genus, 0);
   EXPECT_GT(r.fidelity.samples, 0);
-  EXPECT_GT(r.ms.compared, 0.0);  // the failed run's time counts
+  // The failed run's time counts: without it the total was the second run's, half the wall
+  // clock's. (Not a speed test: both clocks time the same work.)
+  EXPECT_GT(r.ms.total, 0.8 * wall);
   o.coarsenInput = false;  // --full-input: the input as it is, or nothing
   try {
     remesh(input, o, path);
