@@ -844,11 +844,7 @@ Inspector::Shown3D Inspector::shown3D() const {
 }
 
 void Inspector::showMessage(std::string text) {
-  // The command line's ways, not the window's.
-  for (const auto& [flag, here] : {std::pair<std::string, std::string>{"(--repair fixes this)", "(ticking \"repair\" fixes this)"},
-                                   {"(use --method retriangulate)", "(choose method: retriangulate under Settings)"}})
-    if (const size_t at = text.find(flag); at != std::string::npos) text.replace(at, flag.size(), here);
-  message_ = std::move(text);
+  message_ = inWindowWords(std::move(text));
   ++messageCount_;  // the same error twice is news too
 }
 

@@ -347,6 +347,19 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"total", r.ms.total}}}};
 }
 
+std::string inWindowWords(std::string text) {
+  const std::pair<std::string, std::string> words[] = {
+      {"(--repair fixes this)", "(ticking \"repair\" fixes this)"},
+      {"(use --method retriangulate)", "(choose method: retriangulate under Settings)"},
+      {"--simplify to fewer vertices", "a smaller \"simplify to\" under Settings"},
+      {"--param tutte or mean-value", "the tutte or mean-value parameterization under Settings"},
+      {"--param tutte or ", "the tutte parameterization under Settings or "},
+      {"ask for more (--sites)", "ask for more (sites, under Settings)"}};
+  for (const auto& [flag, here] : words)
+    if (const size_t at = text.find(flag); at != std::string::npos) text.replace(at, flag.size(), here);
+  return text;
+}
+
 std::string withoutResamplingText(const std::string& problem) {
   return "Made without the first resampling (as with --no-resample), which failed: " + problem;
 }

@@ -101,6 +101,10 @@ nlohmann::json toJson(const Fidelity& f);
 nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& options);
 nlohmann::json recordingSummary(const Recording& r);
 
+// An error's text as the inspector's window shows it: its command-line advice in the window's
+// words ("(--repair fixes this)": "(ticking \"repair\" fixes this)"; --simplify, --param,
+// --sites and --method: their fields under Settings).
+std::string inWindowWords(std::string text);
 // "Made without the first resampling ..., which failed: <problem>" (RemeshResult::resampleDropped).
 std::string withoutResamplingText(const std::string& problem);
 // "Kept slit open (remeshed both slit open and whole: ...): ..." (RemeshResult::slitTrial), or

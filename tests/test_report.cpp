@@ -47,6 +47,24 @@ TEST(Report, ASimplifiedInputIsSaid) {
   EXPECT_EQ(toJson(r, RemeshOptions{})["coarse_input_vertices"], 10000);
 }
 
+// The inspector's window says its own ways where an error advises an option: the dino's map,
+// opened with Open mesh, advised "--simplify", which the window has no line for.
+TEST(Report, ErrorsInTheWindowAdviseItsOwnControls) {
+  EXPECT_EQ(inWindowWords("dino.off: the parameterization is not one-to-one (24 collapsed); try --simplify to fewer "
+                          "vertices (rounding squeezed thin parts of the surface to nothing)"),
+            "dino.off: the parameterization is not one-to-one (24 collapsed); try a smaller \"simplify to\" under "
+            "Settings (rounding squeezed thin parts of the surface to nothing)");
+  EXPECT_EQ(inWindowWords("x: ...; try --param tutte or mean-value, whose maps are always one-to-one"),
+            "x: ...; try the tutte or mean-value parameterization under Settings, whose maps are always one-to-one");
+  EXPECT_EQ(inWindowWords("x: ...; try --param tutte or --simplify to fewer vertices (rounding ...)"),
+            "x: ...; try the tutte parameterization under Settings or a smaller \"simplify to\" under Settings (rounding ...)");
+  EXPECT_EQ(inWindowWords("x: 20 vertices are too few for it: ...; ask for more (--sites), or look for a sliver"),
+            "x: 20 vertices are too few for it: ...; ask for more (sites, under Settings), or look for a sliver");
+  EXPECT_EQ(inWindowWords("x: faces turned against their neighbours (--repair fixes this)"),
+            "x: faces turned against their neighbours (ticking \"repair\" fixes this)");
+  EXPECT_EQ(inWindowWords("saved run.lsrec"), "saved run.lsrec");
+}
+
 // An input remeshed simplified because it failed as it was says so, and why, in the report and
 // the JSON; one that did not, nothing (the JSON's null).
 TEST(Report, AnInputSimplifiedBecauseItFailedAsItWasIsSaid) {
