@@ -494,9 +494,10 @@ struct InspectCommand {
     const auto range = digitsPair(iterations, ':');
     constexpr long long kLargest = std::numeric_limits<int>::max();  // 0:4294967296 wrapped to 0:0
     if (!range || range->first > kLargest || range->second > kLargest)
-      throw Error("--iterations " + iterations + ": expected FIRST:LAST, e.g. 0:20");
+      throw Error("--iterations: expected FIRST:LAST, e.g. 0:20, not '" + iterations + "'");
     const auto [first, last] = *range;
-    if (first > last) throw Error("--iterations " + iterations + ": FIRST comes after LAST (the pictures go from FIRST up to LAST)");
+    if (first > last)
+      throw Error("--iterations: FIRST comes after LAST in '" + iterations + "' (the pictures go from FIRST up to LAST)");
     shot.picture.first = static_cast<int>(first);
     shot.picture.last = static_cast<int>(last);
   }

@@ -726,11 +726,11 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
        "--size 1280x800 at --ui-scale 2 leaves the inspector less than 960x600 to lay out in"},
       {"inspect " + mesh + " --ui-scale 5 --screenshot x.png", "--ui-scale"},
       {"inspect " + mesh + " --ui-scale nan --screenshot x.png", "expected a number from 0.5 to 4, not 'nan'"},  // was taken
-      {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations 0:4294967296: expected FIRST:LAST"},
+      {"inspect " + mesh + " --iterations 0:4294967296 --screenshot x.png", "--iterations: expected FIRST:LAST, e.g. 0:20, not '0:4294967296'"},
       {"inspect " + mesh + " --iterations 99999999999999999999:1 --screenshot x.png", "expected FIRST:LAST"},
       // Digits alone, as --size takes them (sscanf took a space and a sign).
-      {"inspect " + mesh + " --iterations ' 0:5' --screenshot x.png", "--iterations  0:5: expected FIRST:LAST"},
-      {"inspect " + mesh + " --iterations 0:+5 --screenshot x.png", "--iterations 0:+5: expected FIRST:LAST"},
+      {"inspect " + mesh + " --iterations ' 0:5' --screenshot x.png", "--iterations: expected FIRST:LAST, e.g. 0:20, not ' 0:5'"},
+      {"inspect " + mesh + " --iterations 0:+5 --screenshot x.png", "--iterations: expected FIRST:LAST, e.g. 0:20, not '0:+5'"},
       // Options a picture would not show, refused (they were left out in silence).
       {"inspect " + mesh + " --stage voronoi --final --screenshot x.png", "--final excludes --stage"},
       {"inspect " + mesh + " --iteration 3 --iterations 0:2 --screenshot x.png", "--iterations excludes --iteration"},
@@ -743,7 +743,7 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --size ' 960x600' --screenshot x.png", "--size must look like 1280x800, not ' 960x600'"},
       {"inspect " + mesh + " --size 99999999999999999999x600 --screenshot x.png",
        "--size must be between 960x600 and 8192x8192, not '99999999999999999999x600'"},
-      {"inspect " + mesh + " --iterations 5:2 --screenshot x.png", "--iterations 5:2: FIRST comes after LAST"},
+      {"inspect " + mesh + " --iterations 5:2 --screenshot x.png", "--iterations: FIRST comes after LAST in '5:2'"},
       {"inspect " + mesh + " --screenshot .png", ".png: a picture needs a name before its .png"},  // "end the name with .png"
       // A picture's options without a picture (a window ignored them in silence).
       {"inspect " + mesh + " --pane 2d", "--pane requires --screenshot"},
