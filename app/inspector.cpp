@@ -386,26 +386,21 @@ void Inspector::fit2D() {
 void Inspector::startSession(const Mesh& input, const std::string& name) {
   stopComparing();
   stopRun();
-  // Made before the replay on show changes: where it fails, the last run's iterations stay.
-  std::unique_ptr<RemeshSession> session;
-  RemeshOptions used = settings_;
-  std::string notes;
-  try {
-    session = std::make_unique<RemeshSession>(input, used, name);
-  } catch (const Error& e) {
-    if (!usesResampling(used)) throw;
-    // As remesh() does: without the first pass where it makes the run fail.
-    used = withoutResampling(used);
-    session = std::make_unique<RemeshSession>(input, used, name);
-    notes = withoutResamplingText(problemOf(e, name));
-  }
-  session->step();  // the panes need one iteration to show
+  // Made before the replay on show changes: where it fails, the last run's iterations stay. As
+  // remesh() makes its run: without the first pass, or simplified, where that fails.
+  StartedSession started = lloydscope::startSession(input, settings_, name);
+  started.session->step();  // the panes need one iteration to show
   forgetResult();
   // The Settings pane's, from now on the run's; without the first pass where it went without
-  // (the lesson said the map was of a rough first remeshing).
-  options_ = used;
-  session_ = std::move(session);
-  runNotes_ = withNoteFirst(notes, "");
+  // (the lesson said the map was of a rough first remeshing), simplified where it was.
+  options_ = started.used;
+  session_ = std::move(started.session);
+  if (!started.resampleDropped.empty()) runNotes_ = withNoteFirst(withoutResamplingText(started.resampleDropped), "");
+  result_.fullInputFailed = started.fullInputFailed;
+  if (!started.fullInputFailed.empty()) {
+    settings_.simplifyTo = simplifiedAfterFailure_ = options_.simplifyTo;
+    noteFirst(fullInputFailedText(result_, options_));
+  }
   result_.paramUsed = session_->paramUsed();
   result_.distortion = session_->distortion();
   // The 2D pane shows the simplified input's map.

@@ -866,14 +866,41 @@ bool simplifyingMayHelp(const RemeshOptions& o, const Mesh& input) {
          input.vertexCount() > o.sites.count;
 }
 
-// "; try ..." and what follows it in an Error's text (the advice problemOf() leaves out), or "".
-std::string adviceOf(const Error& e) {
-  const std::string text = e.what();
-  const size_t at = text.find("; try");
-  return at == std::string::npos ? "" : text.substr(at);
+// A run that failed as it is and again simplified to `asked` vertices: both problems, then the
+// last run's advice ("; try ...": the first's, between them, read as the end).
+Error bothFailed(const Error& asItIs, const Error& simplified, int asked, const std::string& name) {
+  const std::string last = simplified.what();
+  const size_t advice = last.find("; try");
+  return Error(name + ": " + problemOf(asItIs, name) + "; simplified to " + std::to_string(asked) +
+               " vertices first, it failed too: " + problemOf(simplified, name) +
+               (advice == std::string::npos ? "" : last.substr(advice)));
 }
 
 }  // namespace
+
+StartedSession startSession(const Mesh& input, const RemeshOptions& options, const std::string& name) {
+  std::vector<RemeshOptions> sizes = {options};
+  if (simplifyingMayHelp(options, input)) {
+    sizes.push_back(options);
+    sizes.back().simplifyTo = options.sites.count;
+  }
+  std::optional<Error> asItIs, simplified;  // each size's first error
+  for (size_t size = 0; size < sizes.size(); ++size) {
+    std::vector<RemeshOptions> ways = {sizes[size]};
+    if (usesResampling(sizes[size])) ways.push_back(withoutResampling(sizes[size]));
+    std::optional<Error>& failed = size == 0 ? asItIs : simplified;
+    for (const RemeshOptions& tried : ways) {
+      try {
+        auto session = std::make_unique<RemeshSession>(input, tried, name);
+        return {std::move(session), tried, failed ? problemOf(*failed, name) : "", size > 0 ? problemOf(*asItIs, name) : ""};
+      } catch (const Error& e) {
+        if (!failed) failed = e;
+      }
+    }
+  }
+  if (simplified) throw bothFailed(*asItIs, *simplified, options.sites.count, name);
+  throw *asItIs;
+}
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
   const int asked = verticesAsked(options);
@@ -901,9 +928,7 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
     try {
       result = remeshWith(simplified);
     } catch (const Error& again) {
-      // Both problems, then the last run's advice (the first's, between them, read as the end).
-      throw Error(name + ": " + problemOf(e, name) + "; simplified to " + std::to_string(asked) +
-                  " vertices first, it failed too: " + problemOf(again, name) + adviceOf(again));
+      throw bothFailed(e, again, asked, name);
     }
     result.fullInputFailed = problemOf(e, name);
     result.ms.total += failedMs;  // the failed run's time counts (in no stage)

@@ -318,6 +318,19 @@ class RemeshSession {
   std::unique_ptr<LloydSolver> solver_;
 };
 
+// A session started as remesh() makes its run where the first try fails (the inspector's Open
+// mesh and Restart): without the first pass (options.resample), and then on the input simplified
+// to the sites asked (RemeshResult::fullInputFailed's rule), each with the first pass and
+// without. `used`: the options it was made with; the problems that made it drop the first pass
+// or simplify, as RemeshResult has them ("" where it did not). Throws the first try's Error
+// where every try fails.
+struct StartedSession {
+  std::unique_ptr<RemeshSession> session;
+  RemeshOptions used;
+  std::string resampleDropped, fullInputFailed;
+};
+StartedSession startSession(const Mesh& input, const RemeshOptions& options, const std::string& name);
+
 // Throws Error naming `name`, the measure and its limit, for a mesh outside the sizes double
 // precision remeshes (kLargestCoordinate and the others, core/mesh.h), for any work of CGAL's on
 // the mesh (`task`: "remeshed", "measured"): the distance to a mesh of coordinates 1e149 raised

@@ -234,6 +234,43 @@ TEST(Pipeline, AnInputThatFailsAsItIsIsRemeshedSimplified) {
   }
 }
 
+// The inspector's sessions start as remesh() makes its run: the dino at 500 as it is fails with
+// and without the first pass, and its session is of it simplified to 500, saying why (Open mesh
+// failed on it, while inspect remeshed it); a mesh that needs neither starts as asked.
+TEST(Pipeline, ASessionStartsAsRemeshMakesItsRun) {
+  const std::string path = test::cgalSample("dino.off");
+  SKIP_UNLESS_EXTRACTED(path);
+  RemeshOptions o;
+  o.sites.count = 500;
+  const StartedSession dino = startSession(readMesh(path).mesh, o, path);
+  ASSERT_TRUE(dino.session);
+  EXPECT_EQ(dino.used.simplifyTo, 500);
+  EXPECT_TRUE(dino.used.resample);  // simplified, the first pass holds
+  EXPECT_EQ(dino.resampleDropped, "");
+  EXPECT_NE(dino.fullInputFailed.find("not one-to-one"), std::string::npos) << dino.fullInputFailed;
+  const StartedSession cap = startSession(readMesh(test::assetPath("sphere_cap.off")).mesh, o, "cap");
+  EXPECT_EQ(cap.used.simplifyTo, 0);
+  EXPECT_TRUE(cap.used.resample);
+  EXPECT_EQ(cap.resampleDropped + cap.fullInputFailed, "");
+  // CGAL's triceratops at 2000: every map of its first resampling collapses a horn; its session
+  // is made without that pass (as the inspector's own code did before).
+  const std::string triceratops = test::cgalSample("triceratops.off");
+  RemeshOptions simplified;
+  simplified.simplifyTo = 2000;
+  const StartedSession t = startSession(readMesh(triceratops).mesh, simplified, triceratops);
+  EXPECT_FALSE(t.used.resample);
+  EXPECT_NE(t.resampleDropped.find("not one-to-one"), std::string::npos) << t.resampleDropped;
+  EXPECT_EQ(t.fullInputFailed, "");
+  o.coarsenInput = false;  // --full-input: the first try's error, the simplified one not tried
+  try {
+    startSession(readMesh(path).mesh, o, path);
+    ADD_FAILURE() << "--full-input started a session";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not one-to-one"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("simplified to"), std::string::npos) << e.what();
+  }
+}
+
 // CGAL's lion head as it comes (8356 vertices, simplified to 3500 first) at 350 vertices: a
 // nearly closed disk, remeshed slit open and whole, the slit kept; it misses a bar, and is
 // remeshed without the first pass both ways again, and missing it still, chart by chart (not
