@@ -237,7 +237,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   if (!result_.fullInputFailed.empty()) options_.simplifyTo = simplifiedAfterFailure_ = verticesAsked(options_);
   settings_ = options_;
   noteFirst(firstPassTrialText(result_));
-  noteFirst(fullInputFailedText(result_, options_));
+  noteFirst(fullInputFailedText(result_.fullInputFailed, options_.simplifyTo));
   noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
   noteTheResult();
   inputCharts_ = result_.charts;
@@ -396,10 +396,9 @@ void Inspector::startSession(const Mesh& input, const std::string& name) {
   options_ = started.used;
   session_ = std::move(started.session);
   if (!started.resampleDropped.empty()) runNotes_ = withNoteFirst(withoutResamplingText(started.resampleDropped), "");
-  result_.fullInputFailed = started.fullInputFailed;
   if (!started.fullInputFailed.empty()) {
     settings_.simplifyTo = simplifiedAfterFailure_ = options_.simplifyTo;
-    noteFirst(fullInputFailedText(result_, options_));
+    noteFirst(fullInputFailedText(started.fullInputFailed, options_.simplifyTo));
   }
   result_.paramUsed = session_->paramUsed();
   result_.distortion = session_->distortion();

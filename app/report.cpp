@@ -412,11 +412,11 @@ std::string firstPassTrialText(const RemeshResult& r) {
          format("%.3f", t.withHausdorff) + "% and " + format("%.3f", t.withoutHausdorff) + "%";
 }
 
-std::string fullInputFailedText(const RemeshResult& r, const RemeshOptions& options) {
-  if (r.fullInputFailed.empty()) return "";
-  const std::string asked = std::to_string(verticesAsked(options));
+std::string fullInputFailedText(const std::string& problem, int vertices) {
+  if (problem.empty()) return "";
+  const std::string asked = std::to_string(vertices);
   return "Simplified to " + asked + " vertices first (as --simplify " + asked + " does), as the input as it is failed: " +
-         r.fullInputFailed + "; the snaps, the fit and the distances are against the input itself";
+         problem + "; the snaps, the fit and the distances are against the input itself";
 }
 
 std::string coarseInputText(int coarse, int inputVertices) {
@@ -707,7 +707,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << format("%.3g", r.distortion.maxAreaRatio)
         << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
   if (!r.resampleDropped.empty()) out << withoutResamplingText(r.resampleDropped) << "\n";
-  if (!r.fullInputFailed.empty()) out << fullInputFailedText(r, o) << "\n";
+  if (!r.fullInputFailed.empty()) out << fullInputFailedText(r.fullInputFailed, verticesAsked(o)) << "\n";
   if (r.charts > 0)
     out << "Split into " << r.charts << " charts along " << r.cut.seamEdges << " seam edges\n";
   else if (r.cut.seamEdges > 0)

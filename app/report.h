@@ -113,9 +113,9 @@ std::string slitTrialText(const RemeshResult& r);
 // "Kept without the first resampling (...): bars met ... with, ... without; Hausdorff ..."
 // (RemeshResult::firstPassTrial), or "" if there was no such trial.
 std::string firstPassTrialText(const RemeshResult& r);
-// "Simplified to N vertices first (as --simplify N does), as the input as it is failed: ..."
-// (RemeshResult::fullInputFailed), or "".
-std::string fullInputFailedText(const RemeshResult& r, const RemeshOptions& options);
+// "Simplified to N vertices first (as --simplify N does), as the input as it is failed: <problem>"
+// (RemeshResult::fullInputFailed, `vertices` the sites asked), or "" for no problem.
+std::string fullInputFailedText(const std::string& problem, int vertices);
 // "Simplified to N vertices first ..." where RemeshOptions::coarsenInput simplified an input of
 // `inputVertices` to `coarse` (> 0); "" elsewhere.
 std::string coarseInputText(int coarse, int inputVertices);

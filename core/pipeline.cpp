@@ -879,27 +879,33 @@ Error bothFailed(const Error& asItIs, const Error& simplified, int asked, const 
 }  // namespace
 
 StartedSession startSession(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  std::vector<RemeshOptions> sizes = {options};
-  if (simplifyingMayHelp(options, input)) {
-    sizes.push_back(options);
-    sizes.back().simplifyTo = options.sites.count;
-  }
-  std::optional<Error> asItIs, simplified;  // each size's first error
-  for (size_t size = 0; size < sizes.size(); ++size) {
-    std::vector<RemeshOptions> ways = {sizes[size]};
-    if (usesResampling(sizes[size])) ways.push_back(withoutResampling(sizes[size]));
-    std::optional<Error>& failed = size == 0 ? asItIs : simplified;
-    for (const RemeshOptions& tried : ways) {
-      try {
-        auto session = std::make_unique<RemeshSession>(input, tried, name);
-        return {std::move(session), tried, failed ? problemOf(*failed, name) : "", size > 0 ? problemOf(*asItIs, name) : ""};
-      } catch (const Error& e) {
-        if (!failed) failed = e;
-      }
+  // A session of `o`, else of `o` without the first pass where it has one (the last error where
+  // both fail, as remeshOnce throws).
+  const auto withAndWithoutFirstPass = [&](const RemeshOptions& o) -> StartedSession {
+    try {
+      return {std::make_unique<RemeshSession>(input, o, name), o, "", ""};
+    } catch (const Error& e) {
+      if (!usesResampling(o)) throw;
+      const RemeshOptions without = withoutResampling(o);
+      return {std::make_unique<RemeshSession>(input, without, name), without, problemOf(e, name), ""};
+    }
+  };
+  // Several components: no try helps (a session steps one surface).
+  if (analyzeTopology(input).components > 1) return {std::make_unique<RemeshSession>(input, options, name), options, "", ""};
+  try {
+    return withAndWithoutFirstPass(options);
+  } catch (const Error& e) {
+    if (!simplifyingMayHelp(options, input)) throw;
+    RemeshOptions simplified = options;
+    simplified.simplifyTo = options.sites.count;
+    try {
+      StartedSession started = withAndWithoutFirstPass(simplified);
+      started.fullInputFailed = problemOf(e, name);
+      return started;
+    } catch (const Error& again) {
+      throw bothFailed(e, again, options.sites.count, name);
     }
   }
-  if (simplified) throw bothFailed(*asItIs, *simplified, options.sites.count, name);
-  throw *asItIs;
 }
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {

@@ -322,8 +322,9 @@ class RemeshSession {
 // mesh and Restart): without the first pass (options.resample), and then on the input simplified
 // to the sites asked (RemeshResult::fullInputFailed's rule), each with the first pass and
 // without. `used`: the options it was made with; the problems that made it drop the first pass
-// or simplify, as RemeshResult has them ("" where it did not). Throws the first try's Error
-// where every try fails.
+// or simplify, as RemeshResult has them ("" where it did not). Throws where every try fails: the
+// last try's Error, or as remesh() both problems where the simplified tries failed too. A mesh
+// of several components is tried once (a session steps one surface).
 struct StartedSession {
   std::unique_ptr<RemeshSession> session;
   RemeshOptions used;

@@ -255,12 +255,34 @@ TEST(Pipeline, ASessionStartsAsRemeshMakesItsRun) {
   // CGAL's triceratops at 2000: every map of its first resampling collapses a horn; its session
   // is made without that pass (as the inspector's own code did before).
   const std::string triceratops = test::cgalSample("triceratops.off");
+  SKIP_UNLESS_EXTRACTED(triceratops);
   RemeshOptions simplified;
   simplified.simplifyTo = 2000;
   const StartedSession t = startSession(readMesh(triceratops).mesh, simplified, triceratops);
   EXPECT_FALSE(t.used.resample);
   EXPECT_NE(t.resampleDropped.find("not one-to-one"), std::string::npos) << t.resampleDropped;
   EXPECT_EQ(t.fullInputFailed, "");
+  // LSCM alone folds the dino as it is and simplified: both problems, and the last one's advice.
+  RemeshOptions lscm = o;
+  lscm.param.method = ParamMethod::Lscm;
+  try {
+    startSession(readMesh(path).mesh, lscm, path);
+    ADD_FAILURE() << "LSCM's map of the dino held";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("; simplified to 500 vertices first, it failed too: the parameterization is not "
+                                         "one-to-one"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("; try"), std::string(e.what()).rfind("; try")) << e.what();  // once, last
+  }
+  // Two components: tried once, its own refusal (it was tried four times, and both failures said).
+  Mesh two = readMesh(test::assetPath("sphere_cap.off")).mesh;
+  append(two, test::grid(6));
+  try {
+    startSession(two, o, "two");
+    ADD_FAILURE() << "a session of two components";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("a session steps one surface"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("simplified to"), std::string::npos) << e.what();
+  }
   o.coarsenInput = false;  // --full-input: the first try's error, the simplified one not tried
   try {
     startSession(readMesh(path).mesh, o, path);

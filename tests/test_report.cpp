@@ -71,12 +71,12 @@ TEST(Report, AnInputSimplifiedBecauseItFailedAsItWasIsSaid) {
   RemeshResult r;
   RemeshOptions o;
   o.sites.count = 500;
-  EXPECT_EQ(fullInputFailedText(r, o), "");
+  EXPECT_EQ(fullInputFailedText(r.fullInputFailed, 500), "");
   EXPECT_TRUE(toJson(r, o)["full_input_failed"].is_null());
   r.fullInputFailed = "the parameterization is not one-to-one (0 flipped and 24 collapsed of 7828 triangles)";
   const std::string said = "Simplified to 500 vertices first (as --simplify 500 does), as the input as it is failed: " +
                            r.fullInputFailed + "; the snaps, the fit and the distances are against the input itself";
-  EXPECT_EQ(fullInputFailedText(r, o), said);
+  EXPECT_EQ(fullInputFailedText(r.fullInputFailed, 500), said);
   EXPECT_NE(remeshReport(r, o).find(said + "\n"), std::string::npos);
   EXPECT_EQ(toJson(r, o)["full_input_failed"], r.fullInputFailed);
 }
