@@ -395,20 +395,12 @@ TEST(MeshIo, WriteReplacesAnExistingFile) {
 
 TEST(MeshIo, WriteFailuresSayCannotWriteAndLeaveNoTemporaryFile) {
   const std::string missingDir = tempPath("no_such_dir") + "/out.off";
-  try {
-    writeMesh(awkwardMesh(), missingDir);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(missingDir + ": cannot write", 0), 0u) << e.what();
-  }
+  const std::string missing = test::errorOf([&] { writeMesh(awkwardMesh(), missingDir); }, "a missing folder");
+  EXPECT_EQ(missing.rfind(missingDir + ": cannot write", 0), 0u) << missing;
   const std::string folder = test::emptyFolder("write_failures");
   const std::string badExtension = folder + "/out.stl";
-  try {
-    writeMesh(awkwardMesh(), badExtension);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(badExtension + ": cannot write", 0), 0u) << e.what();
-  }
+  const std::string stl = test::errorOf([&] { writeMesh(awkwardMesh(), badExtension); }, "an .stl");
+  EXPECT_EQ(stl.rfind(badExtension + ": cannot write", 0), 0u) << stl;
   EXPECT_TRUE(test::filesIn(folder).empty());
   // Writing onto a directory is refused, leaving no temporary.
   const std::string directory = folder + "/a_directory.off";
@@ -477,20 +469,11 @@ TEST(MeshIoErrors, AFolderToWriteAMeshToIsSaidToBeOne) {
   const std::string pipe = test::tempPath("pipe.txt");
   std::remove(pipe.c_str());
   ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
-  try {
-    requireMeshWritable(pipe);
-    ADD_FAILURE() << "no error";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("unknown extension '.txt'"), std::string::npos) << e.what();
-  }
+  const std::string pipeRefused = test::errorOf([&] { requireMeshWritable(pipe); }, "a pipe of .txt");
+  EXPECT_NE(pipeRefused.find("unknown extension '.txt'"), std::string::npos) << pipeRefused;
   std::remove(pipe.c_str());
   const std::string folder = test::emptyFolder("out_folder");
-  try {
-    requireMeshWritable(folder);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), folder + ": cannot write: it is a folder");
-  }
+  EXPECT_EQ(test::errorOf([&] { requireMeshWritable(folder); }, "a folder"), folder + ": cannot write: it is a folder");
 }
 
 TEST(MeshIoErrors, BadHeader) {
@@ -744,16 +727,12 @@ TEST(MeshIo, TheRepairReadsWhatTheChecksRefuseAndSaysWhatItChanged) {
 TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
   const std::string corner = writeFile(
       "pinch_repaired.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 3 4 5\n");
-  try {
-    readMesh(corner, ReadOptions{true});
-    ADD_FAILURE() << "no error";
-  } catch (const Error& e) {
-    // Two corners at one point: not a seam the repair should weld (the message named a seam
-    // only, the one thing the guide says --repair fixes).
-    EXPECT_NE(std::string(e.what()).find("same position on a border (an unwelded seam, a crack, or the border touching "
-                                         "itself at a point) (left after the repair)"),
-              std::string::npos) << e.what();
-  }
+  // Two corners at one point: not a seam the repair should weld (the message named a seam only,
+  // the one thing the guide says --repair fixes).
+  const std::string pinch = test::errorOf([&] { readMesh(corner, ReadOptions{true}); }, "a pinched corner repaired");
+  EXPECT_NE(pinch.find("same position on a border (an unwelded seam, a crack, or the border touching itself at a point) "
+                       "(left after the repair)"),
+            std::string::npos) << pinch;
   // A Moebius strip: the repair turns its faces one way by splitting two vertices, whose copies
   // have numbers the file does not (it said "vertices 2 and 12" of a file of 12).
   std::string moebius = "OFF\n12 12 0\n";
@@ -770,13 +749,10 @@ TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
   }
   // As read: not orientable, which no turning of faces mends (it said two faces disagreed).
   expectReadError(writeFile("moebius_as_is.off", moebius), "the surface is not orientable (a Moebius strip, say)");
-  try {
-    readMesh(writeFile("moebius.off", moebius), ReadOptions{true});
-    ADD_FAILURE() << "no error";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("(left after the repair, which numbered the vertices and faces anew, from 0)"),
-              std::string::npos) << e.what();
-  }
+  const std::string repaired = test::errorOf([&] { readMesh(writeFile("moebius.off", moebius), ReadOptions{true}); },
+                                              "a Moebius strip repaired");
+  EXPECT_NE(repaired.find("(left after the repair, which numbered the vertices and faces anew, from 0)"), std::string::npos)
+      << repaired;
 }
 
 // A mesh whose faces all have zero area leaves nothing to repair into: refused as it is read,
@@ -785,12 +761,8 @@ TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
 TEST(MeshIoErrors, NothingLeftAfterTheRepairIsRefused) {
   const char* collinear = "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n3 1 3 2\n";
   const std::string path = writeFile("collinear.off", collinear);
-  try {
-    readMesh(path, ReadOptions{true});
-    ADD_FAILURE() << "no error";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("no faces remain (all were dropped or of zero area) (left after the repair)"), std::string::npos) << e.what();
-  }
+  const std::string flat = test::errorOf([&] { readMesh(path, ReadOptions{true}); }, "collinear faces repaired");
+  EXPECT_NE(flat.find("no faces remain (all were dropped or of zero area) (left after the repair)"), std::string::npos) << flat;
   EXPECT_EQ(readError(path).find("--repair"), std::string::npos) << readError(path);
 }
 

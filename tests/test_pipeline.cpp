@@ -225,13 +225,9 @@ TEST(Pipeline, AnInputThatFailsAsItIsIsRemeshedSimplified) {
   // clock's. (Not a speed test: both clocks time the same work.)
   EXPECT_GT(r.ms.total, 0.8 * wall);
   o.coarsenInput = false;  // --full-input: the input as it is, or nothing
-  try {
-    remesh(input, o, path);
-    ADD_FAILURE() << "--full-input remeshed it";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("not one-to-one"), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).find("simplified to"), std::string::npos) << e.what();
-  }
+  const std::string asItIs = test::errorOf([&] { remesh(input, o, path); }, "--full-input remeshed it");
+  EXPECT_NE(asItIs.find("not one-to-one"), std::string::npos) << asItIs;
+  EXPECT_EQ(asItIs.find("simplified to"), std::string::npos) << asItIs;
 }
 
 // The inspector's sessions start as remesh() makes its run: the dino at 500 as it is fails with
@@ -265,32 +261,20 @@ TEST(Pipeline, ASessionStartsAsRemeshMakesItsRun) {
   // LSCM alone folds the dino as it is and simplified: both problems, and the last one's advice.
   RemeshOptions lscm = o;
   lscm.param.method = ParamMethod::Lscm;
-  try {
-    startSession(readMesh(path).mesh, lscm, path);
-    ADD_FAILURE() << "LSCM's map of the dino held";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("; simplified to 500 vertices first, it failed too: the parameterization is not "
-                                         "one-to-one"), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).find("; try"), std::string(e.what()).rfind("; try")) << e.what();  // once, last
-  }
+  const std::string both = test::errorOf([&] { startSession(readMesh(path).mesh, lscm, path); }, "LSCM's map of the dino held");
+  EXPECT_NE(both.find("; simplified to 500 vertices first, it failed too: the parameterization is not one-to-one"),
+            std::string::npos) << both;
+  EXPECT_EQ(both.find("; try"), both.rfind("; try")) << both;  // once, last
   // Two components: tried once, its own refusal (it was tried four times, and both failures said).
   Mesh two = readMesh(test::assetPath("sphere_cap.off")).mesh;
   append(two, test::grid(6));
-  try {
-    startSession(two, o, "two");
-    ADD_FAILURE() << "a session of two components";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("a session steps one surface"), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).find("simplified to"), std::string::npos) << e.what();
-  }
+  const std::string twoRefused = test::errorOf([&] { startSession(two, o, "two"); }, "a session of two components");
+  EXPECT_NE(twoRefused.find("a session steps one surface"), std::string::npos) << twoRefused;
+  EXPECT_EQ(twoRefused.find("simplified to"), std::string::npos) << twoRefused;
   o.coarsenInput = false;  // --full-input: the first try's error, the simplified one not tried
-  try {
-    startSession(readMesh(path).mesh, o, path);
-    ADD_FAILURE() << "--full-input started a session";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("not one-to-one"), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).find("simplified to"), std::string::npos) << e.what();
-  }
+  const std::string asItIs = test::errorOf([&] { startSession(readMesh(path).mesh, o, path); }, "--full-input started a session");
+  EXPECT_NE(asItIs.find("not one-to-one"), std::string::npos) << asItIs;
+  EXPECT_EQ(asItIs.find("simplified to"), std::string::npos) << asItIs;
 }
 
 // CGAL's lion head as it comes (8356 vertices, simplified to 3500 first) at 350 vertices: a

@@ -109,7 +109,6 @@ inline Mesh cube(int n, bool onSphere) {
   return mesh;
 }
 
-// `mesh` scaled by `scale` and moved by `offset`: a second component to append() beside it.
 // A run to look at, not to keep: `iterations` of Lloyd's at most, no clean-up on the surface, no
 // distances measured (`sites`: 0, as many as the input has).
 inline RemeshOptions shortRun(int sites, int iterations) {
@@ -121,6 +120,20 @@ inline RemeshOptions shortRun(int sites, int iterations) {
   return o;
 }
 
+// The text of the Error `call` throws; where it throws none, a test failure saying `expected`
+// (what should have refused it), and "".
+template <class Call>
+std::string errorOf(Call call, const std::string& expected) {
+  try {
+    call();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error: " << expected;
+  return "";
+}
+
+// `mesh` scaled by `scale` and moved by `offset`: a second component to append() beside it.
 inline Mesh moved(Mesh mesh, double scale, const Vec3& offset) {
   for (Vec3& p : mesh.points) p = scale * p + offset;
   return mesh;
