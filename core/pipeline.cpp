@@ -876,6 +876,27 @@ Error bothFailed(const Error& asItIs, const Error& simplified, int asked, const 
                (advice == std::string::npos ? "" : last.substr(advice)));
 }
 
+// `attempt(options)`, and where it fails and simplifying may help, `attempt` of the options
+// simplified to the sites asked, its result's fullInputFailed saying why; where that fails too,
+// both problems (bothFailed). remesh()'s runs and startSession()'s sessions alike.
+template <class Attempt>
+auto asItIsOrSimplified(const Mesh& input, const RemeshOptions& options, const std::string& name, Attempt attempt) {
+  try {
+    return attempt(options);
+  } catch (const Error& e) {
+    if (!simplifyingMayHelp(options, input)) throw;
+    RemeshOptions simplified = options;
+    simplified.simplifyTo = options.sites.count;
+    try {
+      auto made = attempt(simplified);
+      made.fullInputFailed = problemOf(e, name);
+      return made;
+    } catch (const Error& again) {
+      throw bothFailed(e, again, options.sites.count, name);
+    }
+  }
+}
+
 }  // namespace
 
 StartedSession startSession(const Mesh& input, const RemeshOptions& options, const std::string& name) {
@@ -892,20 +913,7 @@ StartedSession startSession(const Mesh& input, const RemeshOptions& options, con
   };
   // Several components: no try helps (a session steps one surface).
   if (analyzeTopology(input).components > 1) return {std::make_unique<RemeshSession>(input, options, name), options, "", ""};
-  try {
-    return withAndWithoutFirstPass(options);
-  } catch (const Error& e) {
-    if (!simplifyingMayHelp(options, input)) throw;
-    RemeshOptions simplified = options;
-    simplified.simplifyTo = options.sites.count;
-    try {
-      StartedSession started = withAndWithoutFirstPass(simplified);
-      started.fullInputFailed = problemOf(e, name);
-      return started;
-    } catch (const Error& again) {
-      throw bothFailed(e, again, options.sites.count, name);
-    }
-  }
+  return asItIsOrSimplified(input, options, name, withAndWithoutFirstPass);
 }
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
@@ -922,24 +930,11 @@ RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::
     result.ms.total = total.lap();
     return result;
   };
-  Stopwatch asItIs;
-  try {
-    return remeshWith(options);
-  } catch (const Error& e) {
-    if (!simplifyingMayHelp(options, input)) throw;
-    const double failedMs = asItIs.lap();
-    RemeshOptions simplified = options;
-    simplified.simplifyTo = asked;
-    RemeshResult result;
-    try {
-      result = remeshWith(simplified);
-    } catch (const Error& again) {
-      throw bothFailed(e, again, asked, name);
-    }
-    result.fullInputFailed = problemOf(e, name);
-    result.ms.total += failedMs;  // the failed run's time counts (in no stage)
-    return result;
-  }
+  Stopwatch wall;
+  RemeshResult result = asItIsOrSimplified(input, options, name, remeshWith);
+  // Made simplified: the failed run's time counts too (in no stage).
+  if (!result.fullInputFailed.empty()) result.ms.total = wall.lap();
+  return result;
 }
 
 int coarseInputSize(int vertices) {
