@@ -113,21 +113,6 @@ SmallestAngles smallestAnglesOf(const Mesh& m, const std::vector<int>& faces) {
   return angles;
 }
 
-// The farthest from `surface` of the centroids of `faces` and of the midpoints of `edges`:
-// where a chord strays from a curved surface.
-double farthestChordPoint(const Mesh& m, const SurfaceProjection& surface, const std::vector<int>& faces,
-                          const std::vector<std::pair<int, int>>& edges = {}) {
-  std::vector<Vec3> points;
-  for (int f : faces) {
-    const Triangle& t = m.triangles[f];
-    if (isMergeMarker(t)) continue;
-    points.push_back((m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3);
-  }
-  for (const auto& [a, b] : edges) points.push_back((m.points[a] + m.points[b]) / 2);
-  const std::vector<double> squared = surface.squaredDistances(points);
-  return std::sqrt(squared.empty() ? 0.0 : *std::max_element(squared.begin(), squared.end()));
-}
-
 // The farthest of `points` from the triangles `faces` of `m`.
 double farthestFromFaces(const Mesh& m, const std::vector<int>& faces, const std::vector<Vec3>& points) {
   if (points.empty()) return 0;
@@ -159,9 +144,14 @@ class StaysClose {
   StaysClose(const Mesh& m, const SearchableSurface& input)
       : surface_(input.mesh), projection_(input.projection), same_(1e-12 * boundingBoxDiagonal(input.mesh)) {
     const Mesh& surface = surface_;
-    std::vector<int> all(m.faceCount());
-    std::iota(all.begin(), all.end(), 0);
-    strayAnywhere_ = kStrayAnywhere * farthestChordPoint(m, projection_, all);
+    // Each triangle's centroid's closest point on the input: where its next search starts.
+    std::vector<Vec3> centroids;
+    for (const Triangle& t : m.triangles) centroids.push_back((m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3);
+    nearCentroid_ = projection_.closestPoints(centroids);
+    double farthest = 0;
+    for (int f = 0; f < m.faceCount(); ++f)
+      if (!isMergeMarker(m.triangles[f])) farthest = std::max(farthest, (centroids[f] - nearCentroid_[f]).squaredNorm());
+    strayAnywhere_ = kStrayAnywhere * std::sqrt(farthest);
     // The input's vertices by the result's triangle nearest them; flips and moves keep each
     // triangle's place in the list.
     std::vector<double> squared;
@@ -180,24 +170,47 @@ class StaysClose {
   // went over what any place may have: `show(false)` puts the mesh as it was, `show(true)` as
   // changed again, which is how it is left.
   bool allows(const Mesh& m, const std::vector<int>& faces, const std::vector<std::pair<int, int>>& newEdges,
-              const std::vector<std::pair<int, int>>& oldEdges, const std::function<void(bool)>& show) const {
+              const std::vector<std::pair<int, int>>& oldEdges, const std::function<void(bool)>& show) {
     std::vector<Vec3> covered;
     for (int f : faces)
       for (int i : inputUnder_[f]) covered.push_back(surface_.points[i]);
-    const double stray = farthestChordPoint(m, projection_, faces, newEdges);
+    const double stray = farthestChordPoint(m, faces, newEdges);
     const double uncovered = farthestFromFaces(m, faces, covered);
     const bool strayOver = stray > strayAnywhere_ + same_, uncoveredOver = uncovered > uncoveredAnywhere_ + same_;
     if (!strayOver && !uncoveredOver) return true;
     show(false);
-    const bool worse = (strayOver && stray > farthestChordPoint(m, projection_, faces, oldEdges) + same_) ||
+    const bool worse = (strayOver && stray > farthestChordPoint(m, faces, oldEdges) + same_) ||
                        (uncoveredOver && uncovered > farthestFromFaces(m, faces, covered) + same_);
     show(true);
     return !worse;
   }
 
  private:
+  // The farthest from the input of the centroids of `faces` and of the midpoints of `edges`:
+  // where a chord strays from a curved surface. Each centroid's search starts from where that
+  // triangle's was found last, a tight first bound (a change moves it little), each midpoint's
+  // from the point found before it; both take a fraction of a search from nothing.
+  double farthestChordPoint(const Mesh& m, const std::vector<int>& faces, const std::vector<std::pair<int, int>>& edges) {
+    double farthest = 0;
+    std::optional<Vec3> found;  // the point found last
+    for (int f : faces) {
+      const Triangle& t = m.triangles[f];
+      if (isMergeMarker(t)) continue;
+      const Vec3 centroid = (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3;
+      farthest = std::max(farthest, projection_.squaredDistance(centroid, nearCentroid_[f]));
+      found = nearCentroid_[f];
+    }
+    for (const auto& [a, b] : edges) {
+      const Vec3 midpoint = (m.points[a] + m.points[b]) / 2;
+      if (!found) found = projection_.closestPoint(midpoint);
+      farthest = std::max(farthest, projection_.squaredDistance(midpoint, *found));
+    }
+    return std::sqrt(farthest);
+  }
+
   const Mesh& surface_;
   const SurfaceProjection& projection_;
+  std::vector<Vec3> nearCentroid_;  // (see farthestChordPoint)
   const double same_;  // distances closer than this are the same (rounding)
   double strayAnywhere_ = 0, uncoveredAnywhere_ = 0;
   std::vector<std::vector<int>> inputUnder_;
@@ -337,7 +350,7 @@ class ValenceMover {
   }
 
   Mesh& m_;
-  const StaysClose close_;
+  StaysClose close_;
   const double degrees_;
   std::vector<bool> fixed_;  // the border, and the pinned vertices
   std::set<std::vector<std::pair<int, int>>> refused_;
@@ -407,7 +420,7 @@ class AngleRaiser {
 
   // Built for the first vertex tried (it searches the whole result and the input's vertices),
   // before anything moved.
-  const StaysClose& close() {
+  StaysClose& close() {
     if (!close_) close_.emplace(m_, surface_);
     return *close_;
   }
@@ -531,11 +544,13 @@ std::vector<int> withinRings(const Mesh& m, const Rings& rings, std::vector<int>
 
 // The smallest angle of the triangles of `before` that are not in `after` (by corners and
 // places), and of those of `after` that are not in `before`: what a local change took away and
-// put in their place (the flips of a relaxation included, wherever they reached).
-std::pair<double, double> smallestAnglesChanged(const Mesh& before, const Mesh& after) {
-  auto placed = [](const Mesh& m) {
+// put in their place (the flips of a relaxation included). Only triangles with a corner in
+// `near` are compared: every triangle the change made or took away has one.
+std::pair<double, double> smallestAnglesChanged(const Mesh& before, const Mesh& after, const std::vector<bool>& near) {
+  auto placed = [&](const Mesh& m) {
     std::set<std::array<double, 9>> triangles;
     for (const Triangle& t : m.triangles) {
+      if (!near[t[0]] && !near[t[1]] && !near[t[2]]) continue;
       std::array<int, 3> corners = t;
       std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
       std::array<double, 9> key;
@@ -624,7 +639,11 @@ int collapseShortBorderEdges(Mesh& m, const SearchableSurface& surface, std::vec
         movable = withNeighbours(tried, withNeighbours(tried, movable));
         for (int v : pinned) movable[v] = false;
         relaxOnSurface(tried, movable, surface.projection, 3, /*local=*/true);
-        const auto [before, after] = smallestAnglesChanged(m, tried);
+        // The relaxation's flips make edges between neighbours of the movable vertices, the
+        // merge took `from`'s triangles.
+        std::vector<bool> near = withNeighbours(tried, movable);
+        near[from] = true;
+        const auto [before, after] = smallestAnglesChanged(m, tried, near);
         if (after <= before + 1e-6) continue;
         refusedAfter.erase(ends);
         m = std::move(tried);  // `from` stays, unused, until the end: the indices hold meanwhile

@@ -198,15 +198,45 @@ void relaxOnce(Mesh& m, const std::vector<bool>& movable, const std::vector<bool
   }
 }
 
+namespace {
+
+// relaxOnSurface's local passes, made on the triangles at the movable vertices and their
+// neighbours alone, then written back in place. A flip of an edge at a movable vertex makes an
+// edge between two of that vertex's neighbours, so the passes neither read nor change anything
+// further out (the edges a flip checks for, the valences and the border included): the same
+// result, where the whole mesh's edges, rings and valences at every pass cost most of a try in
+// the last steps (the collapses of short border edges on a jagged border).
+void relaxLocally(Mesh& m, const std::vector<bool>& movable, const SurfaceProjection& surface, int passes) {
+  const std::vector<bool> near = withNeighbours(m, movable);
+  Mesh part;
+  part.points = m.points;
+  std::vector<int> faces;
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const Triangle& t = m.triangles[f];
+    if (!near[t[0]] && !near[t[1]] && !near[t[2]]) continue;
+    faces.push_back(f);
+    part.triangles.push_back(t);
+  }
+  const std::vector<bool> border = vertexEdges(part).onBoundary;  // as the whole's, at a movable vertex
+  for (int pass = 0; pass < passes; ++pass) {
+    relaxOnce(part, movable, border, surface);
+    flipEdges(part, notDelaunay, nullptr, &movable);
+  }
+  m.points = std::move(part.points);
+  for (size_t i = 0; i < faces.size(); ++i) m.triangles[faces[i]] = part.triangles[i];
+}
+
+}  // namespace
+
 void relaxOnSurface(Mesh& m, const std::vector<bool>& movable, const SurfaceProjection& surface,
                     int passes, bool local) {
-  const std::vector<bool>* region = local ? &movable : nullptr;
+  if (local) return relaxLocally(m, movable, surface, passes);
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   for (int pass = 0; pass < passes; ++pass) {
     relaxOnce(m, movable, border, surface);
-    flipEdges(m, notDelaunay, nullptr, region);
+    flipEdges(m, notDelaunay);
   }
-  if (passes > 0 && !local) {
+  if (passes > 0) {
     flipEdges(m, raisesRegularity);
     relaxOnce(m, movable, border, surface);
   }

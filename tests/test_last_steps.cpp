@@ -1,3 +1,4 @@
+#include "flips.h"
 #include "last_steps.h"
 #include "metrics.h"
 #include "projection.h"
@@ -403,6 +404,36 @@ TEST(LastSteps, ASharpCornersEdgeToAnInsideVertexIsFlippedAway) {
   Mesh same = wide;
   EXPECT_EQ(earsAtSharpCorners(same, wide, none), 0);
   EXPECT_EQ(same.triangles, wide.triangles);
+}
+
+// relaxOnSurface(local) works on the triangles near the movable vertices alone: the result is
+// that of its passes on the whole mesh, bit for bit, here where a flip at the rim of two rings
+// around a vertex of a jittered bumpy grid makes a triangle with no movable corner.
+TEST(LastSteps, ALocalRelaxationIsThePassesOnTheWholeMesh) {
+  Mesh surface = test::grid(16);
+  for (Vec3& p : surface.points) p.z() = 0.1 * std::sin(6 * p.x()) * std::cos(5 * p.y());
+  const Mesh start = jitteredInside(surface, 1, 0.4 / 16);
+  std::vector<bool> movable(start.vertexCount(), false);
+  movable[8 * 17 + 8] = true;
+  movable = withNeighbours(start, withNeighbours(start, movable));
+  const SurfaceProjection projection(surface);
+
+  Mesh local = start;
+  relaxOnSurface(local, movable, projection, 3, /*local=*/true);
+  Mesh whole = start;
+  const std::vector<bool> border = vertexEdges(whole).onBoundary;
+  for (int pass = 0; pass < 3; ++pass) {
+    relaxOnce(whole, movable, border, projection);
+    flipEdges(whole, notDelaunay, nullptr, &movable);
+  }
+  EXPECT_EQ(local.points, whole.points);
+  EXPECT_EQ(local.triangles, whole.triangles);
+  int outside = 0;  // changed triangles with no movable corner
+  for (int f = 0; f < start.faceCount(); ++f) {
+    const Triangle& t = whole.triangles[f];
+    outside += t != start.triangles[f] && !movable[t[0]] && !movable[t[1]] && !movable[t[2]];
+  }
+  EXPECT_GT(outside, 0);
 }
 
 // Issue 6: the vertices of a stitched seam (here a jittered column of a flat grid) move on the
