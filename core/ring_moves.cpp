@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <iterator>
-#include <set>
+#include <numeric>
 
 namespace lloydscope {
 
@@ -99,14 +99,27 @@ double ringSmallestAngle(const Mesh& m, const Rings& rings, int v, const Vec3& t
 }
 
 std::pair<std::vector<int>, std::vector<int>> borderNeighbours(const Mesh& m) {
-  std::set<std::pair<int, int>> edges;
+  // Each vertex's sides a -> b, sorted by b (per-vertex sorts: the last steps ask after every
+  // collapse of a border edge); a side is on the border where no triangle runs it back b -> a.
+  const size_t n = m.points.size();
+  std::vector<int> offset(n + 1, 0);
   for (const Triangle& t : m.triangles)
-    for (int k = 0; k < 3; ++k) edges.emplace(t[k], t[(k + 1) % 3]);
-  std::vector<int> before(m.vertexCount(), -1), after(m.vertexCount(), -1);
-  for (const auto& [a, b] : edges)
-    if (!edges.count({b, a})) {
+    for (int v : t) ++offset[v + 1];
+  std::partial_sum(offset.begin(), offset.end(), offset.begin());
+  std::vector<int> to(offset.back()), fill(offset.begin(), offset.end() - 1);
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) to[fill[t[k]]++] = t[(k + 1) % 3];
+  for (size_t a = 0; a < n; ++a) std::sort(to.begin() + offset[a], to.begin() + offset[a + 1]);
+  const auto runs = [&](int a, int b) {
+    return std::binary_search(to.begin() + offset[a], to.begin() + offset[a + 1], b);
+  };
+  std::vector<int> before(n, -1), after(n, -1);
+  for (size_t a = 0; a < n; ++a)  // in order of (a, b), as the last of two sides wins
+    for (int i = offset[a]; i < offset[a + 1]; ++i) {
+      const int b = to[i];
+      if (runs(b, static_cast<int>(a))) continue;
       after[a] = b;
-      before[b] = a;
+      before[b] = static_cast<int>(a);
     }
   return {before, after};
 }

@@ -406,6 +406,25 @@ TEST(LastSteps, ASharpCornersEdgeToAnInsideVertexIsFlippedAway) {
   EXPECT_EQ(same.triangles, wide.triangles);
 }
 
+// borderNeighbours() walks the border the way the triangles run along it, once round, and
+// gives the inside vertices none.
+TEST(LastSteps, BorderNeighboursWalkTheBorderOnceRound) {
+  const Mesh m = test::grid(6);
+  const auto [before, after] = borderNeighbours(m);
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  EXPECT_EQ(after[0], 1);
+  EXPECT_EQ(before[1], 0);
+  int steps = 0;
+  for (int v = 0; steps == 0 || v != 0; v = after[v], ++steps) {
+    ASSERT_GE(after[v], 0);
+    EXPECT_EQ(before[after[v]], v);
+    ASSERT_LE(steps, m.vertexCount());
+  }
+  EXPECT_EQ(steps, 24);
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (!border[v]) EXPECT_EQ(std::make_pair(before[v], after[v]), std::make_pair(-1, -1));
+}
+
 // relaxOnSurface(local) works on the triangles near the movable vertices alone: the result is
 // that of its passes on the whole mesh, bit for bit, here where a flip at the rim of two rings
 // around a vertex of a jittered bumpy grid makes a triangle with no movable corner.
