@@ -271,6 +271,12 @@ nlohmann::json settingsJson(const std::string& line) {
   return settings;
 }
 
+// A trial's distance, null where it was not measured (0: the trials measure only where the
+// distances decide).
+nlohmann::json measuredOrNull(double hausdorffPercent) {
+  return hausdorffPercent > 0 ? nlohmann::json(hausdorffPercent) : nlohmann::json();
+}
+
 }  // namespace
 
 nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
@@ -288,16 +294,16 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                       {"whole_avg_min_angle_deg", r.slitTrial->whole},
                                                       {"slit_bars_met", r.slitTrial->slitBars},
                                                       {"whole_bars_met", r.slitTrial->wholeBars},
-                                                      {"slit_hausdorff_percent", r.slitTrial->slitHausdorff},
-                                                      {"whole_hausdorff_percent", r.slitTrial->wholeHausdorff},
+                                                      {"slit_hausdorff_percent", measuredOrNull(r.slitTrial->slitHausdorff)},
+                                                      {"whole_hausdorff_percent", measuredOrNull(r.slitTrial->wholeHausdorff)},
                                                       {"kept", r.cut.seamEdges > 0 ? "slit" : "whole"}}
                                      : nlohmann::json()},
           {"charts", r.charts},
           {"chart_trial", r.chartTrial ? nlohmann::json{{"charts", r.chartTrial->charts},
                                                         {"one_cut_avg_min_angle_deg", r.chartTrial->oneCutAvgMinAngle},
                                                         {"charts_avg_min_angle_deg", r.chartTrial->chartsAvgMinAngle},
-                                                        {"one_cut_hausdorff_percent", r.chartTrial->oneCutHausdorff},
-                                                        {"charts_hausdorff_percent", r.chartTrial->chartsHausdorff},
+                                                        {"one_cut_hausdorff_percent", measuredOrNull(r.chartTrial->oneCutHausdorff)},
+                                                        {"charts_hausdorff_percent", measuredOrNull(r.chartTrial->chartsHausdorff)},
                                                         {"one_cut_bars_met", r.chartTrial->oneCutBars},
                                                         {"charts_bars_met", r.chartTrial->chartsBars},
                                                         {"kept", r.charts > 0 ? "charts" : "one-cut"},
@@ -307,8 +313,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                        : nlohmann::json()},
           {"first_pass_trial", r.firstPassTrial ? nlohmann::json{{"with_bars_met", r.firstPassTrial->withBars},
                                                                  {"without_bars_met", r.firstPassTrial->withoutBars},
-                                                                 {"with_hausdorff_percent", r.firstPassTrial->withHausdorff},
-                                                                 {"without_hausdorff_percent", r.firstPassTrial->withoutHausdorff},
+                                                                 {"with_hausdorff_percent", measuredOrNull(r.firstPassTrial->withHausdorff)},
+                                                                 {"without_hausdorff_percent", measuredOrNull(r.firstPassTrial->withoutHausdorff)},
                                                                  {"kept", r.firstPassTrial->keptWithout ? "without" : "with"},
                                                                  {"failed", r.firstPassTrial->failed}}
                                                : nlohmann::json()},
@@ -395,9 +401,12 @@ std::string chartTrialText(const RemeshResult& r) {
          (t.forBars ? " (a bar was missed as one disk: remeshed chart by chart too): average smallest angle "
                     : " (remeshed both ways, as one disk and chart by chart): average smallest angle ") +
          format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +
-         format("%.1f", t.oneCutAvgMinAngle) + " deg one disk; Hausdorff " + format("%.3f", t.chartsHausdorff) +
-         "% and " + format("%.3f", t.oneCutHausdorff) + "%; bars met (irregular, smallest angle, average) " +
-         std::to_string(t.chartsBars) + " and " + std::to_string(t.oneCutBars);
+         format("%.1f", t.oneCutAvgMinAngle) + " deg one disk" +
+         (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.chartsHausdorff) + "% and " +
+                                    format("%.3f", t.oneCutHausdorff) + "%"
+                              : "") +
+         "; bars met (irregular, smallest angle, average) " + std::to_string(t.chartsBars) + " and " +
+         std::to_string(t.oneCutBars) + (t.distancesDecide() ? "" : ": not more in charts");
 }
 
 std::string firstPassTrialText(const RemeshResult& r) {
@@ -408,8 +417,10 @@ std::string firstPassTrialText(const RemeshResult& r) {
            t.failed + ")";
   return std::string(t.keptWithout ? "Kept without the first resampling" : "Kept with the first resampling") +
          " (a bar was missed with it: remeshed without it too): bars met (irregular, smallest angle, average) " +
-         std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without; Hausdorff " +
-         format("%.3f", t.withHausdorff) + "% and " + format("%.3f", t.withoutHausdorff) + "%";
+         std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without" +
+         (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.withHausdorff) + "% and " +
+                                    format("%.3f", t.withoutHausdorff) + "%"
+                              : ": not more without");
 }
 
 std::string fullInputFailedText(const std::string& problem, int vertices) {

@@ -558,29 +558,32 @@ RemeshResult remeshChartsSmallerWhereTheyFail(const Mesh& input, const RemeshOpt
 }
 
 // The surface remeshed chart by chart too (remeshCharts), and the charts kept in `kept`'s place
-// if ChartTrial::chartsBetter(); both are measured against the input to tell. Where no
-// conformal map of the one disk holds (LSCM folds or its border overlaps itself, and a map
-// with a fixed border takes over: CGAL's cow and elephant, parts with many handles, the back
-// half of a body whose arms curl over it), its cells come out stretched, and the charts are
-// rounder; on a CAD part with sharp edges (CGAL's spool, rotor, lion) the charts' seams follow
-// the edges, and the charts are closer. `forBars`: see ChartTrial::forBars.
+// if ChartTrial::chartsBetter(); both are measured against the input where that reads the
+// distances (ChartTrial::distancesDecide()). Where no conformal map of the one disk holds
+// (LSCM folds or its border overlaps itself, and a map with a fixed border takes over: CGAL's
+// cow and elephant, parts with many handles, the back half of a body whose arms curl over it),
+// its cells come out stretched, and the charts are rounder; on a CAD part with sharp edges
+// (CGAL's spool, rotor, lion) the charts' seams follow the edges, and the charts are closer.
+// `forBars`: see ChartTrial::forBars.
 void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name,
                const PreparedInput& prepared, bool forBars = false) {
   RemeshOptions once = options;
   once.measureFidelity = false;
   try {
     RemeshResult charted = remeshChartsSmallerWhereTheyFail(input, once, name, prepared, /*evenOneChart=*/false);
-    measureFidelityOf(kept, prepared);
-    measureFidelityOf(charted, prepared);
     ChartTrial trial;
     trial.forBars = forBars;
     trial.charts = charted.charts;
     trial.oneCutAvgMinAngle = kept.after.avgMinAngle;
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
-    trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
-    trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
     trial.oneCutBars = barsMet(kept.after, kept.before);
     trial.chartsBars = barsMet(charted.after, charted.before);
+    if (trial.distancesDecide()) {
+      measureFidelityOf(kept, prepared);
+      measureFidelityOf(charted, prepared);
+      trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
+      trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
+    }
     if (trial.chartsBetter()) std::swap(kept, charted);
     kept.chartTrial = trial;
     countTheOtherRun(kept, charted);
@@ -668,7 +671,8 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
 }
 
 // The disk remeshed without the first pass too where its result misses a bar, and that kept if
-// FirstPassTrial::withoutBetter(); both are measured against the input to tell.
+// FirstPassTrial::withoutBetter(); both are measured against the input where that reads the
+// distances (FirstPassTrial::distancesDecide()).
 void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name,
                          const PreparedInput& prepared) {
   // Without the polish the bars are not what a run aims at (`--polish -1` shows what it buys).
@@ -687,13 +691,15 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
     kept.firstPassTrial->failed = problemOf(e, name);
     return;
   }
-  measureFidelityOf(kept, prepared);
-  measureFidelityOf(other, prepared);
   FirstPassTrial trial;
   trial.withBars = barsMet(kept.after, kept.before);
   trial.withoutBars = barsMet(other.after, other.before);
-  trial.withHausdorff = kept.fidelity.hausdorffPercent;
-  trial.withoutHausdorff = other.fidelity.hausdorffPercent;
+  if (trial.distancesDecide()) {
+    measureFidelityOf(kept, prepared);
+    measureFidelityOf(other, prepared);
+    trial.withHausdorff = kept.fidelity.hausdorffPercent;
+    trial.withoutHausdorff = other.fidelity.hausdorffPercent;
+  }
   trial.keptWithout = trial.withoutBetter();
   if (trial.keptWithout) std::swap(kept, other);
   kept.firstPassTrial = trial;

@@ -111,7 +111,7 @@ bool meetsMoreBars(int bars, double hausdorff, int otherBars, double otherHausdo
 struct ChartTrial {
   int charts = 0;
   double oneCutAvgMinAngle = 0, chartsAvgMinAngle = 0;
-  double oneCutHausdorff = 0, chartsHausdorff = 0;  // % of the diagonal
+  double oneCutHausdorff = 0, chartsHausdorff = 0;  // % of the diagonal; 0: not measured (distancesDecide())
   // How many of issue 5's bars that need no reference each meets (barsMet), as the slit trial
   // counts.
   int oneCutBars = 0, chartsBars = 0;
@@ -130,6 +130,9 @@ struct ChartTrial {
   // or kRounderBy degrees rounder and at most 1 / kCloserBy times as far.
   static constexpr double kFartherBy = 1.1, kCloserBy = 0.8, kRounderBy = 2.0;
   bool chartsBetter() const;
+  // Whether chartsBetter() reads the distances, which are measured only then: for the bars,
+  // only where the charts meet more of them.
+  bool distancesDecide() const { return !forBars || chartsBars > oneCutBars; }
 };
 
 // A disk whose result misses one of issue 5's bars that need no reference is remeshed without
@@ -138,7 +141,7 @@ struct ChartTrial {
 // camel's mouth), the cells of its map crowd into the fold. What each run gave.
 struct FirstPassTrial {
   int withBars = 0, withoutBars = 0;  // bars met, as ChartTrial counts them
-  double withHausdorff = 0, withoutHausdorff = 0;  // % of the diagonal
+  double withHausdorff = 0, withoutHausdorff = 0;  // % of the diagonal; 0: not measured (distancesDecide())
   bool keptWithout = false;
   std::string failed;  // not empty: the run without failed (why; with --param lscm its map may
                        // fold on the input's slivers), the first stands
@@ -150,6 +153,9 @@ struct FirstPassTrial {
   // CGAL's man clipped in half at 2000 too (24.2 -> 33.7 degrees, 0.80 -> 1.47%, CGAL's 2.02%),
   // and a spike's result that no longer reaches the spike (6.0 -> 8.3%).
   bool withoutBetter() const;
+  // Whether withoutBetter() reads the distances, which are measured only then: where the run
+  // without meets more bars (a measure against the input is a tenth of a run on a large one).
+  bool distancesDecide() const { return withoutBars > withBars; }
 };
 
 // remesh() takes kSmallestRemeshedShare (core/sites) vertices at least: fewer asked for a

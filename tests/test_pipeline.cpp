@@ -295,6 +295,13 @@ TEST(Pipeline, ANearlyClosedDiskThatMissesABarCountsFiveRuns) {
   EXPECT_TRUE(r.chartTrial->forBars);
   EXPECT_EQ(r.charts, 0);
   EXPECT_EQ(r.runs, 5);
+  // Neither trial's other run met more bars: the distances, which would not have decided, were
+  // not measured (a run's last measure is a tenth of it on a large input).
+  EXPECT_LE(r.firstPassTrial->withoutBars, r.firstPassTrial->withBars);
+  EXPECT_EQ(r.firstPassTrial->withoutHausdorff, 0.0);
+  EXPECT_LE(r.chartTrial->chartsBars, r.chartTrial->oneCutBars);
+  EXPECT_EQ(r.chartTrial->chartsHausdorff, 0.0);
+  EXPECT_GT(r.fidelity.hausdorffPercent, 0.0);  // the result's own, as asked
 }
 
 // Where the run without the first pass fails, the first stands: CGAL's armadillo clipped in half

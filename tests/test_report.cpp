@@ -98,6 +98,12 @@ TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
   const nlohmann::json json = toJson(r, RemeshOptions{});
   EXPECT_EQ(json["first_pass_trial"]["kept"], "with");
   EXPECT_EQ(json["first_pass_trial"]["without_bars_met"], 3);
+  // Where the run without met no more bars, the distances were not measured (they decide nothing).
+  r.firstPassTrial->withoutBars = 2;
+  r.firstPassTrial->withHausdorff = r.firstPassTrial->withoutHausdorff = 0;
+  EXPECT_NE(firstPassTrialText(r).find("2 with, 2 without: not more without"), std::string::npos) << firstPassTrialText(r);
+  EXPECT_EQ(firstPassTrialText(r).find("Hausdorff"), std::string::npos);
+  EXPECT_TRUE(toJson(r, RemeshOptions{})["first_pass_trial"]["without_hausdorff_percent"].is_null());
   r.firstPassTrial = FirstPassTrial{};
   r.firstPassTrial->failed = "m.off: the parameterization is not one-to-one";
   EXPECT_EQ(firstPassTrialText(r), "Kept with the first resampling (a bar was missed with it: remeshed without it "
@@ -169,6 +175,16 @@ TEST(Report, ChartsTriedForAMissedBarSaySo) {
             "angle 57.7 deg in 4 charts, 46.6 deg one disk; Hausdorff 0.240% and 0.916%; bars met (irregular, "
             "smallest angle, average) 3 and 2");
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["for_bars"], true);
+  EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["charts_hausdorff_percent"], 0.24);
+  // Charts that met no more bars were not measured: the distances decide nothing then.
+  r.charts = 0;
+  r.chartTrial->chartsBars = 2;
+  r.chartTrial->chartsHausdorff = r.chartTrial->oneCutHausdorff = 0;
+  EXPECT_EQ(chartTrialText(r),
+            "Kept as one disk (a bar was missed as one disk: remeshed chart by chart too): average smallest "
+            "angle 57.7 deg in 4 charts, 46.6 deg one disk; bars met (irregular, smallest angle, average) 2 and 2: "
+            "not more in charts");
+  EXPECT_TRUE(toJson(r, RemeshOptions{})["chart_trial"]["charts_hausdorff_percent"].is_null());
 }
 
 // Where every component was kept as it is, too small for its share, nothing was parameterized:
