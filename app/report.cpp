@@ -271,10 +271,10 @@ nlohmann::json settingsJson(const std::string& line) {
   return settings;
 }
 
-// A trial's distance, null where it was not measured (0: the trials measure only where the
+// A trial's distance, null where it was not measured (the trials measure only where the
 // distances decide).
-nlohmann::json measuredOrNull(double hausdorffPercent) {
-  return hausdorffPercent > 0 ? nlohmann::json(hausdorffPercent) : nlohmann::json();
+nlohmann::json measuredOrNull(bool measured, double hausdorffPercent) {
+  return measured ? nlohmann::json(hausdorffPercent) : nlohmann::json();
 }
 
 }  // namespace
@@ -285,6 +285,9 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
   output["fidelity"] = r.fidelity.samples > 0 ? toJson(r.fidelity) : nlohmann::json();
   nlohmann::json settings = settingsJson(describe(o));
   settings["param_used"] = toString(r.paramUsed);
+  // Where either way failed, nothing was compared.
+  const bool chartsMeasured = r.chartTrial && r.chartTrial->failed.empty() && r.chartTrial->oneCutFailed.empty() &&
+                              r.chartTrial->distancesDecide();
   return {{"settings", settings},
           {"input", toJson(r.before)},
           {"output", output},
@@ -294,16 +297,16 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                       {"whole_avg_min_angle_deg", r.slitTrial->whole},
                                                       {"slit_bars_met", r.slitTrial->slitBars},
                                                       {"whole_bars_met", r.slitTrial->wholeBars},
-                                                      {"slit_hausdorff_percent", measuredOrNull(r.slitTrial->slitHausdorff)},
-                                                      {"whole_hausdorff_percent", measuredOrNull(r.slitTrial->wholeHausdorff)},
+                                                      {"slit_hausdorff_percent", measuredOrNull(r.slitTrial->bothMeetTheBars(), r.slitTrial->slitHausdorff)},
+                                                      {"whole_hausdorff_percent", measuredOrNull(r.slitTrial->bothMeetTheBars(), r.slitTrial->wholeHausdorff)},
                                                       {"kept", r.cut.seamEdges > 0 ? "slit" : "whole"}}
                                      : nlohmann::json()},
           {"charts", r.charts},
           {"chart_trial", r.chartTrial ? nlohmann::json{{"charts", r.chartTrial->charts},
                                                         {"one_cut_avg_min_angle_deg", r.chartTrial->oneCutAvgMinAngle},
                                                         {"charts_avg_min_angle_deg", r.chartTrial->chartsAvgMinAngle},
-                                                        {"one_cut_hausdorff_percent", measuredOrNull(r.chartTrial->oneCutHausdorff)},
-                                                        {"charts_hausdorff_percent", measuredOrNull(r.chartTrial->chartsHausdorff)},
+                                                        {"one_cut_hausdorff_percent", measuredOrNull(chartsMeasured, r.chartTrial->oneCutHausdorff)},
+                                                        {"charts_hausdorff_percent", measuredOrNull(chartsMeasured, r.chartTrial->chartsHausdorff)},
                                                         {"one_cut_bars_met", r.chartTrial->oneCutBars},
                                                         {"charts_bars_met", r.chartTrial->chartsBars},
                                                         {"kept", r.charts > 0 ? "charts" : "one-cut"},
@@ -313,8 +316,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                        : nlohmann::json()},
           {"first_pass_trial", r.firstPassTrial ? nlohmann::json{{"with_bars_met", r.firstPassTrial->withBars},
                                                                  {"without_bars_met", r.firstPassTrial->withoutBars},
-                                                                 {"with_hausdorff_percent", measuredOrNull(r.firstPassTrial->withHausdorff)},
-                                                                 {"without_hausdorff_percent", measuredOrNull(r.firstPassTrial->withoutHausdorff)},
+                                                                 {"with_hausdorff_percent", measuredOrNull(r.firstPassTrial->distancesDecide(), r.firstPassTrial->withHausdorff)},
+                                                                 {"without_hausdorff_percent", measuredOrNull(r.firstPassTrial->distancesDecide(), r.firstPassTrial->withoutHausdorff)},
                                                                  {"kept", r.firstPassTrial->keptWithout ? "without" : "with"},
                                                                  {"failed", r.firstPassTrial->failed}}
                                                : nlohmann::json()},

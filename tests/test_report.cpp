@@ -154,6 +154,7 @@ TEST(Report, ChartsThatStandInForAFailedDiskSaySo) {
             "Remeshed chart by chart, in 18 charts (as one disk it failed: the parameterization is not one-to-one "
             "(0 flipped and 27 collapsed of 5078 triangles))");
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["one_cut_failed"], r.chartTrial->oneCutFailed);
+  EXPECT_TRUE(toJson(r, RemeshOptions{})["chart_trial"]["one_cut_hausdorff_percent"].is_null());
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["kept"], "charts");
 }
 
