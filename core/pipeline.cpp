@@ -391,6 +391,24 @@ RemeshResult RemeshSession::finish() {
 
 namespace {
 
+// `attempt(options)`, and where it fails with the first pass, `attempt` without it, its
+// result's resampleDropped saying why (the last error where both fail). The first pass is an
+// improvement, not a need: where the run fails with it (every map of the resampled surface
+// collapses a part the cut's slits did not reach, as on CGAL's triceratops; or its seams do not
+// stitch, as on the turbine), it runs without. remesh()'s runs and startSession()'s sessions
+// alike.
+template <class Attempt>
+auto withOrWithoutFirstPass(const RemeshOptions& options, const std::string& name, Attempt attempt) {
+  if (!usesResampling(options)) return attempt(options);
+  try {
+    return attempt(options);
+  } catch (const Error& e) {
+    auto made = attempt(withoutResampling(options));
+    made.resampleDropped = problemOf(e, name);
+    return made;
+  }
+}
+
 // `started`, if given, is called with each session as soon as it is built (and its cut known).
 // `prepared`: as RemeshSession takes it.
 RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const std::string& name,
@@ -405,17 +423,7 @@ RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const s
     result.ms.total = total.lap();
     return result;
   };
-  if (!usesResampling(options)) return run(options);
-  try {
-    return run(options);
-  } catch (const Error& e) {
-    // The first pass is an improvement, not a need: where the run fails with it (every map of
-    // the resampled surface collapses a part the cut's slits did not reach, as on CGAL's
-    // triceratops; or its seams do not stitch, as on the turbine), it runs without.
-    RemeshResult result = run(withoutResampling(options));
-    result.resampleDropped = problemOf(e, name);
-    return result;
-  }
+  return withOrWithoutFirstPass(options, name, run);
 }
 
 // A part of the surface remeshed on its own (a chart, a component) added to the whole's counts
@@ -906,20 +914,14 @@ auto asItIsOrSimplified(const Mesh& input, const RemeshOptions& options, const s
 }  // namespace
 
 StartedSession startSession(const Mesh& input, const RemeshOptions& options, const std::string& name) {
-  // A session of `o`, else of `o` without the first pass where it has one (the last error where
-  // both fail, as remeshOnce throws).
-  const auto withAndWithoutFirstPass = [&](const RemeshOptions& o) -> StartedSession {
-    try {
-      return {std::make_unique<RemeshSession>(input, o, name), o, "", ""};
-    } catch (const Error& e) {
-      if (!usesResampling(o)) throw;
-      const RemeshOptions without = withoutResampling(o);
-      return {std::make_unique<RemeshSession>(input, without, name), without, problemOf(e, name), ""};
-    }
+  const auto session = [&](const RemeshOptions& o) -> StartedSession {
+    return {std::make_unique<RemeshSession>(input, o, name), o, "", ""};
   };
   // Several components: no try helps (a session steps one surface).
-  if (analyzeTopology(input).components > 1) return {std::make_unique<RemeshSession>(input, options, name), options, "", ""};
-  return asItIsOrSimplified(input, options, name, withAndWithoutFirstPass);
+  if (analyzeTopology(input).components > 1) return session(options);
+  return asItIsOrSimplified(input, options, name, [&](const RemeshOptions& o) {
+    return withOrWithoutFirstPass(o, name, session);
+  });
 }
 
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name) {
