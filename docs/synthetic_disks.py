@@ -13,7 +13,18 @@ wrong (docs/bench.md, "Synthetic disks"):
 - fan.off: a dome fanned from its apex, 200 slivers around one vertex of valence 200;
 - ribbon.off: a 50:1 strip, a few edge lengths wide at 500 vertices.
 
-The grids are jittered (their valences alternate 4 and 8): every vertex starts irregular.
+Six more, as other tools export surfaces (bench.md, "Synthetic disks", the last table):
+
+- hemisphere.off: a UV sphere's upper half, a fan of 64 around its pole, its rim a 64-gon;
+- saddle.off: a saddle over a polar grid, a fan of 48 at its centre, its rim a 48-gon that
+  rises and falls (coarser than the samples of a result at 500 vertices and more);
+- halfcylinder.off: half a cylinder as CAD exports it, 3 rows of 300 slivers (1:127);
+- lplate.off: an L-shaped plate, a corner of 270 degrees and five of 90;
+- crease.off: a terrain folded along a straight crease, its grid jittered;
+- spiral.off: a strip wound one and a half turns, 65 times as long as wide.
+
+The square grids alternate their diagonals (valences 4 and 8), and most are jittered too:
+every vertex starts irregular.
 """
 import math
 import os
@@ -133,6 +144,46 @@ def tent(u, v):
     return [u, v, 0.4 * math.exp(-(r / 0.06) ** 2)]
 
 
+def polar(rings, around, surface):
+    """`rings` rings of `around` vertices at radius k / rings around a centre vertex, on
+    surface(r, angle): the centre a fan of `around` triangles, the rim an `around`-gon."""
+    points = [surface(0.0, 0.0)]
+    for k in range(1, rings + 1):
+        points += [surface(k / rings, 2 * math.pi * j / around) for j in range(around)]
+    ring = lambda k, j: 1 + (k - 1) * around + j % around
+    triangles = [(0, ring(1, j), ring(1, j + 1)) for j in range(around)]
+    for k in range(1, rings):
+        for j in range(around):
+            a, b, c, d = ring(k, j), ring(k, j + 1), ring(k + 1, j + 1), ring(k + 1, j)
+            triangles += [(a, d, c), (a, c, b)]
+    return points, triangles
+
+
+def hemisphere(r, a):
+    t = r * math.pi / 2
+    return [math.sin(t) * math.cos(a), math.sin(t) * math.sin(a), math.cos(t)]
+
+
+def saddle(r, a):
+    x, y = r * math.cos(a), r * math.sin(a)
+    return [x, y, 0.5 * (x * x - y * y)]
+
+
+def lplate(n=60):
+    """An n x n grid on the unit square less its top right quarter, gently bumped."""
+    points, triangles = grid(n, n, lambda u, v: [u, v, 0.05 * math.sin(3 * u) * math.sin(3 * v)], jitter=0)
+    keep = [t for t in triangles
+            if not all(points[i][0] >= 0.5 - 1e-9 and points[i][1] >= 0.5 - 1e-9 for i in t)]
+    used = sorted({i for t in keep for i in t})
+    index = {old: new for new, old in enumerate(used)}
+    return [points[i] for i in used], [tuple(index[i] for i in t) for t in keep]
+
+
+def spiral(u, v):
+    radius = 1 + 1.5 * u + 0.3 * v
+    return [radius * math.cos(3 * math.pi * u), radius * math.sin(3 * math.pi * u), 0.1 * math.sin(10 * u)]
+
+
 def fan(n=200):
     """A low dome over the unit disk: its apex joined to each of n rim vertices."""
     rim = [[math.cos(2 * math.pi * i / n), math.sin(2 * math.pi * i / n), 0.0] for i in range(n)]
@@ -155,6 +206,14 @@ def main():
     write_off(os.path.join(out, "fan.off"), *fan())
     write_off(os.path.join(out, "ribbon.off"),
               *grid(100, 2, lambda u, v: [50 * u, v, 0.1 * math.sin(15 * u)]))
+    write_off(os.path.join(out, "hemisphere.off"), *polar(24, 64, hemisphere))
+    write_off(os.path.join(out, "saddle.off"), *polar(30, 48, saddle))
+    write_off(os.path.join(out, "halfcylinder.off"),
+              *grid(300, 3, lambda u, v: [math.cos(math.pi * u), math.sin(math.pi * u), 4 * v], jitter=0))
+    write_off(os.path.join(out, "lplate.off"), *lplate())
+    write_off(os.path.join(out, "crease.off"),
+              *grid(70, 70, lambda u, v: [u, v, 0.3 * abs(u - 0.5) + 0.05 * math.sin(8 * v)], jitter=0.15, seed=3))
+    write_off(os.path.join(out, "spiral.off"), *grid(300, 6, spiral, jitter=0))
 
 
 if __name__ == "__main__":
