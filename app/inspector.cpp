@@ -231,12 +231,15 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   // remesh() kept a nearly closed disk whole: so does Restart (a session makes one run).
   if (result_.slitTrial && result_.cut.seamEdges == 0) options_.slitDisks = false;
   noteFirst(slitTrialText(result_));
-  // Likewise a disk kept as remeshed without the first resampling.
+  // Likewise a disk kept as remeshed without the first resampling, or with the corners of its
+  // coarse border kept as samples.
   if (result_.firstPassTrial && result_.firstPassTrial->keptWithout) options_.resample = false;
+  if (result_.borderTrial && result_.borderTrial->keptWith) options_.sites.keptBorderPoints = result_.borderTrial->corners;
   // And an input simplified because it failed as it was.
   if (!result_.fullInputFailed.empty()) options_.simplifyTo = simplifiedAfterFailure_ = verticesAsked(options_);
   settings_ = options_;
   noteFirst(firstPassTrialText(result_));
+  noteFirst(borderTrialText(result_));
   noteFirst(fullInputFailedText(result_.fullInputFailed, options_.simplifyTo));
   noteFirst(coarseInputText(result_.coarseInput, result_.before.vertices));
   noteTheResult();
@@ -1421,6 +1424,7 @@ void Inspector::fileControls() {
       const std::string name = fileNameOf(meshPath_);
       settings_.slitDisks = asked_.slitDisks;  // not what remesh() chose for the previous mesh
       settings_.resample = asked_.resample;
+      settings_.sites.keptBorderPoints.clear();  // the last mesh's corners
       if (simplifiedAfterFailure_ > 0 && settings_.simplifyTo == simplifiedAfterFailure_) settings_.simplifyTo = 0;  // a typed one stays
       simplifiedAfterFailure_ = 0;
       try {

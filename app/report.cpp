@@ -321,6 +321,14 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                                  {"kept", r.firstPassTrial->keptWithout ? "without" : "with"},
                                                                  {"failed", r.firstPassTrial->failed}}
                                                : nlohmann::json()},
+          {"border_trial", r.borderTrial ? nlohmann::json{{"corners", r.borderTrial->corners.size()},
+                                                          {"without_bars_met", r.borderTrial->withoutBars},
+                                                          {"with_bars_met", r.borderTrial->withBars},
+                                                          {"without_hausdorff_percent", measuredOrNull(r.borderTrial->failed.empty(), r.borderTrial->withoutHausdorff)},
+                                                          {"with_hausdorff_percent", measuredOrNull(r.borderTrial->failed.empty(), r.borderTrial->withHausdorff)},
+                                                          {"kept", r.borderTrial->keptWith ? "with" : "without"},
+                                                          {"failed", r.borderTrial->failed}}
+                                         : nlohmann::json()},
           {"coarse_input_vertices", r.coarseInput},
           {"runs", r.runs},
           {"iterations", r.iterations},
@@ -424,6 +432,20 @@ std::string firstPassTrialText(const RemeshResult& r) {
          (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.withHausdorff) + "% and " +
                                     format("%.3f", t.withoutHausdorff) + "%"
                               : ": not more without");
+}
+
+std::string borderTrialText(const RemeshResult& r) {
+  if (!r.borderTrial) return "";
+  const BorderTrial& t = *r.borderTrial;
+  const std::string corners = std::to_string(t.corners.size()) + " corners of the input's coarse border";
+  if (!t.failed.empty())
+    return "Kept as sampled (its border cut off corners of the input's: remeshed with " + corners +
+           " kept too, which failed: " + t.failed + ")";
+  return std::string(t.keptWith ? "Kept with " + corners + " as border samples" : "Kept as sampled") +
+         " (its border cut off corners of the input's: remeshed with them kept too): Hausdorff " +
+         format("%.3f", t.withHausdorff) + "% with, " + format("%.3f", t.withoutHausdorff) +
+         "% without; bars met (irregular, smallest angle, average) " + std::to_string(t.withBars) + " and " +
+         std::to_string(t.withoutBars);
 }
 
 std::string fullInputFailedText(const std::string& problem, int vertices) {
@@ -730,6 +752,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << "\n";
   if (r.slitTrial) out << slitTrialText(r) << "\n";
   if (r.firstPassTrial) out << firstPassTrialText(r) << "\n";
+  if (r.borderTrial) out << borderTrialText(r) << "\n";
   if (r.coarseInput > 0) out << coarseInputText(r.coarseInput, r.before.vertices) << "\n";
   if (r.chartTrial) out << chartTrialText(r) << "\n";
   if (r.snappedTips > 0)

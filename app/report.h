@@ -113,6 +113,9 @@ std::string slitTrialText(const RemeshResult& r);
 // "Kept without the first resampling (...): bars met ... with, ... without; Hausdorff ..."
 // (RemeshResult::firstPassTrial), or "" if there was no such trial.
 std::string firstPassTrialText(const RemeshResult& r);
+// "Kept with N corners of the input's coarse border as border samples (...): Hausdorff ...% with,
+// ...% without; bars met ..." (RemeshResult::borderTrial), or "" if there was no such trial.
+std::string borderTrialText(const RemeshResult& r);
 // "Simplified to N vertices first (as --simplify N does), as the input as it is failed: <problem>"
 // (RemeshResult::fullInputFailed, `vertices` the sites asked), or "" for no problem.
 std::string fullInputFailedText(const std::string& problem, int vertices);

@@ -714,6 +714,51 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
   countTheOtherRun(kept, other);
 }
 
+// The disk remeshed again with the corners of the input's border that the kept result's border
+// cuts off kept as border samples (borderCornersCutOff), and that kept if BorderTrial::withBetter().
+// Only where the kept result is one disk, not slit open nor in charts (whose seams take their
+// own samples), made as the defaults make it (the polish after retriangulating, the border
+// resampled).
+void tryKeepingBorderCorners(RemeshResult& kept, const Mesh& input, const RemeshOptions& options,
+                             const std::string& name, const PreparedInput& prepared) {
+  if (options.polish <= 0 || options.method != RemeshMethod::Retriangulate || effective(options).sites.fromInputVertices ||
+      kept.cut.seamEdges > 0 || kept.charts > 0)
+    return;
+  std::vector<Vec3> corners = borderCornersCutOff(kept.output, prepared.search());
+  if (corners.empty()) return;
+  RemeshOptions again = options;
+  again.slitDisks = false;  // kept whole
+  if (!kept.resampleDropped.empty() || (kept.firstPassTrial && kept.firstPassTrial->keptWithout))
+    again = withoutResampling(again);
+  again.sites.keptBorderPoints = corners;
+  BorderTrial trial;
+  trial.corners = std::move(corners);
+  trial.withoutBars = barsMet(kept.after, kept.before);
+  RemeshResult other;
+  try {
+    other = remeshOnce(input, again, name, {}, &prepared);
+  } catch (const Error& e) {
+    trial.failed = problemOf(e, name);
+    kept.borderTrial = std::move(trial);
+    return;
+  }
+  trial.withBars = barsMet(other.after, other.before);
+  measureFidelityOf(kept, prepared);
+  measureFidelityOf(other, prepared);
+  trial.withoutHausdorff = kept.fidelity.hausdorffPercent;
+  trial.withHausdorff = other.fidelity.hausdorffPercent;
+  trial.keptWith = trial.withBetter();
+  if (trial.keptWith) {  // the first run's trials stand for this one's too
+    other.slitTrial = kept.slitTrial;
+    other.firstPassTrial = kept.firstPassTrial;
+    other.chartTrial = kept.chartTrial;
+    other.resampleDropped = kept.resampleDropped;
+    std::swap(kept, other);
+  }
+  kept.borderTrial = std::move(trial);
+  countTheOtherRun(kept, other);
+}
+
 // A disk is remeshed as one (remeshDisk), a surface of another topology cut open to one disk;
 // either is remeshed chart by chart too (tryCharts), a disk only where its map is not
 // conformal (not with a map or first pass the user chose: the charts need the automatic map);
@@ -750,6 +795,7 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
   if (disk && !oneCutFailed) tryWithoutFirstPass(kept, input, once, name, prepared);
   if (disk && chartsAllowed && !kept.chartTrial && barsMet(kept.after, kept.before) < 3)
     tryCharts(kept, input, options, name, prepared, /*forBars=*/true);
+  if (disk) tryKeepingBorderCorners(kept, input, once, name, prepared);
   kept.ms.simplify += simplifyMs;
   if (options.measureFidelity) measureFidelityOf(kept, prepared);
   else kept.fidelity = Fidelity{};  // a trial measured it to choose; the user asked for none

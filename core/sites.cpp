@@ -43,7 +43,8 @@ std::vector<double> angleSums(const Mesh& mesh) {
 
 // A border vertex is a corner of the surface where its angles sum to more than kSurfaceTurn
 // degrees from 180; a corner of the map where the border turns in the plane (isCorner); the
-// map's corners come first, scored kMapCorner plus the surface's turn.
+// map's corners come first, scored kMapCorner plus the surface's turn, then the points asked to
+// be kept (SiteOptions::keptBorderPoints), then the surface's.
 constexpr double kSurfaceTurn = 40.0, kMapCorner = 1000.0;
 
 // A corner closer than kCornersApart spacings to a kept one would make a short border edge (a
@@ -183,7 +184,12 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
   // Candidates, the domain's own corners before the surface's, sharper before blunter.
   std::vector<std::pair<double, int>> candidates;
   auto flag = [](const std::vector<bool>& f, int v) { return !f.empty() && f[v]; };
-  constexpr double kSeamNode = 3000.0;
+  constexpr double kSeamNode = 3000.0, kKeptPoint = 500.0;
+  const double samePoint = 1e-6 * boundingBoxDiagonal(mesh);
+  const auto kept = [&](int v) {
+    return std::any_of(options.keptBorderPoints.begin(), options.keptBorderPoints.end(),
+                       [&](const Vec3& p) { return (mesh.points[v] - p).norm() <= samePoint; });
+  };
   for (int i = 0; i < n; ++i) {
     const double turn = std::abs(angles[loop[i]] - 180.0);
     if (flag(options.seamNode, loop[i]))
@@ -192,6 +198,8 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
       continue;
     else if (isCorner(param.uv[loop[(i + n - 1) % n]], param.uv[loop[i]], param.uv[loop[(i + 1) % n]]))
       candidates.emplace_back(kMapCorner + turn, i);
+    else if (kept(loop[i]))
+      candidates.emplace_back(kKeptPoint, i);
     else if (turn > kSurfaceTurn)
       candidates.emplace_back(turn, i);
   }

@@ -32,6 +32,11 @@ struct SiteOptions {
   // Seams shared with another surface's samples (a chart's, with its spacing given): their
   // points must match exactly, so the border samples' points are InitialSites::fixedPoints.
   bool sharesSeams() const { return spacing > 0 && !onSeam.empty(); }
+  // Points of the input's border that stay samples: a border vertex of the surface sampled
+  // (the input, or its rough first remeshing) within a millionth of its diagonal of one is a
+  // corner, as a corner of the surface is (the corners a result's border cut off:
+  // borderCornersCutOff in core/metrics, and the pipeline's BorderTrial). Not on a seam.
+  std::vector<Vec3> keptBorderPoints;
 };
 
 struct InitialSites {

@@ -459,3 +459,19 @@ TEST(Quality, TheSmallestAngleBarIsWithinTheInputsReach) {
   result.irregularBoundaryAware = 100;  // and barsMet counts it
   EXPECT_EQ(barsMet(result, square), 1);
 }
+
+// A flat disk whose rim is a 16-gon, and a "result" of it whose rim is the 16-gon turned by half
+// a side: every corner of the input's rim is cut off (0.019 of the radius, 0.05 of a side),
+// nothing else is off. All 16 rim vertices are returned, as the input's border is as coarse as
+// the result's. An input rim of 64 sides is cut off the same way, but it is finer than the
+// result's border (its vertices would crowd the samples): nothing. A result on the input: nothing.
+TEST(Fidelity, TheCornersOfACoarseBorderThatAResultCutsOffAreFound) {
+  const Mesh coarse = test::polarDisk(16, 6), fine = test::polarDisk(64, 6);
+  const Mesh turned = test::polarDisk(16, 6, M_PI / 16);
+  const std::vector<Vec3> corners = borderCornersCutOff(turned, SearchableSurface(coarse));
+  ASSERT_EQ(corners.size(), 16u);
+  for (const Vec3& p : corners) EXPECT_NEAR(p.head<2>().norm(), 1.0, 1e-12);
+  EXPECT_TRUE(borderCornersCutOff(turned, SearchableSurface(fine)).empty());
+  EXPECT_TRUE(borderCornersCutOff(coarse, SearchableSurface(coarse)).empty());
+}
+

@@ -980,3 +980,28 @@ TEST(Pipeline, AFanTooLargeToSimplifyQuicklyIsRemeshedAsItIs) {
   EXPECT_EQ(r.coarseInput, 0);
   EXPECT_NO_THROW(validateMesh(r.output, "result"));
 }
+
+// A saddle over a polar grid whose rim is a 24-gon, coarser than the border of its result at 400
+// vertices: the result's border edges cut off the rim's corners, and that was its Hausdorff
+// distance (0.305% of the diagonal). Remeshed with the rim's 24 vertices kept as border samples
+// (BorderTrial) it is 0.142%, and every corner of the rim is a vertex of the result.
+TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
+  const Mesh saddle = test::polarDisk(24, 12, 0, [](double r, double a) { return 0.5 * r * r * std::cos(2 * a); });
+  RemeshOptions o;
+  o.sites.count = 400;
+  const RemeshResult r = remesh(saddle, o, "saddle");
+  ASSERT_TRUE(r.borderTrial.has_value());
+  EXPECT_TRUE(r.borderTrial->failed.empty()) << r.borderTrial->failed;
+  EXPECT_EQ(r.borderTrial->corners.size(), 24u);
+  EXPECT_TRUE(r.borderTrial->keptWith);
+  EXPECT_LT(r.borderTrial->withHausdorff, 0.8 * r.borderTrial->withoutHausdorff);
+  EXPECT_EQ(r.fidelity.hausdorffPercent, r.borderTrial->withHausdorff);
+  EXPECT_EQ(r.runs, 2);
+  for (int i = 0; i < 24; ++i) {
+    const Vec3& corner = saddle.points[saddle.vertexCount() - 24 + i];
+    double nearest = INFINITY;
+    for (const Vec3& p : r.output.points) nearest = std::min(nearest, (p - corner).norm());
+    EXPECT_LT(nearest, 1e-9) << "corner " << i;
+  }
+}
+

@@ -110,6 +110,33 @@ TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
                                    "too, which failed: m.off: the parameterization is not one-to-one)");
 }
 
+// The border trial's line and JSON say how many corners were kept and what each run gave.
+TEST(Report, TheBorderTrialSaysWhatEachRunGave) {
+  RemeshResult r;
+  EXPECT_EQ(borderTrialText(r), "");
+  EXPECT_TRUE(toJson(r, RemeshOptions{})["border_trial"].is_null());
+  r.borderTrial = BorderTrial{};
+  r.borderTrial->corners.assign(48, Vec3::Zero());
+  r.borderTrial->withBars = r.borderTrial->withoutBars = 3;
+  r.borderTrial->withHausdorff = 0.043;
+  r.borderTrial->withoutHausdorff = 0.134;
+  r.borderTrial->keptWith = true;
+  EXPECT_EQ(borderTrialText(r), "Kept with 48 corners of the input's coarse border as border samples (its border cut "
+                                "off corners of the input's: remeshed with them kept too): Hausdorff 0.043% with, "
+                                "0.134% without; bars met (irregular, smallest angle, average) 3 and 3");
+  nlohmann::json json = toJson(r, RemeshOptions{});
+  EXPECT_EQ(json["border_trial"]["corners"], 48);
+  EXPECT_EQ(json["border_trial"]["kept"], "with");
+  EXPECT_DOUBLE_EQ(json["border_trial"]["without_hausdorff_percent"].get<double>(), 0.134);
+  r.borderTrial->keptWith = false;
+  EXPECT_EQ(borderTrialText(r).rfind("Kept as sampled (", 0), 0u) << borderTrialText(r);
+  r.borderTrial->failed = "the parameterization is not one-to-one";
+  EXPECT_EQ(borderTrialText(r), "Kept as sampled (its border cut off corners of the input's: remeshed with 48 corners "
+                                "of the input's coarse border kept too, which failed: the parameterization is not "
+                                "one-to-one)");
+  EXPECT_TRUE(toJson(r, RemeshOptions{})["border_trial"]["with_hausdorff_percent"].is_null());
+}
+
 // The slit trial's line gives the distances where they decided (both runs met the three bars).
 TEST(Report, TheSlitTrialSaysWhereTheDistanceDecided) {
   RemeshResult r;

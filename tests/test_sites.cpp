@@ -93,6 +93,25 @@ TEST(Sites, TheBorderSamplesCoverTheMap) {
   EXPECT_GT(std::abs(polygonArea), 0.95 * mapArea) << border.size() << " samples";
 }
 
+// A border vertex asked to be kept (SiteOptions::keptBorderPoints: a corner a result cut off)
+// is a sample, where the even spacing puts none: the grid's side is sampled about every 0.07,
+// and (0.35, 0) is on no sample until asked.
+TEST(Sites, BorderPointsAskedForAreSamples) {
+  const Mesh grid = test::grid(20);
+  const Parameterization param = parameterize(grid, {ParamMethod::Tutte, Border::Square, {}}, "grid");
+  const Domain domain(param.uv, grid.triangles, vertexDensity(grid.triangles, std::vector<double>(grid.vertexCount(), 1.0)));
+  SiteOptions o;
+  o.count = 500;
+  const Vec3 corner(0.35, 0, 0);
+  const auto sampled = [&] {
+    const std::vector<Vec3> points = initialSites(grid, param, domain, o, "grid").fixedPoints;
+    return std::any_of(points.begin(), points.end(), [&](const Vec3& p) { return (p - corner).norm() < 1e-9; });
+  };
+  EXPECT_FALSE(sampled());
+  o.keptBorderPoints = {corner + Vec3(1e-8, 0, 0)};  // within a millionth of the diagonal
+  EXPECT_TRUE(sampled());
+}
+
 // Charts of one surface (core/charts) sample their shared borders at one spacing, whatever
 // their own number of sites: the unit square's border (length 4) at 0.1 is 40 samples.
 TEST(Sites, TheBorderSpacingCanBeGiven) {
