@@ -352,9 +352,6 @@ OneSided oneSided(const Mesh& from, const SurfaceProjection& to, int toFaces) {
   return all;
 }
 
-}  // namespace
-
-namespace {
 // each(a, b, length) for each edge of m's border.
 void forEachBorderEdge(const Mesh& m, const std::function<void(int, int, double)>& each) {
   std::set<std::pair<int, int>> halfEdges;
@@ -387,7 +384,8 @@ std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurfac
   // The border first: on most inputs nothing there strays, and nothing else is measured.
   const std::vector<bool> onBorder = vertexEdges(input.mesh).onBoundary;
   std::vector<Vec3> borderPoints, insidePoints;
-  for (int v = 0; v < input.mesh.vertexCount(); ++v) (onBorder[v] ? borderPoints : insidePoints).push_back(input.mesh.points[v]);
+  for (int v = 0; v < input.mesh.vertexCount(); ++v)
+    (onBorder[v] ? borderPoints : insidePoints).push_back(input.mesh.points[v]);
   const SurfaceProjection toResult(result);
   const std::vector<double> fromBorder = toResult.squaredDistances(borderPoints);
   const double border = fromBorder.empty() ? 0.0 : *std::max_element(fromBorder.begin(), fromBorder.end());

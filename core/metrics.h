@@ -118,11 +118,11 @@ Fidelity measureFidelity(const Mesh& mesh, const SearchableSurface& reference);
 // where its border is coarse (both border edges at least 0.7 of the result's mean border edge):
 // the corners to keep as samples. Cut off: an input border vertex farther from the result than
 // kCutOffBy times the farthest of the input's other vertices and of the result's triangle
-// centroids and edge midpoints from the input, and than 0.03 of the result's mean border edge. Where the input's border is coarser than the
-// result's and bends at its vertices (a saddle over a polar grid, its rim a 48-gon), the
-// result's border edge between two samples cuts each corner between them, and that is the
-// Hausdorff distance; CGAL's remesher keeps the input's border vertices. Empty where none is
-// cut off.
+// centroids and edge midpoints from the input, and than 0.03 of the result's mean border edge.
+// Where the input's border is coarser than the result's and bends at its vertices (a saddle
+// over a polar grid, its rim a 48-gon), the result's border edge between two samples cuts each
+// corner between them, and that is the Hausdorff distance; CGAL's remesher keeps the input's
+// border vertices. Empty where none is cut off.
 constexpr double kCutOffBy = 1.5;
 std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurface& input);
 

@@ -721,8 +721,8 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
 // resampled).
 void tryKeepingBorderCorners(RemeshResult& kept, const Mesh& input, const RemeshOptions& options,
                              const std::string& name, const PreparedInput& prepared) {
-  if (options.polish <= 0 || options.method != RemeshMethod::Retriangulate || effective(options).sites.fromInputVertices ||
-      kept.cut.seamEdges > 0 || kept.charts > 0)
+  if (options.polish <= 0 || options.method != RemeshMethod::Retriangulate ||
+      effective(options).sites.fromInputVertices || kept.cut.seamEdges > 0 || kept.charts > 0)
     return;
   std::vector<Vec3> corners = borderCornersCutOff(kept.output, prepared.search());
   if (corners.empty()) return;
