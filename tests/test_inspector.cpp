@@ -920,6 +920,16 @@ TEST(Inspector, AResultKeptAsOneDiskAfterChartsSaysSo) {
   EXPECT_GT(brownNotePixels(eight, test::tempPath("eight_notes.png")), 50);
 }
 
+// A disk remeshed again with its coarse border's corners kept as samples says so under the
+// table, as `remesh` does (a saddle whose rim is a 24-gon, at 400 vertices; at its own 289 it is
+// not remeshed again, and nothing is said).
+TEST(Inspector, AResultKeptWithItsBordersCornersSaysSo) {
+  const std::string saddle = test::tempPath("saddle24.off");
+  writeMesh(test::polarDisk(24, 12, 0, [](double r, double a) { return 0.5 * r * r * std::cos(2 * a); }), saddle);
+  EXPECT_EQ(brownNotePixels(saddle, test::tempPath("saddle_289.png")), 0);
+  EXPECT_GT(brownNotePixels(saddle + " --sites 400", test::tempPath("saddle_400.png")), 50);
+}
+
 // A pane's scissor and clear stay in the framebuffer: shrunk to 200x150 during a lesson, the
 // window laid its panes out below its foot, they were cleared there, and lavapipe crashed
 // ("corrupted size vs. prev_size"; reproduced under Xvfb twice, and not since).
