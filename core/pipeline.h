@@ -170,9 +170,12 @@ struct BorderTrial {
   std::string failed;  // not empty: the run with them failed (why), the first stands
 
   // The run with the corners kept is kept where it meets as many of the bars or more and is
-  // closer to the input (the saddle of docs/synthetic_disks.py at 1000 vertices: 0.134 ->
-  // 0.043% of the diagonal, CGAL's remesher 0.045%).
-  bool withBetter() const { return withBars >= withoutBars && withHausdorff < withoutHausdorff; }
+  // closer to the input by kCloserBy at least (the saddle of docs/synthetic_disks.py at 1000
+  // vertices: 0.134 -> 0.043% of the diagonal, CGAL's remesher 0.045%). Not where it is as far
+  // to the last bit: the same farthest point found again on a mesh that differs elsewhere
+  // (CGAL's blobby clipped at 30% along y, at 500 vertices).
+  static constexpr double kCloserBy = 0.99;
+  bool withBetter() const { return withBars >= withoutBars && withHausdorff < kCloserBy * withoutHausdorff; }
 };
 
 // remesh() takes kSmallestRemeshedShare (core/sites) vertices at least: fewer asked for a
