@@ -2,6 +2,7 @@
 
 #include "parallel.h"
 #include "projection.h"
+#include "topology.h"
 
 #include <Eigen/Cholesky>
 
@@ -9,9 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <functional>
 #include <map>
-#include <set>
 #include <numeric>
 #include <random>
 #include <thread>
@@ -352,20 +351,14 @@ OneSided oneSided(const Mesh& from, const SurfaceProjection& to, int toFaces) {
   return all;
 }
 
-// each(a, b, length) for each edge of m's border.
-void forEachBorderEdge(const Mesh& m, const std::function<void(int, int, double)>& each) {
-  std::set<std::pair<int, int>> halfEdges;
-  for (const Triangle& t : m.triangles)
-    for (int k = 0; k < 3; ++k) halfEdges.emplace(t[k], t[(k + 1) % 3]);
-  for (const auto& [a, b] : halfEdges)
-    if (!halfEdges.count({b, a})) each(a, b, (m.points[a] - m.points[b]).norm());
-}
-
 double meanBorderEdge(const Mesh& m) {
-  double sum = 0;
-  int count = 0;
-  forEachBorderEdge(m, [&](int, int, double length) { sum += length, ++count; });
-  return count > 0 ? sum / count : 0.0;
+  double length = 0;
+  size_t edges = 0;
+  for (const std::vector<int>& loop : analyzeTopology(m).boundaryLoops) {
+    length += loopLength(m, loop);
+    edges += loop.size();
+  }
+  return edges > 0 ? length / edges : 0.0;
 }
 
 // A corner is cut off where it is also farther than this many of the result's border edges
@@ -404,14 +397,11 @@ std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurfac
   const std::vector<double> fromChords = input.projection.squaredDistances(chordPoints);
   elsewhere = std::max(elsewhere, *std::max_element(fromChords.begin(), fromChords.end()));
   if (!(border > kCutOffBy * kCutOffBy * elsewhere)) return {};
-  std::vector<double> shorter(input.mesh.vertexCount(), std::numeric_limits<double>::infinity());
-  forEachBorderEdge(input.mesh, [&](int a, int b, double length) {
-    shorter[a] = std::min(shorter[a], length);
-    shorter[b] = std::min(shorter[b], length);
-  });
+  const Rings rings(input.mesh);
   std::vector<Vec3> cutOff;
   for (int v = 0; v < input.mesh.vertexCount(); ++v)
-    if (onBorder[v] && shorter[v] >= kCoarseBorder * spacing) cutOff.push_back(input.mesh.points[v]);
+    if (onBorder[v] && shorterBorderEdge(input.mesh, rings, v) >= kCoarseBorder * spacing)
+      cutOff.push_back(input.mesh.points[v]);
   return cutOff;
 }
 
