@@ -1,3 +1,4 @@
+#include "isotropic.h"
 #include "mesh_io.h"
 #include "pipeline.h"
 #include "simplify.h"
@@ -1020,3 +1021,22 @@ TEST(Pipeline, TheBorderTrialKeepsARunThatIsCloserNotOneAsFar) {
   EXPECT_FALSE(t.withBetter());
 }
 
+
+// A coarse input remeshed finer: CGAL's lion head as the bench makes it at 500 vertices,
+// remeshed to 1000. A thin fin's tip, 2.6% of the diagonal from the result, was refused a
+// snap: the relaxation around it left a 19-degree angle, and it was the Hausdorff distance
+// (2.645%, over CGAL's 2.205% at 1000). The snap's rings now have their small angles raised
+// before the check: 1.710%.
+TEST(Pipeline, ACoarseInputRemeshedFinerKeepsItsTipsAsCgalDoes) {
+  const std::string path = test::cgalSample("lion-head.off");
+  SKIP_UNLESS_EXTRACTED(path);
+  const Mesh input = benchInput(readMesh(path).mesh, 500, "lion-head");
+  RemeshOptions o;
+  o.sites.count = 1000;
+  const RemeshResult r = remesh(input, o, "lion-head");
+  IsotropicOptions cgal;
+  cgal.vertices = 1000;
+  EXPECT_LT(r.fidelity.hausdorffPercent, measureFidelity(isotropicRemesh(input, cgal).mesh, input).hausdorffPercent);
+  EXPECT_GE(r.after.minAngle, 30.0);
+  EXPECT_GT(r.snappedTips, 0);
+}
