@@ -21,6 +21,22 @@ void polishSeams(Mesh& m, const std::vector<bool>& seamVertex, const Mesh& surfa
   relaxOnSurface(m, withNeighbours(m, seamVertex), SurfaceProjection(surface), passes);
 }
 
+namespace {
+// The points of `surface` a coarser result may cut off: its vertices, and the midpoints of its
+// edges longer than `longer` (a crest between two vertices far apart, as a fin's).
+std::vector<Vec3> tipCandidates(const Mesh& surface, double longer) {
+  std::vector<Vec3> points = surface.points;
+  std::set<std::pair<int, int>> edges;
+  for (const Triangle& t : surface.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const auto edge = std::minmax(t[k], t[(k + 1) % 3]);
+      const Vec3 &a = surface.points[edge.first], &b = surface.points[edge.second];
+      if ((a - b).norm() > longer && edges.insert(edge).second) points.push_back(0.5 * (a + b));
+    }
+  return points;
+}
+}  // namespace
+
 std::vector<int> snapToTips(Mesh& m, const SearchableSurface& input, int rounds) {
   if (m.triangles.empty()) return {};
   const Mesh& surface = input.mesh;
@@ -34,13 +50,17 @@ std::vector<int> snapToTips(Mesh& m, const SearchableSurface& input, int rounds)
   // Each try relaxes a copy of the whole mesh: a bounded number per round, and a tip that
   // was refused is not tried again.
   constexpr int kTriesPerRound = 32;
-  std::vector<bool> snapped(m.vertexCount(), false), refused(surface.vertexCount(), false);
+  // Where the input is coarser than the result, the farthest point it cuts off may be on an
+  // edge: CGAL's lion head made at 500 vertices and remeshed to 2000 was farthest (1.95% of
+  // the diagonal; CGAL's 1.50%) on a fin's crest, 1.9% from its nearest vertex; 1.31% now.
+  const std::vector<Vec3> candidates = tipCandidates(surface, spacing);
+  std::vector<bool> snapped(m.vertexCount(), false), refused(candidates.size(), false);
   std::vector<int> snappedVertices;
   for (int round = 0; round < rounds; ++round) {
     const SurfaceProjection result(m);
-    std::vector<std::pair<double, int>> far;  // squared distance, input vertex
-    const std::vector<double> squared = result.squaredDistances(surface.points);
-    for (int i = 0; i < surface.vertexCount(); ++i)
+    std::vector<std::pair<double, int>> far;  // squared distance, candidate
+    const std::vector<double> squared = result.squaredDistances(candidates);
+    for (int i = 0; i < static_cast<int>(candidates.size()); ++i)
       if (squared[i] > 0.25 * spacing * spacing && !refused[i]) far.emplace_back(squared[i], i);
     if (far.empty()) break;
     std::sort(far.rbegin(), far.rend());
@@ -48,7 +68,7 @@ std::vector<int> snapToTips(Mesh& m, const SearchableSurface& input, int rounds)
     Rings rings(m);          // rebuilt when a snap changes the mesh
     for (const auto& [squared, i] : far) {
       if (static_cast<int>(tips.size()) == kTriesPerRound) break;
-      const Vec3& tip = surface.points[i];
+      const Vec3& tip = candidates[i];
       if (std::any_of(tips.begin(), tips.end(), [&](const Vec3& t) { return (t - tip).norm() < 2 * spacing; }))
         continue;
       tips.push_back(tip);

@@ -20,9 +20,10 @@ namespace lloydscope {
 void polishSeams(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh& surface, int passes);
 
 // Where a thin tip of the surface (a horn, a finger, an ear) ends between the result's vertices,
-// the result cuts it off, and the Hausdorff distance is what it cut. In each round the input
-// vertices farther than half an edge length from the result, farthest first and two edge
-// lengths apart (32 at most), each take the nearest inside corner of the result's triangle
+// the result cuts it off, and the Hausdorff distance is what it cut. In each round the input's
+// vertices, and the midpoints of its edges longer than the result's mean edge, that are farther
+// than half an edge length from the result, farthest first and two edge lengths apart (32 at
+// most), each take the nearest inside corner of the result's triangle
 // closest to them, which is snapped there and stays while the two rings around it relax on
 // `surface` (as polishSeams does, flipping only there; where that leaves an angle too small,
 // their small angles are raised as raiseSmallAngles does). A snap is made if it turns none of the

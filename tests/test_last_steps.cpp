@@ -519,3 +519,25 @@ TEST(LastSteps, NothingIsSnappedWhereTheResultFollowsTheInput) {
   EXPECT_EQ(result.points, input.points);
   EXPECT_EQ(result.triangles, input.triangles);
 }
+
+// A coarse input: a roof of six triangles whose crest runs between two tips 0.8 apart, and a
+// finer result (a 7 x 7 grid put onto it) that cuts the crest between its vertices. The tips
+// are snapped to as input vertices; the crest's midpoint, on no input vertex, is a candidate
+// as the midpoint of an edge longer than the result's, and a vertex is snapped there too.
+TEST(LastSteps, AVertexIsSnappedOntoTheCrestOfACoarseInput) {
+  Mesh input;
+  input.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.1, 0.5, 0.3}, {0.9, 0.5, 0.3}};
+  input.triangles = {{0, 1, 5}, {0, 5, 4}, {1, 2, 5}, {2, 3, 4}, {2, 4, 5}, {3, 0, 4}};
+  Mesh result = test::grid(7);
+  const SurfaceProjection onInput(input);
+  for (Vec3& p : result.points) p = onInput.closestPoint(p);
+  const double before = measureFidelity(result, input).hausdorffPercent;
+  EXPECT_EQ(snapToTips(result, input).size(), 3u);
+  EXPECT_NO_THROW(validateMesh(result, "snapped"));
+  for (const Vec3& snappedTo : {input.points[4], input.points[5], Vec3(0.5, 0.5, 0.3)})
+    EXPECT_TRUE(std::any_of(result.points.begin(), result.points.end(),
+                            [&](const Vec3& p) { return (p - snappedTo).norm() < 1e-12; }))
+        << snappedTo.transpose();
+  EXPECT_LT(measureFidelity(result, input).hausdorffPercent, 0.5 * before);
+  EXPECT_GE(measureQuality(result).minAngle, 30.0);
+}
