@@ -23,13 +23,13 @@ void polishSeams(Mesh& stitched, const std::vector<bool>& seamVertex, const Mesh
 // the result cuts it off, and the Hausdorff distance is what it cut. In each round the input's
 // vertices, and the midpoints of its edges longer than the result's mean edge, that are farther
 // than half an edge length from the result, farthest first and two edge lengths apart (32 at
-// most), each take the nearest inside corner of the result's triangle
-// closest to them, which is snapped there and stays while the two rings around it relax on
-// `surface` (as polishSeams does, flipping only there; where that leaves an angle too small,
-// their small angles are raised as raiseSmallAngles does). A snap is made if it turns none of the
-// vertex's triangles over, and kept if the smallest angle of the triangles around stays at the
-// lesser of the mesh's smallest angle and 30 degrees, or, whatever the angles, if the tip was
-// more than an edge length away. A refused tip is not tried again. Returns the vertices snapped.
+// most), each take the nearest inside corner of the result's triangle closest to them, which is
+// snapped there and stays while the two rings around it relax on `surface` (as polishSeams
+// does, flipping only there; where that leaves an angle too small, their small angles are
+// raised as raiseSmallAngles does). A snap is made if it turns none of the vertex's triangles
+// over, and kept if the smallest angle of the triangles around stays at the lesser of the
+// mesh's smallest angle and 30 degrees, or, whatever the angles, if the tip was more than an
+// edge length away. A refused tip is not tried again. Returns the vertices snapped.
 std::vector<int> snapToTips(Mesh& result, const SearchableSurface& surface, int rounds = 3);
 
 // Valence moves on a finished surface that flipToRegularity() cannot make: one flip, or up to

@@ -1021,7 +1021,6 @@ TEST(Pipeline, TheBorderTrialKeepsARunThatIsCloserNotOneAsFar) {
   EXPECT_FALSE(t.withBetter());
 }
 
-
 // A coarse input remeshed finer: CGAL's lion head as the bench makes it at 500 vertices,
 // remeshed to 1000 and 2000, is as close to it as CGAL's remesher makes it. At 1000 a thin
 // fin's tip, 2.6% of the diagonal from the result, was refused a snap: the relaxation around
