@@ -26,13 +26,10 @@ namespace {
 // edges longer than `longer` (a crest between two vertices far apart, as a fin's).
 std::vector<Vec3> tipCandidates(const Mesh& surface, double longer) {
   std::vector<Vec3> points = surface.points;
-  std::set<std::pair<int, int>> edges;
-  for (const Triangle& t : surface.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const auto edge = std::minmax(t[k], t[(k + 1) % 3]);
-      const Vec3 &a = surface.points[edge.first], &b = surface.points[edge.second];
-      if ((a - b).norm() > longer && edges.insert(edge).second) points.push_back(0.5 * (a + b));
-    }
+  for (const MeshEdge& e : uniqueEdges(surface)) {
+    const Vec3 &a = surface.points[e.from], &b = surface.points[e.to];
+    if ((a - b).norm() > longer) points.push_back(0.5 * (a + b));
+  }
   return points;
 }
 }  // namespace

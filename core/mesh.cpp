@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 namespace lloydscope {
 
@@ -21,6 +22,22 @@ Mesh assemble(const std::vector<Triangle>& triangles, const std::vector<Vec3>& p
   for (const Triangle& t : triangles)
     output.triangles.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
   return output;
+}
+
+std::vector<MeshEdge> uniqueEdges(const Mesh& mesh) {
+  std::vector<MeshEdge> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto [from, to] = std::minmax(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
+      edges.push_back({from, to, static_cast<int>(f)});
+    }
+  const auto key = [](const MeshEdge& e) { return std::make_tuple(e.from, e.to, e.triangle); };
+  std::sort(edges.begin(), edges.end(), [&](const MeshEdge& a, const MeshEdge& b) { return key(a) < key(b); });
+  edges.erase(std::unique(edges.begin(), edges.end(),
+                          [](const MeshEdge& a, const MeshEdge& b) { return a.from == b.from && a.to == b.to; }),
+              edges.end());
+  return edges;
 }
 
 VertexEdges vertexEdges(const Mesh& mesh) {

@@ -46,6 +46,13 @@ struct VertexEdges {
 };
 VertexEdges vertexEdges(const Mesh& mesh);
 
+// Each edge once, the border's too, its smaller end first, in order, with the first triangle
+// that has it.
+struct MeshEdge {
+  int from, to, triangle;
+};
+std::vector<MeshEdge> uniqueEdges(const Mesh& mesh);
+
 // The mesh of `triangles` over `points`, keeping only the points some triangle uses (a site on
 // top of another, outside the domain, or a vertex of no face in a file, has none), numbered in
 // order. `kept`, if given, receives for each output vertex the index of its point.

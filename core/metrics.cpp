@@ -198,28 +198,20 @@ Samples samplePoints(const Mesh& mesh, int randomCount) {
   Samples samples;
   samples.points = mesh.points;
   samples.triangle.assign(mesh.points.size(), 0);
-  std::vector<std::pair<std::pair<int, int>, int>> edges;  // each edge with a triangle of it
-  edges.reserve(3 * mesh.triangles.size());
   std::vector<double> cumulative;
   cumulative.reserve(mesh.triangles.size());
   double total = 0;
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      samples.triangle[t[k]] = static_cast<int>(f);
-      edges.push_back({std::minmax(t[k], t[(k + 1) % 3]), static_cast<int>(f)});
-    }
+    for (int v : t) samples.triangle[v] = static_cast<int>(f);
     total += triangleArea(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
     cumulative.push_back(total);
   }
   // Each edge once, the border's too (taken where a triangle ran it from its smaller end, half
   // of the border's edges were never sampled).
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
-              edges.end());
-  for (const auto& [edge, f] : edges) {
-    samples.points.push_back(0.5 * (mesh.points[edge.first] + mesh.points[edge.second]));
-    samples.triangle.push_back(f);
+  for (const MeshEdge& e : uniqueEdges(mesh)) {
+    samples.points.push_back(0.5 * (mesh.points[e.from] + mesh.points[e.to]));
+    samples.triangle.push_back(e.triangle);
   }
   std::mt19937_64 rng(12345);
   auto uniform01 = [&] { return (rng() >> 11) * 0x1.0p-53; };
@@ -390,10 +382,9 @@ std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurfac
   double elsewhere = fromInside.empty() ? 0.0 : *std::max_element(fromInside.begin(), fromInside.end());
   if (!(border > kCutOffBy * kCutOffBy * elsewhere)) return {};
   std::vector<Vec3> chordPoints;
-  for (const Triangle& t : result.triangles) {
+  for (const Triangle& t : result.triangles)
     chordPoints.push_back((result.points[t[0]] + result.points[t[1]] + result.points[t[2]]) / 3);
-    for (int k = 0; k < 3; ++k) chordPoints.push_back((result.points[t[k]] + result.points[t[(k + 1) % 3]]) / 2);
-  }
+  for (const MeshEdge& e : uniqueEdges(result)) chordPoints.push_back((result.points[e.from] + result.points[e.to]) / 2);
   const std::vector<double> fromChords = input.projection.squaredDistances(chordPoints);
   elsewhere = std::max(elsewhere, *std::max_element(fromChords.begin(), fromChords.end()));
   if (!(border > kCutOffBy * kCutOffBy * elsewhere)) return {};
