@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <set>
 #include <thread>
 
 namespace lloydscope {
@@ -362,31 +363,44 @@ constexpr double kCutOffStray = 0.03;
 // vertices: 0.134 -> 0.068%, all of its rim's vertices: 0.043%). Coarse: both border edges at
 // least this many of the result's mean border edge, as far apart as core/sites keeps corners.
 constexpr double kCoarseBorder = 0.7;
+
+double largest(const std::vector<double>& values) {
+  return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+}
 }  // namespace
 
 std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurface& input) {
   if (result.triangles.empty() || input.mesh.triangles.empty()) return {};
-  // The border first: on most inputs nothing there strays, and nothing else is measured.
+  // The border first: on most inputs nothing there strays, and nothing else is measured. A
+  // convex corner cut off is an input border vertex far from the result; a reflex one, the
+  // result's border chord across it, far from the input.
   const std::vector<bool> onBorder = vertexEdges(input.mesh).onBoundary;
   std::vector<Vec3> borderPoints, insidePoints;
   for (int v = 0; v < input.mesh.vertexCount(); ++v)
     (onBorder[v] ? borderPoints : insidePoints).push_back(input.mesh.points[v]);
+  std::set<std::pair<int, int>> resultBorder;
+  std::vector<Vec3> borderChords;
+  for (const std::vector<int>& loop : analyzeTopology(result).boundaryLoops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      resultBorder.insert(std::minmax(a, b));
+      borderChords.push_back((result.points[a] + result.points[b]) / 2);
+    }
   const SurfaceProjection toResult(result);
-  const std::vector<double> fromBorder = toResult.squaredDistances(borderPoints);
-  const double border = fromBorder.empty() ? 0.0 : *std::max_element(fromBorder.begin(), fromBorder.end());
+  const double border = std::max(largest(toResult.squaredDistances(borderPoints)),
+                                 largest(input.projection.squaredDistances(borderChords)));
   const double spacing = meanBorderEdge(result);
   if (!(border > kCutOffStray * kCutOffStray * spacing * spacing)) return {};
-  // Then the input's other vertices, and last the result's chords, each only where the border
-  // still strays farther than kCutOffBy times what was found.
-  const std::vector<double> fromInside = toResult.squaredDistances(insidePoints);
-  double elsewhere = fromInside.empty() ? 0.0 : *std::max_element(fromInside.begin(), fromInside.end());
+  // Then the input's other vertices, and last the result's other chords, each only where the
+  // border still strays farther than kCutOffBy times what was found.
+  double elsewhere = largest(toResult.squaredDistances(insidePoints));
   if (!(border > kCutOffBy * kCutOffBy * elsewhere)) return {};
   std::vector<Vec3> chordPoints;
   for (const Triangle& t : result.triangles)
     chordPoints.push_back((result.points[t[0]] + result.points[t[1]] + result.points[t[2]]) / 3);
-  for (const MeshEdge& e : uniqueEdges(result)) chordPoints.push_back((result.points[e.from] + result.points[e.to]) / 2);
-  const std::vector<double> fromChords = input.projection.squaredDistances(chordPoints);
-  elsewhere = std::max(elsewhere, *std::max_element(fromChords.begin(), fromChords.end()));
+  for (const MeshEdge& e : uniqueEdges(result))
+    if (!resultBorder.count({e.from, e.to})) chordPoints.push_back((result.points[e.from] + result.points[e.to]) / 2);
+  elsewhere = std::max(elsewhere, largest(input.projection.squaredDistances(chordPoints)));
   if (!(border > kCutOffBy * kCutOffBy * elsewhere)) return {};
   const Rings rings(input.mesh);
   std::vector<Vec3> cutOff;

@@ -116,13 +116,15 @@ Fidelity measureFidelity(const Mesh& mesh, const SearchableSurface& reference);
 
 // Where the result's border cuts off corners of the input's border, the input's border vertices
 // where its border is coarse (both border edges at least 0.7 of the result's mean border edge):
-// the corners to keep as samples. Cut off: an input border vertex farther from the result than
-// kCutOffBy times the farthest of the input's other vertices and of the result's triangle
-// centroids and edge midpoints from the input, and than 0.03 of the result's mean border edge.
-// Where the input's border is coarser than the result's and bends at its vertices (a saddle
-// over a polar grid, its rim a 48-gon), the result's border edge between two samples cuts each
-// corner between them, and that is the Hausdorff distance; CGAL's remesher keeps the input's
-// border vertices. Empty where none is cut off.
+// the corners to keep as samples. Cut off: an input border vertex (a convex corner), or the
+// midpoint of a border edge of the result (its chord across a reflex corner), farther from the
+// other mesh than kCutOffBy times the farthest of the input's other vertices and of the
+// result's triangle centroids and inside edge midpoints from the input, and than 0.03 of the
+// result's mean border edge. Where the input's border is coarser than the result's and bends
+// at its vertices (a saddle over a polar grid, its rim a 48-gon; a part's rim clipped by a
+// plane), the result's border edge between two samples cuts each corner between them, and that
+// is the Hausdorff distance; CGAL's remesher keeps the input's border vertices. Empty where
+// none is cut off.
 constexpr double kCutOffBy = 1.5;
 std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurface& input);
 

@@ -475,3 +475,27 @@ TEST(Fidelity, TheCornersOfACoarseBorderThatAResultCutsOffAreFound) {
   EXPECT_TRUE(borderCornersCutOff(coarse, SearchableSurface(coarse)).empty());
 }
 
+// The other way round: a flat star whose rim alternates between radius 1 and 0.9, 16 corners,
+// the eight at 0.9 reflex; a "result" of it whose rim has the eight convex corners and the
+// midpoints of the rim's edges, so that its border chord crosses each reflex corner outside the
+// input (0.012 of the radius, 0.05 of the result's mean border edge). No input vertex is off
+// the result; the chords are. All 16 rim vertices are returned.
+TEST(Fidelity, TheReflexCornersOfACoarseBorderThatAResultCutsAcrossAreFound) {
+  const auto rim = [](int i) {
+    const double a = M_PI / 8 * i, r = i % 2 ? 0.9 : 1.0;
+    return Vec3(r * std::cos(a), r * std::sin(a), 0);
+  };
+  const Mesh star = test::polarGrid(6, 16, true, Vec3::Zero(), [&](int k, int i) -> Vec3 { return rim(i) * k / 6; });
+  std::vector<Vec3> cutAcross;  // a convex corner, the midpoints of the two edges of the reflex one after it
+  for (int i = 0; i < 16; i += 2) {
+    cutAcross.push_back(rim(i));
+    cutAcross.push_back((rim(i) + rim(i + 1)) / 2);
+    cutAcross.push_back((rim(i + 1) + rim(i + 2)) / 2);
+  }
+  const Mesh result = test::polarGrid(4, 24, true, Vec3::Zero(), [&](int k, int i) -> Vec3 { return cutAcross[i] * k / 4; });
+  const std::vector<Vec3> corners = borderCornersCutOff(result, SearchableSurface(star));
+  ASSERT_EQ(corners.size(), 16u);
+  for (int i = 0; i < 16; ++i) EXPECT_NEAR((corners[i] - rim(i)).norm(), 0.0, 1e-12);
+  EXPECT_TRUE(borderCornersCutOff(star, SearchableSurface(star)).empty());
+}
+

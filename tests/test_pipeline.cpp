@@ -1006,6 +1006,33 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
   }
 }
 
+// A flat eight-pointed star, its rim a 16-gon alternating between radius 1 and 0.87: its eight
+// points (turning by 61 degrees) stay samples as any sharp corner does, but the eight reflex
+// corners between them turn by 16 degrees only, and the result's border chords at 400 vertices
+// crossed them outside the input (0.123% of the diagonal). No input vertex is off the result,
+// so only the chords tell (borderCornersCutOff). With the rim's 16 vertices kept as samples,
+// every one is a vertex of the result and it lies on the input.
+TEST(Pipeline, TheReflexCornersOfACoarseBorderThatTheResultCutsAcrossAreSampled) {
+  const auto rim = [](int i) -> Vec3 {
+    const double a = M_PI / 8 * i, r = i % 2 ? 0.87 : 1.0;
+    return Vec3(r * std::cos(a), r * std::sin(a), 0);
+  };
+  const Mesh star = test::polarGrid(10, 16, true, Vec3::Zero(), [&](int k, int i) -> Vec3 { return rim(i) * k / 10; });
+  RemeshOptions o;
+  o.sites.count = 400;
+  const RemeshResult r = remesh(star, o, "star");
+  ASSERT_TRUE(r.borderTrial.has_value());
+  EXPECT_EQ(r.borderTrial->corners.size(), 16u);
+  EXPECT_TRUE(r.borderTrial->keptWith);
+  EXPECT_GT(r.borderTrial->withoutHausdorff, 0.1);
+  EXPECT_LT(r.fidelity.hausdorffPercent, 1e-9);
+  for (int i = 0; i < 16; ++i) {
+    double nearest = INFINITY;
+    for (const Vec3& p : r.output.points) nearest = std::min(nearest, (p - rim(i)).norm());
+    EXPECT_LT(nearest, 1e-9) << "corner " << i;
+  }
+}
+
 // The run with the corners kept is kept where it meets as many bars and is closer by 1% at
 // least: on CGAL's blobby clipped at 30% along y, at 500 vertices, both runs' farthest point was
 // the same, its distances 1 bit apart, and the second run was kept for that.
