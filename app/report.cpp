@@ -439,10 +439,10 @@ std::string borderTrialText(const RemeshResult& r) {
   const BorderTrial& t = *r.borderTrial;
   const std::string corners = std::to_string(t.corners.size()) + " corners of the input's coarse border";
   if (!t.failed.empty())
-    return "Kept as sampled (its border cut off corners of the input's: remeshed with " + corners +
+    return "Kept as sampled (its border cut corners of the input's: remeshed with " + corners +
            " kept too, which failed: " + t.failed + ")";
   return std::string(t.keptWith ? "Kept with " + corners + " as border samples" : "Kept as sampled") +
-         " (its border cut off corners of the input's: remeshed with them kept too): Hausdorff " +
+         " (its border cut corners of the input's: remeshed with them kept too): Hausdorff " +
          format("%.3f", t.withHausdorff) + "% with, " + format("%.3f", t.withoutHausdorff) +
          "% without; bars met (irregular, smallest angle, average) " + std::to_string(t.withBars) + " and " +
          std::to_string(t.withoutBars);

@@ -369,7 +369,7 @@ double largest(const std::vector<double>& values) {
 }
 }  // namespace
 
-std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurface& input) {
+std::vector<Vec3> borderCornersCut(const Mesh& result, const SearchableSurface& input) {
   if (result.triangles.empty() || input.mesh.triangles.empty()) return {};
   // The border first: on most inputs nothing there strays, and nothing else is measured. A
   // convex corner cut off is an input border vertex far from the result; a reflex one, the

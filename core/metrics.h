@@ -114,9 +114,9 @@ Fidelity measureFidelity(const Mesh& mesh, const Mesh& reference);
 // against one: the trials of a run).
 Fidelity measureFidelity(const Mesh& mesh, const SearchableSurface& reference);
 
-// Where the result's border cuts off corners of the input's border, the input's border vertices
+// Where the result's border cuts corners of the input's border, the input's border vertices
 // where its border is coarse (both border edges at least 0.7 of the result's mean border edge):
-// the corners to keep as samples. Cut off: an input border vertex (a convex corner), or the
+// the corners to keep as samples. Cut: an input border vertex (a convex corner cut off), or the
 // midpoint of a border edge of the result (its chord across a reflex corner), farther from the
 // other mesh than kCutOffBy times the farthest of the input's other vertices and of the
 // result's triangle centroids and inside edge midpoints from the input, and than 0.03 of the
@@ -124,9 +124,11 @@ Fidelity measureFidelity(const Mesh& mesh, const SearchableSurface& reference);
 // at its vertices (a saddle over a polar grid, its rim a 48-gon; a part's rim clipped by a
 // plane), the result's border edge between two samples cuts each corner between them, and that
 // is the Hausdorff distance; CGAL's remesher keeps the input's border vertices. Empty where
-// none is cut off.
+// none is cut. The reflex corners' chords, once counted, brought 9 of 287 disks clipped from
+// CGAL's samples at 1000 vertices under CGAL's distance (the six caps of a coarse sphere:
+// 0.19-0.25% of the diagonal, CGAL's 0.11-0.17%; 0.09-0.13% with the rim's vertices kept).
 constexpr double kCutOffBy = 1.5;
-std::vector<Vec3> borderCornersCutOff(const Mesh& result, const SearchableSurface& input);
+std::vector<Vec3> borderCornersCut(const Mesh& result, const SearchableSurface& input);
 
 // The three corner angles of a triangle, in degrees.
 std::array<double, 3> cornerAnglesDeg(const Vec3& a, const Vec3& b, const Vec3& c);

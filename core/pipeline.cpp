@@ -715,7 +715,7 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
 }
 
 // The disk remeshed again with the corners of the input's border that the kept result's border
-// cuts off kept as border samples (borderCornersCutOff), and that kept if BorderTrial::withBetter().
+// cuts off kept as border samples (borderCornersCut), and that kept if BorderTrial::withBetter().
 // Only where the kept result is one disk, not slit open nor in charts (whose seams take their
 // own samples), made as the defaults make it (the polish after retriangulating, the border
 // resampled).
@@ -724,7 +724,7 @@ void tryKeepingBorderCorners(RemeshResult& kept, const Mesh& input, const Remesh
   if (options.polish <= 0 || options.method != RemeshMethod::Retriangulate ||
       effective(options).sites.fromInputVertices || kept.cut.seamEdges > 0 || kept.charts > 0)
     return;
-  std::vector<Vec3> corners = borderCornersCutOff(kept.output, prepared.search());
+  std::vector<Vec3> corners = borderCornersCut(kept.output, prepared.search());
   if (corners.empty()) return;
   RemeshOptions again = options;
   again.slitDisks = false;  // kept whole

@@ -158,10 +158,11 @@ struct FirstPassTrial {
   bool distancesDecide() const { return withoutBars > withBars; }
 };
 
-// A disk whose result's border cuts off corners of the input's border (borderCornersCutOff in
-// core/metrics: the input's border coarser than the result's, and bending at its vertices) is
-// remeshed again with those corners kept as border samples (SiteOptions::keptBorderPoints), in
-// the rough first pass and in the run. What each run gave.
+// A disk whose result's border cuts corners of the input's border (borderCornersCut in
+// core/metrics: the input's border coarser than the result's, and bending at its vertices, off
+// the convex ones, across the reflex ones) is remeshed again with those corners kept as border
+// samples (SiteOptions::keptBorderPoints), in the rough first pass and in the run. What each
+// run gave.
 struct BorderTrial {
   std::vector<Vec3> corners;  // the input's border vertices kept as samples
   int withoutBars = 0, withBars = 0;  // bars met (barsMet), without the corners kept and with

@@ -468,11 +468,11 @@ TEST(Quality, TheSmallestAngleBarIsWithinTheInputsReach) {
 TEST(Fidelity, TheCornersOfACoarseBorderThatAResultCutsOffAreFound) {
   const Mesh coarse = test::polarDisk(16, 6), fine = test::polarDisk(64, 6);
   const Mesh turned = test::polarDisk(16, 6, M_PI / 16);
-  const std::vector<Vec3> corners = borderCornersCutOff(turned, SearchableSurface(coarse));
+  const std::vector<Vec3> corners = borderCornersCut(turned, SearchableSurface(coarse));
   ASSERT_EQ(corners.size(), 16u);
   for (const Vec3& p : corners) EXPECT_NEAR(p.head<2>().norm(), 1.0, 1e-12);
-  EXPECT_TRUE(borderCornersCutOff(turned, SearchableSurface(fine)).empty());
-  EXPECT_TRUE(borderCornersCutOff(coarse, SearchableSurface(coarse)).empty());
+  EXPECT_TRUE(borderCornersCut(turned, SearchableSurface(fine)).empty());
+  EXPECT_TRUE(borderCornersCut(coarse, SearchableSurface(coarse)).empty());
 }
 
 // The other way round: a flat star whose rim alternates between radius 1 and 0.9, 16 corners,
@@ -493,9 +493,9 @@ TEST(Fidelity, TheReflexCornersOfACoarseBorderThatAResultCutsAcrossAreFound) {
     cutAcross.push_back((rim(i + 1) + rim(i + 2)) / 2);
   }
   const Mesh result = test::polarGrid(4, 24, true, Vec3::Zero(), [&](int k, int i) -> Vec3 { return cutAcross[i] * k / 4; });
-  const std::vector<Vec3> corners = borderCornersCutOff(result, SearchableSurface(star));
+  const std::vector<Vec3> corners = borderCornersCut(result, SearchableSurface(star));
   ASSERT_EQ(corners.size(), 16u);
   for (int i = 0; i < 16; ++i) EXPECT_NEAR((corners[i] - rim(i)).norm(), 0.0, 1e-12);
-  EXPECT_TRUE(borderCornersCutOff(star, SearchableSurface(star)).empty());
+  EXPECT_TRUE(borderCornersCut(star, SearchableSurface(star)).empty());
 }
 

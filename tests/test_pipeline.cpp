@@ -1010,7 +1010,7 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
 // points (turning by 61 degrees) stay samples as any sharp corner does, but the eight reflex
 // corners between them turn by 16 degrees only, and the result's border chords at 400 vertices
 // crossed them outside the input (0.123% of the diagonal). No input vertex is off the result,
-// so only the chords tell (borderCornersCutOff). With the rim's 16 vertices kept as samples,
+// so only the chords tell (borderCornersCut). With the rim's 16 vertices kept as samples,
 // every one is a vertex of the result and it lies on the input.
 TEST(Pipeline, TheReflexCornersOfACoarseBorderThatTheResultCutsAcrossAreSampled) {
   const auto rim = [](int i) -> Vec3 {

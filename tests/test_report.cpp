@@ -122,7 +122,7 @@ TEST(Report, TheBorderTrialSaysWhatEachRunGave) {
   r.borderTrial->withoutHausdorff = 0.134;
   r.borderTrial->keptWith = true;
   EXPECT_EQ(borderTrialText(r), "Kept with 48 corners of the input's coarse border as border samples (its border cut "
-                                "off corners of the input's: remeshed with them kept too): Hausdorff 0.043% with, "
+                                "corners of the input's: remeshed with them kept too): Hausdorff 0.043% with, "
                                 "0.134% without; bars met (irregular, smallest angle, average) 3 and 3");
   nlohmann::json json = toJson(r, RemeshOptions{});
   EXPECT_EQ(json["border_trial"]["corners"], 48);
@@ -131,7 +131,7 @@ TEST(Report, TheBorderTrialSaysWhatEachRunGave) {
   r.borderTrial->keptWith = false;
   EXPECT_EQ(borderTrialText(r).rfind("Kept as sampled (", 0), 0u) << borderTrialText(r);
   r.borderTrial->failed = "the parameterization is not one-to-one";
-  EXPECT_EQ(borderTrialText(r), "Kept as sampled (its border cut off corners of the input's: remeshed with 48 corners "
+  EXPECT_EQ(borderTrialText(r), "Kept as sampled (its border cut corners of the input's: remeshed with 48 corners "
                                 "of the input's coarse border kept too, which failed: the parameterization is not "
                                 "one-to-one)");
   EXPECT_TRUE(toJson(r, RemeshOptions{})["border_trial"]["with_hausdorff_percent"].is_null());
