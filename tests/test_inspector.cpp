@@ -921,13 +921,17 @@ TEST(Inspector, AResultKeptAsOneDiskAfterChartsSaysSo) {
 }
 
 // A disk remeshed again with its coarse border's corners kept as samples says so under the
-// table, as `remesh` does (a saddle whose rim is a 24-gon, at 400 vertices; at its own 289 it is
-// not remeshed again, and nothing is said).
+// table, as `remesh` does (a saddle whose rim is a 24-gon, at 400 vertices). The same saddle
+// with a rim of 96 sides, finer than the result's border, is not remeshed again, and nothing is
+// said.
 TEST(Inspector, AResultKeptWithItsBordersCornersSaysSo) {
-  const std::string saddle = test::tempPath("saddle24.off");
-  writeMesh(test::polarDisk(24, 12, 0, [](double r, double a) { return 0.5 * r * r * std::cos(2 * a); }), saddle);
-  EXPECT_EQ(brownNotePixels(saddle, test::tempPath("saddle_289.png")), 0);
-  EXPECT_GT(brownNotePixels(saddle + " --sites 400", test::tempPath("saddle_400.png")), 50);
+  const auto saddle = [](int sides) {
+    const std::string path = test::tempPath("saddle" + std::to_string(sides) + ".off");
+    writeMesh(test::polarDisk(sides, 12, 0, [](double r, double a) { return 0.5 * r * r * std::cos(2 * a); }), path);
+    return path + " --sites 400";
+  };
+  EXPECT_EQ(brownNotePixels(saddle(96), test::tempPath("saddle96_400.png")), 0);
+  EXPECT_GT(brownNotePixels(saddle(24), test::tempPath("saddle24_400.png")), 50);
 }
 
 // A pane's scissor and clear stay in the framebuffer: shrunk to 200x150 during a lesson, the

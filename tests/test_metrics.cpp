@@ -497,5 +497,13 @@ TEST(Fidelity, TheReflexCornersOfACoarseBorderThatAResultCutsAcrossAreFound) {
   ASSERT_EQ(corners.size(), 16u);
   for (int i = 0; i < 16; ++i) EXPECT_NEAR((corners[i] - rim(i)).norm(), 0.0, 1e-12);
   EXPECT_TRUE(borderCornersCut(star, SearchableSurface(star)).empty());
+  // The star's centre raised off the flat result: where it strays 1/1.4 as far as the chords
+  // (0.0119), they are still found; 1/1.15 as far, and the border is no worse than the rest
+  // (kCutOffBy).
+  for (const auto& [ratio, found] : {std::pair{1.4, 16u}, std::pair{1.15, 0u}}) {
+    const Mesh raised = test::polarGrid(6, 16, true, Vec3(0, 0, 0.0119 / ratio),
+                                        [&](int k, int i) -> Vec3 { return rim(i) * k / 6; });
+    EXPECT_EQ(borderCornersCut(result, SearchableSurface(raised)).size(), found) << ratio;
+  }
 }
 
