@@ -354,7 +354,7 @@ double meanBorderEdge(const Mesh& m) {
   return edges > 0 ? length / edges : 0.0;
 }
 
-// A corner is cut off where it is also farther than this many of the result's border edges
+// A corner is cut where it is also farther than this many of the result's border edges
 // (on a flat surface nothing else strays at all: the chords of a lens's curved sides cut its
 // arcs by 0.001 of an edge).
 constexpr double kCutOffStray = 0.03;

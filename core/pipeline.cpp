@@ -715,7 +715,8 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
 }
 
 // The disk remeshed again with the corners of the input's border that the kept result's border
-// cuts off kept as border samples (borderCornersCut), and that kept if BorderTrial::withBetter().
+// cuts (off or across) kept as border samples (borderCornersCut), and that kept if
+// BorderTrial::withBetter().
 // Only where the kept result is one disk, not slit open nor in charts (whose seams take their
 // own samples), made as the defaults make it (the polish after retriangulating, the border
 // resampled).

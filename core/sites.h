@@ -34,7 +34,7 @@ struct SiteOptions {
   bool sharesSeams() const { return spacing > 0 && !onSeam.empty(); }
   // Points of the input's border that stay samples: a border vertex of the surface sampled
   // (the input, or its rough first remeshing) within a millionth of its diagonal of one is a
-  // corner, as a corner of the surface is (the corners a result's border cut off:
+  // corner, as a corner of the surface is (the corners a result's border cut:
   // borderCornersCut in core/metrics, and the pipeline's BorderTrial). Not on a seam.
   std::vector<Vec3> keptBorderPoints;
 };
