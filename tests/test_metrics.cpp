@@ -481,11 +481,8 @@ TEST(Fidelity, TheCornersOfACoarseBorderThatAResultCutsOffAreFound) {
 // input (0.012 of the radius, 0.05 of the result's mean border edge). No input vertex is off
 // the result; the chords are. All 16 rim vertices are returned.
 TEST(Fidelity, TheReflexCornersOfACoarseBorderThatAResultCutsAcrossAreFound) {
-  const auto rim = [](int i) {
-    const double a = M_PI / 8 * i, r = i % 2 ? 0.9 : 1.0;
-    return Vec3(r * std::cos(a), r * std::sin(a), 0);
-  };
-  const Mesh star = test::polarGrid(6, 16, true, Vec3::Zero(), [&](int k, int i) -> Vec3 { return rim(i) * k / 6; });
+  const auto rim = [](int i) { return test::starRim(8, 0.9, i); };
+  const Mesh star = test::starDisk(8, 0.9, 6);
   std::vector<Vec3> cutAcross;  // a convex corner, the midpoints of the two edges of the reflex one after it
   for (int i = 0; i < 16; i += 2) {
     cutAcross.push_back(rim(i));
@@ -501,8 +498,7 @@ TEST(Fidelity, TheReflexCornersOfACoarseBorderThatAResultCutsAcrossAreFound) {
   // (0.0119), they are still found; 1/1.15 as far, and the border is no worse than the rest
   // (kCutOffBy).
   for (const auto& [ratio, found] : {std::pair{1.4, 16u}, std::pair{1.15, 0u}}) {
-    const Mesh raised = test::polarGrid(6, 16, true, Vec3(0, 0, 0.0119 / ratio),
-                                        [&](int k, int i) -> Vec3 { return rim(i) * k / 6; });
+    const Mesh raised = test::starDisk(8, 0.9, 6, 0.0119 / ratio);
     EXPECT_EQ(borderCornersCut(result, SearchableSurface(raised)).size(), found) << ratio;
   }
 }

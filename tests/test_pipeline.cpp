@@ -982,6 +982,13 @@ TEST(Pipeline, AFanTooLargeToSimplifyQuicklyIsRemeshedAsItIs) {
   EXPECT_NO_THROW(validateMesh(r.output, "result"));
 }
 
+// How far the vertex of `mesh` nearest to `p` is.
+double nearestVertex(const Mesh& mesh, const Vec3& p) {
+  double nearest = INFINITY;
+  for (const Vec3& q : mesh.points) nearest = std::min(nearest, (q - p).norm());
+  return nearest;
+}
+
 // A saddle over a polar grid whose rim is a 24-gon, coarser than the border of its result at 400
 // vertices: the result's border edges cut off the rim's corners, and that was its Hausdorff
 // distance (0.305% of the diagonal). Remeshed with the rim's 24 vertices kept as border samples
@@ -998,12 +1005,8 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
   EXPECT_LT(r.borderTrial->withHausdorff, 0.8 * r.borderTrial->withoutHausdorff);
   EXPECT_EQ(r.fidelity.hausdorffPercent, r.borderTrial->withHausdorff);
   EXPECT_EQ(r.runs, 2);
-  for (int i = 0; i < 24; ++i) {
-    const Vec3& corner = saddle.points[saddle.vertexCount() - 24 + i];
-    double nearest = INFINITY;
-    for (const Vec3& p : r.output.points) nearest = std::min(nearest, (p - corner).norm());
-    EXPECT_LT(nearest, 1e-9) << "corner " << i;
-  }
+  for (int i = 0; i < 24; ++i)
+    EXPECT_LT(nearestVertex(r.output, saddle.points[saddle.vertexCount() - 24 + i]), 1e-9) << "corner " << i;
 }
 
 // A flat eight-pointed star, its rim a 16-gon alternating between radius 1 and 0.87: its eight
@@ -1013,11 +1016,7 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
 // so only the chords tell (borderCornersCut). With the rim's 16 vertices kept as samples,
 // every one is a vertex of the result and it lies on the input.
 TEST(Pipeline, TheReflexCornersOfACoarseBorderThatTheResultCutsAcrossAreSampled) {
-  const auto rim = [](int i) -> Vec3 {
-    const double a = M_PI / 8 * i, r = i % 2 ? 0.87 : 1.0;
-    return Vec3(r * std::cos(a), r * std::sin(a), 0);
-  };
-  const Mesh star = test::polarGrid(10, 16, true, Vec3::Zero(), [&](int k, int i) -> Vec3 { return rim(i) * k / 10; });
+  const Mesh star = test::starDisk(8, 0.87, 10);
   RemeshOptions o;
   o.sites.count = 400;
   const RemeshResult r = remesh(star, o, "star");
@@ -1026,11 +1025,7 @@ TEST(Pipeline, TheReflexCornersOfACoarseBorderThatTheResultCutsAcrossAreSampled)
   EXPECT_TRUE(r.borderTrial->keptWith);
   EXPECT_GT(r.borderTrial->withoutHausdorff, 0.1);
   EXPECT_LT(r.fidelity.hausdorffPercent, 1e-9);
-  for (int i = 0; i < 16; ++i) {
-    double nearest = INFINITY;
-    for (const Vec3& p : r.output.points) nearest = std::min(nearest, (p - rim(i)).norm());
-    EXPECT_LT(nearest, 1e-9) << "corner " << i;
-  }
+  for (int i = 0; i < 16; ++i) EXPECT_LT(nearestVertex(r.output, test::starRim(8, 0.87, i)), 1e-9) << "corner " << i;
 }
 
 // The run with the corners kept is kept where it meets as many bars and is closer by 1% at

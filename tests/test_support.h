@@ -208,6 +208,18 @@ inline Mesh polarDisk(int sectors, int rings, double phase = 0,
   });
 }
 
+// A flat star of `points` points: its rim alternates between radius 1 (the points, rim vertex
+// 0 first) and `inner` (the reflex corners between them), vertex i at starRim(); `rings` rings
+// of a polar grid inside, the centre raised to `centreHeight`.
+inline Vec3 starRim(int points, double inner, int i) {
+  const double a = M_PI / points * i, r = i % 2 ? inner : 1.0;
+  return Vec3(r * std::cos(a), r * std::sin(a), 0);
+}
+inline Mesh starDisk(int points, double inner, int rings, double centreHeight = 0) {
+  return polarGrid(rings, 2 * points, true, Vec3(0, 0, centreHeight),
+                   [&](int k, int i) -> Vec3 { return starRim(points, inner, i) * k / rings; });
+}
+
 // A sector of `degrees` and radius 1, finely triangulated: the apex, then rings of a polar grid
 // between its two straight sides; flat, or at `height`(x, y) (the apex stays at 0).
 inline Mesh sector(double degrees, const std::function<double(double, double)>& height = {}, int sectors = 12,
