@@ -494,6 +494,7 @@ CutResult cutToDisk(const Mesh& mesh, const std::string& name, const CutOptions&
   std::vector<double> scale = areaScale(mesh, best.disk, conformalMap(best.disk, name));
   best.summary.areaSpread = spreadOf(scale);
   const bool slit = !topology.isDisk() || best.summary.areaSpread > options.slitDisksAbove;
+  if (slit && topology.isDisk() && options.slittingDisk) options.slittingDisk();
   const CutSummary whole = best.summary;
   // While a disk's spread is over keepDiskSlitsUnder (its slits would be left out), a slit that
   // does not lower it is set aside and the next tried from elsewhere, up to kSlitsSetAside in a

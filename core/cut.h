@@ -6,6 +6,7 @@
 #include "mesh.h"
 #include "topology.h"
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +54,10 @@ struct CutOptions {
   // doubles (the fold test's 1e-14 of the total area, core/parameterization), and any slits are
   // better than none (CGAL's camel clipped in half, four legs: 8 10^22 whole, 3 10^4 slit twice).
   double keepDiskSlitsOver = 1e10;
+  // Called once where a disk's spread is above slitDisksAbove, before its slits are tried
+  // (they take most of the cut's time on a large scan): remesh() starts the run that keeps it
+  // whole then, beside them.
+  std::function<void()> slittingDisk;
 };
 
 // The cut, in two parts. Topological: the border loops joined one by one to the nearest by

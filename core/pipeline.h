@@ -14,6 +14,7 @@
 #include "resample.h"
 #include "sites.h"
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -284,8 +285,9 @@ std::string problemOf(const Error& e, const std::string& name);
 class RemeshSession {
  public:
   // `prepared`, if given, is made of `input` by remesh() once for all its runs.
+  // `slittingDisk`: CutOptions::slittingDisk, for a nearly closed disk's cut.
   RemeshSession(const Mesh& input, const RemeshOptions& options, const std::string& name,
-                const PreparedInput* prepared = nullptr);
+                const PreparedInput* prepared = nullptr, const std::function<void()>& slittingDisk = {});
   RemeshSession(const RemeshSession&) = delete;
   RemeshSession& operator=(const RemeshSession&) = delete;
 

@@ -325,6 +325,25 @@ TEST(Cut, ADiskWhoseWholeMapWouldCollapseKeepsItsSlits) {
   EXPECT_GT(leftOut.summary.areaSpread, CutOptions{}.slitDisksAbove);  // it was slit, and the slits left out
 }
 
+// A disk whose map shrinks a part over slitDisksAbove says so once, before its slits are tried
+// (remesh() starts the run that keeps it whole then, beside them), whether the slits are kept or
+// left out; one that needs none says nothing.
+TEST(Cut, ADiskToBeSlitSaysSoBeforeItsSlitsAreTried) {
+  int said = 0;
+  CutOptions o;
+  o.slittingDisk = [&] { ++said; };
+  const CutResult slit = cutToDisk(cappedTube(6), "long tube", o);
+  EXPECT_GT(slit.summary.extremityCuts, 0);
+  EXPECT_EQ(said, 1);
+  o.keepDiskSlitsUnder = 1;  // no slits would do
+  const CutResult leftOut = cutToDisk(cappedTube(6), "long tube", o);
+  EXPECT_EQ(leftOut.seam.size(), 0u);
+  EXPECT_EQ(said, 2);
+  const CutResult unslit = cutToDisk(cappedTube(3), "short tube", o);
+  EXPECT_LT(unslit.summary.areaSpread, o.slitDisksAbove);
+  EXPECT_EQ(said, 2);
+}
+
 // CGAL's camel clipped in half: four legs and a tail, a disk whose map shrinks them by 10^22.
 // Two slits brought that to 3 10^4, the third and fourth tried raised it, and the search
 // stopped there; its slits were left out, and every map of it collapsed (remesh failed: "not
@@ -407,6 +426,25 @@ TEST(ClippedCgalSample, TheManWhoseChartsDidNotStitchIsTriedInSmallerCharts) {
   ASSERT_TRUE(r.chartTrial.has_value());
   EXPECT_EQ(r.chartTrial->failed, "");
   EXPECT_GT(r.chartTrial->charts, 1);
+  EXPECT_TRUE(analyzeTopology(r.output).isDisk());
+}
+
+// CGAL's three peaks as they come (simplified by remesh() alone) shrink by 5 10^6, and no slits
+// bring that under keepDiskSlitsUnder: left out, the slit run is the whole one. The whole run
+// started beside it before the slits were tried ends unused: the result is the slit run's, its
+// spread measured, one run counted.
+TEST(NearlyClosedCgalSample, WhereTheSlitsAreLeftOutTheRunBesideEndsUnused) {
+  const std::string path = test::cgalSample("three_peaks.off");
+  SKIP_UNLESS_EXTRACTED(path);
+  RemeshOptions o;
+  o.sites.count = 500;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(readMesh(path).mesh, o, path);
+  EXPECT_GT(r.cut.areaSpread, CutOptions{}.keepDiskSlitsUnder);
+  EXPECT_EQ(r.cut.seamEdges, 0);
+  EXPECT_FALSE(r.slitTrial.has_value());
+  EXPECT_EQ(r.runs, 1);
+  EXPECT_EQ(r.ms.compared, 0.0);
   EXPECT_TRUE(analyzeTopology(r.output).isDisk());
 }
 
