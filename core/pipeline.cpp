@@ -661,8 +661,9 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
   // step. Neither's result depends on its threads.
   const int half = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / 2);
   const int shared = options.lloyd.threads > 0 ? std::max(1, options.lloyd.threads / 2) : half;
-  std::future<RemeshResult> whole;
+  // Declared before `whole`: its destructor waits for the run, which reads the flag till it ends.
   std::atomic<bool> wholeNotNeeded{false};
+  std::future<RemeshResult> whole;
   const auto startWhole = [&] {
     if (whole.valid()) return;
     wholeOptions.lloyd.threads = shared;
