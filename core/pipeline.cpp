@@ -673,13 +673,10 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
   };
   RunHooks slitHooks;
   slitHooks.slittingDisk = startWhole;
+  // A disk's cut slits only after saying so (slittingDisk): a slit session has the run beside.
   slitHooks.started = [&](RemeshSession& session) {
-    if (!session.isCut()) {
-      wholeNotNeeded = true;
-      return;
-    }
-    session.setThreads(shared);  // also a retry without the first pass, beside the whole run
-    startWhole();
+    if (session.isCut()) session.setThreads(shared);  // also a retry without the first pass
+    else wholeNotNeeded = true;
   };
   RemeshResult kept;
   try {
