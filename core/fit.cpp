@@ -241,7 +241,7 @@ Eigen::VectorXd borderMoves(const Mesh& mesh, const Mesh& input, const std::vect
   for (Vec3& a : across)
     if (a.norm() > 0) a.normalize();
   // (On a single arc, three quarters of the move would put the chord halfway, where the
-  // farthest on either side is least; on the 93 clipped halves of docs/bench.md at 1000
+  // farthest on either side is least; on the 93 clipped halves of docs/bench_log.md at 1000
   // vertices the whole move came nearer on 10 and farther on 2.)
   const InputBorder border(input);
   if (border.empty()) return Eigen::VectorXd::Zero(mesh.vertexCount());

@@ -59,7 +59,7 @@ struct SizeStop {
 
 // Garland and Heckbert's quadrics keep each plane as n.p + d with d = -n.q: far from the origin
 // (a scan in world coordinates) d is large, and the costs and placements computed from them
-// lose the digits the mesh's detail is in. The camel head of docs/bench.md (1.2 across),
+// lose the digits the mesh's detail is in. The camel head of docs/bench_log.md (1.2 across),
 // simplified to 5000 vertices: moved 10^2 away, as at the origin; 10^3, its smallest angle
 // 0.9 -> 0.6 degrees; 10^5, 0.1 degrees, its average smallest angle 27.8 -> 24.3, 30 times as
 // long, and every map of its cut open surface collapsed. So a mesh farther from the origin than

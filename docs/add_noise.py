@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Adds scanner-like noise to a triangle mesh (OFF), for disks that are in neither of the
-bench's sets (docs/bench.md, "Noisy disks"):
+bench's sets (docs/bench_log.md, "Noisy disks"):
 
     python3 docs/add_noise.py IN.off OUT.off SIGMA [SEED]
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Clips a closed triangle mesh (OFF) in half, for disks that are in neither of the bench's
-sets (docs/bench.md, "Disks from outside the bench").
+sets (docs/bench_log.md, "Disks from outside the bench").
 
     python3 docs/clip_half.py IN.off OUT.off [AXIS [FRACTION]]
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes eight disk meshes unlike the bench's, each a test of one thing a remesher can get
-wrong (docs/bench.md, "Synthetic disks"):
+wrong (docs/bench_log.md, "Synthetic disks"):
 
     python3 docs/synthetic_disks.py DIR
 
@@ -13,7 +13,7 @@ wrong (docs/bench.md, "Synthetic disks"):
 - fan.off: a dome fanned from its apex, 200 slivers around one vertex of valence 200;
 - ribbon.off: a 50:1 strip, a few edge lengths wide at 500 vertices.
 
-Six more, as other tools export surfaces (bench.md, "Synthetic disks", the last table):
+Six more, as other tools export surfaces (bench_log.md, "Synthetic disks", the last table):
 
 - hemisphere.off: a UV sphere's upper half, a fan of 64 around its pole, its rim a 64-gon;
 - saddle.off: a saddle over a polar grid, a fan of 48 at its centre, its rim a 48-gon that
