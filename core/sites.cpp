@@ -168,22 +168,19 @@ std::vector<double> borderSamplePositions(double length, double spacing, int pie
 
 namespace {
 
-// Samples along the border at 3D arc-length spacing close to `spacing`, corners kept: those of
-// the surface (a border vertex where the surface's angles sum to far from 180 degrees) and
-// those of the parameter domain. Their points on the surface go to `points`.
-std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param,
-                                 double spacing, const SiteOptions& options, std::vector<Vec3>& points) {
+bool flagged(const std::vector<bool>& flags, int v) { return !flags.empty() && flags[v]; }
+
+// The loop positions the border's samples must keep, ascending: the seams' nodes, the corners
+// of the map, the points asked for (SiteOptions::keptBorderPoints) and the corners of the
+// surface (`angles`: each vertex's angle sum), in that order where two are closer than
+// kCornersApart spacings (only the first stays); then, on a surface without seams, the bumps
+// the samples between would cut off (keepBumps). At least one.
+std::vector<int> borderCorners(const Mesh& mesh, const Parameterization& param, const std::vector<double>& angles,
+                               const std::vector<double>& position, double spacing, const SiteOptions& options) {
   const std::vector<int>& loop = param.boundaryLoop;
   const int n = static_cast<int>(loop.size());
-  const std::vector<double> angles = angleSums(mesh);
-  // The spacing in the map, on average over it.
-  const double uvSpacing = spacing * std::sqrt(mapArea(mesh, param.uv) / surfaceArea(mesh));
-  std::vector<double> position(n + 1, 0.0);  // 3D arc length from loop[0]
-  for (int i = 0; i < n; ++i)
-    position[i + 1] = position[i] + (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i]]).norm();
   // Candidates, the domain's own corners before the surface's, sharper before blunter.
   std::vector<std::pair<double, int>> candidates;
-  auto flag = [](const std::vector<bool>& f, int v) { return !f.empty() && f[v]; };
   constexpr double kSeamNode = 3000.0, kKeptPoint = 500.0;
   const double samePoint = 1e-6 * boundingBoxDiagonal(mesh);
   const auto kept = [&](int v) {
@@ -192,9 +189,9 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
   };
   for (int i = 0; i < n; ++i) {
     const double turn = std::abs(angles[loop[i]] - 180.0);
-    if (flag(options.seamNode, loop[i]))
+    if (flagged(options.seamNode, loop[i]))
       candidates.emplace_back(kSeamNode, i);
-    else if (flag(options.onSeam, loop[i]))
+    else if (flagged(options.onSeam, loop[i]))
       continue;
     else if (isCorner(param.uv[loop[(i + n - 1) % n]], param.uv[loop[i]], param.uv[loop[(i + 1) % n]]))
       candidates.emplace_back(kMapCorner + turn, i);
@@ -204,8 +201,6 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
       candidates.emplace_back(turn, i);
   }
   std::sort(candidates.rbegin(), candidates.rend());
-  // A corner closer than kCornersApart spacings to a kept one would make a short border edge:
-  // only the first of them is kept.
   std::vector<int> corners;
   for (const auto& [score, i] : candidates) {
     bool near = false;
@@ -223,12 +218,68 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     for (const auto& [score, i] : candidates) yields[i] = score >= kMapCorner && score <= kMapCorner + kSurfaceTurn;
     keepBumps(mesh, loop, position, spacing, yields, corners);
   }
+  return corners;
+}
+
+// A stretch of the border loop from corner `begin` to corner `end` (loop positions; `end` past
+// the loop's length where the stretch wraps), with the 3D length along it at each of its
+// vertices.
+struct Stretch {
+  int begin = 0, end = 0;
+  std::vector<double> length;
+  int edges() const { return end - begin; }
+};
+
+// `count` samples of a stretch too short for the spacing at its own vertices, those nearest
+// by arc length to even steps along it: alike on both copies of a seam.
+void sampleAtVertices(const Mesh& mesh, const Parameterization& param, const Stretch& stretch, int count,
+                      std::vector<Vec2>& samples, std::vector<Vec3>& points) {
+  const std::vector<int>& loop = param.boundaryLoop;
+  const int n = static_cast<int>(loop.size());
+  const std::vector<double>& length = stretch.length;
+  const auto pointAt = [&](int i) -> const Vec3& { return mesh.points[loop[(stretch.begin + i) % n]]; };
+  for (int s = 0, last = 0; s < count; ++s) {
+    const double target = length.back() * s / count;
+    // Two vertices as near (the middle of 5 equal edges) go to the smaller point: the two
+    // copies run the stretch in opposite directions, and each took the one nearer its start
+    // (an open band's seam did not stitch).
+    const auto nearer = [&](int i, int j) {
+      const double di = std::abs(length[i] - target), dj = std::abs(length[j] - target);
+      if (std::abs(di - dj) > 1e-9 * length.back()) return di < dj;
+      const Vec3 &a = pointAt(i), &b = pointAt(j);
+      return std::make_tuple(a.x(), a.y(), a.z()) < std::make_tuple(b.x(), b.y(), b.z());
+    };
+    int nearest = last + (s > 0);
+    for (int i = nearest; i <= stretch.edges() - (count - s); ++i)
+      if (nearer(i, nearest)) nearest = i;
+    samples.push_back(param.uv[loop[(stretch.begin + nearest) % n]]);
+    points.push_back(pointAt(nearest));
+    last = nearest;
+  }
+}
+
+// Samples along the border at 3D arc-length spacing close to `spacing`, corners kept
+// (borderCorners). Their points on the surface go to `points`.
+std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param,
+                                 double spacing, const SiteOptions& options, std::vector<Vec3>& points) {
+  const std::vector<int>& loop = param.boundaryLoop;
+  const int n = static_cast<int>(loop.size());
+  const std::vector<double> angles = angleSums(mesh);
+  // The spacing in the map, on average over it.
+  const double uvSpacing = spacing * std::sqrt(mapArea(mesh, param.uv) / surfaceArea(mesh));
+  std::vector<double> position(n + 1, 0.0);  // 3D arc length from loop[0]
+  for (int i = 0; i < n; ++i)
+    position[i + 1] = position[i] + (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i]]).norm();
+  const std::vector<int> corners = borderCorners(mesh, param, angles, position, spacing, options);
 
   std::vector<Vec2> samples;
   for (size_t c = 0; c < corners.size(); ++c) {
-    const int begin = corners[c];
-    const int end = c + 1 < corners.size() ? corners[c + 1] : corners[0] + n;
-    std::vector<double> length = {0.0};  // cumulative 3D length along this stretch
+    Stretch stretch;
+    stretch.begin = corners[c];
+    stretch.end = c + 1 < corners.size() ? corners[c + 1] : corners[0] + n;
+    const int begin = stretch.begin, end = stretch.end, edges = stretch.edges();
+    std::vector<double>& length = stretch.length;
+    length = {0.0};
     for (int i = begin; i < end; ++i)
       length.push_back(length.back() +
                        (mesh.points[loop[(i + 1) % n]] - mesh.points[loop[i % n]]).norm());
@@ -238,31 +289,12 @@ std::vector<Vec2> resampleBorder(const Mesh& mesh, const Parameterization& param
     // node, or a small hole of the input (a border loop the cut joined to the others at one
     // node), would close. Those extra samples are the stretch's own vertices: two on one
     // straight edge would make a flat ear.
-    const int edges = end - begin;
-    const bool fromNode = flag(options.seamNode, loop[begin]) || flag(options.seamNode, loop[end % n]);
+    const bool fromNode = flagged(options.seamNode, loop[begin]) || flagged(options.seamNode, loop[end % n]);
     const bool closed = mesh.points[loop[begin]] == mesh.points[loop[end % n]];
     const int fewest = std::min(edges, !fromNode ? 1 : closed ? 3 : 2);
     const int byLength = static_cast<int>(std::lround(length.back() / spacing));
-    if (fewest > byLength) {  // the vertex nearest by arc length: alike on both copies of a seam
-      const auto pointAt = [&](int i) -> const Vec3& { return mesh.points[loop[(begin + i) % n]]; };
-      for (int s = 0, last = 0; s < fewest; ++s) {
-        const double target = length.back() * s / fewest;
-        // Two vertices as near (the middle of 5 equal edges) go to the smaller point: the two
-        // copies run the stretch in opposite directions, and each took the one nearer its start
-        // (an open band's seam did not stitch).
-        const auto nearer = [&](int i, int j) {
-          const double di = std::abs(length[i] - target), dj = std::abs(length[j] - target);
-          if (std::abs(di - dj) > 1e-9 * length.back()) return di < dj;
-          const Vec3 &a = pointAt(i), &b = pointAt(j);
-          return std::make_tuple(a.x(), a.y(), a.z()) < std::make_tuple(b.x(), b.y(), b.z());
-        };
-        int nearest = last + (s > 0);
-        for (int i = nearest; i <= edges - (fewest - s); ++i)
-          if (nearer(i, nearest)) nearest = i;
-        samples.push_back(param.uv[loop[(begin + nearest) % n]]);
-        points.push_back(pointAt(nearest));
-        last = nearest;
-      }
+    if (fewest > byLength) {
+      sampleAtVertices(mesh, param, stretch, fewest, samples, points);
       continue;
     }
     // Evenly by 3D arc length; more pieces where the border of the map strays from the chords
