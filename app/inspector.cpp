@@ -1087,6 +1087,28 @@ void Inspector::togglePlay() {
 
 void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   beginPane("Lloydscope", pos, size);
+  runSummary();
+  qualityTable();
+  runStatus();
+  selectionControls();
+  viewControls();
+  cameraControls();
+  settingsControls();
+  fileControls();
+  exportControls();
+  // Not in an export's pictures: the next picture showed the last one's "saved ...".
+  if (!message_.empty() && !exporting()) {
+    wrappedText(message_);
+    // A new message is scrolled into view: with Files or Export open it fell below the window
+    // (1280x800), and a failed Open mesh looked like nothing at all.
+    if (messageCount_ != scrolledToMessage_) ImGui::SetScrollHereY(1.0f);
+  }
+  scrolledToMessage_ = messageCount_;
+  ImGui::End();
+}
+
+// The mesh, the run's settings and sites, and which result the panes show.
+void Inspector::runSummary() {
   wrappedText("Mesh: " + meshName_);
   wrappedText(std::string("Parameterization: ") + toString(result_.paramUsed) + " (" +
               borderPhrase(result_.paramUsed, options_.param.border) + "), density: " +
@@ -1113,6 +1135,10 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
                "relocate, then Restart and Run.");
   }
 
+}
+
+// The report's Table II: the input, this iteration's result and the final one.
+void Inspector::qualityTable() {
   ImGui::Separator();
   // The final result (what remesh writes: the iteration's mesh after the clean-up on the
   // surface, stitched or put together from its charts) where the run finished and measured it.
@@ -1173,6 +1199,10 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     const std::string leftOut = sitesLeftOutNote(iteration_, view.sites.size(), view.output.points.size());
     if (!leftOut.empty()) greyedText(leftOut);
   }
+}
+
+// Where the run is, how far the result is from the input, how it was made, and Compare.
+void Inspector::runStatus() {
   const std::string iterations = iterationsText(replay_->iterationCount());
   if (session_ && running())
     wrappedText("Running: " + iterations + " so far");
@@ -1205,6 +1235,9 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   if (comparing || running()) ImGui::EndDisabled();
   if (running() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("After the run: Stop it, or let it finish");
+}
+
+void Inspector::selectionControls() {
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pick = pickTriangles2D_ ? 1 : 0;
     ImGui::TextUnformatted("2D click pins a");
@@ -1225,6 +1258,10 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
     }
     selection_.detailsPanel(replay_->recording(), replay_->domain(), replay_->view(iteration_), result_.output);
   }
+}
+
+// What the 2D and 3D views draw.
+void Inspector::viewControls() {
   ImGui::Separator();
   // During a lesson its stage sets what the views show: the switches say what it set, greyed
   // (the Result stage showed the final result beside an unticked "show the final result").
@@ -1269,19 +1306,6 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   bool byAngle = colorByAngle_;
   if (ImGui::Checkbox("colour by minimum angle", &byAngle)) colorByAngle_ = byAngle;
   ImGui::Checkbox("wireframe", &wireframe_);
-  cameraControls();
-  settingsControls();
-  fileControls();
-  exportControls();
-  // Not in an export's pictures: the next picture showed the last one's "saved ...".
-  if (!message_.empty() && !exporting()) {
-    wrappedText(message_);
-    // A new message is scrolled into view: with Files or Export open it fell below the window
-    // (1280x800), and a failed Open mesh looked like nothing at all.
-    if (messageCount_ != scrolledToMessage_) ImGui::SetScrollHereY(1.0f);
-  }
-  scrolledToMessage_ = messageCount_;
-  ImGui::End();
 }
 
 void Inspector::cameraControls() {

@@ -158,6 +158,11 @@ class Inspector {
 
  private:
   void controlsPane(const ImVec2& pos, const ImVec2& size);
+  void runSummary();
+  void qualityTable();
+  void runStatus();
+  void selectionControls();
+  void viewControls();
   void viewPane3D(const ImVec2& pos, const ImVec2& size);
   void domainPane2D(const ImVec2& pos, const ImVec2& size);
   void plotsPane(const ImVec2& pos, const ImVec2& size);
