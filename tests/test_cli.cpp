@@ -1,6 +1,7 @@
 // The command line as a user meets it: exit codes, one-line errors, JSON, files left alone.
 #include "lloyd.h"
 #include "mesh_io.h"
+#include "report.h"
 #include "ring_moves.h"
 #include "topology.h"
 #include "test_support.h"
@@ -44,6 +45,23 @@ void expectCleanFailure(const std::string& file, const std::string& contents,
 }
 
 const char* kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
+// A markdown row's cells, trimmed ([0] is before the first |).
+std::vector<std::string> cells(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string cell; std::getline(in, cell, '|');) {
+    const size_t first = cell.find_first_not_of(' ');
+    out.push_back(first == std::string::npos ? "" : cell.substr(first, cell.find_last_not_of(' ') - first + 1));
+  }
+  return out;
+}
+
+// The first line of `text` from `from` on that starts with `start` (empty: none).
+std::string lineStarting(const std::string& text, const std::string& start, size_t from = 0) {
+  const size_t at = text.find(start, from);
+  return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+}
 
 }  // namespace
 
@@ -521,23 +539,10 @@ TEST(Cli, BenchPrintsWhereTheTimeGoes) {
   const std::string csv = test::tempPath("bench_stages.csv");
   const CliRun r = runCli("bench " + test::assetPath("sphere_cap.off") + " --sizes 200 --no-reference --csv " + csv);
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto cells = [](const std::string& line) {  // a markdown row's cells, trimmed ([0] is before the first |)
-    std::vector<std::string> out;
-    std::istringstream in(line);
-    for (std::string cell; std::getline(in, cell, '|');) {
-      const size_t first = cell.find_first_not_of(' ');
-      out.push_back(first == std::string::npos ? "" : cell.substr(first, cell.find_last_not_of(' ') - first + 1));
-    }
-    return out;
-  };
-  const auto lineStarting = [&](const std::string& start, size_t from = 0) {
-    const size_t at = r.out.find(start, from);
-    return at == std::string::npos ? std::string() : r.out.substr(at, r.out.find('\n', at) - at);
-  };
-  const std::vector<std::string> main = cells(lineStarting("| sphere_cap | 200 | lloydscope |"));
+  const std::vector<std::string> main = cells(lineStarting(r.out, "| sphere_cap | 200 | lloydscope |"));
   const size_t header = r.out.find("| model | size | input vertices | input faces |");
   ASSERT_NE(header, std::string::npos) << r.out;
-  const std::vector<std::string> stages = cells(lineStarting("| sphere_cap | 200 |", header));
+  const std::vector<std::string> stages = cells(lineStarting(r.out, "| sphere_cap | 200 |", header));
   ASSERT_GE(main.size(), 8u);
   ASSERT_GE(stages.size(), 15u) << r.out;
   EXPECT_EQ(stages[3], "200");  // the prepared input has the size asked
@@ -552,6 +557,53 @@ TEST(Cli, BenchPrintsWhereTheTimeGoes) {
   const std::string first = rows.substr(head.size() + 1, rows.find('\n', head.size() + 1) - head.size() - 1);
   EXPECT_EQ(first.rfind("sphere_cap,200,lloydscope,", 0), 0u) << first;
   EXPECT_NE(first.find(",200," + stages[4] + ","), std::string::npos) << first;  // before: as printed
+}
+
+// The bench sums up each method over all its inputs, so that what each step of the defaults
+// buys (the variants each leave one out) reads off one table (docs/bench.md).
+TEST(Cli, BenchSumsUpEachMethodOverItsInputs) {
+  const CliRun r = runCli("bench " + test::assetPath("sphere_cap.off") + " --sizes 150 200 --no-reference --csv " +
+                          test::tempPath("bench_summary.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const size_t header = r.out.find("| method | runs | irregular % (b-aware), mean (range) |");
+  ASSERT_NE(header, std::string::npos) << r.out;
+  for (const char* method : {"lloydscope", "lloydscope --polish -1", "lloydscope --no-snap", "lloydscope --no-fit",
+                             "lloydscope --solver newton", "lloydscope --no-resample", "lloydscope --method relocate",
+                             "cgal isotropic"})
+    EXPECT_EQ(cells(lineStarting(r.out, std::string("| ") + method + " |", header)).at(2), "2") << method << r.out;
+  // The defaults' line against their two rows of the CSV.
+  std::vector<std::vector<std::string>> defaults;  // CSV fields
+  int cgalMet = 0;
+  std::istringstream csv(test::readText(test::tempPath("bench_summary.csv")));
+  for (std::string line; std::getline(csv, line);) {
+    std::vector<std::string> fields;
+    std::istringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+    if (fields.size() > 15 && fields[2] == "lloydscope") defaults.push_back(fields);
+    // CGAL's rows meet the bars by themselves where they meet the three that need no reference
+    // (the sphere cap's border has no corner).
+    if (fields.size() > 15 && fields[2] == "cgal isotropic")
+      cgalMet += std::stod(fields[10]) <= 15 && std::stod(fields[13]) >= 30 && std::stod(fields[15]) >= 53;
+  }
+  ASSERT_EQ(defaults.size(), 2u);
+  EXPECT_EQ(cells(lineStarting(r.out, "| cgal isotropic |", header)).at(9), std::to_string(cgalMet)) << r.out;
+  const auto both = [&](int column) { return std::make_pair(std::stod(defaults[0][column]), std::stod(defaults[1][column])); };
+  const std::vector<std::string> sum = cells(lineStarting(r.out, "| lloydscope |", header));
+  ASSERT_GE(sum.size(), 10u) << r.out;
+  const auto [irregular150, irregular200] = both(10);
+  EXPECT_EQ(sum[3], format("%.1f (%.1f-%.1f)", (irregular150 + irregular200) / 2, std::min(irregular150, irregular200),
+                           std::max(irregular150, irregular200)));
+  const auto [smallest150, smallest200] = both(13);
+  EXPECT_EQ(sum[4], format("%.1f", std::min(smallest150, smallest200)));  // the smallest angle of all
+  const auto [average150, average200] = both(15);
+  EXPECT_EQ(sum[5], format("%.2f", (average150 + average200) / 2));
+  const auto [iterations150, iterations200] = both(7);
+  EXPECT_EQ(sum[7], format("%.0f", (iterations150 + iterations200) / 2));
+  // All four bars: as many as the verdicts say.
+  int met = 0;
+  for (const char* size : {"150", "200"})
+    met += cells(lineStarting(r.out, std::string("| sphere_cap | ") + size + " | ", r.out.find("| model | size | time ratio"))).at(4) == "all met";
+  EXPECT_EQ(sum[9], std::to_string(met));
 }
 
 // --as-is: the model as it comes, remeshed to the size, the defaults and --full-input beside CGAL.
