@@ -201,72 +201,8 @@ std::vector<std::pair<std::string, RemeshOptions>> variants(const RemeshOptions&
   return all;
 }
 
-}  // namespace
-
-void runBench(const BenchOptions& options) {
-  std::vector<std::string> models = options.models;
-  if (models.empty())
-    for (const char* sample : {"nefertiti", "mushroom", "three_peaks", "lion-head", "mannequin-devil"}) {
-      const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/" + sample + ".off";
-      if (std::ifstream(path).good()) models.push_back(path);
-    }
-  if (models.empty())
-    throw Error("bench: no models (give mesh files, or run ./build.sh to extract CGAL's samples)");
-
-  // Every model read (and validated), and the CSV's folder checked, before any is run: a bad
-  // one fails in a moment, not after minutes of the others' work.
-  requireWritable(options.csv);
-  for (const std::string& path : models)
-    if (sameFile(options.csv, path)) throw Error(options.csv + ": --csv would replace the input mesh; give it another name");
-  if (!options.saveInputs.empty()) makeFolder(options.saveInputs);
-  const auto savedInput = [&](const std::string& path, int size) {
-    return options.saveInputs + "/" + name(path) + "_" + std::to_string(size) + ".off";
-  };
-  // A prepared input saved onto a model of the run (a_30.off, saving a.off at 30), or two models
-  // of one name saved onto each other: refused before any work.
-  if (!options.saveInputs.empty())
-    for (const std::string& path : models)
-      for (int size : options.sizes)
-        for (const std::string& other : models) {
-          const std::string saved = savedInput(path, size);
-          if (sameFile(saved, other))
-            throw Error(saved + ": --save-inputs would replace the input mesh " + other + "; save them elsewhere");
-          if (other != path && name(other) == name(path))
-            throw Error(path + " and " + other + ": --save-inputs would save both as " + saved + "; rename one");
-        }
-  std::vector<Mesh> meshes;
-  for (const std::string& path : models) {
-    ReadResult read = readMesh(path, ReadOptions{options.repair});
-    for (const std::string& note : read.notes) std::cerr << "note: " << note << "\n";
-    meshes.push_back(std::move(read.mesh));
-  }
-
-  std::vector<Row> rows;
-  std::ostringstream verdicts, stages;
-  for (size_t m = 0; m < models.size(); ++m) {
-    const std::string& path = models[m];
-    const Mesh& model = meshes[m];
-    for (int size : options.sizes) {
-      const Mesh input = options.asIs ? model : benchInput(model, size, path);
-      if (!options.saveInputs.empty())
-        writeMesh(input, savedInput(path, size));
-      const Row peer = isotropicRow(name(path), size, input);
-      RemeshOptions defaults;  // a prepared input has the size already
-      if (options.asIs) defaults.sites.count = size;
-      const Row best = lloydscopeRow(name(path), size, "lloydscope", input, defaults);
-      rows.push_back(best);
-      for (const auto& [flags, variant] : variants(defaults, options))
-        rows.push_back(lloydscopeRow(name(path), size, "lloydscope " + flags, input, variant));
-      rows.push_back(peer);
-      verdicts << "| " << cell(name(path)) << " | " << size << " | "
-               << (best.failed.empty() ? format("%.2f", best.milliseconds / peer.milliseconds) : "-")
-               << " | "
-               << verdict(best, peer) << " |\n";
-      stages << stageTimesRow(best, peer) << "\n";
-      std::cerr << name(path) << " " << size << " done\n";
-    }
-  }
-
+// The main table: every row, the report's Tables I and II before and after, and the distances.
+void printRows(const std::vector<Row>& rows) {
   std::cout << "| model | size | method | vertices | faces | iterations | ms | irregular % (b-aware) "
                "| min angle | avg min angle | < 30 deg % | Hausdorff % | RMS % |\n"
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -286,6 +222,106 @@ void runBench(const BenchOptions& options) {
               << format("%.1f", r.after.percentUnder30) << " | "
               << format("%.3f", r.fidelity.hausdorffPercent) << " | "
               << format("%.3f", r.fidelity.rmsPercent) << " |\n";
+}
+
+// Every row with its stage times, for a spreadsheet.
+std::string csvText(const std::vector<Row>& rows) {
+  std::ostringstream csv;
+  csv << "model,size,method,vertices,faces,vertices_before,faces_before,iterations,ms,irregular_before,irregular_after,"
+         "irregular_all_after,min_angle_before,min_angle_after,avg_min_angle_before,"
+         "avg_min_angle_after,under30_percent,hausdorff_percent,rms_percent,ms_simplify,ms_cut,ms_resample,"
+         "ms_parameterize,ms_density,ms_sites,ms_lloyd,ms_remesh,ms_other_way,failed\n";
+  for (const Row& r : rows)
+    csv << csvField(r.model) << "," << r.size << "," << r.method << "," << r.after.vertices << ","
+        << r.after.faces << "," << r.before.vertices << "," << r.before.faces << "," << r.iterations << ","
+        << r.milliseconds << ","
+        << r.before.irregularBoundaryAware << "," << r.after.irregularBoundaryAware << ","
+        << r.after.irregularPercent << "," << r.before.minAngle << "," << r.after.minAngle << ","
+        << r.before.avgMinAngle << "," << r.after.avgMinAngle << "," << r.after.percentUnder30
+        << "," << r.fidelity.hausdorffPercent << "," << r.fidelity.rmsPercent << ","
+        << r.stages.simplify << "," << r.stages.cut << "," << r.stages.resample << "," << r.stages.parameterize << ","
+        << r.stages.density << "," << r.stages.sites << "," << r.stages.lloyd << "," << r.stages.remesh << ","
+        << r.stages.compared << ","
+        << csvField(r.failed) << "\n";
+  return csv.str();
+}
+
+// The models to run: those given, or CGAL's disk samples that ./build.sh extracted.
+std::vector<std::string> benchModels(const BenchOptions& options) {
+  std::vector<std::string> models = options.models;
+  if (models.empty())
+    for (const char* sample : {"nefertiti", "mushroom", "three_peaks", "lion-head", "mannequin-devil"}) {
+      const std::string path = std::string(LLOYDSCOPE_SOURCE_DIR) + "/data/cgal/" + sample + ".off";
+      if (std::ifstream(path).good()) models.push_back(path);
+    }
+  if (models.empty())
+    throw Error("bench: no models (give mesh files, or run ./build.sh to extract CGAL's samples)");
+  return models;
+}
+
+std::string savedInputPath(const BenchOptions& options, const std::string& model, int size) {
+  return options.saveInputs + "/" + name(model) + "_" + std::to_string(size) + ".off";
+}
+
+// The CSV's folder checked, and a CSV or prepared input that would replace a model (a_30.off,
+// saving a.off at 30), or two models of one name saved onto each other, refused: before any
+// model is run, so that a bad one fails in a moment, not after minutes of the others' work.
+void checkOutputs(const BenchOptions& options, const std::vector<std::string>& models) {
+  requireWritable(options.csv);
+  for (const std::string& path : models)
+    if (sameFile(options.csv, path)) throw Error(options.csv + ": --csv would replace the input mesh; give it another name");
+  if (options.saveInputs.empty()) return;
+  makeFolder(options.saveInputs);
+  for (const std::string& path : models)
+    for (int size : options.sizes)
+      for (const std::string& other : models) {
+        const std::string saved = savedInputPath(options, path, size);
+        if (sameFile(saved, other))
+          throw Error(saved + ": --save-inputs would replace the input mesh " + other + "; save them elsewhere");
+        if (other != path && name(other) == name(path))
+          throw Error(path + " and " + other + ": --save-inputs would save both as " + saved + "; rename one");
+      }
+}
+
+}  // namespace
+
+void runBench(const BenchOptions& options) {
+  const std::vector<std::string> models = benchModels(options);
+  checkOutputs(options, models);  // and every model read (and validated) below, before any is run
+  std::vector<Mesh> meshes;
+  for (const std::string& path : models) {
+    ReadResult read = readMesh(path, ReadOptions{options.repair});
+    for (const std::string& note : read.notes) std::cerr << "note: " << note << "\n";
+    meshes.push_back(std::move(read.mesh));
+  }
+
+  std::vector<Row> rows;
+  std::ostringstream verdicts, stages;
+  for (size_t m = 0; m < models.size(); ++m) {
+    const std::string& path = models[m];
+    const Mesh& model = meshes[m];
+    for (int size : options.sizes) {
+      const Mesh input = options.asIs ? model : benchInput(model, size, path);
+      if (!options.saveInputs.empty())
+        writeMesh(input, savedInputPath(options, path, size));
+      const Row peer = isotropicRow(name(path), size, input);
+      RemeshOptions defaults;  // a prepared input has the size already
+      if (options.asIs) defaults.sites.count = size;
+      const Row best = lloydscopeRow(name(path), size, "lloydscope", input, defaults);
+      rows.push_back(best);
+      for (const auto& [flags, variant] : variants(defaults, options))
+        rows.push_back(lloydscopeRow(name(path), size, "lloydscope " + flags, input, variant));
+      rows.push_back(peer);
+      verdicts << "| " << cell(name(path)) << " | " << size << " | "
+               << (best.failed.empty() ? format("%.2f", best.milliseconds / peer.milliseconds) : "-")
+               << " | "
+               << verdict(best, peer) << " |\n";
+      stages << stageTimesRow(best, peer) << "\n";
+      std::cerr << name(path) << " " << size << " done\n";
+    }
+  }
+
+  printRows(rows);
   std::cout << "\nLloydscope (defaults) against CGAL on the same input: time ratio (<= 1 is the "
                "target) and the quality bar (irregular <= 15%, min >= 30 but at the input's own border "
                "corners sharper than that, avg >= 53, Hausdorff <= CGAL's)\n\n"
@@ -304,24 +340,8 @@ void runBench(const BenchOptions& options) {
                "remesher): what each step buys\n\n"
             << methodSummary(rows);
 
-  std::ostringstream csv;
-  csv << "model,size,method,vertices,faces,vertices_before,faces_before,iterations,ms,irregular_before,irregular_after,"
-         "irregular_all_after,min_angle_before,min_angle_after,avg_min_angle_before,"
-         "avg_min_angle_after,under30_percent,hausdorff_percent,rms_percent,ms_simplify,ms_cut,ms_resample,"
-         "ms_parameterize,ms_density,ms_sites,ms_lloyd,ms_remesh,ms_other_way,failed\n";
-  for (const Row& r : rows)
-    csv << csvField(r.model) << "," << r.size << "," << r.method << "," << r.after.vertices << ","
-        << r.after.faces << "," << r.before.vertices << "," << r.before.faces << "," << r.iterations << ","
-        << r.milliseconds << ","
-        << r.before.irregularBoundaryAware << "," << r.after.irregularBoundaryAware << ","
-        << r.after.irregularPercent << "," << r.before.minAngle << "," << r.after.minAngle << ","
-        << r.before.avgMinAngle << "," << r.after.avgMinAngle << "," << r.after.percentUnder30
-        << "," << r.fidelity.hausdorffPercent << "," << r.fidelity.rmsPercent << ","
-        << r.stages.simplify << "," << r.stages.cut << "," << r.stages.resample << "," << r.stages.parameterize << ","
-        << r.stages.density << "," << r.stages.sites << "," << r.stages.lloyd << "," << r.stages.remesh << ","
-        << r.stages.compared << ","
-        << csvField(r.failed) << "\n";
-  writeAtomically(options.csv, [&](std::ostream& out) { out << csv.str(); });
+  const std::string csv = csvText(rows);
+  writeAtomically(options.csv, [&](std::ostream& out) { out << csv; });
   std::cout << "\nCSV: " << options.csv << "\n";
 }
 
