@@ -159,7 +159,8 @@ std::string methodSummary(const std::vector<Row>& rows) {
       "|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& method : methods) {
     const Totals& t = totals[method];
-    const std::string runs = t.failed > 0 ? std::to_string(t.runs) + " of " + std::to_string(t.runs + t.failed) : std::to_string(t.runs);
+    std::string runs = std::to_string(t.runs);
+    if (t.failed > 0) runs += " of " + std::to_string(t.runs + t.failed);
     if (t.runs == 0) {
       table += "| " + method + " | " + runs + " | | | | | | | 0 |\n";
       continue;
