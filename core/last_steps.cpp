@@ -32,12 +32,42 @@ std::vector<Vec3> tipCandidates(const Mesh& surface, double longer) {
   }
   return points;
 }
+
+// A copy of `m` with vertex v put on `tip` and the two rings around it relaxed on the surface
+// (the tip and the vertices `snapped` before stay); where the relaxation leaves an angle
+// under `floor` there, the rings' vertices move on to raise it (as raiseSmallAngles does
+// everywhere later: on a coarse fin of CGAL's lion head, met at 1000 vertices from 500, the
+// relaxation left 19 degrees and the tip, 2.6% of the diagonal away, was refused).
+struct TipTrial {
+  Mesh mesh;
+  std::vector<bool> changed;  // the vertices whose triangles the trial may have changed
+};
+TipTrial snapOnACopy(const Mesh& m, int v, const Vec3& tip, const std::vector<bool>& snapped, double floor,
+                     const SearchableSurface& input) {
+  std::vector<bool> around(m.vertexCount(), false);
+  around[v] = true;
+  around = withNeighbours(m, withNeighbours(m, around));
+  std::vector<bool> movable = around;
+  for (int w = 0; w < m.vertexCount(); ++w) movable[w] = movable[w] && !snapped[w] && w != v;
+  TipTrial trial{m, {}};
+  Mesh& tried = trial.mesh;
+  tried.points[v] = tip;
+  relaxOnSurface(tried, movable, input.projection, 3, /*local=*/true);
+  // Flips at the rim of the two rings make triangles one ring further out: check those too.
+  trial.changed = withNeighbours(tried, around);
+  if (smallestAngleAround(tried, trial.changed) < floor) {
+    std::vector<int> stay;
+    for (int w = 0; w < tried.vertexCount(); ++w)
+      if (!movable[w]) stay.push_back(w);
+    raiseSmallAngles(tried, input, stay);
+  }
+  return trial;
+}
 }  // namespace
 
 std::vector<int> snapToTips(Mesh& m, const SearchableSurface& input, int rounds) {
   if (m.triangles.empty()) return {};
   const Mesh& surface = input.mesh;
-  const SurfaceProjection& projection = input.projection;
   const std::vector<bool> border = vertexEdges(m).onBoundary;
   const double spacing = meanEdgeLength(m);
   // The mesh's smallest angle may not fall under the lesser of what it was and 30 degrees,
@@ -87,29 +117,9 @@ std::vector<int> snapToTips(Mesh& m, const SearchableSurface& input, int rounds)
       // The snap may turn no triangle over; the relaxation and the flips after it never do (each
       // move and flip checks its triangles).
       if (turnsOver(m, rings, v, tip)) continue;
-      // Tried on a copy, with the two rings around it relaxed on the surface (the tip stays).
-      std::vector<bool> around(m.vertexCount(), false);
-      around[v] = true;
-      around = withNeighbours(m, withNeighbours(m, around));
-      std::vector<bool> movable = around;
-      for (int w = 0; w < m.vertexCount(); ++w) movable[w] = movable[w] && !snapped[w] && w != v;
-      Mesh tried = m;
-      tried.points[v] = tip;
-      relaxOnSurface(tried, movable, projection, 3, /*local=*/true);
-      // Flips at the rim of the two rings make triangles one ring further out: check those too.
-      const std::vector<bool> changed = withNeighbours(tried, around);
-      // Where the relaxation leaves an angle under the floor there, the two rings' vertices
-      // move on to raise it (as raiseSmallAngles does everywhere later; the tip and the rest
-      // of the mesh stay). On a coarse fin of CGAL's lion head, met at 1000 vertices from 500,
-      // the relaxation left 19 degrees and the tip, 2.6% of the diagonal away, was refused.
-      if (smallestAngleAround(tried, changed) < floor) {
-        std::vector<int> stay;
-        for (int w = 0; w < tried.vertexCount(); ++w)
-          if (!movable[w]) stay.push_back(w);
-        raiseSmallAngles(tried, input, stay);
-      }
-      if (std::sqrt(squared) > spacing || smallestAngleAround(tried, changed) >= floor) {
-        m = std::move(tried);
+      TipTrial trial = snapOnACopy(m, v, tip, snapped, floor, input);
+      if (std::sqrt(squared) > spacing || smallestAngleAround(trial.mesh, trial.changed) >= floor) {
+        m = std::move(trial.mesh);
         rings = Rings(m);
         snapped[v] = true;
         refused[i] = false;
