@@ -982,13 +982,6 @@ TEST(Pipeline, AFanTooLargeToSimplifyQuicklyIsRemeshedAsItIs) {
   EXPECT_NO_THROW(validateMesh(r.output, "result"));
 }
 
-// How far the vertex of `mesh` nearest to `p` is.
-double nearestVertex(const Mesh& mesh, const Vec3& p) {
-  double nearest = INFINITY;
-  for (const Vec3& q : mesh.points) nearest = std::min(nearest, (q - p).norm());
-  return nearest;
-}
-
 // A saddle over a polar grid whose rim is a 24-gon, coarser than the border of its result at 400
 // vertices: the result's border edges cut off the rim's corners, and that was its Hausdorff
 // distance (0.305% of the diagonal). Remeshed with the rim's 24 vertices kept as border samples
@@ -1006,7 +999,7 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
   EXPECT_EQ(r.fidelity.hausdorffPercent, r.borderTrial->withHausdorff);
   EXPECT_EQ(r.runs, 2);
   for (int i = 0; i < 24; ++i)
-    EXPECT_LT(nearestVertex(r.output, saddle.points[saddle.vertexCount() - 24 + i]), 1e-9) << "corner " << i;
+    EXPECT_LT(test::nearestDistance(r.output.points, saddle.points[saddle.vertexCount() - 24 + i]), 1e-9) << "corner " << i;
 }
 
 // A flat eight-pointed star, its rim a 16-gon alternating between radius 1 and 0.87: its eight
@@ -1025,7 +1018,7 @@ TEST(Pipeline, TheReflexCornersOfACoarseBorderThatTheResultCutsAcrossAreSampled)
   EXPECT_TRUE(r.borderTrial->keptWith);
   EXPECT_GT(r.borderTrial->withoutHausdorff, 0.1);
   EXPECT_LT(r.fidelity.hausdorffPercent, 1e-9);
-  for (int i = 0; i < 16; ++i) EXPECT_LT(nearestVertex(r.output, test::starRim(8, 0.87, i)), 1e-9) << "corner " << i;
+  for (int i = 0; i < 16; ++i) EXPECT_LT(test::nearestDistance(r.output.points, test::starRim(8, 0.87, i)), 1e-9) << "corner " << i;
 }
 
 // The run with the corners kept is kept where it meets as many bars and is closer by 1% at

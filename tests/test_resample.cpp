@@ -136,10 +136,7 @@ TEST(Sites, ANarrowBumpOfTheBorderIsKept) {
   o.sites.count = 300;
   o.measureFidelity = false;
   const RemeshResult r = remesh(m, o, "bump");
-  const Vec3 tip(0.5, bump(0.5), 0);
-  double nearest = INFINITY;
-  for (const Vec3& p : r.output.points) nearest = std::min(nearest, (p - tip).norm());
-  EXPECT_LT(nearest, 1e-9);
+  EXPECT_LT(test::nearestDistance(r.output.points, Vec3(0.5, bump(0.5), 0)), 1e-9);
 }
 
 // As above, but the map turns by 30 degrees at a border vertex 0.02 from the bump's tip (the
@@ -165,8 +162,5 @@ TEST(Sites, ACornerOfTheMapAloneGivesWayToABumpOfTheBorder) {
   SiteOptions o;
   o.count = 300;
   const InitialSites sites = initialSites(m, p, domain, o, "m.off");
-  const Vec3 tip(0.5, bump(0.5), 0);
-  double nearest = INFINITY;
-  for (const Vec3& q : sites.fixedPoints) nearest = std::min(nearest, (q - tip).norm());
-  EXPECT_LT(nearest, 1e-9);
+  EXPECT_LT(test::nearestDistance(sites.fixedPoints, Vec3(0.5, bump(0.5), 0)), 1e-9);
 }

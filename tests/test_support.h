@@ -208,6 +208,14 @@ inline Mesh polarDisk(int sectors, int rings, double phase = 0,
   });
 }
 
+// How far the nearest of `points` is from `p` (a corner or a tip the result should have as a
+// vertex, a sample that should lie on a point).
+inline double nearestDistance(const std::vector<Vec3>& points, const Vec3& p) {
+  double nearest = INFINITY;
+  for (const Vec3& q : points) nearest = std::min(nearest, (q - p).norm());
+  return nearest;
+}
+
 // A flat star of `points` points: its rim alternates between radius 1 (the points, rim vertex
 // 0 first) and `inner` (the reflex corners between them), vertex i at starRim(); `rings` rings
 // of a polar grid inside, the centre raised to `centreHeight`.
