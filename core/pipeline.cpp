@@ -1,26 +1,26 @@
 #include "pipeline.h"
 
 #include "charts.h"
-#include "mesh_io.h"
-#include "names.h"
 #include "flips.h"
 #include "last_steps.h"
+#include "mesh_io.h"
+#include "names.h"
 #include "polish.h"
 #include "simplify.h"
-#include "topology.h"
 #include "stopwatch.h"
+#include "topology.h"
 
 #include <algorithm>
-#include <charconv>
 #include <atomic>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <functional>
 #include <future>
-#include <thread>
-#include <cmath>
 #include <numeric>
-#include <cstdio>
 #include <set>
 #include <sstream>
+#include <thread>
 
 namespace lloydscope {
 
