@@ -79,9 +79,10 @@ std::string fileNameOf(const std::string& path) { return path.substr(path.find_l
 
 // ImGui 1.86 names only a few letter keys; the platform's key codes for letters are
 // consecutive (GLFW's are), so the others are found from A's.
-bool letterPressed(char letter) {
-  return keysAreCommands() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + (letter - 'A'), false);
+bool letterKeyPressed(char letter) {
+  return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_A) + (letter - 'A'), false);
 }
+bool letterPressed(char letter) { return keysAreCommands() && letterKeyPressed(letter); }
 
 // Panes that are one drawing area: a scroll bar would only eat into it.
 constexpr ImGuiWindowFlags kCanvasPaneFlags =
@@ -1059,6 +1060,7 @@ void Inspector::captionPane(const Caption& c, const ImVec2& pos, const ImVec2& s
 
 void Inspector::handleKeys() {
   ImGuiIO& io = ImGui::GetIO();
+  if (io.KeyCtrl && letterKeyPressed('Q')) closeRequested_ = true;  // from a text field too
   if (closeListOnEscape() || !keysAreCommands()) return;
   // During a lesson the keys move through its stages (the lesson sets the iteration each
   // frame); otherwise through the iterations.

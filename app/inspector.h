@@ -113,6 +113,8 @@ class Inspector {
   }
   // Builds one frame of the whole window (ImGui::NewFrame() must have been called).
   void frame();
+  // Ctrl+Q was pressed: the window closes (a picture made headless has no keys).
+  bool closeRequested() const { return closeRequested_; }
   // Seconds until the picture changes without input: 0 while a run, an export or the first
   // view's fit goes on, the
   // time to playback's next iteration or the lesson's next step, infinity where nothing moves
@@ -337,6 +339,7 @@ class Inspector {
   std::string runError_;  // what ended the worker's run (out of memory, say), said by joinWorker()
   int exportNext_ = 0, iterationBeforeExport_ = 0;
   std::optional<ExportRequest> exportRequest_;
+  bool closeRequested_ = false;
   char exportPath_[512] = "lloydscope.png";
   int exportPane_ = 0, exportFirst_ = 0;
   std::optional<int> exportLast_;  // none: the sequence ends at the last iteration, whatever it is

@@ -369,6 +369,7 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
         layOutInUnits(pixelsPerUnit);
         ImGui::NewFrame();
         inspector.frame();
+        if (inspector.closeRequested()) glfwSetWindowShouldClose(window, GLFW_TRUE);
         ImGui::Render();
         vkResetCommandBuffer(cmd, 0);
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};

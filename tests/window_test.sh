@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# The inspector's window on a virtual display (ctest runs this under xvfb-run): it opens with
+# the Vulkan validation layer on, takes keys, is resized (the swapchain made again), and
+# closes on Ctrl+Q with status 0. runWindow exits non-zero if the validation layer reported
+# anything, so the status covers every frame drawn.
+# usage: window_test.sh LLOYDSCOPE MESH
+set -uo pipefail
+cli=$1
+mesh=$2
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+fail() {
+  echo "window test: $*"
+  cat "$log"
+  kill "$pid" 2>/dev/null
+  exit 1
+}
+
+"$cli" inspect "$mesh" --validation >"$log" 2>&1 &
+pid=$!
+window=""
+for _ in $(seq 300); do  # 30 s to open
+  window=$(xdotool search --name '^Lloydscope$' 2>/dev/null | head -1)
+  [ -n "$window" ] && break
+  kill -0 "$pid" 2>/dev/null || fail "the inspector ended before its window opened"
+  sleep 0.1
+done
+[ -n "$window" ] || fail "no window in 30 s"
+xdotool windowfocus --sync "$window" 2>/dev/null
+
+# Keys a lecturer uses: the iterations, playback, presentation mode, the lesson, unpinning.
+for key in End Left shift+Left Home space space p p l l Escape; do
+  xdotool key "$key"
+  sleep 0.2
+done
+xdotool windowsize --sync "$window" 900 600
+sleep 1
+kill -0 "$pid" 2>/dev/null || fail "the inspector ended before Ctrl+Q"
+xdotool key ctrl+q
+for _ in $(seq 200); do  # 20 s to close
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.1
+done
+kill -0 "$pid" 2>/dev/null && fail "still open 20 s after Ctrl+Q"
+wait "$pid"
+status=$?
+[ "$status" -eq 0 ] || fail "exit status $status"
+echo "window test: opened, took keys, resized, closed on Ctrl+Q"
