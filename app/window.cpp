@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <cstdlib>
 #include <optional>
 #include <vector>
@@ -276,6 +275,167 @@ void awaitNextFrame(GLFWwindow* window, const Inspector& inspector) {
   }
 }
 
+// Runs `undo` when the scope ends, however it ends: what was made is unmade in reverse order,
+// after an error too.
+template <class Undo>
+struct OnExit {
+  Undo undo;
+  ~OnExit() { undo(); }
+};
+template <class Undo>
+OnExit(Undo) -> OnExit<Undo>;
+
+// The primary monitor's content scale (its Xft.dpi over 96), within 1 to 4.
+float screenScale() {
+  float scale = 1, unused;
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) glfwGetMonitorContentScale(monitor, &scale, &unused);
+  return std::clamp(scale, 1.0f, 4.0f);
+}
+
+// The window's Vulkan surface, the render pass that draws into it, and its swapchain. open()
+// makes them one after the other; whatever it made is gone with the Screen, before the
+// instance is, whether open() or a frame failed.
+struct Screen {
+  static constexpr VkFormat kFormat = VK_FORMAT_B8G8R8A8_UNORM;  // UNORM: ImGui's colours are already sRGB
+  gpu::Context& gpu;
+  GLFWwindow* window;
+  VkSurfaceKHR surface = VK_NULL_HANDLE;
+  VkRenderPass pass = VK_NULL_HANDLE;
+  Swapchain chain;
+  bool outOfDate = false;  // the swapchain no longer fits the window
+
+  void open() {
+    gpu::check(glfwCreateWindowSurface(gpu.instance, window, nullptr, &surface), "creating the surface");
+    VkBool32 supported = VK_FALSE;
+    vkGetPhysicalDeviceSurfaceSupportKHR(gpu.physical, gpu.queueFamily, surface, &supported);
+    if (!supported) throw Error("the Vulkan device cannot present to this window");
+    pass = gpu::createRenderPass(gpu.device, kFormat, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+    chain.create(gpu, surface, pass, kFormat, window);
+  }
+  // The swapchain made again where it no longer fits the window's w x h pixels.
+  void fit(int w, int h) {
+    if (!outOfDate && static_cast<uint32_t>(w) == chain.extent.width &&
+        static_cast<uint32_t>(h) == chain.extent.height)
+      return;
+    chain.destroy(gpu);
+    chain.create(gpu, surface, pass, kFormat, window);
+    outOfDate = false;
+  }
+  ~Screen() {
+    chain.destroy(gpu);
+    if (pass) vkDestroyRenderPass(gpu.device, pass, nullptr);
+    if (surface) vkDestroySurfaceKHR(gpu.instance, surface, nullptr);
+  }
+};
+
+// ImGui on the window: its context and its GLFW and Vulkan backends, each shut down with the
+// WindowImGui if start() got as far as starting it.
+struct WindowImGui {
+  bool glfwBackend = false, vulkanBackend = false;
+
+  void start(GLFWwindow* window, gpu::Context& gpu, const Screen& screen, float pixelsPerUnit) {
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsLight();
+    glfwBackend = ImGui_ImplGlfw_InitForVulkan(window, true);
+    queueKeys(window);
+    addInspectorFonts(pixelsPerUnit);
+    vulkanBackend = true;  // initImGuiRenderer's font upload may fail after the backend started
+    gpu::initImGuiRenderer(gpu, screen.pass, static_cast<uint32_t>(screen.chain.images.size()));
+  }
+  ~WindowImGui() {
+    if (vulkanBackend) ImGui_ImplVulkan_Shutdown();
+    if (glfwBackend) ImGui_ImplGlfw_Shutdown();
+    if (ImGui::GetCurrentContext()) ImGui::DestroyContext();
+  }
+};
+
+// What the one frame in flight needs: a semaphore for the image acquired, a fence for the
+// frame drawn, its command buffer, and a buffer for frames read back (exports). create()
+// makes them; whatever it made is gone with the FrameSync, once the device is idle.
+struct FrameSync {
+  gpu::Context& gpu;
+  VkSemaphore acquired = VK_NULL_HANDLE;
+  VkFence done = VK_NULL_HANDLE;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  gpu::Buffer pixels;
+
+  void create() {
+    VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    gpu::check(vkCreateSemaphore(gpu.device, &semaphoreInfo, nullptr, &acquired), "creating a semaphore");
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    gpu::check(vkCreateFence(gpu.device, &fenceInfo, nullptr, &done), "creating a fence");
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = gpu.commandPool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    gpu::check(vkAllocateCommandBuffers(gpu.device, &alloc, &cmd), "allocating a command buffer");
+  }
+  ~FrameSync() {
+    vkDeviceWaitIdle(gpu.device);
+    gpu.destroy(pixels);
+    if (cmd) vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
+    if (done) vkDestroyFence(gpu.device, done, nullptr);
+    if (acquired) vkDestroySemaphore(gpu.device, acquired, nullptr);
+  }
+};
+
+// One frame: the inspector built and recorded into the next swapchain image, submitted and
+// presented; the next iteration prepared while lavapipe renders; an export's picture saved.
+void drawFrame(GLFWwindow* window, Screen& screen, FrameSync& sync, Inspector& inspector,
+               float pixelsPerUnit) {
+  int w, h;
+  glfwGetFramebufferSize(window, &w, &h);
+  if (w == 0 || h == 0) return;  // minimized
+  screen.fit(w, h);
+  gpu::Context& gpu = screen.gpu;
+  Swapchain& chain = screen.chain;
+  uint32_t index;
+  const VkResult acquiredResult =
+      vkAcquireNextImageKHR(gpu.device, chain.swapchain, UINT64_MAX, sync.acquired, VK_NULL_HANDLE, &index);
+  screen.outOfDate = gpu::swapchainOutOfDate(acquiredResult, "acquiring a swapchain image");
+  // Suboptimal gives an image still, drawn and shown before the chain is made again.
+  if (acquiredResult == VK_ERROR_OUT_OF_DATE_KHR) return;  // no image to draw into
+  deliverInput(window);
+  ImGui_ImplVulkan_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  holdMouseButtons(window);
+  layOutInUnits(pixelsPerUnit);
+  ImGui::NewFrame();
+  inspector.frame();
+  if (inspector.closeRequested()) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  ImGui::Render();
+  VkCommandBuffer cmd = sync.cmd;
+  vkResetCommandBuffer(cmd, 0);
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  vkBeginCommandBuffer(cmd, &begin);
+  Inspector::recordFrame(cmd, screen.pass, chain.framebuffers[index], chain.extent);
+  const bool exporting = inspector.exportRequest().has_value();
+  if (exporting && chain.readable) copyToBuffer(gpu, cmd, chain.images[index], chain.extent, sync.pixels);
+  vkEndCommandBuffer(cmd);
+  const VkPipelineStageFlags wait = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.waitSemaphoreCount = 1;
+  submit.pWaitSemaphores = &sync.acquired;
+  submit.pWaitDstStageMask = &wait;
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  submit.signalSemaphoreCount = 1;
+  submit.pSignalSemaphores = &chain.rendered[index];
+  gpu::check(vkQueueSubmit(gpu.queue, 1, &submit, sync.done), "submitting a frame");
+  VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+  present.waitSemaphoreCount = 1;
+  present.pWaitSemaphores = &chain.rendered[index];
+  present.swapchainCount = 1;
+  present.pSwapchains = &chain.swapchain;
+  present.pImageIndices = &index;
+  screen.outOfDate |= gpu::swapchainOutOfDate(vkQueuePresentKHR(gpu.queue, &present), "presenting a frame");
+  inspector.prepare();  // while lavapipe renders: the iteration the slider chose
+  vkWaitForFences(gpu.device, 1, &sync.done, VK_TRUE, UINT64_MAX);  // one frame in flight
+  vkResetFences(gpu.device, 1, &sync.done);
+  if (exporting) saveExport(inspector, chain, sync.pixels);
+}
+
 }  // namespace
 
 void requireDisplay() {
@@ -292,136 +452,36 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
               const OpeningView& view, double uiScale) {
   requireDisplay();
   if (!glfwInit()) throw Error("cannot open a window (GLFW could not start on this display)");
+  const OnExit endGlfw{[] { glfwTerminate(); }};
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-  float monitorScale = 1, unused;
-  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) glfwGetMonitorContentScale(monitor, &monitorScale, &unused);
-  const float pixelsPerUnit = uiScale > 0 ? static_cast<float>(uiScale) : std::clamp(monitorScale, 1.0f, 4.0f);
+  const float pixelsPerUnit = uiScale > 0 ? static_cast<float>(uiScale) : screenScale();
+  WindowEvents events;  // the callbacks', until the window is gone
   GLFWwindow* window = glfwCreateWindow(static_cast<int>(std::lround(1280 * pixelsPerUnit)),
                                         static_cast<int>(std::lround(800 * pixelsPerUnit)), "Lloydscope", nullptr, nullptr);
-  if (!window) {
-    glfwTerminate();
-    throw Error("cannot open a window on this display");
-  }
-  WindowEvents events;  // the callbacks' until the window is gone
-  std::exception_ptr failed;
+  if (!window) throw Error("cannot open a window on this display");
+  const OnExit closeWindow{[&] { glfwDestroyWindow(window); }};
   glfwSetWindowUserPointer(window, &events);
+  gpu::Context gpu(surfaceExtensions(), true, validation);
   {
-    gpu::Context gpu(surfaceExtensions(), true, validation);
-    VkSurfaceKHR surface;
-    gpu::check(glfwCreateWindowSurface(gpu.instance, window, nullptr, &surface), "creating the surface");
-    VkBool32 supported = VK_FALSE;
-    vkGetPhysicalDeviceSurfaceSupportKHR(gpu.physical, gpu.queueFamily, surface, &supported);
-    if (!supported) throw Error("the Vulkan device cannot present to this window");
-    const VkFormat format = VK_FORMAT_B8G8R8A8_UNORM;  // UNORM: ImGui's colours are already sRGB
-    VkRenderPass pass = gpu::createRenderPass(gpu.device, format, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
-    Swapchain chain;
-    chain.create(gpu, surface, pass, format, window);
-
+    Screen screen{gpu, window};
+    screen.open();
     watchInput(window);
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    ImGui::StyleColorsLight();
-    ImGui_ImplGlfw_InitForVulkan(window, true);
-    queueKeys(window);
-    addInspectorFonts(pixelsPerUnit);
-    gpu::initImGuiRenderer(gpu, pass, static_cast<uint32_t>(chain.images.size()));
-
-    VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    VkSemaphore acquired;
-    vkCreateSemaphore(gpu.device, &semaphoreInfo, nullptr, &acquired);
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence done;
-    vkCreateFence(gpu.device, &fenceInfo, nullptr, &done);
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = gpu.commandPool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd;
-    vkAllocateCommandBuffers(gpu.device, &alloc, &cmd);
-    gpu::Buffer pixels;  // frames read back for exports
-    // What fails from here on (a pin that does not exist, as the view is applied) still lets
-    // every Vulkan object go, before the device, and the window close; then it is thrown again.
-    try {
-      Inspector inspector(gpu, pass, meshName, options, std::move(result), std::move(input));
-      inspector.setWake(glfwPostEmptyEvent);  // thread-safe: ends the wait for events
-      view.applyTo(inspector);
-      bool outOfDate = false;  // the swapchain no longer fits the window
-      while (!glfwWindowShouldClose(window)) {
-        awaitNextFrame(window, inspector);
-        int w, h;
-        glfwGetFramebufferSize(window, &w, &h);
-        if (w == 0 || h == 0) continue;  // minimized
-        if (outOfDate || static_cast<uint32_t>(w) != chain.extent.width ||
-            static_cast<uint32_t>(h) != chain.extent.height) {
-          chain.destroy(gpu);
-          chain.create(gpu, surface, pass, format, window);
-        }
-        uint32_t index;
-        const VkResult acquiredResult = vkAcquireNextImageKHR(gpu.device, chain.swapchain, UINT64_MAX,
-                                                              acquired, VK_NULL_HANDLE, &index);
-        outOfDate = gpu::swapchainOutOfDate(acquiredResult, "acquiring a swapchain image");
-        // Suboptimal gives an image still, drawn and shown before the chain is made again.
-        if (acquiredResult == VK_ERROR_OUT_OF_DATE_KHR) continue;  // no image to draw into
-        deliverInput(window);
-        ImGui_ImplVulkan_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        holdMouseButtons(window);
-        layOutInUnits(pixelsPerUnit);
-        ImGui::NewFrame();
-        inspector.frame();
-        if (inspector.closeRequested()) glfwSetWindowShouldClose(window, GLFW_TRUE);
-        ImGui::Render();
-        vkResetCommandBuffer(cmd, 0);
-        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        vkBeginCommandBuffer(cmd, &begin);
-        Inspector::recordFrame(cmd, pass, chain.framebuffers[index], chain.extent);
-        const bool exporting = inspector.exportRequest().has_value();
-        if (exporting && chain.readable) copyToBuffer(gpu, cmd, chain.images[index], chain.extent, pixels);
-        vkEndCommandBuffer(cmd);
-        const VkPipelineStageFlags wait = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-        submit.waitSemaphoreCount = 1;
-        submit.pWaitSemaphores = &acquired;
-        submit.pWaitDstStageMask = &wait;
-        submit.commandBufferCount = 1;
-        submit.pCommandBuffers = &cmd;
-        submit.signalSemaphoreCount = 1;
-        submit.pSignalSemaphores = &chain.rendered[index];
-        gpu::check(vkQueueSubmit(gpu.queue, 1, &submit, done), "submitting a frame");
-        VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
-        present.waitSemaphoreCount = 1;
-        present.pWaitSemaphores = &chain.rendered[index];
-        present.swapchainCount = 1;
-        present.pSwapchains = &chain.swapchain;
-        present.pImageIndices = &index;
-        outOfDate |= gpu::swapchainOutOfDate(vkQueuePresentKHR(gpu.queue, &present), "presenting a frame");
-        inspector.prepare();  // while lavapipe renders: the iteration the slider chose
-        vkWaitForFences(gpu.device, 1, &done, VK_TRUE, UINT64_MAX);  // one frame in flight
-        vkResetFences(gpu.device, 1, &done);
-        if (exporting) saveExport(inspector, chain, pixels);
-      }
-      vkDeviceWaitIdle(gpu.device);  // before the inspector's buffers go
-    } catch (...) {
-      failed = std::current_exception();
+    WindowImGui imgui;
+    imgui.start(window, gpu, screen, pixelsPerUnit);
+    FrameSync sync{gpu};
+    sync.create();
+    Inspector inspector(gpu, screen.pass, meshName, options, std::move(result), std::move(input));
+    const OnExit settle{[&] { vkDeviceWaitIdle(gpu.device); }};  // before the inspector's buffers go
+    inspector.setWake(glfwPostEmptyEvent);  // thread-safe: ends the wait for events
+    view.applyTo(inspector);
+    while (!glfwWindowShouldClose(window)) {
+      awaitNextFrame(window, inspector);
+      drawFrame(window, screen, sync, inspector, pixelsPerUnit);
     }
-    vkDeviceWaitIdle(gpu.device);
-    gpu.destroy(pixels);
-    vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
-    vkDestroyFence(gpu.device, done, nullptr);
-    vkDestroySemaphore(gpu.device, acquired, nullptr);
-    ImGui_ImplVulkan_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-    chain.destroy(gpu);
-    vkDestroyRenderPass(gpu.device, pass, nullptr);
-    vkDestroySurfaceKHR(gpu.instance, surface, nullptr);
-    if (!failed && gpu.validationMessages > 0)
-      throw Error("the Vulkan validation layer reported " + std::to_string(gpu.validationMessages) +
-                  " problems");
   }
-  glfwDestroyWindow(window);
-  glfwTerminate();
-  if (failed) std::rethrow_exception(failed);
+  if (gpu.validationMessages > 0)
+    throw Error("the Vulkan validation layer reported " + std::to_string(gpu.validationMessages) +
+                " problems");
   return 0;
 }
 
