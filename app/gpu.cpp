@@ -174,12 +174,17 @@ Buffer Context::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  check(vkCreateBuffer(device, &info, nullptr, &b.buffer), "creating a buffer");
-  VkMemoryRequirements req;
-  vkGetBufferMemoryRequirements(device, b.buffer, &req);
-  b.memory = allocate(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  vkBindBufferMemory(device, b.buffer, b.memory, 0);
-  check(vkMapMemory(device, b.memory, 0, size, 0, &b.mapped), "mapping a buffer");
+  try {  // a buffer too large for the memory left is not left behind
+    check(vkCreateBuffer(device, &info, nullptr, &b.buffer), "creating a buffer");
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(device, b.buffer, &req);
+    b.memory = allocate(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    vkBindBufferMemory(device, b.buffer, b.memory, 0);
+    check(vkMapMemory(device, b.memory, 0, size, 0, &b.mapped), "mapping a buffer");
+  } catch (...) {
+    destroy(b);
+    throw;
+  }
   return b;
 }
 
@@ -208,17 +213,22 @@ Image Context::createImage(uint32_t width, uint32_t height, VkFormat format,
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  check(vkCreateImage(device, &info, nullptr, &im.image), "creating an image");
-  VkMemoryRequirements req;
-  vkGetImageMemoryRequirements(device, im.image, &req);
-  im.memory = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  vkBindImageMemory(device, im.image, im.memory, 0);
-  VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  view.image = im.image;
-  view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  view.format = format;
-  view.subresourceRange = {aspect, 0, 1, 0, 1};
-  check(vkCreateImageView(device, &view, nullptr, &im.view), "creating an image view");
+  try {  // an image too large for the memory left is not left behind
+    check(vkCreateImage(device, &info, nullptr, &im.image), "creating an image");
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device, im.image, &req);
+    im.memory = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    vkBindImageMemory(device, im.image, im.memory, 0);
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = im.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    check(vkCreateImageView(device, &view, nullptr, &im.view), "creating an image view");
+  } catch (...) {
+    destroy(im);
+    throw;
+  }
   return im;
 }
 

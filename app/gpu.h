@@ -12,11 +12,16 @@
 namespace lloydscope::gpu {
 
 struct GpuError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit GpuError(const std::string& what, bool outOfMemory = false)
+      : std::runtime_error(what), outOfMemory(outOfMemory) {}
+  bool outOfMemory;  // the host's or the device's: a smaller picture may fit
 };
 inline void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS)
-    throw GpuError(std::string("Vulkan: ") + what + " failed (VkResult " + std::to_string(result) + ")");
+  if (result == VK_SUCCESS) return;
+  const bool outOfMemory = result == VK_ERROR_OUT_OF_HOST_MEMORY || result == VK_ERROR_OUT_OF_DEVICE_MEMORY;
+  throw GpuError(std::string("Vulkan: ") + what + " failed" + (outOfMemory ? ": out of memory" : "") +
+                     " (VkResult " + std::to_string(result) + ")",
+                 outOfMemory);
 }
 // What vkAcquireNextImageKHR or vkQueuePresentKHR says of a window's swapchain: true where it
 // no longer fits the window and is to be made again (out of date; or suboptimal, which still

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <new>
 
 namespace lloydscope {
 
@@ -25,7 +26,9 @@ class OffscreenRenderer {
   // `pixelsPerUnit`: the inspector laid out in width x height over it (ImGuiIO's
   // DisplayFramebufferScale), as on a screen that many times as dense.
   OffscreenRenderer(int width, int height, bool validation, float pixelsPerUnit = 1.0f)
-      : width_(width), height_(height), gpu_({}, false, validation) {
+      : OffscreenRenderer(width, height, validation, Empty{}) {
+    // Constructed by now (the constructor delegated to has returned): where what follows
+    // throws (out of memory for a large picture), the destructor frees what was made.
     renderPass_ = gpu::createRenderPass(gpu_.device, VK_FORMAT_R8G8B8A8_UNORM,
                                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     color_ = gpu_.createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
@@ -53,13 +56,14 @@ class OffscreenRenderer {
     io.DeltaTime = 1.0f / 60.0f;
     ImGui::StyleColorsLight();
     addInspectorFonts(pixelsPerUnit);
+    imguiRenderer_ = true;  // its font upload may fail after the backend started
     gpu::initImGuiRenderer(gpu_, renderPass_, 2);
   }
 
   ~OffscreenRenderer() {
     vkDeviceWaitIdle(gpu_.device);
-    ImGui_ImplVulkan_Shutdown();
-    ImGui::DestroyContext();
+    if (imguiRenderer_) ImGui_ImplVulkan_Shutdown();
+    if (ImGui::GetCurrentContext()) ImGui::DestroyContext();
     gpu_.destroy(pixels_);
     vkDestroyFramebuffer(gpu_.device, framebuffer_, nullptr);
     gpu_.destroy(depth_);
@@ -101,12 +105,17 @@ class OffscreenRenderer {
   int validationMessages() const { return gpu_.validationMessages; }
 
  private:
+  struct Empty {};
+  OffscreenRenderer(int width, int height, bool validation, Empty)
+      : width_(width), height_(height), gpu_({}, false, validation) {}
+
   int width_, height_;
   gpu::Context gpu_;
   VkRenderPass renderPass_ = VK_NULL_HANDLE;
   gpu::Image color_, depth_;
   VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
   gpu::Buffer pixels_;
+  bool imguiRenderer_ = false;  // ImGui's Vulkan backend started
 };
 
 }  // namespace
@@ -138,9 +147,9 @@ void requirePictureSize(long long width, long long height, double uiScale) {
                 std::to_string(kSmallestHeight) + " to lay out in: a larger --size or a smaller --ui-scale");
 }
 
-void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
-                      RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
-  requirePictureSize(shot.width, shot.height, shot.uiScale);
+namespace {
+void render(const std::string& meshName, const RemeshOptions& options, RemeshResult result,
+            const ScreenshotOptions& shot, std::optional<Mesh> input) {
   OffscreenRenderer renderer(shot.width, shot.height, shot.validation, static_cast<float>(shot.uiScale));
   {
     Inspector inspector(renderer.gpu(), renderer.renderPass(), meshName, options, std::move(result),
@@ -158,6 +167,25 @@ void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
   if (renderer.validationMessages() > 0)
     throw Error("the Vulkan validation layer reported " +
                 std::to_string(renderer.validationMessages()) + " problems");
+}
+
+Error notEnoughMemory(const ScreenshotOptions& shot) {
+  return Error(shot.picture.path + ": not enough memory to render a " + std::to_string(shot.width) + "x" +
+               std::to_string(shot.height) + " picture: a smaller --size needs less");
+}
+}  // namespace
+
+void renderScreenshot(const std::string& meshName, const RemeshOptions& options,
+                      RemeshResult result, const ScreenshotOptions& shot, std::optional<Mesh> input) {
+  requirePictureSize(shot.width, shot.height, shot.uiScale);
+  try {
+    render(meshName, options, std::move(result), shot, std::move(input));
+  } catch (const gpu::GpuError& e) {
+    if (!e.outOfMemory) throw;
+    throw notEnoughMemory(shot);
+  } catch (const std::bad_alloc&) {  // the picture's images and buffers hold most of it
+    throw notEnoughMemory(shot);
+  }
 }
 
 FrameTimes benchmarkScrub(const std::string& meshName, const RemeshOptions& options,

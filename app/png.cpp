@@ -33,9 +33,11 @@ void writePng(const std::string& path, const unsigned char* pixels, int width, i
     const auto append = [](void* stream, void* data, int size) {
       static_cast<std::ostream*>(stream)->write(static_cast<const char*>(data), size);
     };
-    // A failure leaves the stream failed: writeAtomically then leaves the file as it was.
+    // stb fails only where its buffers cannot be allocated (it said "disk full?" through a
+    // failed stream); writeAtomically leaves the file as it was.
     if (!stbi_write_png_to_func(append, &out, crop.width, crop.height, 4, rgba.data(), crop.width * 4))
-      out.setstate(std::ios::failbit);
+      throw Error(path + ": not enough memory to encode a " + std::to_string(crop.width) + "x" +
+                  std::to_string(crop.height) + " picture as PNG");
   });
 }
 

@@ -878,3 +878,28 @@ TEST(Cli, RunningOutOfMemoryIsAOneLineError) {
   EXPECT_EQ(test::readText(err), "lloydscope: " + test::assetPath("jittered_grid.off") +
                                      ": out of memory: fewer vertices asked, or a smaller input, need less\n");
 }
+
+// The largest picture (8192x8192: three buffers of 256 MB) where they do not fit: one line
+// naming the picture and what to do (it was "Vulkan: allocating memory failed (VkResult -2)"),
+// no picture, and every Vulkan object made before the failure freed (the validation layer
+// listed an image or a buffer made without its memory, and the render pass, left behind).
+TEST(Cli, APictureTooLargeForTheMemoryIsAOneLineError) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer maps terabytes of shadow memory at start, which no ulimit -v allows";
+#endif
+  const std::string png = test::tempPath("too_large.png"), err = test::tempPath("too_large.err");
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::string limit = std::to_string(900000 + 16000 * cores);  // KiB, as above
+  const int status = std::system(("export MALLOC_ARENA_MAX=1; ulimit -v " + limit + "; " + std::string(LLOYDSCOPE_CLI) +
+                                  " inspect " + test::assetPath("sphere_cap.off") +
+                                  " --size 8192x8192 --validation --screenshot " + png + " >/dev/null 2>" + err)
+                                     .c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+  const std::string text = test::readText(err);
+  const std::string expected =
+      "lloydscope: " + png + ": not enough memory to render a 8192x8192 picture: a smaller --size needs less\n";
+  EXPECT_TRUE(text.size() >= expected.size() && text.compare(text.size() - expected.size(), expected.size(), expected) == 0)
+      << text;
+  EXPECT_EQ(text.find("not been destroyed"), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(png));
+}
