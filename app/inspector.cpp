@@ -1060,7 +1060,9 @@ void Inspector::captionPane(const Caption& c, const ImVec2& pos, const ImVec2& s
 
 void Inspector::handleKeys() {
   ImGuiIO& io = ImGui::GetIO();
-  if (io.KeyCtrl && letterKeyPressed('Q')) closeRequested_ = true;  // from a text field too
+  // From a text field too (Export PNG's name, typed, is saved at once).
+  if (io.KeyCtrl && letterKeyPressed('Q')) closeRequested_ = true;
+  if (io.KeyCtrl && letterKeyPressed('S') && !exporting()) saveExport({exportPath_, static_cast<Pane>(exportPane_)});
   if (closeListOnEscape() || !keysAreCommands()) return;
   // During a lesson the keys move through its stages (the lesson sets the iteration each
   // frame); otherwise through the iterations.
@@ -1326,6 +1328,16 @@ void Inspector::cameraControls() {
   }
 }
 
+// An export asked for from the window: its start, or why not, in the message line.
+void Inspector::saveExport(ExportJob job) {
+  try {
+    startExport(std::move(job));
+    showMessage(std::string("saving ") + exportPath_);
+  } catch (const Error& e) {
+    showMessage(e.what());
+  }
+}
+
 void Inspector::exportControls() {
   if (!ImGui::CollapsingHeader("Export PNG")) return;
   ImGui::SetNextItemWidth(-1);
@@ -1333,15 +1345,7 @@ void Inspector::exportControls() {
   ImGui::SetNextItemWidth(110);
   ImGui::Combo("pane", &exportPane_, "window\0" "3D view\0" "2D view\0" "plots\0");
   const Pane pane = static_cast<Pane>(exportPane_);
-  auto start = [&](ExportJob job) {
-    try {
-      startExport(std::move(job));
-      showMessage(std::string("saving ") + exportPath_);
-    } catch (const Error& e) {
-      showMessage(e.what());
-    }
-  };
-  if (ImGui::Button("Save this iteration")) start({exportPath_, pane});
+  if (ImGui::Button("Save this iteration (Ctrl+S)")) saveExport({exportPath_, pane});
   ImGui::SetNextItemWidth(60);
   // Iterations are numbered from 0: a negative one, which ExportJob reads as "the current
   // iteration alone", saved one unnumbered picture for a sequence -5 to 1.
@@ -1354,7 +1358,7 @@ void Inspector::exportControls() {
   int last = exportLast_.value_or(replay_->iterationCount() - 1);
   if (ImGui::InputInt("##last", &last, 0)) exportLast_ = last = std::max(0, last);
   ImGui::SameLine();
-  if (ImGui::Button("Save sequence")) start({exportPath_, pane, exportFirst_, last});
+  if (ImGui::Button("Save sequence")) saveExport({exportPath_, pane, exportFirst_, last});
   greyedText("a sequence is numbered: name_0000.png, ...");  // wrapped: TextDisabled ran off the pane
 }
 

@@ -160,6 +160,7 @@ class Inspector {
 
  private:
   void controlsPane(const ImVec2& pos, const ImVec2& size);
+  void saveExport(ExportJob job);
   void runSummary();
   void qualityTable();
   void runStatus();

@@ -1,16 +1,19 @@
 #!/usr/bin/env bash
 # The inspector's window on a virtual display (ctest runs this under xvfb-run): it opens with
 # the Vulkan validation layer on, takes keys, is resized (the swapchain made again), and
+# saves the window through its swapchain on Ctrl+S, and
 # closes on Ctrl+Q with status 0 and no word from the validation layer (runWindow exits
 # non-zero on what it reports while the device lives, and objects left when the instance goes
 # are printed). First, a pin that does not exist, found as the window opens: one line, status 1,
 # and every Vulkan object gone as well.
 # usage: window_test.sh LLOYDSCOPE MESH
 set -uo pipefail
-cli=$1
-mesh=$2
-log=$(mktemp)
-trap 'rm -f "$log"' EXIT
+cli=$(realpath "$1")
+mesh=$(realpath "$2")
+folder=$(mktemp -d)  # where Ctrl+S saves lloydscope.png
+log=$folder/log
+trap 'rm -rf "$folder"' EXIT
+cd "$folder" || exit 1
 fail() {
   echo "window test: $*"
   cat "$log"
@@ -42,6 +45,18 @@ for key in End Left shift+Left Home space space p p l l Escape; do
   xdotool key "$key"
   sleep 0.2
 done
+# Ctrl+S saves the whole window (Export PNG's defaults) as lloydscope.png, read back from the
+# swapchain: 1280x800, the window's size.
+xdotool key ctrl+s
+for _ in $(seq 100); do  # 10 s to save
+  [ -f lloydscope.png ] && break
+  sleep 0.1
+done
+[ -f lloydscope.png ] || fail "Ctrl+S saved no picture in 10 s"
+size=$(od -An -tu1 -j16 -N8 lloydscope.png | tr -s ' ')
+[ "$size" = " 0 0 5 0 0 0 3 32" ] || fail "the picture saved is not 1280x800 (its header's size: $size)"
+[ "$(stat -c %s lloydscope.png)" -gt 20000 ] || fail "the picture saved is nearly empty"
+
 xdotool windowsize --sync "$window" 900 600
 sleep 1
 kill -0 "$pid" 2>/dev/null || fail "the inspector ended before Ctrl+Q"
@@ -55,4 +70,4 @@ wait "$pid"
 status=$?
 [ "$status" -eq 0 ] || fail "exit status $status"
 grep -q "Validation" "$log" && fail "the validation layer reported"
-echo "window test: opened, took keys, resized, closed on Ctrl+Q"
+echo "window test: opened, took keys, saved a picture, resized, closed on Ctrl+Q"
