@@ -923,8 +923,48 @@ void requireExactPredicatesRange(const Mesh& input, const std::string& name, con
                 "), double precision leaves too few digits for its shape; move it nearer");
 }
 
+namespace {
+// A vertex farther from the middle of the surface (the median of its vertices, coordinate by
+// coordinate) than this many times as far as 99% of its vertices are: a stray one.
+constexpr double kStrayDistance = 100;
+
+// A stray vertex (a scan's outlier, a coordinate typed wrong) pulls its triangles into a needle
+// far longer than the surface, which the border's samples or the last steps' ears then follow
+// for minutes (the bumpy disk with one vertex 1000 times as far: over 200 s, for a result that
+// is mostly needle). Under 100 vertices the 99% are all of them: nothing to tell.
+void requireNoStrayVertex(const Mesh& input, const std::string& name) {
+  std::vector<char> used(input.vertexCount(), 0);
+  for (const Triangle& t : input.triangles)
+    for (int v : t) used[v] = 1;
+  std::vector<int> vertices;
+  for (int v = 0; v < input.vertexCount(); ++v)
+    if (used[v]) vertices.push_back(v);
+  if (vertices.size() < 100) return;
+  Vec3 middle;
+  std::vector<double> coordinate(vertices.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (size_t i = 0; i < vertices.size(); ++i) coordinate[i] = input.points[vertices[i]][axis];
+    std::nth_element(coordinate.begin(), coordinate.begin() + coordinate.size() / 2, coordinate.end());
+    middle[axis] = coordinate[coordinate.size() / 2];
+  }
+  std::vector<double> distance(vertices.size());
+  for (size_t i = 0; i < vertices.size(); ++i) distance[i] = (input.points[vertices[i]] - middle).norm();
+  const size_t farthest = std::max_element(distance.begin(), distance.end()) - distance.begin();
+  const double stray = distance[farthest];
+  const auto reachOfMost = distance.begin() + static_cast<long>(0.99 * static_cast<double>(distance.size() - 1));
+  std::nth_element(distance.begin(), reachOfMost, distance.end());
+  if (*reachOfMost > 0 && stray > kStrayDistance * *reachOfMost)
+    throw Error(name + ": vertex " + std::to_string(vertices[farthest]) + " is " +
+                std::to_string(static_cast<long long>(stray / *reachOfMost)) +
+                " times as far from the middle of the surface as 99% of its vertices (at most " +
+                std::to_string(static_cast<int>(kStrayDistance)) +
+                "): a stray vertex, whose triangles make a needle; remove it or move it back");
+}
+}  // namespace
+
 void requireRemeshableSize(const Mesh& input, const Topology& topology, int vertices, const std::string& name) {
   requireExactPredicatesRange(input, name, "remeshed");
+  requireNoStrayVertex(input, name);
   const double diagonal = boundingBoxDiagonal(input);
   const double area = surfaceArea(input);
   if (area < kThinnestArea * diagonal * diagonal)

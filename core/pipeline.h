@@ -371,9 +371,11 @@ void requireExactPredicatesRange(const Mesh& mesh, const std::string& name, cons
 // could only be met by asking for hundreds of thousands of vertices (a rectangle 1 by 10^-7
 // asked for 954,894, then ran out of memory).
 constexpr double kThinnestArea = 1e-6;
-// And `vertices` (those asked) far too few for the surface: its border (`topology`'s loops, the
-// input's), sampled at their spacing, would take over kMostBorderPerVertex (core/sites) times
-// as many. (initialSites() checks the border it samples, slits included, the same way.)
+// And a surface with a stray vertex, far off the rest (100 times as far from its middle as 99%
+// of its vertices), or `vertices` (those asked) far too few for the surface: its border
+// (`topology`'s loops, the input's), sampled at their spacing, would take over
+// kMostBorderPerVertex (core/sites) times as many. (initialSites() checks the border it
+// samples, slits included, the same way.)
 void requireRemeshableSize(const Mesh& input, const Topology& topology, int vertices, const std::string& name);
 
 // One line naming every setting, stored in recordings and printed by the command line.

@@ -665,6 +665,32 @@ TEST(Pipeline, SizesDoublePrecisionCannotRemeshAreRefused) {
     EXPECT_EQ(why(fine), "");
 }
 
+// A stray vertex (the bumpy disk's vertex 340 moved 1000 times as far, through the disk) is
+// refused in one line naming it: the run took over 200 s (ears made at the sharp corners of a
+// result that was mostly needle). 30 times as far is a spike the run follows, in about a second.
+TEST(Pipeline, AStrayVertexIsRefused) {
+  const Mesh disk = readMesh(test::assetPath("bumpy_disk.off")).mesh;
+  const auto movedAway = [&](double times) {
+    Mesh m = disk;
+    m.points[340] *= -times;
+    return m;
+  };
+  const Mesh stray = movedAway(1000);
+  const Topology topology = analyzeTopology(stray);
+  try {
+    requireRemeshableSize(stray, topology, 600, "m.off");
+    ADD_FAILURE() << "not refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.off: vertex 340 is 696 times as far from the middle of the surface as 99% of its vertices "
+              "(at most 100): a stray vertex, whose triangles make a needle; remove it or move it back");
+  }
+  RemeshOptions quick;
+  quick.lloyd.maxIterations = 3;
+  EXPECT_THROW(remesh(stray, quick, "m.off"), Error);  // remesh() checks it
+  EXPECT_NO_THROW(requireRemeshableSize(movedAway(30), topology, 600, "m.off"));
+}
+
 // A 2 x 2 grid whose middle vertex is `height` up: a spike, and in the plane (height 0) with
 // its middle vertex moved `over` along x: a fold, whose triangles overlap.
 Mesh spikeOrFold(double height, double over = 0) {
