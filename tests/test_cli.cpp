@@ -860,21 +860,31 @@ TEST(Cli, AFileNamedLikeAnOptionIsToldHowToNameIt) {
 
 // A run that needs more memory than the process may have ends with one line saying so, not an
 // internal error.
+namespace {
+// The command line's exit code (-1 if it did not exit) for `args`, its stderr in `err`, with
+// `programKiB` of address space for the program, plus what each core's worker thread reserves
+// (its stack; one malloc arena for all, where 100 MB a core for the arenas would allow a
+// million sites' 1.2 GB on 8 cores or more).
+int exitCodeUnderAddressLimit(long programKiB, const std::string& args, const std::string& err) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::string limit = std::to_string(programKiB + 16000L * cores);
+  const int status = std::system(("export MALLOC_ARENA_MAX=1; ulimit -v " + limit + "; " + std::string(LLOYDSCOPE_CLI) +
+                                  " " + args + " >/dev/null 2>" + err).c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+}  // namespace
+
 TEST(Cli, RunningOutOfMemoryIsAOneLineError) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "AddressSanitizer maps terabytes of shadow memory at start, which no ulimit -v allows";
 #endif
-  const std::string args = "remesh " + test::assetPath("jittered_grid.off") + " --sites 1000000 -o " +
-                           test::tempPath("huge.off");
   const std::string err = test::tempPath("oom.err");
-  // Address space for the program, plus what each core's worker thread reserves (its stack; one
-  // malloc arena for all): a few seconds' work on the million sites fills the rest (their run
-  // takes 1.2 GB, which 100 MB a core for the arenas would allow on 8 cores or more).
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::string limit = std::to_string(600000 + 16000 * cores);  // KiB
-  const int status = std::system(("export MALLOC_ARENA_MAX=1; ulimit -v " + limit + "; " + std::string(LLOYDSCOPE_CLI) +
-                                  " " + args + " >/dev/null 2>" + err).c_str());
-  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+  // A few seconds' work on the million sites fills the rest (their run takes 1.2 GB).
+  EXPECT_EQ(exitCodeUnderAddressLimit(600000,
+                                      "remesh " + test::assetPath("jittered_grid.off") + " --sites 1000000 -o " +
+                                          test::tempPath("huge.off"),
+                                      err),
+            1);
   EXPECT_EQ(test::readText(err), "lloydscope: " + test::assetPath("jittered_grid.off") +
                                      ": out of memory: fewer vertices asked, or a smaller input, need less\n");
 }
@@ -888,13 +898,11 @@ TEST(Cli, APictureTooLargeForTheMemoryIsAOneLineError) {
   GTEST_SKIP() << "AddressSanitizer maps terabytes of shadow memory at start, which no ulimit -v allows";
 #endif
   const std::string png = test::tempPath("too_large.png"), err = test::tempPath("too_large.err");
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::string limit = std::to_string(900000 + 16000 * cores);  // KiB, as above
-  const int status = std::system(("export MALLOC_ARENA_MAX=1; ulimit -v " + limit + "; " + std::string(LLOYDSCOPE_CLI) +
-                                  " inspect " + test::assetPath("sphere_cap.off") +
-                                  " --size 8192x8192 --validation --screenshot " + png + " >/dev/null 2>" + err)
-                                     .c_str());
-  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+  EXPECT_EQ(exitCodeUnderAddressLimit(900000,
+                                      "inspect " + test::assetPath("sphere_cap.off") +
+                                          " --size 8192x8192 --validation --screenshot " + png,
+                                      err),
+            1);
   const std::string text = test::readText(err);
   const std::string expected =
       "lloydscope: " + png + ": not enough memory to render a 8192x8192 picture: a smaller --size needs less\n";
