@@ -333,33 +333,26 @@ void Inspector::compareSolvers() {
 void Inspector::startComparing() {
   stopComparing();
   comparisons_.clear();
-  stopComparing_ = false;
-  comparingDone_ = false;
   // The settings are copied (Restart changes options_); the recording stays until
   // stopComparing(), which everything that changes the replay calls first.
-  comparingError_.clear();
-  comparer_ = std::thread([this, &recording = replay_->recording(), run = options_.lloyd] {
-    try {
-      compared_ = relaxWithOtherSolvers(recording, run, &stopComparing_);
-    } catch (const std::exception& e) {  // out of memory, say: said in the window, as a file error is
-      comparingError_ = e.what();
-    }
-    comparingDone_ = true;
-    if (wake_) wake_();  // the window may be waiting for events: the curves are news
-  });
+  comparing_.start(
+      [this, &recording = replay_->recording(), run = options_.lloyd](const std::atomic<bool>& stop) {
+        compared_ = relaxWithOtherSolvers(recording, run, &stop);
+      },
+      [this] {
+        if (wake_) wake_();  // the window may be waiting for events: the curves are news
+      });
 }
 
 void Inspector::stopComparing() {
-  stopComparing_ = true;
-  if (comparer_.joinable()) comparer_.join();
+  comparing_.stop();
   compared_.clear();
-  comparingError_.clear();
 }
 
 // Step and Run change the run a comparison started from: it stops, and says so (its curves
 // never came, and nothing said why).
 void Inspector::stopComparingForARun() {
-  if (comparer_.joinable() && !comparingDone_)
+  if (comparing_.started() && !comparing_.finished())
     showMessage("Compare stopped: Step and Run change the run it compares with; press it again after the run.");
   stopComparing();
 }
@@ -432,35 +425,28 @@ void Inspector::startRun() {
   if (!session_ || running() || session_->finished()) return;
   stopComparingForARun();  // the run appends to the replay the comparison reads
   if (lesson_.playing()) toggleLesson();  // its plan is of the iterations before the run
-  stopRequested_ = false;
-  workerDone_ = false;
-  runError_.clear();
-  worker_ = std::thread([this] {
-    try {
-      while (!stopRequested_ && !session_->finished()) {
-        IterationRecord record = session_->step();
-        std::lock_guard<std::mutex> lock(pendingMutex_);
-        pending_.push_back(std::move(record));
-      }
-    } catch (const std::exception& e) {  // out of memory, say: it ended the program
-      runError_ = e.what();
+  run_.start([this](const std::atomic<bool>& stop) {
+    while (!stop && !session_->finished()) {
+      IterationRecord record = session_->step();
+      std::lock_guard<std::mutex> lock(pendingMutex_);
+      pending_.push_back(std::move(record));
     }
-    workerDone_ = true;
   });
 }
 
 void Inspector::stopRun() {
-  stopRequested_ = true;
+  run_.requestStop();
   joinWorker();
 }
 
 void Inspector::joinWorker() {
-  if (worker_.joinable()) worker_.join();
+  const std::string error = run_.join();
   collectIterations();
-  if (runError_.empty()) return;
-  // The iterations so far stay to look at; the session that failed is spent.
-  showMessage("The run stopped at iteration " + std::to_string(replay_->iterationCount() - 1) + ": " + runError_);
-  runError_.clear();
+  if (!error.empty()) runFailed(error);
+}
+
+void Inspector::runFailed(const std::string& why) {
+  showMessage("The run stopped at iteration " + std::to_string(replay_->iterationCount() - 1) + ": " + why);
   session_.reset();
 }
 
@@ -855,14 +841,15 @@ double Inspector::secondsToChange() const {
 }
 
 void Inspector::frame() {
-  if (comparingDone_ && comparer_.joinable()) {
-    comparer_.join();
-    if (comparingError_.empty()) comparisons_ = std::move(compared_);
-    else showMessage("Compare: " + comparingError_);
+  if (comparing_.started() && comparing_.finished()) {
+    // Out of memory, say: said in the window, as a file error is.
+    const std::string error = comparing_.join();
+    if (error.empty()) comparisons_ = std::move(compared_);
+    else showMessage("Compare: " + error);
     compared_.clear();
   }
   collectIterations();
-  if (session_ && workerDone_ && worker_.joinable()) {
+  if (session_ && run_.started() && run_.finished()) {
     joinWorker();
     if (session_ && session_->finished()) finishSession();
   }
@@ -1232,7 +1219,7 @@ void Inspector::runStatus() {
   const std::string withOthers = std::string("with ") + toString(others[0]) + " and " + toString(others[1]);
   // Their curves join the convergence plots when done. During a run the button waits (it was
   // hidden, and a class did not know it was there).
-  const bool comparing = comparer_.joinable();
+  const bool comparing = comparing_.started();
   if (comparing || running()) ImGui::BeginDisabled();
   if (ImGui::Button(((comparing ? "Comparing " : "Compare ") + withOthers + (comparing ? "..." : "")).c_str()))
     startComparing();
@@ -2020,8 +2007,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
       setIteration(replay_->iterationCount() - 1);
       if (session_->finished()) finishSession();
     } catch (const std::exception& e) {  // out of memory, say: said as a run's failure is (it ended the program)
-      runError_ = e.what();
-      joinWorker();
+      runFailed(e.what());
     }
   }
   ImGui::SameLine();

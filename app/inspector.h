@@ -3,6 +3,7 @@
 // iteration of a recording; windowed and headless front ends both call frame().
 #pragma once
 
+#include "background_task.h"
 #include "canvas_renderer.h"
 #include "mesh_renderer.h"
 #include "pipeline.h"
@@ -21,7 +22,6 @@
 #include <limits>
 #include <mutex>
 #include <optional>
-#include <thread>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -195,12 +195,13 @@ class Inspector {
   // Before a new run or recording: the last run's result, and its notes, are not shown with it.
   void forgetResult();
   // A worker steps the session, or has stopped and is not joined yet (the frame joins it): Step
-  // and Run wait for the join (Run started a thread over the one not joined, which ends the
-  // program).
-  bool running() const { return !workerDone_ || worker_.joinable(); }
+  // and Run wait for the join.
+  bool running() const { return run_.started(); }
   void startRun();
   void stopRun();
   void joinWorker();  // the worker's iterations collected, and what ended it said
+  // The run failed (`why`): the iterations so far stay to look at; the session is spent.
+  void runFailed(const std::string& why);
   void collectIterations();
   void finishSession();
   void openReplay(Recording recording);
@@ -255,8 +256,7 @@ class Inspector {
   int inputCharts_ = 0;  // > 0: the panes and Restart follow the largest of so many charts
   int inputComponents_ = 1;  // > 1: ... the largest of so many components (Restart forgets result_'s)
   std::unique_ptr<RemeshSession> session_;
-  std::thread worker_;
-  std::atomic<bool> stopRequested_{false}, workerDone_{true};
+  BackgroundTask run_;  // steps session_
   std::mutex pendingMutex_;
   std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
   std::string message_;                   // what the last file action did, or its error: under the controls
@@ -272,14 +272,12 @@ class Inspector {
   // them early.
   static std::vector<Comparison> relaxWithOtherSolvers(const Recording& recording, const LloydOptions& run,
                                                        const std::atomic<bool>* stop);
-  // The Compare button's runs take seconds: they go on a thread of their own, which sets
-  // comparingDone_; frame() then shows their curves.
+  // The Compare button's runs take seconds: they go on a thread of their own; once it has
+  // finished, frame() shows their curves.
   void startComparing();
   void stopComparing();  // before the replay changes: the runs read its first iteration
-  std::thread comparer_;
-  std::atomic<bool> stopComparing_{false}, comparingDone_{false};
-  std::vector<Comparison> compared_;
-  std::string comparingError_;  // why the comparison failed, if it did
+  BackgroundTask comparing_;
+  std::vector<Comparison> compared_;  // comparing_'s, until frame() takes them
   std::function<void()> wake_;  // the window's: draw a frame even if no input comes
   bool animatedLastFrame_ = false;
   char meshPath_[512] = {}, recordingPath_[512] = {};
@@ -337,7 +335,6 @@ class Inspector {
   bool fitPending_ = false;  // fitCamera() waits for the 3D pane's size to set the distance
   Selection selection_;
   std::optional<ExportJob> exportJob_;
-  std::string runError_;  // what ended the worker's run (out of memory, say), said by joinWorker()
   int exportNext_ = 0, iterationBeforeExport_ = 0;
   std::optional<ExportRequest> exportRequest_;
   bool closeRequested_ = false;
