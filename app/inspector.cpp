@@ -196,8 +196,6 @@ Mesh largestComponent(const Mesh& mesh) {
   return std::move(*std::max_element(parts.begin(), parts.end(), byArea));
 }
 
-glm::vec3 glmOf(const Vec3& p) { return glm::vec3(p.x(), p.y(), p.z()); }
-
 // The last item (a view's canvas) was let go of after a click, not a drag of 3 px or more.
 bool clickedNotDragged() {
   return ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
@@ -487,37 +485,14 @@ void Inspector::prepare() {
   cellEdges();
 }
 
-glm::vec3 Inspector::towardsEye() const {
-  return glm::vec3(std::cos(camera_.pitch) * std::cos(camera_.yaw), std::cos(camera_.pitch) * std::sin(camera_.yaw),
-                   std::sin(camera_.pitch));
-}
-
-Vec3 Inspector::toGpu(const Vec3& p) const { return (p - gpuOrigin_) / gpuScale_; }
-
-Vec3 Inspector::fromGpu(const glm::vec3& p) const { return gpuOrigin_ + gpuScale_ * Vec3(p.x, p.y, p.z); }
-
-std::pair<glm::mat4, glm::vec3> Inspector::cameraMatrices(const ImVec2& extent, float top) const {
-  const glm::vec3 target = glmOf(toGpu(camera_.target));
-  const float distance = static_cast<float>(camera_.distance / gpuScale_);
-  const glm::vec3 eye = target + distance * towardsEye();
-  const float below = extent.y - top;  // the pane under the band at its top
-  glm::mat4 proj = glm::perspective(glm::radians(40.0f), extent.x / below, distance * 0.01f, distance * 10.0f);
-  proj[1][1] *= -1.0f;  // Vulkan's y points down
-  // The view is drawn over the whole pane (a mesh zoomed in still passes under the band), but
-  // its centre and its 40 degrees are those of the pane under the band.
-  const glm::mat4 underTheBand = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, top / extent.y, 0)),
-                                            glm::vec3(1, below / extent.y, 1));
-  return {underTheBand * proj * glm::lookAt(eye, target, glm::vec3(0, 0, 1)), eye};
-}
-
 void Inspector::pick3D(const ImVec2& mouse, const ImVec2& p0, const ImVec2& extent, float top) {
   if (layers().input3D) return;  // triangles are the result's
-  const auto [viewProjection, eye] = cameraMatrices(extent, top);
+  const auto [viewProjection, eye] = camera_.matrices(gpu_, extent.x, extent.y, top);
   const glm::mat4 inverse = glm::inverse(viewProjection);
   const float x = (mouse.x - p0.x) / extent.x * 2 - 1, y = (mouse.y - p0.y) / extent.y * 2 - 1;
   const glm::vec4 far = inverse * glm::vec4(x, y, 1.0f, 1.0f);
   const glm::vec3 through = glm::vec3(far) / far.w - eye;  // the same way in the GPU's frame as in the mesh's
-  const int hit = triangleOnRay(resultIn3D(), fromGpu(eye), Vec3(through.x, through.y, through.z));
+  const int hit = triangleOnRay(resultIn3D(), gpu_.from(eye), Vec3(through.x, through.y, through.z));
   if (finalShown()) selection_.toggleFinalTriangle(hit);
   else selection_.toggleTriangle(replay_->view(iteration_), hit);
 }
@@ -570,28 +545,10 @@ void Inspector::hoverTooltip2D(const Vec2& uv) {
   ImGui::EndTooltip();
 }
 
-std::string Inspector::cameraText() const {
-  char text[160];
-  std::snprintf(text, sizeof text, "%.4f %.4f %.6g %.6g %.6g %.6g", camera_.yaw, camera_.pitch,
-                camera_.distance, camera_.target.x(), camera_.target.y(), camera_.target.z());
-  return text;
-}
+std::string Inspector::cameraText() const { return camera_.text(); }
 
 void Inspector::setCamera(const std::string& text) {
-  Camera c;
-  double x, y, z;
-  char rest;
-  if (std::sscanf(text.c_str(), "%f %f %f %lf %lf %lf %c", &c.yaw, &c.pitch, &c.distance, &x, &y,
-                  &z, &rest) != 6 ||
-      !std::isfinite(c.yaw) || !std::isfinite(c.pitch) || !(c.distance > 0) ||
-      !std::isfinite(c.distance) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-    // Finite in single precision: a distance of 1e308 is read as infinite, and was refused as if
-    // it were not above 0.
-    throw Error("camera \"" + text + "\": expected \"yaw pitch distance x y z\" (six finite numbers, the angles "
-                "and the distance in single precision, distance > 0)");
-  c.pitch = std::clamp(c.pitch, -1.5f, 1.5f);
-  c.target = Vec3(x, y, z);
-  camera_ = c;
+  camera_ = OrbitCamera::parse(text);
   fitPending_ = false;
 }
 
@@ -705,30 +662,8 @@ const Mesh& Inspector::fittedMesh() const {
 
 void Inspector::fitCamera() {
   const auto [lo, hi] = boundingBox(fittedMesh());
-  camera_.target = 0.5 * (lo + hi);
-  camera_.distance = static_cast<float>(1.05 * (hi - lo).norm());  // until the pane is known
-  camera_.yaw = -1.2f;
-  camera_.pitch = 0.75f;
-  fitPending_ = true;
-}
-
-// The distance from which every vertex is inside the pane (with a margin) for the camera's
-// direction and the pane's shape: a long shape seen across (a triceratops) fits too, which a
-// distance from the bounding box alone did not make sure of.
-float Inspector::fittingDistance(const ImVec2& extent) const {
-  const glm::vec3 toEye = towardsEye();
-  const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 0, 1), toEye));
-  const glm::vec3 up = glm::cross(toEye, right);
-  const float margin = 0.9f;
-  const float tanV = margin * std::tan(glm::radians(20.0f)), tanH = tanV * extent.x / extent.y;
-  float distance = 0;
-  for (const Vec3& p : fittedMesh().points) {
-    const glm::vec3 q(p.x() - camera_.target.x(), p.y() - camera_.target.y(), p.z() - camera_.target.z());
-    const float depth = glm::dot(q, toEye);  // towards the eye
-    distance = std::max({distance, depth + std::abs(glm::dot(q, right)) / tanH,
-                         depth + std::abs(glm::dot(q, up)) / tanV});
-  }
-  return distance > 0 ? distance : camera_.distance;
+  camera_.lookAtBox(lo, hi);
+  fitPending_ = true;  // the distance, once the pane's shape is known
 }
 
 void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const Vec3& eye) const {
@@ -769,9 +704,8 @@ void Inspector::uploadMesh() {
   }
   // The GPU's frame: the mesh's box, centred and of size 1.
   const auto [lo, hi] = boundingBox(mesh);
-  gpuOrigin_ = 0.5 * (lo + hi);
-  gpuScale_ = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1.0;
-  renderer_.upload(mesh, colors, gpuOrigin_, gpuScale_);
+  gpu_ = GpuFrame::ofBox(lo, hi);
+  renderer_.upload(mesh, colors, gpu_.origin, gpu_.scale);
   // The seams on the mesh shown; on the user's own mesh (never cut), those of the mesh that was
   // parameterized, whose border vertices lie on it.
   const Mesh& cut = !shown.input3D ? view.output : replay_->recording().input;
@@ -801,7 +735,7 @@ void Inspector::uploadMesh() {
   // result shown), the irregular vertices of the mesh shown. First: a site's square at the
   // same depth after it would cover its middle.
   auto markIrregular = [&](const Vec3& at, const VertexValence& s) {
-    if (s.irregular()) marks.push_back(marker(toGpu(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
+    if (s.irregular()) marks.push_back(marker(gpu_.to(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
   };
   if (now.valences && now.sites && !final) {
     const std::vector<VertexValence> valences = siteValences(view);
@@ -812,7 +746,7 @@ void Inspector::uploadMesh() {
   }
   if (now.sites && !final)
     for (const Vec3& s : view.liftedSites)
-      marks.push_back(marker(toGpu(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+      marks.push_back(marker(gpu_.to(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
   renderer_.uploadMarkers(marks);
   uploaded_ = now;
 }
@@ -1511,18 +1445,9 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   ImGui::InvisibleButton("canvas3d", extent,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
   ImGuiIO& io = ImGui::GetIO();
-  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
-    camera_.yaw -= io.MouseDelta.x * 0.01f;
-    camera_.pitch = std::clamp(camera_.pitch + io.MouseDelta.y * 0.01f, -1.5f, 1.5f);
-  }
-  // Zoomed within 0.3..20 times the mesh's size: from 10^-3 the camera went inside the mesh and
-  // the pane was empty, at 10^3 the mesh was a dot, and only F brought it back. A view pasted
-  // from outside that range is not pushed farther out of it, nor jumps into it.
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
-    const float size = static_cast<float>(boundingBoxDiagonal(fittedMesh()));
-    camera_.distance = std::clamp(camera_.distance * std::pow(0.9f, io.MouseWheel),
-                                  std::min(0.3f * size, camera_.distance), std::max(20.0f * size, camera_.distance));
-  }
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+    camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) camera_.zoom(io.MouseWheel, boundingBoxDiagonal(fittedMesh()));
   if (ImGui::IsItemHovered() && letterPressed('F'))
     fitCamera();
 
@@ -1547,10 +1472,10 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
 
   if (clickedNotDragged()) pick3D(io.MousePos, p0, extent, labelBand);  // not the end of an orbit
   if (fitPending_) {
-    camera_.distance = fittingDistance(ImVec2(extent.x, extent.y - labelBand));
+    camera_.distance = camera_.fittingDistance(fittedMesh().points, extent.x, extent.y - labelBand);
     fitPending_ = false;
   }
-  const auto [viewProjection, eyeAt] = cameraMatrices(extent, labelBand);
+  const auto [viewProjection, eyeAt] = camera_.matrices(gpu_, extent.x, extent.y, labelBand);
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   MeshDraw& draw = meshCallback_.second;
@@ -1567,13 +1492,13 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
   dl->PushClipRect(p0, ImVec2(p0.x + extent.x, p0.y + extent.y), true);
   auto toScreen = [&](const Vec3& p, ImVec2& screen) {
-    const glm::vec4 c = viewProjection * glm::vec4(glmOf(toGpu(p)), 1.0f);
+    const glm::vec4 c = viewProjection * glm::vec4(glmOf(gpu_.to(p)), 1.0f);
     if (c.w <= 0) return false;
     screen = ImVec2(p0.x + (c.x / c.w * 0.5f + 0.5f) * extent.x,
                     p0.y + (c.y / c.w * 0.5f + 0.5f) * extent.y);
     return true;
   };
-  const Vec3 eye = fromGpu(eyeAt);  // the mesh's frame
+  const Vec3 eye = gpu_.from(eyeAt);  // the mesh's frame
   drawSeams3D(dl, toScreen, eye);
   if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip

@@ -6,6 +6,7 @@
 #include "background_task.h"
 #include "canvas_renderer.h"
 #include "mesh_renderer.h"
+#include "orbit_camera.h"
 #include "pipeline.h"
 #include "png.h"
 #include "report.h"
@@ -27,11 +28,6 @@
 #include <tuple>
 
 namespace lloydscope {
-
-struct Camera {
-  float yaw = 0.6f, pitch = 0.7f, distance = 2.5f;
-  Vec3 target = Vec3::Zero();
-};
 
 // What colours the 2D cells: Moved is how far each site went from iteration k-1 to k, where
 // the diagram is still changing; Valence the valence of each site's vertex in the iteration's
@@ -220,21 +216,10 @@ class Inspector {
   bool iterationResultIn3D() const { return !layers().input3D && !finalShown(); }
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
-  float fittingDistance(const ImVec2& extent) const;
-  glm::vec3 towardsEye() const;  // the unit vector from the camera's target to its eye
-  Vec3 toGpu(const Vec3& p) const;  // where the GPU has p: see gpuOrigin_
-  Vec3 fromGpu(const glm::vec3& p) const;
-  // The 3D view's view-projection matrix (Vulkan clip space) and eye, both of the GPU's frame
-  // (toGpu), for a pane this size whose `top` pixels (the label's band) the view is centred
-  // and fitted under.
-  std::pair<glm::mat4, glm::vec3> cameraMatrices(const ImVec2& extent, float top) const;
 
   MeshRenderer renderer_;
   std::string meshName_;
-  // The 3D pane's mesh goes to the GPU centred on gpuOrigin_, at 1 / gpuScale_ (its box's
-  // centre and diagonal, set as it is uploaded): single precision keeps its shape at any size.
-  Vec3 gpuOrigin_ = Vec3::Zero();
-  double gpuScale_ = 1;
+  GpuFrame gpu_;  // of the 3D pane's mesh, set as it is uploaded
   std::string shownPath_;  // the mesh or recording open, with its folder: no export or save replaces it
   RemeshOptions options_;   // the run on screen's: the header, the captions and Compare describe it
   RemeshOptions settings_;  // the Settings pane's, for the next Restart or Open mesh
@@ -331,7 +316,7 @@ class Inspector {
   bool playing_ = false, showTimings_ = true;
   float playSpeed_ = 10.0f, playClock_ = 0.0f;
   CellFill fill_ = CellFill::None;
-  Camera camera_;
+  OrbitCamera camera_;
   bool fitPending_ = false;  // fitCamera() waits for the 3D pane's size to set the distance
   Selection selection_;
   std::optional<ExportJob> exportJob_;
