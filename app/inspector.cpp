@@ -652,6 +652,7 @@ void OpeningView::applyTo(Inspector& inspector) const {
   if (compareSolvers) inspector.compareSolvers();
   inspector.setRepairOnOpen(repair);
   inspector.showTimings(timings);
+  inspector.plotAgainstTime(plotTime);
 }
 
 // The mesh the 3D pane fits: the final result where it is shown (with several components, all
@@ -1231,6 +1232,13 @@ void Inspector::viewControls() {
   bool byAngle = colorByAngle_;
   if (ImGui::Checkbox("colour by minimum angle", &byAngle)) colorByAngle_ = byAngle;
   ImGui::Checkbox("wireframe", &wireframe_);
+  ImGui::TextUnformatted("Convergence plots");
+  bool time = plotsAgainstTime();
+  if (!showTimings_) ImGui::BeginDisabled();
+  if (ImGui::Checkbox("against time (ms), not iterations", &time)) plotTime_ = time;
+  if (!showTimings_) ImGui::EndDisabled();
+  if (!showTimings_ && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Timings are off (--no-timings)");
 }
 
 void Inspector::cameraControls() {
@@ -1763,20 +1771,29 @@ struct PlotTitle {
   const char* brief;
 };
 
+// One curve of a plot: `values` at `at` (the iterations, or the milliseconds before each one).
+struct Curve {
+  std::vector<double> values, at;
+  ImU32 colour;
+};
+
 // A plot with axes and ticks over the whole recording; returns the iteration clicked, or -1.
-// `values` (in `colour`) are the run's; `others`, drawn behind them in `otherColours`, are
-// other runs' (empty: none).
-int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colour,
-         const std::vector<std::vector<double>>& others, const std::vector<ImU32>& otherColours,
+// `run` is the run's curve; `others`, drawn behind it, other runs' (none: empty). Along x, the
+// iterations, or (`unit` "ms") the time.
+int plot(const PlotTitle& heading, const Curve& run, const std::vector<Curve>& others, const char* unit,
          bool logScale, double threshold, int current, const ImVec2& asked) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   const ImVec2 size = drawable(asked);
   ImGui::InvisibleButton(heading.full, size);
   const bool active = ImGui::IsItemActive();
-  const PlotAxis axis = plotAxis(values, others, threshold, logScale);
-  size_t longest = values.size();
-  for (const std::vector<double>& series : others) longest = std::max(longest, series.size());
+  std::vector<std::vector<double>> otherValues;
+  for (const Curve& c : others) otherValues.push_back(c.values);
+  const PlotAxis axis = plotAxis(run.values, otherValues, threshold, logScale);
+  const bool time = *unit != '\0';
+  double span = run.at.empty() ? 0 : run.at.back();  // of x: the last iteration, or the longest time
+  for (const Curve& c : others)
+    if (!c.at.empty()) span = std::max(span, c.at.back());
   float widest = 0;
   for (const PlotAxis::Tick& tick : axis.ticks) widest = std::max(widest, ImGui::CalcTextSize(tick.label.c_str()).x);
   const float font = ImGui::GetFontSize();  // 13 px, or larger when presenting
@@ -1789,14 +1806,13 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
   dl->PushClipRect(p0, ImVec2(p0.x + size.x, p0.y + size.y), true);
   dl->AddText(ImVec2(p0.x + left, p0.y + 1), rgb(0.1f, 0.1f, 0.1f), title);
   dl->PopClipRect();
-  if (values.empty()) return -1;
-  const int n = static_cast<int>(longest);
-  // The iterations keep a few pixels from the frame's sides: the last one lay on the right
+  if (run.values.empty()) return -1;
+  // The curves keep a few pixels from the frame's sides: the last iteration lay on the right
   // frame, which hid the last step of every curve (the % curve ended over the green line it had
   // crossed) and half its dot.
   const float inset = 0.5f * font;
-  auto x = [&](double k) {
-    return a.x + inset + static_cast<float>(n > 1 ? k / (n - 1) : 0.5) * (b.x - a.x - 2 * inset);
+  auto x = [&](double at) {
+    return a.x + inset + static_cast<float>(span > 0 ? at / span : 0.5) * (b.x - a.x - 2 * inset);
   };
   auto y = [&](double v) { return b.y - static_cast<float>(axis.position(v)) * (b.y - a.y); };
   // Every tick's line, but only every `every`-th label where they would overlap (a short plot:
@@ -1811,33 +1827,45 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
     if (i % every == 0)
       dl->AddText(ImVec2(p0.x + 2, ty - 0.5f * font), rgb(0.3f, 0.3f, 0.3f), axis.ticks[i].label.c_str());
   }
-  // X ticks: iterations, as many labels as fit side by side, six at most.
-  const float labelWidth = ImGui::CalcTextSize(std::to_string(std::max(n - 1, 0)).c_str()).x + 0.5f * font;
-  const int step = tickStep(n, static_cast<int>((b.x - a.x) / labelWidth));
-  for (int k = 0; k < n; k += step) {
-    dl->AddLine(ImVec2(x(k), b.y), ImVec2(x(k), b.y + 4), rgb(0.3f, 0.3f, 0.3f));
+  // X ticks: iterations, or milliseconds (the last label with the unit), as many labels as fit
+  // side by side, six at most.
+  const auto xTick = [&](double at, const std::string& label) {
+    dl->AddLine(ImVec2(x(at), b.y), ImVec2(x(at), b.y + 4), rgb(0.3f, 0.3f, 0.3f));
     // Centred under the tick, but inside the pane (presentation mode's "200" read "20").
-    const std::string label = std::to_string(k);
     const float width = ImGui::CalcTextSize(label.c_str()).x;
-    const float labelLeft = std::min(x(k) - 0.5f * width, p0.x + size.x - width - 1);
+    const float labelLeft = std::min(x(at) - 0.5f * width, p0.x + size.x - width - 1);
     dl->AddText(ImVec2(labelLeft, b.y + 5), rgb(0.3f, 0.3f, 0.3f), label.c_str());
+  };
+  if (!time) {
+    const int n = static_cast<int>(span) + 1;
+    const float labelWidth = ImGui::CalcTextSize(std::to_string(n - 1).c_str()).x + 0.5f * font;
+    const int step = tickStep(n, static_cast<int>((b.x - a.x) / labelWidth));
+    for (int k = 0; k < n; k += step) xTick(k, std::to_string(k));
+  } else if (span > 0) {
+    const std::string widestLabel = format("%.0f", span) + " " + unit;  // as wide as a round one
+    const double step = tickStep(span, static_cast<int>((b.x - a.x) / (ImGui::CalcTextSize(widestLabel.c_str()).x + 0.5f * font)));
+    const int last = static_cast<int>(std::floor(span / step * (1 + 1e-9)));
+    for (int i = 0; i <= last; ++i) xTick(i * step, format("%g", i * step) + (i == last ? std::string(" ") + unit : ""));
   }
   dl->PushClipRect(a, b, true);
   if (threshold > 0) dl->AddLine(ImVec2(a.x, y(threshold)), ImVec2(b.x, y(threshold)), rgb(0.2f, 0.6f, 0.2f), 1.5f);
-  auto polyline = [&](const std::vector<double>& series, ImU32 colour) {
+  auto polyline = [&](const Curve& c) {
     std::vector<ImVec2> line;
-    for (size_t k = 0; k < series.size(); ++k) line.emplace_back(x(static_cast<double>(k)), y(series[k]));
-    dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, 1.5f);
+    for (size_t k = 0; k < c.values.size(); ++k) line.emplace_back(x(c.at[k]), y(c.values[k]));
+    dl->AddPolyline(line.data(), static_cast<int>(line.size()), c.colour, 0, 1.5f);
   };
-  for (size_t k = 0; k < others.size(); ++k) polyline(others[k], otherColours[k]);
-  polyline(values, colour);
-  dl->AddLine(ImVec2(x(current), a.y), ImVec2(x(current), b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
-  if (current < static_cast<int>(values.size()))
-    dl->AddCircleFilled(ImVec2(x(current), y(values[current])), 4.0f, rgb(0.85f, 0.3f, 0.1f));
+  for (const Curve& c : others) polyline(c);
+  polyline(run);
+  const bool onTheRun = current < static_cast<int>(run.values.size());
+  const float cx = x(onTheRun ? run.at[current] : current);
+  dl->AddLine(ImVec2(cx, a.y), ImVec2(cx, b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
+  if (onTheRun) dl->AddCircleFilled(ImVec2(cx, y(run.values[current])), 4.0f, rgb(0.85f, 0.3f, 0.1f));
   dl->PopClipRect();
   if (active) {
     const float mx = ImGui::GetIO().MousePos.x;
-    return std::clamp(static_cast<int>(std::lround((mx - a.x - inset) / (b.x - a.x - 2 * inset) * (n - 1))), 0, n - 1);
+    const double at = (mx - a.x - inset) / (b.x - a.x - 2 * inset) * span;
+    if (!time) return std::clamp(static_cast<int>(std::lround(at)), 0, static_cast<int>(span));
+    return nearestIndex(run.at, at);
   }
   return -1;
 }
@@ -1846,33 +1874,36 @@ int plot(const PlotTitle& heading, const std::vector<double>& values, ImU32 colo
 
 void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   beginPane("Convergence", pos, size, kCanvasPaneFlags);
-  struct Curves {  // one series per run
-    std::vector<std::vector<double>> energy, displacement, moving;
-    Curves() = default;
-    explicit Curves(const std::vector<IterationRecord>& its) { add(its); }
-    void add(const std::vector<IterationRecord>& its) {
-      energy.emplace_back();
-      displacement.emplace_back();
-      moving.emplace_back();
+  const bool time = plotsAgainstTime();
+  struct Curves {  // of one run
+    Curve energy, displacement, moving;
+    Curves(const std::vector<IterationRecord>& its, ImU32 colour, bool time) {
+      std::vector<double> at = time ? elapsedMs(its) : std::vector<double>();
       for (const IterationRecord& it : its) {
-        energy.back().push_back(it.energy);
-        displacement.back().push_back(it.maxDisplacement);
-        moving.back().push_back(100.0 * it.fractionMoving);
+        if (!time) at.push_back(static_cast<double>(at.size()));
+        energy.values.push_back(it.energy);
+        displacement.values.push_back(it.maxDisplacement);
+        moving.values.push_back(100.0 * it.fractionMoving);
+      }
+      for (Curve* c : {&energy, &displacement, &moving}) {
+        c->at = at;
+        c->colour = colour;
       }
     }
   };
-  const Curves run(replay_->recording().iterations);
-  const ImU32 colour = ImGui::ColorConvertFloat4ToU32(solverColour(options_.lloyd.solver));
-  Curves others;
-  std::vector<ImU32> otherColours;
+  const Curves run(replay_->recording().iterations, ImGui::ColorConvertFloat4ToU32(solverColour(options_.lloyd.solver)),
+                   time);
+  std::vector<Curve> energy, displacement, moving;  // the other runs'
   if (!comparisons_.empty()) {  // which curve is which
     ImGui::TextColored(solverColour(options_.lloyd.solver), "%s, this run: %d iteration%s",
                        toString(options_.lloyd.solver), replay_->iterationCount(),
                        replay_->iterationCount() == 1 ? "" : "s");
     for (size_t k = 0; k < comparisons_.size(); ++k) {
       const Comparison& c = comparisons_[k];
-      others.add(c.iterations);
-      otherColours.push_back(ImGui::ColorConvertFloat4ToU32(solverColour(c.solver)));
+      const Curves other(c.iterations, ImGui::ColorConvertFloat4ToU32(solverColour(c.solver)), time);
+      energy.push_back(other.energy);
+      displacement.push_back(other.displacement);
+      moving.push_back(other.moving);
       const bool converged = convergedAt(c.iterations, replay_->recording().percentThreshold);
       ImGui::SameLine();
       ImGui::TextColored(solverColour(c.solver), "  %s%s: %d%s", toString(c.solver),
@@ -1880,18 +1911,17 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
                          converged ? "" : ", not converged");
     }
   }
+  const char* unit = time ? "ms" : "";
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 each((avail.x - 2 * ImGui::GetStyle().ItemSpacing.x) / 3, avail.y);
-  int jump = plot({"CVT energy", "CVT energy"}, run.energy[0], colour, others.energy, otherColours, false, 0,
-                  iteration_, each);
+  int jump = plot({"CVT energy", "CVT energy"}, run.energy, energy, unit, false, 0, iteration_, each);
   ImGui::SameLine();
-  int k = plot({"max distance site-centroid (log)", "max |c - s| (log)"}, run.displacement[0], colour,
-               others.displacement, otherColours, true, replay_->recording().distanceThreshold,
-               iteration_, each);
+  int k = plot({"max distance site-centroid (log)", "max |c - s| (log)"}, run.displacement, displacement, unit, true,
+               replay_->recording().distanceThreshold, iteration_, each);
   if (k >= 0) jump = k;
   ImGui::SameLine();
-  k = plot({"% sites farther than threshold (log)", "% moving (log)"}, run.moving[0], colour, others.moving,
-           otherColours, true, replay_->recording().percentThreshold, iteration_, each);
+  k = plot({"% sites farther than threshold (log)", "% moving (log)"}, run.moving, moving, unit, true,
+           replay_->recording().percentThreshold, iteration_, each);
   if (k >= 0) jump = k;
   if (jump >= 0) setIteration(jump);
   ImGui::End();

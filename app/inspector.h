@@ -82,6 +82,7 @@ struct OpeningView {
   std::optional<CellFill> fill;       // what colours the 2D cells
   bool repair = false;                // "Open mesh" repairs what it reads (--repair)
   bool timings = true;                // off: no milliseconds shown, so a picture is the same on every run
+  bool plotTime = false;              // the convergence plots against time, not iterations
   void applyTo(Inspector& inspector) const;
 };
 
@@ -131,6 +132,10 @@ class Inspector {
   void compareSolvers();
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }
+  // The convergence plots against the time the iterations took (each run's own, as recorded),
+  // not the iterations: Newton's fewer iterations each cost more. Not while timings are off.
+  void plotAgainstTime(bool on) { plotTime_ = on; }
+  bool plotsAgainstTime() const { return plotTime_ && showTimings_; }
   int iteration() const { return iteration_; }
   int iterationCount() const { return replay_->iterationCount(); }
   const std::string& meshName() const { return meshName_; }  // the file, not where it lives
@@ -313,7 +318,7 @@ class Inspector {
   bool mapIsOfTheInput() const;  // showFinal_, and there is a final result, and no lesson stage
   const Mesh& fittedMesh() const;
   bool wireframe_ = true, colorByAngle_ = true, showArrows_ = true, showTriangles_ = true;
-  bool playing_ = false, showTimings_ = true;
+  bool playing_ = false, showTimings_ = true, plotTime_ = false;
   float playSpeed_ = 10.0f, playClock_ = 0.0f;
   CellFill fill_ = CellFill::None;
   OrbitCamera camera_;

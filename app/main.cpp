@@ -435,7 +435,12 @@ struct InspectCommand {
     cmd->add_option("--size", size, "With --screenshot: picture size WxH, " + pictureSizes() + " (default 1280x800)")
         ->needs(screenshot);
     cmd->add_flag("--validation", shot.validation, "Enable the Vulkan validation layer; fail if it reports anything");
-    cmd->add_flag("--no-timings", noTimings, "Leave timings out of the picture (or the window), so that it is the same on every run");
+    CLI::Option* noTimingsFlag = cmd->add_flag(
+        "--no-timings", noTimings, "Leave timings out of the picture (or the window), so that it is the same on every run");
+    cmd->add_flag("--plot-time", shot.view.plotTime,
+                  "The convergence plots against time (the milliseconds of Lloyd's iterations, as recorded), "
+                  "not iterations: which solver converges sooner, not in fewer steps")
+        ->excludes(noTimingsFlag);
     cmd->add_option("--ui-scale", uiScale,
                     "Draw the inspector this many times as large, for a screen that many times as dense as "
                     "96 dpi (default: in a window the screen's own scale, from its Xft.dpi; in a picture 1, "

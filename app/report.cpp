@@ -189,8 +189,28 @@ double arrowMagnification(double typicalPixels, double longestPixels, double spa
 }
 
 int tickStep(int count, int fitting) {
-  const double rough = std::max(1.0, static_cast<double>(count) / std::clamp(fitting, 1, 6));
-  return static_cast<int>(oneTwoFiveAtLeast(rough));
+  return static_cast<int>(std::max(1.0, tickStep(static_cast<double>(count), fitting)));
+}
+
+double tickStep(double span, int fitting) { return oneTwoFiveAtLeast(span / std::clamp(fitting, 1, 6)); }
+
+std::vector<double> elapsedMs(const std::vector<IterationRecord>& iterations) {
+  std::vector<double> at;
+  double sum = 0;
+  for (const IterationRecord& it : iterations) {
+    at.push_back(sum);
+    sum += it.milliseconds;
+  }
+  return at;
+}
+
+int nearestIndex(const std::vector<double>& at, double x) {
+  if (at.empty()) return -1;
+  const auto after = std::lower_bound(at.begin(), at.end(), x);
+  if (after == at.begin()) return 0;
+  if (after == at.end()) return static_cast<int>(at.size()) - 1;
+  const auto before = after - 1;
+  return static_cast<int>((x - *before <= *after - x ? before : after) - at.begin());
 }
 
 namespace {

@@ -86,6 +86,14 @@ double arrowMagnification(double typicalPixels, double longestPixels, double spa
 // smallest that labels at most six of them and no more than `fitting` (how many labels fit side
 // by side). Steps of 20 along 230 iterations ran "100120140..." together.
 int tickStep(int count, int fitting);
+// The same along a span of time (> 0), in steps that may be under 1.
+double tickStep(double span, int fitting);
+
+// Where each iteration is on a plot against time: the milliseconds of the steps before it (0 at
+// iteration 0), the recorded steps' own times.
+std::vector<double> elapsedMs(const std::vector<IterationRecord>& iterations);
+// The index of the value of `at` (ascending) nearest `x`; -1 where `at` is empty.
+int nearestIndex(const std::vector<double>& at, double x);
 
 // `text` in lines no wider than `width` by `measure`, broken at `gap`s and at its own line
 // breaks only: ImGui 1.86 also breaks after '.' and ',', inside numbers ("Hausdorff 1." then

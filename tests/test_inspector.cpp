@@ -3,6 +3,7 @@
 //   LLOYDSCOPE_UPDATE_SNAPSHOTS=1 build/tests/lloydscope_tests --gtest_filter='Inspector*'
 #include "gpu.h"
 #include "mesh_io.h"
+#include "recording.h"
 #include "test_support.h"
 
 #include <stb_image.h>
@@ -344,6 +345,48 @@ TEST(Inspector, EveryPaneShowsTheIterationAsked) {
     ASSERT_EQ(a.height, b.height);
     EXPECT_GT(differingPixels(a, b, 0, a.height), 100u) << pane;
   }
+}
+
+// Against time, each iteration is where its run had got to by then: in a run whose first ten
+// steps took 1 ms each and the next ten 9 ms, iteration 10 is an eighth of the way along (10 of
+// 91 ms), not half of it. The red line of the iteration shown says where.
+TEST(Inspector, ThePlotsAgainstTimePutEachIterationWhereItsRunWas) {
+  const std::string made = test::tempPath("timed_made.lsrec"), rec = test::tempPath("timed.lsrec");
+  ASSERT_EQ(run("remesh " + test::assetPath("sphere_cap.off") + " --max-iterations 20 --no-fidelity --record " + made +
+                " > /dev/null"),
+            0);
+  Recording recording = loadRecording(made);
+  ASSERT_EQ(recording.iterations.size(), 20u);
+  for (size_t k = 0; k < 20; ++k) recording.iterations[k].milliseconds = k < 10 ? 1 : 9;
+  saveRecording(recording, rec);
+  // The column of the red line (217, 77, 26) in the first plot, as a fraction of the plots'
+  // picture's width: the one with most red pixels in the left third.
+  const auto redLine = [](const std::string& png) {
+    const Picture p = readPng(png);
+    int best = -1, most = 0;
+    for (int x = 0; x < p.width / 3; ++x) {
+      int red = 0;
+      for (int y = 0; y < p.height; ++y) {
+        const unsigned char* c = p.at(x, y);
+        red += std::abs(c[0] - 217) < 30 && std::abs(c[1] - 77) < 30 && std::abs(c[2] - 26) < 30;
+      }
+      if (red > most) most = red, best = x;
+    }
+    return static_cast<double>(best) / p.width * 3;  // 0..1 across the first plot
+  };
+  const std::string time = test::tempPath("timed_time.png"), steps = test::tempPath("timed_steps.png"),
+                    start = test::tempPath("timed_start.png");
+  const std::string args = "inspect " + rec + " --pane plots --size 960x600 --iteration ";
+  ASSERT_EQ(run(args + "10 --plot-time --screenshot " + time), 0);
+  ASSERT_EQ(run(args + "10 --screenshot " + steps), 0);
+  ASSERT_EQ(run(args + "0 --plot-time --screenshot " + start), 0);
+  const double atStart = redLine(start), byTime = redLine(time), bySteps = redLine(steps);
+  // The plot's frame starts about a fifth of the way in (its axis labels): the iteration's
+  // share of the plot's width is measured from iteration 0's line.
+  EXPECT_NEAR((bySteps - atStart) / (1 - atStart), 10.0 / 19, 0.12) << atStart << " " << bySteps;
+  EXPECT_NEAR((byTime - atStart) / (1 - atStart), 10.0 / 91, 0.06) << atStart << " " << byTime;
+  // Timings off: a picture the same on every run has no times to plot.
+  EXPECT_EQ(run(args + "10 --plot-time --no-timings --screenshot " + time + " 2> /dev/null"), 1);
 }
 
 // The Result stage shows the final result, and frames all of it as --final does: with two

@@ -446,6 +446,34 @@ TEST(Report, TickStepsLabelNoMoreThanFit) {
   EXPECT_EQ(tickStep(1, 0), 1);
 }
 
+// Along a span of time the steps may be under 1 (a short run's milliseconds).
+TEST(Report, TickStepsAlongTimeMayBeUnderOne) {
+  EXPECT_DOUBLE_EQ(tickStep(980.0, 20), 200);  // 0 200 400 600 800 ms
+  EXPECT_DOUBLE_EQ(tickStep(3.1, 20), 1);
+  EXPECT_DOUBLE_EQ(tickStep(0.9, 20), 0.2);
+  EXPECT_DOUBLE_EQ(tickStep(980.0, 2), 500);
+}
+
+// Each iteration at the time its run had taken by then: iteration 0 at 0, k after the steps
+// before it; an iteration clicked is the one nearest the time.
+TEST(Report, IterationsAlongTimeAreWhereTheirRunWas) {
+  std::vector<IterationRecord> its(4);
+  its[0].milliseconds = 10;
+  its[1].milliseconds = 20;
+  its[2].milliseconds = 5;
+  its[3].milliseconds = 7;  // the last step's time: after the last iteration shown
+  const std::vector<double> at = elapsedMs(its);
+  EXPECT_EQ(at, std::vector<double>({0, 10, 30, 35}));
+  EXPECT_EQ(nearestIndex(at, -3), 0);
+  EXPECT_EQ(nearestIndex(at, 4), 0);
+  EXPECT_EQ(nearestIndex(at, 6), 1);
+  EXPECT_EQ(nearestIndex(at, 29), 2);
+  EXPECT_EQ(nearestIndex(at, 33), 3);
+  EXPECT_EQ(nearestIndex(at, 1000), 3);
+  EXPECT_EQ(nearestIndex({}, 1), -1);
+  EXPECT_TRUE(elapsedMs({}).empty());
+}
+
 // A recording opened in the inspector has no distances: its line said "not measured
 // (--no-fidelity)", blaming a flag nobody passed.
 TEST(Report, TheInspectorsDistanceLineSaysWhyThereIsNone) {
