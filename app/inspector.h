@@ -15,7 +15,6 @@
 #include "selection.h"
 #include "topology.h"
 
-#include <glm/mat4x4.hpp>
 #include <imgui.h>
 
 #include <atomic>

@@ -70,10 +70,11 @@ namespace {
 // `viewProjection` with every depth a little nearer the eye: the sites lie on the surface, and
 // a site's mark must pass the depth test against its own triangles (a point sprite takes its
 // centre's depth throughout) but not against the surface in front of it. Depth is 0..1 with
-// the near plane at a hundredth of the camera's distance: 5e-5 there is about 0.5% of that
-// distance.
+// the near plane at a hundredth of the camera's distance (OrbitCamera): 2.5e-5 there is about
+// 0.25% of that distance. (It was 5e-5 of a depth the projection made as OpenGL's, -1..1,
+// GLM's default, which the same nudge halves.)
 std::array<float, 16> nudgedTowardsTheEye(std::array<float, 16> viewProjection) {
-  constexpr float kNudge = 5e-5f;
+  constexpr float kNudge = 2.5e-5f;
   for (int column = 0; column < 4; ++column)  // z' = z - kNudge w, column-major
     viewProjection[4 * column + 2] -= kNudge * viewProjection[4 * column + 3];
   return viewProjection;

@@ -93,6 +93,24 @@ TEST(OrbitCamera, TheTargetIsAtTheCentreOfThePaneUnderItsBand) {
   EXPECT_LT(onScreen(c, gpu, width, height, top, c.target + Vec3(0, 0, 0.001)).y, at.y);
 }
 
+// Vulkan's depth runs from 0 at the near plane to 1 at the far one: with OpenGL's (-1 to 1, GLM's
+// default) the nearest part of the view, twice the near plane's distance, was cut off.
+TEST(OrbitCamera, DepthIsVulkansFromZeroToOne) {
+  OrbitCamera c;
+  c.distance = 10;
+  const GpuFrame gpu;
+  const auto [viewProjection, eye] = c.matrices(gpu, 800, 600, 0);
+  const glm::vec3 forward = -c.towardsEye();
+  const auto depth = [&, &m = viewProjection](float along) {
+    const glm::vec4 p = m * glm::vec4(eye + along * forward, 1.0f);
+    return p.z / p.w;
+  };
+  EXPECT_NEAR(depth(0.1f), 0, 1e-5);  // the near plane, a hundredth of the distance
+  EXPECT_NEAR(depth(100), 1, 1e-5);   // the far plane, ten times the distance
+  EXPECT_GT(depth(0.15f), 0);
+  EXPECT_LT(depth(10), 1);
+}
+
 TEST(OrbitCamera, AFittedViewShowsEveryPointWithinTheMargin) {
   // A long shape seen across and from above: a box's diagonal alone did not fit it.
   std::vector<Vec3> points;
