@@ -1894,9 +1894,9 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
                    time);
   std::vector<Curve> energy, displacement, moving;  // the other runs'
   if (!comparisons_.empty()) {  // which curve is which
-    ImGui::TextColored(solverColour(options_.lloyd.solver), "%s, this run: %d iteration%s",
-                       toString(options_.lloyd.solver), replay_->iterationCount(),
-                       replay_->iterationCount() == 1 ? "" : "s");
+    const std::vector<IterationRecord>& its = replay_->recording().iterations;
+    ImGui::TextColored(solverColour(options_.lloyd.solver), "%s",
+                       curveLegend(toString(options_.lloyd.solver), true, false, its, true, time).c_str());
     for (size_t k = 0; k < comparisons_.size(); ++k) {
       const Comparison& c = comparisons_[k];
       const Curves other(c.iterations, ImGui::ColorConvertFloat4ToU32(solverColour(c.solver)), time);
@@ -1905,9 +1905,8 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
       moving.push_back(other.moving);
       const bool converged = convergedAt(c.iterations, replay_->recording().percentThreshold);
       ImGui::SameLine();
-      ImGui::TextColored(solverColour(c.solver), "  %s%s: %d%s", toString(c.solver),
-                         k == 0 ? ", same start" : "", static_cast<int>(c.iterations.size()),
-                         converged ? "" : ", not converged");
+      ImGui::TextColored(solverColour(c.solver), "  %s",
+                         curveLegend(toString(c.solver), false, k == 0, c.iterations, converged, time).c_str());
     }
   }
   const char* unit = time ? "ms" : "";

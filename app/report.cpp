@@ -204,6 +204,20 @@ std::vector<double> elapsedMs(const std::vector<IterationRecord>& iterations) {
   return at;
 }
 
+std::string curveLegend(const char* solver, bool thisRun, bool firstCompared, const std::vector<IterationRecord>& its,
+                        bool converged, bool withTime) {
+  const size_t n = its.size();
+  std::string text = std::string(solver) +
+                     (thisRun ? ", this run: " + std::to_string(n) + (n == 1 ? " iteration" : " iterations")
+                              : (firstCompared ? ", same start: " : ": ") + std::to_string(n));
+  if (withTime) {
+    double ms = 0;
+    for (const IterationRecord& it : its) ms += it.milliseconds;
+    text += format(", %.0f", ms) + " ms";
+  }
+  return converged || thisRun ? text : text + ", not converged";
+}
+
 int nearestIndex(const std::vector<double>& at, double x) {
   if (at.empty()) return -1;
   const auto after = std::lower_bound(at.begin(), at.end(), x);

@@ -95,6 +95,13 @@ std::vector<double> elapsedMs(const std::vector<IterationRecord>& iterations);
 // The index of the value of `at` (ascending) nearest `x`; -1 where `at` is empty.
 int nearestIndex(const std::vector<double>& at, double x);
 
+// Which curve of the convergence plots is which run: "lbfgs, this run: 160 iterations", then
+// "lloyd, same start: 1000, not converged" and "newton: 54" for the runs compared with it (the
+// first of them says they start alike); plotted against time, each with its total time
+// (", 185 ms"): how soon it converged.
+std::string curveLegend(const char* solver, bool thisRun, bool firstCompared, const std::vector<IterationRecord>& its,
+                        bool converged, bool withTime);
+
 // `text` in lines no wider than `width` by `measure`, broken at `gap`s and at its own line
 // breaks only: ImGui 1.86 also breaks after '.' and ',', inside numbers ("Hausdorff 1." then
 // "906%" on the next line). A word (what lies between gaps) wider than the line has a line of its

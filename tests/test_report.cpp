@@ -474,6 +474,20 @@ TEST(Report, IterationsAlongTimeAreWhereTheirRunWas) {
   EXPECT_TRUE(elapsedMs({}).empty());
 }
 
+// Which curve is which run; against time, how long each took in all.
+TEST(Report, TheCurvesLegendSaysWhichRunIsWhich) {
+  std::vector<IterationRecord> its(3);
+  its[0].milliseconds = 2.5;
+  its[1].milliseconds = 1;
+  its[2].milliseconds = 1.25;
+  EXPECT_EQ(curveLegend("lbfgs", true, false, its, true, false), "lbfgs, this run: 3 iterations");
+  EXPECT_EQ(curveLegend("lbfgs", true, false, its, true, true), "lbfgs, this run: 3 iterations, 5 ms");
+  EXPECT_EQ(curveLegend("lloyd", false, true, its, false, false), "lloyd, same start: 3, not converged");
+  EXPECT_EQ(curveLegend("lloyd", false, true, its, false, true), "lloyd, same start: 3, 5 ms, not converged");
+  EXPECT_EQ(curveLegend("newton", false, false, its, true, true), "newton: 3, 5 ms");
+  EXPECT_EQ(curveLegend("newton", true, false, {IterationRecord()}, true, false), "newton, this run: 1 iteration");
+}
+
 // A recording opened in the inspector has no distances: its line said "not measured
 // (--no-fidelity)", blaming a flag nobody passed.
 TEST(Report, TheInspectorsDistanceLineSaysWhyThereIsNone) {
