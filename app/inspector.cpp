@@ -999,6 +999,7 @@ void Inspector::handleKeys() {
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) selection_.clear();
   if (letterPressed('P')) presentation_ = !presentation_;
   if (letterPressed('L')) toggleLesson();
+  if (letterPressed('T')) plotTime_ = !plotTime_;  // classroom mode has no box to tick
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) togglePlay();
 }
 

@@ -132,7 +132,8 @@ class Inspector {
   // Off for reproducible pictures: timings differ from run to run.
   void showTimings(bool show) { showTimings_ = show; }
   // The convergence plots against the time the iterations took (each run's own, as recorded),
-  // not the iterations: Newton's fewer iterations each cost more. Not while timings are off.
+  // not the iterations: Newton's fewer iterations each cost more (the T key, or the box under
+  // "Convergence plots"). Not while timings are off.
   void plotAgainstTime(bool on) { plotTime_ = on; }
   bool plotsAgainstTime() const { return plotTime_ && showTimings_; }
   int iteration() const { return iteration_; }

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The inspector's window on a virtual display (ctest runs this under xvfb-run): it opens with
 # the Vulkan validation layer on, takes keys, is resized (the swapchain made again), and
-# saves the window through its swapchain on Ctrl+S, and
-# closes on Ctrl+Q with status 0 and no word from the validation layer (runWindow exits
+# saves the window through its swapchain on Ctrl+S, T turns the plots' axis to time and back, and
+# it closes on Ctrl+Q with status 0 and no word from the validation layer (runWindow exits
 # non-zero on what it reports while the device lives, and objects left when the instance goes
 # are printed). First, a pin that does not exist, found as the window opens: one line, status 1,
 # and every Vulkan object gone as well.
@@ -46,16 +46,34 @@ for key in End Left shift+Left Home space space p p l l Escape; do
   sleep 0.2
 done
 # Ctrl+S saves the whole window (Export PNG's defaults) as lloydscope.png, read back from the
-# swapchain: 1280x800, the window's size.
-xdotool key ctrl+s
-for _ in $(seq 100); do  # 10 s to save
-  [ -f lloydscope.png ] && break
-  sleep 0.1
-done
-[ -f lloydscope.png ] || fail "Ctrl+S saved no picture in 10 s"
-size=$(od -An -tu1 -j16 -N8 lloydscope.png | tr -s ' ')
+# swapchain: here moved to $1 once saved, within 10 s.
+save() {
+  rm -f lloydscope.png
+  xdotool key ctrl+s
+  for _ in $(seq 100); do
+    [ -f lloydscope.png ] && break
+    sleep 0.1
+  done
+  mv lloydscope.png "$1" 2>/dev/null || fail "Ctrl+S saved no picture in 10 s (for $1)"
+}
+# 1280x800, the window's size.
+save first.png
+size=$(od -An -tu1 -j16 -N8 first.png | tr -s ' ')
 [ "$size" = " 0 0 5 0 0 0 3 32" ] || fail "the picture saved is not 1280x800 (its header's size: $size)"
-[ "$(stat -c %s lloydscope.png)" -gt 20000 ] || fail "the picture saved is nearly empty"
+[ "$(stat -c %s first.png)" -gt 20000 ] || fail "the picture saved is nearly empty"
+
+# T plots the convergence against time, and T again against iterations: the window saved after
+# each differs, then is as it was. (From the second picture on, each shows the message line's
+# "saved lloydscope.png".)
+save iterations.png
+xdotool key t
+sleep 0.5
+save time.png
+xdotool key t
+sleep 0.5
+save again.png
+cmp -s iterations.png time.png && fail "T changed nothing in the window"
+cmp -s iterations.png again.png || fail "T twice did not give back the plots against iterations"
 
 xdotool windowsize --sync "$window" 900 600
 sleep 1
