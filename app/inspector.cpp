@@ -372,10 +372,7 @@ void Inspector::openReplay(Recording recording) {
   fit2D();  // another domain: the last one's zoom showed a corner of it, or nothing
 }
 
-void Inspector::fit2D() {
-  zoom2D_ = 1.0f;
-  pan2D_ = ImVec2(0, 0);
-}
+void Inspector::fit2D() { view2D_ = PlaneView{}; }
 
 void Inspector::startSession(const Mesh& input, const std::string& name) {
   stopComparing();
@@ -1562,21 +1559,20 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   const float fitWidth = std::max(1.0f, extent.x - fillLeft);
   const float fitHeight = std::max(1.0f, extent.y - legendHeight - 10 - fillTop);
   const float base = 0.92f * std::min(fitWidth, fitHeight);
-  const ImVec2 center(p0.x + fillLeft + fitWidth / 2 + pan2D_.x, p0.y + fillTop + fitHeight / 2 + pan2D_.y);
-  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
-    pan2D_.x += io.MouseDelta.x;
-    pan2D_.y += io.MouseDelta.y;
-  }
-  // From a twentieth of the pane up (sites 10^-7 of the domain apart, as on a long limb's map,
-  // are still drawn apart), and never 0 or infinite.
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0) zoom2D_ = std::clamp(zoom2D_ * std::pow(1.15f, io.MouseWheel), 0.05f, 1e9f);
+  const glm::vec2 fit(p0.x + fillLeft + fitWidth / 2, p0.y + fillTop + fitHeight / 2);
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+    view2D_.pan += glm::vec2(io.MouseDelta.x, io.MouseDelta.y);
+  const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) view2D_.zoomAt(io.MouseWheel, mouse, fit);
   if (ImGui::IsItemHovered() && letterPressed('F')) fit2D();
-  const float scale = base * zoom2D_;
+  const glm::vec2 middle = view2D_.middle(fit);
+  const ImVec2 center(middle.x, middle.y);
+  const float scale = base * view2D_.zoom;
   auto screen = [&](const Vec2& uv) {
-    return ImVec2(center.x + static_cast<float>(uv.x() - 0.5) * scale,
-                  center.y - static_cast<float>(uv.y() - 0.5) * scale);
+    const glm::vec2 at = view2D_.toScreen(uv, fit, base);
+    return ImVec2(at.x, at.y);
   };
-  const Vec2 mouseUV(0.5 + (io.MousePos.x - center.x) / scale, 0.5 - (io.MousePos.y - center.y) / scale);
+  const Vec2 mouseUV = view2D_.toDomain(mouse, fit, base);
   if (clickedNotDragged())
     pick2D(mouseUV);  // not the end of a pan
   else if (ImGui::IsItemHovered() && !ImGui::IsItemActive())

@@ -7,6 +7,7 @@
 #include "canvas_renderer.h"
 #include "mesh_renderer.h"
 #include "orbit_camera.h"
+#include "plane_view.h"
 #include "pipeline.h"
 #include "png.h"
 #include "report.h"
@@ -340,8 +341,7 @@ class Inspector {
   ImFont* presentationFonts_[2] = {};  // 21 and 42 px; null: the default font, scaled
   std::optional<Stage> stage_;
   LessonPlayer lesson_;
-  float zoom2D_ = 1.0f;
-  ImVec2 pan2D_{0, 0};
+  PlaneView view2D_;
   // What the draw callbacks of the current frame read (they must outlive ImGui::Render()).
   std::pair<const MeshRenderer*, MeshDraw> meshCallback_;
   std::pair<const CanvasRenderer*, CanvasDraw> canvasCallback_;
