@@ -1859,9 +1859,7 @@ int plot(const PlotTitle& heading, const Curve& run, const std::vector<Curve>& o
   dl->PopClipRect();
   if (active) {
     const float mx = ImGui::GetIO().MousePos.x;
-    const double at = (mx - a.x - inset) / (b.x - a.x - 2 * inset) * span;
-    if (!time) return std::clamp(static_cast<int>(std::lround(at)), 0, static_cast<int>(span));
-    return nearestIndex(run.at, at);
+    return nearestIndex(run.at, (mx - a.x - inset) / (b.x - a.x - 2 * inset) * span);
   }
   return -1;
 }

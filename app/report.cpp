@@ -224,7 +224,7 @@ int nearestIndex(const std::vector<double>& at, double x) {
   if (after == at.begin()) return 0;
   if (after == at.end()) return static_cast<int>(at.size()) - 1;
   const auto before = after - 1;
-  return static_cast<int>((x - *before <= *after - x ? before : after) - at.begin());
+  return static_cast<int>((x - *before < *after - x ? before : after) - at.begin());
 }
 
 namespace {

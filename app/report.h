@@ -92,7 +92,8 @@ double tickStep(double span, int fitting);
 // Where each iteration is on a plot against time: the milliseconds of the steps before it (0 at
 // iteration 0), the recorded steps' own times.
 std::vector<double> elapsedMs(const std::vector<IterationRecord>& iterations);
-// The index of the value of `at` (ascending) nearest `x`; -1 where `at` is empty.
+// The index of the value of `at` (ascending) nearest `x`, the later one of two as near (along
+// iterations 0, 1, 2 ..., x rounded); -1 where `at` is empty.
 int nearestIndex(const std::vector<double>& at, double x);
 
 // Which curve of the convergence plots is which run: "lbfgs, this run: 160 iterations", then

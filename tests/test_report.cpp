@@ -470,6 +470,9 @@ TEST(Report, IterationsAlongTimeAreWhereTheirRunWas) {
   EXPECT_EQ(nearestIndex(at, 29), 2);
   EXPECT_EQ(nearestIndex(at, 33), 3);
   EXPECT_EQ(nearestIndex(at, 1000), 3);
+  EXPECT_EQ(nearestIndex(at, 5), 1);  // as near 0 as 10: the later, as rounding goes
+  EXPECT_EQ(nearestIndex({0, 1, 2, 3}, 2.5), 3);
+  EXPECT_EQ(nearestIndex({0, 1, 2, 3}, 2.49), 2);
   EXPECT_EQ(nearestIndex({}, 1), -1);
   EXPECT_TRUE(elapsedMs({}).empty());
 }
