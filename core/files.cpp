@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -123,17 +124,25 @@ int createUnique(const std::filesystem::path& folder, const std::string& stem, c
   }
 }
 
+// A file already at `target` that its owner may not write (a read-only file, say) is refused:
+// its folder let it be replaced, and it was, after the run, with a message naming a temporary
+// already gone and no reason. Returns its permissions, which its replacement gets.
+std::optional<mode_t> requireReplaceable(const std::string& path, const std::filesystem::path& target) {
+  struct stat existing;
+  if (stat(target.c_str(), &existing) != 0) return std::nullopt;  // not there yet
+  if (access(target.c_str(), W_OK) != 0) throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
+  return existing.st_mode & 07777;
+}
+
 // A new empty file beside `target`, of a name no other writer takes: a fixed "<path>.tmp"
 // deleted a user's file of that name, two runs writing one output shared it, and with a name
-// near the system's limit it was too long. It gets the target's permissions, or those any new
-// file gets (the umask's).
+// near the system's limit it was too long. It has the permissions any new file gets (the
+// umask's) while it is written.
 std::string makeTemporary(const std::string& path, const std::filesystem::path& target) {
   const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
   std::string name;
   const int fd = createUnique(folder, ".lloydscope-", "", 0666, name);
   if (fd < 0) cannotMake(path, folder);
-  struct stat existing;
-  if (stat(target.c_str(), &existing) == 0) fchmod(fd, existing.st_mode & 07777);
   close(fd);
   return name;
 }
@@ -166,13 +175,17 @@ void FileBatch::add(const std::string& path, const std::function<void(std::ostre
     return;
   }
   const std::filesystem::path target = targetOf(path);
+  const std::optional<mode_t> mode = requireReplaceable(path, target);
   auto staged = std::make_unique<Staged>(path, makeTemporary(path, target), target);
   std::ofstream out(staged->temporary, std::ios::binary | std::ios::trunc);
-  if (!out) throw Error(path + ": cannot write " + staged->temporary);
+  if (!out) throw Error(path + ": cannot write " + staged->temporary + " (" + std::strerror(errno) + ")");
   write(out);  // out of memory, say: the temporary goes with `staged`
   out.close();
   if (!out)  // the writer's own failure (the PNG encoder's), or the disk's
     throw Error(path + ": cannot write " + staged->temporary + " (disk full?)");
+  // The file it replaces keeps its permissions; set once written (a file only its group may
+  // write could not have been written through them).
+  if (mode) chmod(staged->temporary.c_str(), *mode);
   staged_.push_back(std::move(staged));
 }
 
@@ -198,7 +211,9 @@ void requireWritable(const std::string& path) {
       throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
     return;
   }
-  std::remove(makeTemporary(path, targetOf(path)).c_str());
+  const std::filesystem::path target = targetOf(path);
+  requireReplaceable(path, target);
+  std::remove(makeTemporary(path, target).c_str());
 }
 
 std::string newTemporaryFile(const std::string& suffix) {
@@ -220,10 +235,12 @@ std::string lowercaseExtension(const std::string& path) {
 
 bool sameFile(const std::string& a, const std::string& b) {
   if (a.empty() || b.empty()) return false;
-  // weakly_canonical leaves a relative name of no file as it is ("x.off" against "/abs/x.off").
+  // weakly_canonical leaves a relative name of no file as it is ("x.off" against "/abs/x.off"),
+  // and a link to a file not there yet as the link: a write goes to its target (targetOf),
+  // where --record and -o, one through such a link, were both saved, the recording lost.
   const auto resolved = [](const std::string& path) {
     std::error_code ignored;
-    return std::filesystem::weakly_canonical(std::filesystem::absolute(path, ignored), ignored);
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(targetOf(path), ignored), ignored);
   };
   return resolved(a) == resolved(b);
 }

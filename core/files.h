@@ -14,7 +14,8 @@ namespace lloydscope {
 
 // Writes `path` through a temporary of its own beside it (".lloydscope-<pid>-<n>"), renamed onto
 // it once complete: a file already there is replaced whole or not at all, keeping its
-// permissions; a link is written through, to its target. `write` fills the stream (binary).
+// permissions, and refused where they do not let it be written (a read-only file); a link is
+// written through, to its target. `write` fills the stream (binary).
 // Throws Error("<path>: cannot write ...") saying why.
 void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
@@ -37,7 +38,7 @@ class FileBatch {
 };
 
 // Throws the Error writeAtomically would end with where its temporary cannot be made (no such
-// folder, no permission) or `path` is a folder: checked before a run that may take minutes.
+// folder, no permission, a read-only file there) or `path` is a folder: checked before a run that may take minutes.
 // Leaves nothing behind.
 void requireWritable(const std::string& path);
 // The part of that which opens nothing: a folder, no name, or one longer than a file name may be.
@@ -51,7 +52,7 @@ std::string newTemporaryFile(const std::string& suffix);
 std::string lowercaseExtension(const std::string& path);
 
 // Whether two names (non-empty) are one file, there or not yet: "x.off", "./x.off", "sub/../x.off"
-// and its absolute path are, and so are a link and its target.
+// and its absolute path are, and so are a link and its target (not there yet, too).
 bool sameFile(const std::string& a, const std::string& b);
 
 // Makes the folder `path` and the folders above it where missing. Throws Error("<path>: cannot

@@ -5,6 +5,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include <fcntl.h>
@@ -135,6 +136,42 @@ TEST(Files, WriteAtomicallyTouchesNoOtherFileAndKeepsLinksAndPermissions) {
   EXPECT_EQ(fs::status(here + "/out.off").permissions(), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   // A new file is readable as any the user makes (mkstemp's own are private).
   EXPECT_NE(fs::status(longName).permissions() & fs::perms::others_read, fs::perms::none);
+}
+
+// A file its owner may not write (read-only) is refused before the run, saying why, and stays
+// as it was: its folder let it be replaced, and it was tried after the run, failing with a
+// message naming a temporary already gone and no reason. Run as a user other than root (root
+// may write anything): as nobody where the tests run as root.
+TEST(Files, AReadOnlyFileIsRefusedBeforehandSayingWhy) {
+  namespace fs = std::filesystem;
+  const std::string here = test::emptyFolder("read_only"), path = here + "/kept.off";
+  fs::permissions(here, fs::perms::all);  // anyone may make files here
+  test::writeText(path, "old");
+  fs::permissions(path, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  const std::string refused = path + ": cannot write (Permission denied)";
+  EXPECT_EXIT(
+      {
+        if (geteuid() == 0 && (setgid(65534) != 0 || setuid(65534) != 0)) _exit(2);
+        const std::string before = errorOf([&] { requireWritable(path); });
+        const std::string after = errorOf([&] { writeAtomically(path, [](std::ostream& out) { out << "new"; }); });
+        std::cerr << before << "|" << after;
+        _exit(before == refused && after == refused ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+  EXPECT_EQ(test::readText(path), "old");
+  EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"kept.off"});
+}
+
+// A link and the file it will make are one file: --record and -o, one through such a link, were
+// both saved onto it, the recording lost.
+TEST(Files, ALinkToAFileNotThereYetIsThatFile) {
+  namespace fs = std::filesystem;
+  const std::string here = test::emptyFolder("same_file");
+  fs::create_symlink("target.off", here + "/link.off");
+  EXPECT_TRUE(sameFile(here + "/link.off", here + "/target.off"));
+  EXPECT_FALSE(sameFile(here + "/link.off", here + "/other.off"));
+  fs::create_symlink("link.off", here + "/link_to_link.off");
+  EXPECT_TRUE(sameFile(here + "/link_to_link.off", here + "/target.off"));
 }
 
 // A pipe (or a device, or a link to one) is written into, not replaced by a plain file: as root
