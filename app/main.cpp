@@ -333,15 +333,18 @@ void parseSize(const std::string& text, int& width, int& height) {
 // A mesh is remeshed first (and kept in `input`); a recording is replayed as it is.
 RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshOptions& options,
                                std::optional<Mesh>* input = nullptr) {
-  options = remeshOptions(a, cmd);
   const std::string& in = a.input;
-  // By its name, or by its first bytes where it was saved under another (--record takes any).
-  if ((in.size() > 6 && in.compare(in.size() - 6, 6, ".lsrec") == 0) || isRecording(in)) {
+  // By its name (as the mesh formats are, in any case: a damaged x.LSREC was told to be opened
+  // with inspect), or by its first bytes where it was saved under another (--record takes any).
+  // Its refusal of the remeshing options comes before they are read: notes that they had no
+  // effect came first, and an unknown --param value's error instead.
+  if (lowercaseExtension(in) == ".lsrec" || isRecording(in)) {
     refuseRemeshingOptions(cmd, in);
     RecordedRun run = recordedRun(loadRecording(in));  // its settings checked there
     options = run.options;
     return std::move(run.result);
   }
+  options = remeshOptions(a, cmd);
   Mesh mesh = load(in, a.repair);
   RemeshResult result = remesh(mesh, options, in);
   if (result.recording.iterations.empty())  // the panes show iterations (it crashed)

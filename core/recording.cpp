@@ -339,6 +339,10 @@ void saveRecordingUnchecked(const Recording& recording, const std::string& path)
 }
 
 bool isRecording(const std::string& path) {
+  // A pipe is read once: its first bytes, read here, were gone for the reader of the mesh
+  // (or it waited for a second writer that never came). Only a file is looked into.
+  std::error_code ignored;
+  if (!std::filesystem::is_regular_file(path, ignored)) return false;
   char start[sizeof(kMagic)] = {};
   std::ifstream file(path, std::ios::binary);
   return file.read(start, sizeof start) && std::memcmp(start, kMagic, sizeof(kMagic)) == 0;

@@ -66,7 +66,9 @@ void saveRecordingUnchecked(const Recording& recording, const std::string& path)
 constexpr std::uint64_t kLargestRecording = 4'000'000'000;
 // Throws Error("<path>: ...") for a missing, truncated, corrupt, other-version or too large file.
 Recording loadRecording(const std::string& path);
-// Whether the file starts as a recording does, whatever its name (remesh --record takes any).
+// Whether the file starts as a recording does, whatever its name (remesh --record takes any);
+// false for a pipe, which it leaves unread for its reader (a recording through one is told by
+// its name).
 bool isRecording(const std::string& path);
 
 }  // namespace lloydscope

@@ -357,6 +357,13 @@ TEST(Cli, TruncatedRecording) {
   const CliRun r = runCli("info " + rec);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
+  // Its name told in any case, as a mesh's is: inspect said that a damaged x.LSREC, cut before
+  // its first bytes, was "a recording, not a mesh" and to open it with inspect.
+  const std::string upper = test::tempPath("cli_cut.LSREC");
+  test::writeText(upper, bytes.substr(0, 4));
+  const CliRun inspected = runCli("inspect " + upper + " --screenshot " + test::tempPath("never.png"));
+  EXPECT_EQ(inspected.code, 1);
+  EXPECT_EQ(inspected.err, "lloydscope: " + upper + ": not a Lloydscope recording\n");
 }
 
 // A recording replays its own run: an option that would remesh is refused, in one line naming
@@ -369,6 +376,14 @@ TEST(Cli, ARecordingRefusesRemeshingOptions) {
     const CliRun r = runCli("inspect " + rec + " " + option + " --screenshot " + test::tempPath("never.png"));
     EXPECT_EQ(r.code, 1) << option;
     EXPECT_EQ(r.err.rfind("lloydscope: " + rec + ": " + option.substr(0, option.find(' ')) + " applies to a mesh", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  // Refused before they are read: the notes of options without effect came first, and an
+  // unknown value's error instead.
+  for (const std::string options : {"--method relocate --polish 2 --no-fit", "--param bogus", "--density uniform --alpha 2"}) {
+    const CliRun r = runCli("inspect " + rec + " " + options + " --screenshot " + test::tempPath("never.png"));
+    EXPECT_EQ(r.code, 1) << options;
+    EXPECT_NE(r.err.find(" applies to a mesh"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
   EXPECT_EQ(runCli("inspect " + rec + " --iteration 1 --screenshot " + test::tempPath("fine.png")).code, 0);

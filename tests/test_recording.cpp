@@ -10,6 +10,10 @@
 #include <limits>
 #include <thread>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 using namespace lloydscope;
 
 namespace {
@@ -178,6 +182,31 @@ TEST(Recording, IsToldByItsFirstBytes) {
   EXPECT_FALSE(isRecording(mesh));
   EXPECT_FALSE(isRecording(tiny));
   EXPECT_FALSE(isRecording(test::tempPath("none.rec")));
+}
+
+// A pipe is not looked into: its first bytes, read to tell, were gone for the mesh's reader
+// (inspect on a pipe said "bad header", or waited for ever for a writer).
+TEST(Recording, APipeIsLeftUnreadForItsReader) {
+  const std::string saved = test::tempPath("piped.rec"), fifo = test::tempPath("pipe.lsrec");
+  saveRecording(sphereCapRun().recording, saved);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0666), 0);
+  std::atomic<bool> told{false};
+  // Writes a recording's first bytes into the pipe once a reader opens it, until told.
+  std::thread writer([&] {
+    const std::string start = test::readText(saved).substr(0, 16);
+    while (!told) {
+      const int fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK);  // fails while no one reads
+      if (fd >= 0) {
+        (void)!write(fd, start.data(), start.size());
+        close(fd);
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  });
+  EXPECT_FALSE(isRecording(fifo));
+  told = true;
+  writer.join();
 }
 
 TEST(Recording, MissingFile) { expectError(test::tempPath("nope.lsrec"), "missing"); }
