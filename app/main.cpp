@@ -54,7 +54,11 @@ void noteIgnoredOptions(const CLI::App& cmd, const RemeshOptions& o) {
                {"--polish-target", noPolish, "it is the polish's, and there is no polish to relax with"},
                {"--no-snap", noPolish, "the snaps follow the polish, and there is no polish"},
                {"--no-fit", relocate, retriangulateOnly},
-               {"--no-resample", relocate, "relocate parameterizes the input itself always"}};
+               {"--no-resample", relocate, "relocate parameterizes the input itself always"},
+               {"--no-slit", relocate, "relocate keeps the input's own triangles, a disk never slit"},
+               {"--full-input", relocate || o.simplifyTo > 0 || o.sites.count <= 0,
+                "only a run asking --sites of a larger input simplifies it first (not one with "
+                "--simplify, nor relocate)"}};
   for (const auto& rule : rules)
     if (rule.ignored && cmd.count(rule.option) > 0)
       std::cerr << "note: " << rule.option << " has no effect here: " << rule.why << "\n";
@@ -556,19 +560,27 @@ struct BenchCommand {
   void add(CLI::App& app) {
     cmd = app.add_subcommand("bench", "Lloydscope against CGAL's isotropic_remeshing on prepared inputs (markdown, CSV)");
     cmd->add_option("models", options.models, "Meshes (default: CGAL's disk samples in data/cgal)");
-    cmd->add_option("--sizes", options.sizes, "Vertex counts (default 500 1000 2000)")->check(kVerticesAsked);
-    cmd->add_option("--csv", options.csv, "CSV output (default bench.csv)")->check(kFileName);
-    cmd->add_option("--save-inputs", options.saveInputs, "Also write each prepared input to DIR/<model>_<size>.off");
-    cmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)");
-    cmd->add_flag("--as-is", options.asIs,
-                  "Use the models as they come, not prepared: each remeshed to each size "
-                  "(--sites), with the defaults and --full-input, beside CGAL's remesher on it");
+    // The comparison's own options, which --lloyd-step's timing alone does without (they were
+    // accepted and ignored: no CSV written, no input saved).
+    CLI::Option* comparisonOnly[] = {
+        cmd->add_option("--sizes", options.sizes, "Vertex counts (default 500 1000 2000)")->check(kVerticesAsked),
+        cmd->add_option("--csv", options.csv, "CSV output (default bench.csv)")->check(kFileName),
+        cmd->add_option("--save-inputs", options.saveInputs, "Also write each prepared input to DIR/<model>_<size>.off"),
+        cmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)"),
+        cmd->add_flag("--as-is", options.asIs,
+                      "Use the models as they come, not prepared: each remeshed to each size "
+                      "(--sites), with the defaults and --full-input, beside CGAL's remesher on it")};
     addRepairFlag(*cmd, options.repair);
-    cmd->add_option("--lloyd-step", options.stepSites, "Instead: time one Lloyd iteration at N sites (one core and all)")
-        ->check(kVerticesAsked);
+    CLI::Option* step = cmd->add_option("--lloyd-step", options.stepSites,
+                                        "Instead: time one Lloyd iteration at N sites (one core and all), on "
+                                        "the one model given (default: the bundled bumpy disk)")
+                            ->check(kVerticesAsked);
+    for (CLI::Option* option : comparisonOnly) step->excludes(option);
   }
 
   int run() {
+    if (options.stepSites > 0 && options.models.size() > 1)
+      throw Error("--lloyd-step times one mesh; " + std::to_string(options.models.size()) + " were given");
     options.reference = !noReference;
     if (options.stepSites > 0) runStepBench(options);
     else runBench(options);

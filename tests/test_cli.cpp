@@ -493,6 +493,14 @@ TEST(Cli, AnOptionWithNoEffectIsSaid) {
   ASSERT_EQ(relocate.code, 0) << relocate.err;
   EXPECT_NE(relocate.err.find("note: --no-fit has no effect here"), std::string::npos) << relocate.err;
   EXPECT_NE(relocate.err.find("note: --polish has no effect here"), std::string::npos) << relocate.err;
+  // A disk relocate keeps as it is; a size --simplify sets (their runs were the same with these).
+  const CliRun slit = runCli("remesh " + mesh + " --method relocate --no-slit -o " + out);
+  ASSERT_EQ(slit.code, 0) << slit.err;
+  EXPECT_NE(slit.err.find("note: --no-slit has no effect here"), std::string::npos) << slit.err;
+  const CliRun whole = runCli("remesh " + mesh + " --simplify 100 --sites 200 --full-input -o " + out);
+  ASSERT_EQ(whole.code, 0) << whole.err;
+  EXPECT_NE(whole.err.find("note: --full-input has no effect here"), std::string::npos) << whole.err;
+  EXPECT_EQ(runCli("remesh " + mesh + " --sites 100 --full-input -o " + out).err.find("note:"), std::string::npos);
 }
 
 TEST(Cli, UnknownOptionValues) {
@@ -640,7 +648,7 @@ TEST(Cli, BenchAsIsRemeshesTheModelsAsTheyCome) {
 }
 
 TEST(Cli, BenchTimesLloydIterations) {
-  const CliRun r = runCli("bench --lloyd-step 1500 --csv " + test::tempPath("step.csv"));
+  const CliRun r = runCli("bench --lloyd-step 1500");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string& table = r.out;
   for (const char* row : {"| 1500 | uniform | 1 |", "| 1500 | uniform | all |", "| 1500 | area | 1 |",
@@ -649,12 +657,21 @@ TEST(Cli, BenchTimesLloydIterations) {
 }
 
 // The recording whose cost the step bench measures is a temporary of its own: it was
-// "<csv>.lsrec", replacing and then deleting a user's file of that name.
+// "<csv>.lsrec", replacing and then deleting a user's file of that name. The comparison's own
+// options are refused with it: they were accepted and ignored (no CSV, no input saved), and so
+// was every model but the first.
 TEST(Cli, BenchTimingLloydIterationsTouchesNoFileOfTheUser) {
   const std::string here = test::emptyFolder("step_bench"), csv = here + "/step.csv";
+  const std::string mesh = test::assetPath("sphere_cap.off");
   test::writeText(csv + ".lsrec", "precious");
-  const CliRun r = runCli("bench --lloyd-step 20 " + test::assetPath("sphere_cap.off") + " --csv " + csv);
-  ASSERT_EQ(r.code, 0) << r.err;
+  for (const std::string& option : std::vector<std::string>{"--csv " + csv, "--sizes 500", "--save-inputs " + here + "/in", "--no-reference", "--as-is"}) {
+    const CliRun r = runCli("bench --lloyd-step 20 " + mesh + " " + option);
+    EXPECT_EQ(r.code, 1) << option;
+    EXPECT_EQ(r.err, "lloydscope: " + option.substr(0, option.find(' ')) + " excludes --lloyd-step (--help lists the options)\n");
+  }
+  const CliRun two = runCli("bench --lloyd-step 20 " + mesh + " " + test::assetPath("bumpy_disk.off"));
+  EXPECT_EQ(two.code, 1);
+  EXPECT_EQ(two.err, "lloydscope: --lloyd-step times one mesh; 2 were given\n");
   EXPECT_EQ(test::readText(csv + ".lsrec"), "precious");
   EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"step.csv.lsrec"});
 }
