@@ -473,6 +473,7 @@ struct InspectCommand {
     shot.picture.pane = parsePane(pane);
     if (cmd->count("--stage")) shot.view.stage = parseStage(stage);
     if (cmd->count("--fill")) shot.view.fill = parseCellFill(fill);
+    requireShownInPane();
     requireFillShown();
     shot.view.repair = args.repair;
     if (!iterations.empty()) parseIterations();
@@ -489,6 +490,28 @@ struct InspectCommand {
     RemeshResult result = openForInspection(args, *cmd, options, &input);
     renderScreenshot(args.input, options, std::move(result), shot, std::move(input));
     return 0;
+  }
+
+  // A picture of one pane shows what that pane draws: an option for the others is refused
+  // (--pane plots with --fill, --camera, --final and --select-worst made the same picture as
+  // without them).
+  void requireShownInPane() const {
+    const Pane only = shot.picture.pane;
+    const struct {
+      const char* option;
+      const char* view;
+      bool shown;
+    } rules[] = {{"--fill", "the 2D view (the valence fill marks the 3D view's vertices too)",
+                  only == Pane::Domain2D || (only == Pane::View3D && shot.view.fill == CellFill::Valence)},
+                 {"--camera", "the 3D view", only == Pane::View3D},
+                 {"--final", "the 3D view", only == Pane::View3D},
+                 {"--select-cell", "the 2D and 3D views", only != Pane::Plots},
+                 {"--select-triangle", "the 2D and 3D views", only != Pane::Plots},
+                 {"--select-worst", "the 2D and 3D views", only != Pane::Plots}};
+    if (only == Pane::Window) return;
+    for (const auto& rule : rules)
+      if (!rule.shown && cmd->count(rule.option) > 0)
+        throw Error(std::string(rule.option) + " has nothing to show in --pane " + pane + ": it is for " + rule.view);
   }
 
   // A stage draws its own layers: a fill it would not show is refused, not left out in silence.

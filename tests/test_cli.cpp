@@ -833,6 +833,12 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --pane 2d", "--pane requires --screenshot"},
       {"inspect " + mesh + " --iterations 0:5", "--iterations requires --screenshot"},
       {"inspect " + mesh + " --size 960x600", "--size requires --screenshot"},
+      // What the pane pictured does not show (the picture was the same with it as without).
+      {"inspect " + mesh + " --pane plots --fill mass --screenshot x.png", "--fill has nothing to show in --pane plots: it is for the 2D view"},
+      {"inspect " + mesh + " --pane plots --select-worst --screenshot x.png", "--select-worst has nothing to show in --pane plots"},
+      {"inspect " + mesh + " --pane 2d --camera '1 0.5 3 0 0 0' --screenshot x.png", "--camera has nothing to show in --pane 2d: it is for the 3D view"},
+      {"inspect " + mesh + " --pane 2d --final --screenshot x.png", "--final has nothing to show in --pane 2d"},
+      {"inspect " + mesh + " --pane 3d --fill energy --screenshot x.png", "--fill has nothing to show in --pane 3d"},
       // No file name (an unset variable): the run went on and wrote nothing.
       {"remesh " + mesh + " -o ''", "--output: expected a file name, not an empty one"},
       {"remesh " + mesh + " --record ''", "--record: expected a file name, not an empty one"},
