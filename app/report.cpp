@@ -744,11 +744,18 @@ std::string thresholdsText(const LloydOptions& options) {
 std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options) {
   const int asked = verticesAsked(options), got = r.after.vertices;
   // No final result (a recording opened alone: the inspector said "0 vertices for the 200 asked").
-  if (asked <= 0 || got <= 0 || got == asked || options.method != RemeshMethod::Retriangulate) return {};
+  // The input's own vertices are the sites (the report's preset): --simplify over its size left
+  // it as it was (a note says so as the run starts), and no clean-up changed their number.
+  if (asked <= 0 || got <= 0 || got == asked || options.method != RemeshMethod::Retriangulate ||
+      options.sites.fromInputVertices)
+    return {};
   return std::to_string(got) + " vertices for the " + std::to_string(asked) +
          " asked: the clean-up adds or removes a few (seams stitched, short border edges merged, "
          "flat triangles removed)" +
          (r.charts > 0 ? ", and each chart's share is rounded" : "") +
+         (r.components > 1 ? ", and each component's share is rounded, to " + std::to_string(kSmallestRemeshedShare) +
+                                 " at least"
+                           : "") +
          (r.componentsKept > 0 ? ", and components too small for their share are kept as they are" : "");
 }
 

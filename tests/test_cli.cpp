@@ -501,6 +501,14 @@ TEST(Cli, AnOptionWithNoEffectIsSaid) {
   ASSERT_EQ(whole.code, 0) << whole.err;
   EXPECT_NE(whole.err.find("note: --full-input has no effect here"), std::string::npos) << whole.err;
   EXPECT_EQ(runCli("remesh " + mesh + " --sites 100 --full-input -o " + out).err.find("note:"), std::string::npos);
+  // A size over the input's where its own vertices are the sites: the cap has 500.
+  for (const std::string own : {"--method relocate", "--preset reference"}) {
+    const CliRun r = runCli("remesh " + mesh + " " + own + " --simplify 1000 --no-fidelity -o " + out);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("note: --simplify 1000 has no effect here: the input has 500 vertices, and they are the sites"),
+              std::string::npos) << own << ": " << r.err;
+    EXPECT_EQ(r.out.find("vertices for the 1000 asked"), std::string::npos) << r.out;  // the clean-up was blamed
+  }
 }
 
 TEST(Cli, UnknownOptionValues) {

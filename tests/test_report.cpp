@@ -681,8 +681,19 @@ TEST(Report, AVertexCountOtherThanAskedIsSaid) {
   const std::string fewer = vertexCountText(r, options);
   EXPECT_EQ(fewer.rfind("497 vertices for the 500 asked", 0), 0u) << fewer;
   EXPECT_NE(fewer.find("each chart's share"), std::string::npos) << fewer;
+  r.charts = 0;
+  r.components = 2;  // each component's share 20 at least: 40 for 30 asked
+  const std::string shares = vertexCountText(r, options);
+  EXPECT_NE(shares.find("each component's share is rounded, to 20 at least"), std::string::npos) << shares;
   options.method = RemeshMethod::Relocate;  // the input's own vertices, however many asked
   EXPECT_EQ(vertexCountText(r, options), "");
+  options.method = RemeshMethod::Retriangulate;
+  options.sites.fromInputVertices = true;  // the report's preset: its --simplify over the input's size said as a note
+  options.simplifyTo = 1000;
+  options.sites.count = 0;
+  EXPECT_EQ(vertexCountText(r, options), "");
+  options.sites.fromInputVertices = false;
+  options.simplifyTo = 0;
   options.method = RemeshMethod::Retriangulate;
   options.sites.count = 0;  // none asked: as many as the input
   EXPECT_EQ(vertexCountText(r, options), "");
