@@ -111,10 +111,23 @@ void refuseSameFile(const RemeshArgs& a) {
   if (sameFile(a.record, a.output)) throw Error(a.record + ": --record and --output name the same file; give them two");
 }
 
-// An error as it is printed: one line, a line break in a file name or a value shown as \n.
+// An error as it is printed: one line, a line break in a file name or a value shown as \n, and
+// any other control character as \xNN (an escape sequence in a name reached the terminal, a
+// form feed or a vertical tab broke the line there).
 std::string oneLine(const std::string& message) {
   std::string line;
-  for (char c : message) line += c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
+  for (const char c : message) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') line += "\\n";
+    else if (c == '\r') line += "\\r";
+    else if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      line += escaped;
+    } else {
+      line += c;
+    }
+  }
   return line;
 }
 
@@ -275,9 +288,12 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--distance-threshold", r.distanceThreshold,
                  "a site farther than this from its centroid (a fraction of the domain's size) is still "
                  "moving" + defaultIs(lloyd.distanceThreshold))
-      ->check(finiteNumber(std::numeric_limits<double>::min(), "a number > 0"));
+      // Any number above 0, as the message says (1e-310, under the smallest normal double, was
+      // refused as not > 0) and as a recording and the inspector's settings take.
+      ->check(finiteNumber(std::numeric_limits<double>::denorm_min(), "a number > 0"));
   cmd.add_option("--percent-threshold", r.percentThreshold,
-                 "converged when fewer than this % of the sites are still moving" + defaultIs(lloyd.percentThreshold))
+                 "converged when fewer than this % of the sites are still moving (0: never, the run goes on to "
+                 "--max-iterations)" + defaultIs(lloyd.percentThreshold))
       ->check(finiteNumber(0, "a percentage from 0 to 100", 100));
   cmd.add_flag("--no-resample", r.noResample,
                "Parameterize the input itself, not a rough first remeshing of it");

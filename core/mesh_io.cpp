@@ -1157,14 +1157,19 @@ std::string triangulatePolygon(const long long* v, size_t n, const std::vector<V
 
 // ------------------------------------------------------------------------------ file handling
 
-std::string loadFile(const std::string& path) {
+// Before its name is looked at: a missing file or a folder without an extension ("remesh d")
+// was said to have no extension.
+void requireFileThere(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec && ec != std::errc::no_such_file_or_directory) fail(path, "cannot access the file (" + ec.message() + ")");
   if (!fs::exists(status)) fail(path, "no such file");
   if (fs::is_directory(status)) fail(path, "is a directory, not a mesh file");
+}
 
+std::string loadFile(const std::string& path) {
+  requireFileThere(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot read the file (") + std::strerror(errno) + ")");
   std::string data = readWhole(in, path, kLargestMeshFile, "a mesh file");
@@ -1232,6 +1237,7 @@ std::string extensionByContent(std::string_view text) {
 }
 
 ReadResult readMesh(const std::string& path, const ReadOptions& options) {
+  requireFileThere(path);
   const std::string ext = lowercaseExtension(path);
   // A recording given where a mesh goes: `remesh run.lsrec` is a natural first try.
   if (ext == ".lsrec") fail(path, "a recording, not a mesh (.off, .obj or .ply): lloydscope inspect or info opens it");

@@ -796,6 +796,10 @@ TEST(Cli, NumbersOutOfRangeOrNotFiniteAreRefused) {
     const std::string option = command.substr(command.rfind("--"), command.rfind(' ') - command.rfind("--"));
     EXPECT_EQ(r.err.rfind("lloydscope: " + option + ": ", 0), 0u) << command << ": " << r.err;
   }
+  // A distance under the smallest normal double is still above 0, as the refusal of 0 says
+  // (it was refused as "expected a number > 0").
+  const CliRun tiny = runCli("remesh " + mesh + " --distance-threshold 1e-310 --max-iterations 2 --no-fidelity");
+  EXPECT_EQ(tiny.code, 0) << tiny.err;
 }
 
 // A command-line mistake is one line and exit code 1, as every other error (CLI11's own were two
@@ -856,6 +860,8 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"remesh " + mesh + " --max-iterations 2000000000", "--max-iterations: expected a whole number from 1 to 100000"},
       // A line break in a file name or a value stays on the error's one line.
       {"metrics 'bad\nname.off'", "bad\\nname.off: no such file"},
+      {"metrics 'esc\x1b[2Jname.off'", "esc\\x1b[2Jname.off: no such file"},  // the terminal was cleared
+      {"metrics 'page\fname.off'", "page\\x0cname.off: no such file"},
       {"remesh " + mesh + " --solver 'x\ny'", "unknown solver 'x\\ny'"},
       {"inspect " + mesh + " --select-cell 99999999999 --screenshot x.png", "--select-cell: expected a whole number from 0 to 2147483647, not '99999999999'"},
       {"inspect " + mesh + " --select-triangle -1 --screenshot x.png", "--select-triangle: expected a whole number >= 0, not '-1'"},

@@ -411,12 +411,19 @@ TEST(MeshIo, WriteFailuresSayCannotWriteAndLeaveNoTemporaryFile) {
 
 // ------------------------------------------------------------------ one test per kind of error
 
-TEST(MeshIoErrors, MissingFile) { expectReadError(tempPath("does_not_exist.off"), "no such file"); }
+// Said as such whatever the name: a missing file or a folder of no extension was said to have
+// none ("remesh d").
+TEST(MeshIoErrors, MissingFile) {
+  expectReadError(tempPath("does_not_exist.off"), "no such file");
+  expectReadError(tempPath("does_not_exist"), "no such file");
+}
 
 TEST(MeshIoErrors, DirectoryIsNotAMesh) {
-  const std::string path = tempPath("folder.obj");
-  fs::create_directories(path);
-  expectReadError(path, "directory");
+  for (const std::string name : {"folder.obj", "folder"}) {
+    const std::string path = tempPath(name);
+    fs::create_directories(path);
+    expectReadError(path, "is a directory, not a mesh file");
+  }
 }
 
 // Root reads any file: as root (CI, where it was skipped) the read is made by a child that
