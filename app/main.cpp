@@ -429,8 +429,9 @@ struct InspectCommand {
     // alone.
     cmd->footer(
         "Keys in the window: <- -> an iteration (Shift: ten; in a lesson, a stage), Home/End the first/last, "
-        "Space play/pause, P presentation (classroom) mode, L the lesson, Escape unpin every cell and "
-        "triangle, F (over the 3D or 2D view) fit it.");
+        "Space play/pause, P presentation (classroom) mode, T the plots against time or iterations, L the "
+        "lesson, Escape unpin every cell and triangle, F (over the 3D or 2D view) fit it, Ctrl+S save the "
+        "iteration as a picture, Ctrl+Q close.");
     // What only a picture has is refused without one (a window ignored it in silence).
     CLI::Option* screenshot =
         cmd->add_option("--screenshot", shot.picture.path, "Render offscreen to this PNG and exit")->check(kFileName);

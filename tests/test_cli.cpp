@@ -886,10 +886,31 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
     EXPECT_NE(runCli(command).out.find("between 960x600 and 8192x8192"), std::string::npos) << command;
   // A number's range is in the help, as a count's is (it said FLOAT:NUMBER).
   EXPECT_NE(runCli("inspect --help").out.find("--ui-scale FLOAT:number from 0.5 to 4"), std::string::npos);
-  // inspect's help lists the window's keys (they were in the guide alone).
+  // inspect's help lists the window's keys (they were in the guide alone), every key of the
+  // guide's table (T, Ctrl+S and Ctrl+Q were left out).
   const std::string keys = runCli("inspect --help").out;
-  for (const char* key : {"Space play/pause", "P presentation", "L the lesson", "Escape unpin", "F (over"})
+  for (const char* key : {"Space play/pause", "P presentation", "T the plots", "L the lesson", "Escape unpin",
+                          "F (over", "Ctrl+S save", "Ctrl+Q close"})
     EXPECT_NE(keys.find(key), std::string::npos) << key;
+  std::istringstream guide(test::readText(std::string(LLOYDSCOPE_SOURCE_DIR) + "/docs/guide.md"));
+  int rows = 0;
+  for (std::string line; std::getline(guide, line) && line != "### Keys";) {
+  }
+  for (std::string line; std::getline(guide, line);) {
+    if (line.rfind("| ", 0) != 0) {
+      if (rows > 0) break;  // the table's end
+      continue;
+    }
+    const std::string key = cells(line).at(1);
+    if (key == "key") continue;  // the header
+    ++rows;
+    // "Home, End" as Home/End, "← → (Shift: ten)" as <- ->, "F (over the 3D or 2D view)" as F.
+    const std::string first = key.substr(0, key.find_first_of(" ,"));
+    const std::string inHelp = first == "←" ? "<- ->" : first;
+    const bool listed = keys.find(" " + inHelp + " ") != std::string::npos || keys.find(" " + inHelp + "/") != std::string::npos;
+    EXPECT_TRUE(listed) << key << " of the guide's table";
+  }
+  EXPECT_EQ(rows, 10);
 }
 
 // A file whose name starts with '-' is taken for an option by the command line; the error says
