@@ -188,6 +188,21 @@ TEST(Sites, AHoleSmallerThanTheSpacingStaysAHole) {
   EXPECT_EQ(t.boundaryLoops.size(), 2u);
 }
 
+// A star of 30 sharp spikes (12 degrees), at 400 vertices: its border sampled at the inside's
+// spacing took 750 samples, and none was left inside (the result: fans of slivers around the
+// centre). Sampled at the spacing at which border and inside together make the count, it takes
+// 420 (its tips' samples graded), and the inside 205.
+TEST(Sites, ABorderLongerThanTheInsideTakesNotEveryVertex) {
+  const Mesh star = test::starDisk(30, 0.5, 10);
+  const Parameterization param = parameterize(star, {ParamMethod::MeanValue, Border::Circle, {}}, "star");
+  const Domain domain(param.uv, star.triangles, vertexDensity(star.triangles, std::vector<double>(star.vertexCount(), 1.0)));
+  SiteOptions o;
+  o.count = 400;
+  const InitialSites sites = initialSites(star, param, domain, o, "star");
+  EXPECT_LT(sites.fixed.size(), 500u);
+  EXPECT_GT(sites.movable.size(), 150u);
+}
+
 // A tall cone of 32 border vertices and its apex: its LSCM map squashes it into a lens, and the
 // border, sampled until it follows the lens, took every site asked (33 of 33), none was left
 // inside, and the result was a flat disk 99.6% of the diagonal from the input. The inside keeps
