@@ -326,7 +326,7 @@ std::vector<std::pair<int, int>> sharedSeamEdges(const Mesh& surface, const Mesh
       const Vec3 &p = chart.points[a], &q = chart.points[b];
       seams.emplace_back(Point3(p.x(), p.y(), p.z()), Point3(q.x(), q.y(), q.z()));
     }
-  const double tolerance = kSeamTolerance * boundingBoxDiagonal(chart);
+  const double tolerance = seamTolerance(chart);
   auto onASeam = [&](const Vec3& p) {
     const Point3 point(p.x(), p.y(), p.z());
     return std::any_of(seams.begin(), seams.end(), [&](const Kernel::Segment_3& s) {

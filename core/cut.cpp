@@ -287,6 +287,13 @@ std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance) {
   return seams;
 }
 
+double seamTolerance(const Mesh& mesh) {
+  double largest = 0;
+  for (const Vec3& p : mesh.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  constexpr double kRoundingSteps = 64;
+  return std::max(kSeamTolerance * boundingBoxDiagonal(mesh), kRoundingSteps * std::numeric_limits<double>::epsilon() * largest);
+}
+
 namespace {
 
 // Flat, or so nearly that a sine of 1e-9 at `at` says so.

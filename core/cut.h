@@ -15,6 +15,11 @@ namespace lloydscope {
 
 // Copies of one seam sample are at the same point: within this fraction of the diagonal.
 constexpr double kSeamTolerance = 1e-9;
+// How far apart two copies of one seam sample of `mesh` may be: kSeamTolerance of its diagonal,
+// or where it lies far from the origin, a few of its coordinates' rounding steps (each copy is
+// lifted through triangles of its own side): an annulus 10^8 from the origin, its size 1,
+// did not stitch back, its copies 1.5e-8 apart against a tolerance of 2e-9.
+double seamTolerance(const Mesh& mesh);
 
 struct CutSummary {
   int seamEdges = 0;      // cut edges inside the surface (each is two border edges of the disk)

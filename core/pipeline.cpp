@@ -311,7 +311,7 @@ Mesh RemeshSession::buildOutput(RemeshResult& result) const {
   }
   // Both copies of every seam sample are at the same place: one vertex again.
   std::vector<bool> seamVertex;
-  Mesh stitched = stitchSeams(output.mesh, kSeamTolerance * boundingBoxDiagonal(output.mesh), &seamVertex);
+  Mesh stitched = stitchSeams(output.mesh, seamTolerance(output.mesh), &seamVertex);
   finishStitched(stitched, seamVertex, input_, *prepared_, options_, result);
   requireStitched(stitched, cut_->topology, siteCount(), name_);
   return stitched;
@@ -543,7 +543,7 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
   }
   stage.lap();
   std::vector<bool> seamVertex;
-  Mesh stitched = stitchSeams(pieces, kSeamTolerance * boundingBoxDiagonal(pieces), &seamVertex);
+  Mesh stitched = stitchSeams(pieces, seamTolerance(pieces), &seamVertex);
   const PreparedInput own(input, std::nullopt);
   finishStitched(stitched, seamVertex, mesh, prepared ? *prepared : own, options, result);
   requireStitched(stitched, analyzeTopology(mesh), asked, name);

@@ -341,7 +341,7 @@ void splitDoubledEdges(LiftedMesh& lm, const SurfaceMap& surface, std::vector<in
 
 std::vector<int> prepareSeams(LiftedMesh& mesh, const SurfaceMap& surface) {
   // The border stays as it is, so its stitching partners do too.
-  std::vector<int> partners = seamPartners(mesh.mesh, kSeamTolerance * boundingBoxDiagonal(mesh.mesh));
+  std::vector<int> partners = seamPartners(mesh.mesh, seamTolerance(mesh.mesh));
   flipEdges(mesh.mesh, doubledWhenStitched, &partners);  // what the CDT left
   splitDoubledEdges(mesh, surface, partners);            // what no flip could remove
   return partners;

@@ -7,7 +7,7 @@ namespace lloydscope {
 
 Replay::Replay(Recording recording)
     : recording_(std::move(recording)), domain_(recording_.domain()), method_(recording_.method),
-      seams_(seamEdges(recording_.input, kSeamTolerance * boundingBoxDiagonal(recording_.input))) {
+      seams_(seamEdges(recording_.input, seamTolerance(recording_.input))) {
   setMethod(method_);
   // The fixed sites are the border vertices' own parameter points.
   std::map<std::pair<double, double>, int> fixedAt;
@@ -35,7 +35,7 @@ void Replay::setMethod(RemeshMethod method) {
 
 Topology Replay::surface() const {
   const Mesh& disk = recording_.input;
-  return analyzeTopology(seams_.empty() ? disk : stitchSeams(disk, kSeamTolerance * boundingBoxDiagonal(disk)));
+  return analyzeTopology(seams_.empty() ? disk : stitchSeams(disk, seamTolerance(disk)));
 }
 
 const IterationView& Replay::view(int k) {
@@ -66,7 +66,7 @@ const IterationView& Replay::view(int k) {
       next.outputSite[recording_.movableVertex[i]] = static_cast<int>(fixedCount + i);
   }
   if (!seams_.empty())
-    next.stitched = stitchSeams(next.output, kSeamTolerance * boundingBoxDiagonal(next.output), nullptr, &next.stitchedVertex);
+    next.stitched = stitchSeams(next.output, seamTolerance(next.output), nullptr, &next.stitchedVertex);
   view_ = std::move(next);
   return view_;
 }

@@ -14,9 +14,9 @@ namespace lloydscope {
 namespace {
 // How many places the points are at: a seam sample's two copies, one place (as stitchSeams
 // finds them).
-int distinctPoints(const std::vector<Vec3>& points, double diagonal) {
+int distinctPoints(const std::vector<Vec3>& points, double tolerance) {
   if (points.empty()) return 0;
-  const std::vector<int> first = firstCopies(points, {}, kSeamTolerance * diagonal);
+  const std::vector<int> first = firstCopies(points, {}, tolerance);
   int distinct = 0;
   for (size_t i = 0; i < first.size(); ++i) distinct += first[i] == static_cast<int>(i);
   return distinct;
@@ -447,7 +447,7 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
   if (options.spacing <= 0 && options.onSeam.empty() && 2 * sites.fixed.size() > static_cast<size_t>(count))
     respaceALongBorder(mesh, param, count, options, spacing, sites);
   const bool stitched = options.stitchedCount > 0;  // the border's seam copies become one vertex each
-  const int border = stitched ? distinctPoints(sites.fixedPoints, boundingBoxDiagonal(mesh))
+  const int border = stitched ? distinctPoints(sites.fixedPoints, seamTolerance(mesh))
                               : static_cast<int>(sites.fixed.size());
   const int asked = stitched ? options.stitchedCount : count;
   int inside = std::max(0, asked - border);

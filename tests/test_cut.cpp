@@ -501,6 +501,24 @@ TEST(Cut, ATorusIsCutAlongTwoShortLoops) {
   EXPECT_EQ(cut.summary.seamEdges, static_cast<int>(cut.seam.size()));
 }
 
+// A surface 10^8 times its size from the origin, cut open: its seam samples' two copies, each
+// lifted through its own side's triangles, were 1.5e-8 apart (its coordinates' rounding step),
+// over the 2e-9 that matched them, and it did not stitch back ("vertex 0 is non-manifold",
+// found by a helper). Its seams match within a few rounding steps of its coordinates.
+TEST(Cut, ASurfaceFarFromTheOriginStitchesBack) {
+  Mesh holed = test::grid(12);
+  holed.triangles.erase(holed.triangles.begin() + 2 * (6 * 12 + 6));  // a hole: two borders, cut open
+  for (Vec3& p : holed.points) p += Vec3(1e8, 0, 0);
+  EXPECT_GT(seamTolerance(holed), 64 * 1e8 * 2.2e-16 * 0.99);
+  RemeshOptions o;
+  o.sites.count = 100;
+  o.measureFidelity = false;
+  const Topology t = analyzeTopology(remesh(holed, o, "far").output);
+  EXPECT_EQ(t.genus, 0);
+  EXPECT_EQ(t.boundaryLoops.size(), 2u);
+  EXPECT_EQ(seamTolerance(test::grid(12)), kSeamTolerance * boundingBoxDiagonal(test::grid(12)));  // near it, as before
+}
+
 // An open band cut along a seam of 5 equal edges, sampled with 2 pieces: the middle falls
 // between two vertices, and each copy of the seam, run from its own end, took the one nearer
 // its start. The seam did not stitch ("vertex 0 is non-manifold", found by a helper).
