@@ -343,6 +343,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                         {"charts_hausdorff_percent", measuredOrNull(chartsMeasured, r.chartTrial->chartsHausdorff)},
                                                         {"one_cut_bars_met", r.chartTrial->oneCutBars},
                                                         {"charts_bars_met", r.chartTrial->chartsBars},
+                                                        {"one_cut_folds", r.chartTrial->oneCutFolds},
+                                                        {"charts_fold", r.chartTrial->chartsFold},
                                                         {"kept", r.charts > 0 ? "charts" : "one-cut"},
                                                         {"failed", r.chartTrial->failed},
                                                         {"one_cut_failed", r.chartTrial->oneCutFailed},
@@ -451,7 +453,10 @@ std::string chartTrialText(const RemeshResult& r) {
                                     format("%.3f", t.oneCutHausdorff) + "%"
                               : "") +
          "; bars met (irregular, smallest angle, average) " + std::to_string(t.chartsBars) + " and " +
-         std::to_string(t.oneCutBars) + (t.distancesDecide() ? "" : ": not more in charts");
+         std::to_string(t.oneCutBars) + (t.distancesDecide() ? "" : ": not more in charts") +
+         (t.oneCutFolds == t.chartsFold ? ""
+          : t.oneCutFolds              ? "; one disk folds back on itself, the charts do not"
+                                       : "; the charts fold back on themselves, one disk does not");
 }
 
 std::string firstPassTrialText(const RemeshResult& r) {
@@ -685,7 +690,7 @@ std::string farFromTheInputText(const Fidelity& f) {
 }
 
 std::string foldsText(const QualityMetrics& before, const QualityMetrics& after) {
-  if (after.foldedEdges == 0 || before.foldedEdges > 0) return "";
+  if (!foldsAnew(after, before)) return "";
   // The lion head's ear at 1000 vertices: two triangles bridging the ear's rim, folded 179
   // degrees onto each other, seen by no angle (an independent check found them).
   return "Warning: the result folds back on itself at " + std::to_string(after.foldedEdges) + " edge" +

@@ -64,6 +64,10 @@ bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input)
   return any;
 }
 
+bool foldsAnew(const QualityMetrics& result, const QualityMetrics& input) {
+  return result.foldedEdges > 0 && input.foldedEdges == 0;
+}
+
 int barsMet(const QualityMetrics& result, const QualityMetrics& input) {
   return (result.irregularBoundaryAware <= kMostIrregularPercent) + meetsMinAngleBar(result, input) +
          (result.avgMinAngle >= kLeastAvgMinAngle);

@@ -91,6 +91,8 @@ inline bool filledByOneTriangle(const BorderCorner& c) { return c.triangles == 1
 const BorderCorner* inputCornerKept(const QualityMetrics& input, const BorderCorner& corner);
 // How many of the three a result of `input` meets.
 int barsMet(const QualityMetrics& result, const QualityMetrics& input);
+// Whether a result folds back on itself (foldedEdges) where `input` folds nowhere that much.
+bool foldsAnew(const QualityMetrics& result, const QualityMetrics& input);
 
 struct Fidelity {
   // Two-sided distances between the surfaces, in % of the reference's bounding-box diagonal.

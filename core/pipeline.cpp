@@ -602,6 +602,8 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
     trial.oneCutBars = barsMet(kept.after, kept.before);
     trial.chartsBars = barsMet(charted.after, charted.before);
+    trial.oneCutFolds = foldsAnew(kept.after, kept.before);
+    trial.chartsFold = foldsAnew(charted.after, charted.before);
     if (trial.distancesDecide()) {
       measureFidelityOf(kept, prepared);
       measureFidelityOf(charted, prepared);
@@ -1077,6 +1079,7 @@ bool meetsMoreBars(int bars, double hausdorff, int otherBars, double otherHausdo
 }
 
 bool ChartTrial::chartsBetter() const {
+  if (oneCutFolds != chartsFold) return oneCutFolds;
   if (meetsMoreBars(chartsBars, chartsHausdorff, oneCutBars, oneCutHausdorff)) return true;
   if (forBars) return false;
   if (meetsMoreBars(oneCutBars, oneCutHausdorff, chartsBars, chartsHausdorff)) return false;

@@ -116,6 +116,11 @@ struct ChartTrial {
   // How many of issue 5's bars that need no reference each meets (barsMet), as the slit trial
   // counts.
   int oneCutBars = 0, chartsBars = 0;
+  // Each folds back on itself where the input does not (foldsAnew): triangles turned over, a
+  // result broken there however close to the input (a flat annulus at 700 vertices, its cut's
+  // map distorted: one disk kept with a turned triangle of 0.2 degrees, 0.077% of the diagonal
+  // from the input, over unfolded charts 0.143% from it that met all three bars).
+  bool oneCutFolds = false, chartsFold = false;
   std::string failed;  // not empty: the chart by chart run failed (why), the one cut stands
   // Not empty: the one cut failed (why: every map of it folded or collapsed), and the charts
   // stand alone; the one cut's figures and both distances are then 0 (the result's own are measured).
@@ -125,7 +130,8 @@ struct ChartTrial {
   // 500 vertices, 0.2 degrees): the charts are kept only where they meet more of the bars.
   bool forBars = false;
 
-  // Where one of the two meets more of the bars (meetsMoreBars()), it is kept. Else the charts
+  // Where one of the two folds (oneCutFolds, chartsFold) and the other does not, the other is
+  // kept. Else where one of the two meets more of the bars (meetsMoreBars()), it is. Else the charts
   // are kept if they are rounder (a larger average smallest angle) and at most kFartherBy
   // times as far, or at most kCloserBy times as far and at most kRounderBy degrees less round,
   // or kRounderBy degrees rounder and at most 1 / kCloserBy times as far.

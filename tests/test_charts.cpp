@@ -212,9 +212,12 @@ TEST(Charts, AChartsLastStepsWaitForTheStitch) {
 
 TEST(Charts, AreKeptWhereTheyMeetMoreBarsOrAreRounderOrCloser) {
   auto trial = [](double chartsAngle, double oneCutAngle, double chartsDistance, double oneCutDistance,
-                  int chartsBars = 0, int oneCutBars = 0, bool forBars = false) {
+                  int chartsBars = 0, int oneCutBars = 0, bool forBars = false, bool oneCutFolds = false,
+                  bool chartsFold = false) {
     ChartTrial t;
     t.forBars = forBars;
+    t.oneCutFolds = oneCutFolds;
+    t.chartsFold = chartsFold;
     t.chartsBars = chartsBars;
     t.oneCutBars = oneCutBars;
     t.chartsAvgMinAngle = chartsAngle;
@@ -241,6 +244,12 @@ TEST(Charts, AreKeptWhereTheyMeetMoreBarsOrAreRounderOrCloser) {
   EXPECT_FALSE(trial(51.8, 53.3, 1.565, 2.293, 0, 2, true));  // the armadillo's half at 500: closer
   EXPECT_FALSE(trial(53.6, 51.9, 1.243, 1.124, 2, 2, true));
   EXPECT_TRUE(trial(57.7, 46.6, 0.240, 0.916, 3, 2, true));   // the octahedron's half at 500
+  // A result that folds back on itself where the input does not is broken, however close: a
+  // flat annulus at 700, its one disk turned a triangle over (0.2 degrees).
+  EXPECT_TRUE(trial(55.0, 52.2, 0.143, 0.077, 3, 1, false, true, false));
+  EXPECT_TRUE(trial(55.0, 52.2, 0.143, 0.077, 0, 1, true, true, false));  // tried for the bars too
+  EXPECT_FALSE(trial(57.7, 46.6, 0.240, 0.916, 3, 2, true, false, true));  // the charts fold
+  EXPECT_FALSE(trial(55.0, 52.2, 0.143, 0.077, 3, 1, false, true, true));  // both: as without
 }
 
 // Four faces of an octahedron, open: a pyramid whose map to one disk held. As one disk its

@@ -213,6 +213,13 @@ TEST(Report, ChartsTriedForAMissedBarSaySo) {
             "angle 57.7 deg in 4 charts, 46.6 deg one disk; bars met (irregular, smallest angle, average) 2 and 2: "
             "not more in charts");
   EXPECT_TRUE(toJson(r, RemeshOptions{})["chart_trial"]["charts_hausdorff_percent"].is_null());
+  // Where one of the two folded back on itself and decided it, the line says which.
+  r.charts = 4;
+  r.chartTrial->oneCutFolds = true;
+  const std::string folded = chartTrialText(r);
+  EXPECT_NE(folded.find("; one disk folds back on itself, the charts do not"), std::string::npos) << folded;
+  EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["one_cut_folds"], true);
+  EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["charts_fold"], false);
 }
 
 // Where every component was kept as it is, too small for its share, nothing was parameterized:
