@@ -692,6 +692,18 @@ TEST(Report, AVertexCountOtherThanAskedIsSaid) {
   r.components = 2;  // each component's share 20 at least: 40 for 30 asked
   const std::string shares = vertexCountText(r, options);
   EXPECT_NE(shares.find("each component's share is rounded, to 20 at least"), std::string::npos) << shares;
+  // A border longer than the vertices asked takes: it, not the clean-up (a strip 1000 by 1 at 300).
+  r.components = 1;
+  r.after.vertices = 1002;
+  r.after.boundaryVertices = 1002;
+  options.sites.count = 300;
+  const std::string strip = vertexCountText(r, options);
+  EXPECT_EQ(strip.rfind("1002 vertices for the 300 asked: its border alone takes 1002 at their spacing", 0), 0u) << strip;
+  r.after.boundaryVertices = 200;  // the clean-up's, again
+  EXPECT_NE(vertexCountText(r, options).find("the clean-up adds or removes"), std::string::npos);
+  options.sites.count = 500;
+  r.after.vertices = 497;
+  r.components = 2;
   options.method = RemeshMethod::Relocate;  // the input's own vertices, however many asked
   EXPECT_EQ(vertexCountText(r, options), "");
   options.method = RemeshMethod::Retriangulate;
