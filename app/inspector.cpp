@@ -710,7 +710,7 @@ void Inspector::uploadMesh() {
   std::set<std::pair<int, int>> seams;
   if (!replay_->seams().empty() && !final) {  // the final result is stitched: no seam is apart
     std::vector<std::pair<int, int>> ofTheResult;
-    if (!shown.input3D) ofTheResult = seamEdges(cut, kSeamTolerance * boundingBoxDiagonal(cut));
+    if (!shown.input3D) ofTheResult = seamEdges(cut, seamTolerance(cut));
     const auto& apart = shown.input3D ? replay_->seams() : ofTheResult;
     seams.insert(apart.begin(), apart.end());
   }

@@ -113,17 +113,28 @@ void refuseSameFile(const RemeshArgs& a) {
 
 // An error as it is printed: one line, a line break in a file name or a value shown as \n, and
 // any other control character as \xNN (an escape sequence in a name reached the terminal, a
-// form feed or a vertical tab broke the line there).
+// form feed or a vertical tab broke the line there), UTF-8's C1 controls (U+0080-U+009F, a CSI
+// among them) too.
 std::string oneLine(const std::string& message) {
   std::string line;
-  for (const char c : message) {
+  const auto escape = [&](unsigned char byte) {
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+    line += escaped;
+  };
+  for (size_t i = 0; i < message.size(); ++i) {
+    const char c = message[i];
     const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n') line += "\\n";
-    else if (c == '\r') line += "\\r";
-    else if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-      line += escaped;
+    const bool c1 = byte == 0xc2 && i + 1 < message.size() && (static_cast<unsigned char>(message[i + 1]) & 0xe0) == 0x80;
+    if (c == '\n') {
+      line += "\\n";
+    } else if (c == '\r') {
+      line += "\\r";
+    } else if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
+      escape(byte);
+    } else if (c1) {
+      escape(byte);
+      escape(static_cast<unsigned char>(message[++i]));
     } else {
       line += c;
     }

@@ -453,7 +453,8 @@ std::string chartTrialText(const RemeshResult& r) {
                                     format("%.3f", t.oneCutHausdorff) + "%"
                               : "") +
          "; bars met (irregular, smallest angle, average) " + std::to_string(t.chartsBars) + " and " +
-         std::to_string(t.oneCutBars) + (t.distancesDecide() ? "" : ": not more in charts") +
+         std::to_string(t.oneCutBars) +
+         (t.distancesDecide() || t.oneCutFolds != t.chartsFold ? "" : ": not more in charts") +
          (t.oneCutFolds == t.chartsFold ? ""
           : t.oneCutFolds              ? "; one disk folds back on itself, the charts do not"
                                        : "; the charts fold back on themselves, one disk does not");

@@ -124,7 +124,8 @@ int createUnique(const std::filesystem::path& folder, const std::string& stem, c
   }
 }
 
-// A file already at `target` that its owner may not write (a read-only file, say) is refused:
+// A file already at `target` that this user may not write (a read-only file; root may write
+// any) is refused:
 // its folder let it be replaced, and it was, after the run, with a message naming a temporary
 // already gone and no reason. Returns its permissions, which its replacement gets.
 std::optional<mode_t> requireReplaceable(const std::string& path, const std::filesystem::path& target) {
@@ -137,11 +138,12 @@ std::optional<mode_t> requireReplaceable(const std::string& path, const std::fil
 // A new empty file beside `target`, of a name no other writer takes: a fixed "<path>.tmp"
 // deleted a user's file of that name, two runs writing one output shared it, and with a name
 // near the system's limit it was too long. It has the permissions any new file gets (the
-// umask's) while it is written.
-std::string makeTemporary(const std::string& path, const std::filesystem::path& target) {
+// umask's); where it replaces a file (`replacing`), its owner's alone while it is written, so
+// that a private file's new contents are never readable by others.
+std::string makeTemporary(const std::string& path, const std::filesystem::path& target, bool replacing) {
   const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
   std::string name;
-  const int fd = createUnique(folder, ".lloydscope-", "", 0666, name);
+  const int fd = createUnique(folder, ".lloydscope-", "", replacing ? 0600 : 0666, name);
   if (fd < 0) cannotMake(path, folder);
   close(fd);
   return name;
@@ -176,16 +178,17 @@ void FileBatch::add(const std::string& path, const std::function<void(std::ostre
   }
   const std::filesystem::path target = targetOf(path);
   const std::optional<mode_t> mode = requireReplaceable(path, target);
-  auto staged = std::make_unique<Staged>(path, makeTemporary(path, target), target);
+  auto staged = std::make_unique<Staged>(path, makeTemporary(path, target, mode.has_value()), target);
   std::ofstream out(staged->temporary, std::ios::binary | std::ios::trunc);
   if (!out) throw Error(path + ": cannot write " + staged->temporary + " (" + std::strerror(errno) + ")");
   write(out);  // out of memory, say: the temporary goes with `staged`
   out.close();
   if (!out)  // the writer's own failure (the PNG encoder's), or the disk's
     throw Error(path + ": cannot write " + staged->temporary + " (disk full?)");
-  // The file it replaces keeps its permissions; set once written (a file only its group may
-  // write could not have been written through them).
-  if (mode) chmod(staged->temporary.c_str(), *mode);
+  // The file it replaces keeps its permissions, set once written (a read-only one's would
+  // not have let it be written).
+  if (mode && chmod(staged->temporary.c_str(), *mode) != 0)
+    throw Error(path + ": cannot keep its permissions (" + std::strerror(errno) + ")");
   staged_.push_back(std::move(staged));
 }
 
@@ -212,8 +215,7 @@ void requireWritable(const std::string& path) {
     return;
   }
   const std::filesystem::path target = targetOf(path);
-  requireReplaceable(path, target);
-  std::remove(makeTemporary(path, target).c_str());
+  std::remove(makeTemporary(path, target, requireReplaceable(path, target).has_value()).c_str());
 }
 
 std::string newTemporaryFile(const std::string& suffix) {
@@ -240,7 +242,12 @@ bool sameFile(const std::string& a, const std::string& b) {
   // where --record and -o, one through such a link, were both saved, the recording lost.
   const auto resolved = [](const std::string& path) {
     std::error_code ignored;
-    return std::filesystem::weakly_canonical(std::filesystem::absolute(targetOf(path), ignored), ignored);
+    std::filesystem::path target = path;
+    try {
+      target = targetOf(path);
+    } catch (const Error&) {  // a loop of links: the input's reader or the writer says so, as such
+    }
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(target, ignored), ignored);
   };
   return resolved(a) == resolved(b);
 }

@@ -91,7 +91,8 @@ inline bool filledByOneTriangle(const BorderCorner& c) { return c.triangles == 1
 const BorderCorner* inputCornerKept(const QualityMetrics& input, const BorderCorner& corner);
 // How many of the three a result of `input` meets.
 int barsMet(const QualityMetrics& result, const QualityMetrics& input);
-// Whether a result folds back on itself (foldedEdges) where `input` folds nowhere that much.
+// Whether a result folds back on itself (foldedEdges) and `input` nowhere that much (the counts
+// are compared, not the places).
 bool foldsAnew(const QualityMetrics& result, const QualityMetrics& input);
 
 struct Fidelity {

@@ -862,6 +862,8 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"metrics 'bad\nname.off'", "bad\\nname.off: no such file"},
       {"metrics 'esc\x1b[2Jname.off'", "esc\\x1b[2Jname.off: no such file"},  // the terminal was cleared
       {"metrics 'page\fname.off'", "page\\x0cname.off: no such file"},
+      {"metrics 'csi\xc2\x9b" "2Jname.off'", "csi\\xc2\\x9b2Jname.off: no such file"},  // UTF-8's C1 CSI
+      {"metrics 'caf\xc3\xa9.off'", "caf\xc3\xa9.off: no such file"},  // other UTF-8 as it is
       {"remesh " + mesh + " --solver 'x\ny'", "unknown solver 'x\\ny'"},
       {"inspect " + mesh + " --select-cell 99999999999 --screenshot x.png", "--select-cell: expected a whole number from 0 to 2147483647, not '99999999999'"},
       {"inspect " + mesh + " --select-triangle -1 --screenshot x.png", "--select-triangle: expected a whole number >= 0, not '-1'"},
