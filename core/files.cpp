@@ -125,9 +125,9 @@ int createUnique(const std::filesystem::path& folder, const std::string& stem, c
 }
 
 // A file already at `target` that this user may not write (a read-only file; root may write
-// any) is refused:
-// its folder let it be replaced, and it was, after the run, with a message naming a temporary
-// already gone and no reason. Returns its permissions, which its replacement gets.
+// any) is refused: its folder let it be replaced, and it was, after the run, with a message
+// naming a temporary already gone and no reason. Returns its permissions, which its
+// replacement gets.
 std::optional<mode_t> requireReplaceable(const std::string& path, const std::filesystem::path& target) {
   struct stat existing;
   if (stat(target.c_str(), &existing) != 0) return std::nullopt;  // not there yet

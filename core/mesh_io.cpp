@@ -1168,8 +1168,8 @@ void requireFileThere(const std::string& path) {
   if (fs::is_directory(status)) fail(path, "is a directory, not a mesh file");
 }
 
+// `path` as read whole; readMesh has made sure it is there and a file.
 std::string loadFile(const std::string& path) {
-  requireFileThere(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot read the file (") + std::strerror(errno) + ")");
   std::string data = readWhole(in, path, kLargestMeshFile, "a mesh file");
