@@ -331,8 +331,6 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                       {"whole_avg_min_angle_deg", r.slitTrial->whole},
                                                       {"slit_bars_met", r.slitTrial->slitBars},
                                                       {"whole_bars_met", r.slitTrial->wholeBars},
-                                                      {"slit_folds", r.slitTrial->slitFolds},
-                                                      {"whole_folds", r.slitTrial->wholeFolds},
                                                       {"slit_hausdorff_percent", measuredOrNull(r.slitTrial->bothMeetTheBars(), r.slitTrial->slitHausdorff)},
                                                       {"whole_hausdorff_percent", measuredOrNull(r.slitTrial->bothMeetTheBars(), r.slitTrial->wholeHausdorff)},
                                                       {"kept", r.cut.seamEdges > 0 ? "slit" : "whole"}}
@@ -354,8 +352,6 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                        : nlohmann::json()},
           {"first_pass_trial", r.firstPassTrial ? nlohmann::json{{"with_bars_met", r.firstPassTrial->withBars},
                                                                  {"without_bars_met", r.firstPassTrial->withoutBars},
-                                                                 {"with_folds", r.firstPassTrial->withFolds},
-                                                                 {"without_folds", r.firstPassTrial->withoutFolds},
                                                                  {"with_hausdorff_percent", measuredOrNull(r.firstPassTrial->distancesDecide(), r.firstPassTrial->withHausdorff)},
                                                                  {"without_hausdorff_percent", measuredOrNull(r.firstPassTrial->distancesDecide(), r.firstPassTrial->withoutHausdorff)},
                                                                  {"kept", r.firstPassTrial->keptWithout ? "without" : "with"},
@@ -364,8 +360,6 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
           {"border_trial", r.borderTrial ? nlohmann::json{{"corners", r.borderTrial->corners.size()},
                                                           {"without_bars_met", r.borderTrial->withoutBars},
                                                           {"with_bars_met", r.borderTrial->withBars},
-                                                          {"without_folds", r.borderTrial->withoutFolds},
-                                                          {"with_folds", r.borderTrial->withFolds},
                                                           {"without_hausdorff_percent", measuredOrNull(r.borderTrial->failed.empty(), r.borderTrial->withoutHausdorff)},
                                                           {"with_hausdorff_percent", measuredOrNull(r.borderTrial->failed.empty(), r.borderTrial->withHausdorff)},
                                                           {"kept", r.borderTrial->keptWith ? "with" : "without"},
@@ -429,10 +423,7 @@ std::string slitTrialText(const RemeshResult& r) {
   // Why, as SlitTrial::wholeBetter() decides: a kept result with the smaller average angle
   // read as the worse one kept.
   const std::string why =
-      t.slitFolds != t.wholeFolds
-          ? std::string(t.slitFolds ? "; the slit one folds back on itself, the whole one does not"
-                                    : "; the whole one folds back on itself, the slit one does not")
-      : t.slitBars != t.wholeBars
+      t.slitBars != t.wholeBars
           ? "; bars met (irregular, smallest angle, average) " + std::to_string(t.slitBars) + " slit, " +
                 std::to_string(t.wholeBars) + " whole: the one meeting more kept"
       : t.bothMeetTheBars() ? "; both meet the three bars, the closer kept: Hausdorff " +
@@ -480,11 +471,7 @@ std::string firstPassTrialText(const RemeshResult& r) {
          std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without" +
          (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.withHausdorff) + "% and " +
                                     format("%.3f", t.withoutHausdorff) + "%"
-          : t.withFolds != t.withoutFolds ? ""
-                                          : ": not more without") +
-         (t.withFolds == t.withoutFolds ? ""
-          : t.withFolds                 ? "; the run with folds back on itself, the run without does not"
-                                        : "; the run without folds back on itself, the run with does not");
+                              : ": not more without");
 }
 
 std::string borderTrialText(const RemeshResult& r) {
@@ -498,10 +485,7 @@ std::string borderTrialText(const RemeshResult& r) {
          " (its border cut corners of the input's: remeshed with them kept too): Hausdorff " +
          format("%.3f", t.withHausdorff) + "% with, " + format("%.3f", t.withoutHausdorff) +
          "% without; bars met (irregular, smallest angle, average) " + std::to_string(t.withBars) + " and " +
-         std::to_string(t.withoutBars) +
-         (t.withFolds == t.withoutFolds ? ""
-          : t.withFolds                 ? "; the run with them folds back on itself, the run without does not"
-                                        : "; the run without them folds back on itself, the run with does not");
+         std::to_string(t.withoutBars);
 }
 
 std::string fullInputFailedText(const std::string& problem, int vertices) {

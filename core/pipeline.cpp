@@ -692,8 +692,6 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
       RemeshResult other = whole.get();
       SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle, barsMet(kept.after, kept.before),
                       barsMet(other.after, other.before)};
-      trial.slitFolds = foldsAnew(kept.after, kept.before);
-      trial.wholeFolds = foldsAnew(other.after, other.before);
       if (trial.bothMeetTheBars()) {
         measureFidelityOf(kept, prepared);
         measureFidelityOf(other, prepared);
@@ -734,8 +732,6 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
   FirstPassTrial trial;
   trial.withBars = barsMet(kept.after, kept.before);
   trial.withoutBars = barsMet(other.after, other.before);
-  trial.withFolds = foldsAnew(kept.after, kept.before);
-  trial.withoutFolds = foldsAnew(other.after, other.before);
   if (trial.distancesDecide()) {
     measureFidelityOf(kept, prepared);
     measureFidelityOf(other, prepared);
@@ -778,8 +774,6 @@ void tryKeepingBorderCorners(RemeshResult& kept, const Mesh& input, const Remesh
     return;
   }
   trial.withBars = barsMet(other.after, other.before);
-  trial.withoutFolds = foldsAnew(kept.after, kept.before);
-  trial.withFolds = foldsAnew(other.after, other.before);
   measureFidelityOf(kept, prepared);
   measureFidelityOf(other, prepared);
   trial.withoutHausdorff = kept.fidelity.hausdorffPercent;
@@ -1080,17 +1074,12 @@ int coarseInputSize(int vertices) {
   return std::min(kPerVertex * vertices, std::max(kCap, kPerVertexOverCap * vertices));
 }
 
-std::optional<bool> foldDecides(bool folds, bool otherFolds) {
-  if (folds == otherFolds) return std::nullopt;
-  return !folds;
-}
-
 bool meetsMoreBars(int bars, double hausdorff, int otherBars, double otherHausdorff) {
   return bars > otherBars && hausdorff <= 1.25 * otherHausdorff;
 }
 
 bool ChartTrial::chartsBetter() const {
-  if (const std::optional<bool> decided = foldDecides(chartsFold, oneCutFolds)) return *decided;
+  if (oneCutFolds != chartsFold) return oneCutFolds;
   if (meetsMoreBars(chartsBars, chartsHausdorff, oneCutBars, oneCutHausdorff)) return true;
   if (forBars) return false;
   if (meetsMoreBars(oneCutBars, oneCutHausdorff, chartsBars, chartsHausdorff)) return false;
@@ -1102,19 +1091,12 @@ bool ChartTrial::chartsBetter() const {
 }
 
 bool SlitTrial::wholeBetter() const {
-  if (const std::optional<bool> decided = foldDecides(wholeFolds, slitFolds)) return *decided;
   if (wholeBars != slitBars) return wholeBars > slitBars;
   if (bothMeetTheBars()) return wholeHausdorff < slitHausdorff;
   return whole > slit;
 }
 
-bool BorderTrial::withBetter() const {
-  if (const std::optional<bool> decided = foldDecides(withFolds, withoutFolds)) return *decided;
-  return withBars >= withoutBars && withHausdorff < kCloserBy * withoutHausdorff;
-}
-
 bool FirstPassTrial::withoutBetter() const {
-  if (const std::optional<bool> decided = foldDecides(withoutFolds, withFolds)) return *decided;
   return meetsMoreBars(withoutBars, withoutHausdorff, withBars, withHausdorff);
 }
 

@@ -86,12 +86,10 @@ struct SlitTrial {
   double slit = 0, whole = 0;  // average smallest angle, degrees
   int slitBars = 0, wholeBars = 0;
   double slitHausdorff = 0, wholeHausdorff = 0;  // % of the diagonal; 0: not measured
-  bool slitFolds = false, wholeFolds = false;     // each folds back on itself (foldDecides())
 
   // Where both meet all three bars, both are measured against the input (bothMeetTheBars()).
   bool bothMeetTheBars() const { return slitBars == 3 && wholeBars == 3; }
-  // The whole one is kept where the slit one folds and it does not (foldDecides()); else where
-  // it meets more of issue 5's bars (irregular <= 15%, smallest
+  // The whole one is kept where it meets more of issue 5's bars (irregular <= 15%, smallest
   // angle >= 30 but at the input's own sharp border corners, average >= 53; barsMet); where
   // both meet all three, where it is closer to the input (the fourth bar: CGAL's lion head at
   // 500 vertices, slit 2.99% and 53.87 degrees against whole 3.68% and 53.99, CGAL's own
@@ -108,12 +106,6 @@ struct SlitTrial {
 // bound on the distance, CGAL's dino would take its charts, 1.36 times as far, for the bar of
 // the average smallest angle.)
 bool meetsMoreBars(int bars, double hausdorff, int otherBars, double otherHausdorff);
-// Every trial's rule before that: of two results, one that folds back on itself while the
-// input folds nowhere (foldsAnew) loses to one that does not, however close to the input it is
-// (a flat annulus at 700 vertices kept its one disk, a triangle turned over at 0.2 degrees,
-// 0.077% of the diagonal from the input, over charts 0.143% from it that met all three bars).
-// Whether the first is the better, or nothing where the two fold alike.
-std::optional<bool> foldDecides(bool folds, bool otherFolds);
 
 // A surface remeshed as one disk (cut open to one if it is not a disk) and chart by chart too:
 // what each gave.
@@ -124,7 +116,11 @@ struct ChartTrial {
   // How many of issue 5's bars that need no reference each meets (barsMet), as the slit trial
   // counts.
   int oneCutBars = 0, chartsBars = 0;
-  bool oneCutFolds = false, chartsFold = false;  // each folds back on itself (foldDecides())
+  // Each folds back on itself, and the input nowhere (foldsAnew): triangles turned over, a
+  // result broken there however close to the input (a flat annulus at 700 vertices, its cut's
+  // map distorted: one disk kept with a turned triangle of 0.2 degrees, 0.077% of the diagonal
+  // from the input, over unfolded charts 0.143% from it that met all three bars).
+  bool oneCutFolds = false, chartsFold = false;
   std::string failed;  // not empty: the chart by chart run failed (why), the one cut stands
   // Not empty: the one cut failed (why: every map of it folded or collapsed), and the charts
   // stand alone; the one cut's figures and both distances are then 0 (the result's own are measured).
@@ -134,8 +130,8 @@ struct ChartTrial {
   // 500 vertices, 0.2 degrees): the charts are kept only where they meet more of the bars.
   bool forBars = false;
 
-  // Where one of the two folds and the other does not, the other is kept (foldDecides()). Else
-  // where one of the two meets more of the bars (meetsMoreBars()), it is. Else the charts
+  // Where one of the two folds (oneCutFolds, chartsFold) and the other does not, the other is
+  // kept. Else where one of the two meets more of the bars (meetsMoreBars()), it is. Else the charts
   // are kept if they are rounder (a larger average smallest angle) and at most kFartherBy
   // times as far, or at most kCloserBy times as far and at most kRounderBy degrees less round,
   // or kRounderBy degrees rounder and at most 1 / kCloserBy times as far.
@@ -153,13 +149,11 @@ struct ChartTrial {
 struct FirstPassTrial {
   int withBars = 0, withoutBars = 0;  // bars met, as ChartTrial counts them
   double withHausdorff = 0, withoutHausdorff = 0;  // % of the diagonal; 0: not measured (distancesDecide())
-  bool withFolds = false, withoutFolds = false;    // each folds back on itself (foldDecides())
   bool keptWithout = false;
   std::string failed;  // not empty: the run without failed (why; with --param lscm its map may
                        // fold on the input's slivers), the first stands
 
-  // The run without is kept where the run with folds and it does not (foldDecides()), or where
-  // it meets more bars (meetsMoreBars()). On the 36 disks of
+  // The run without is kept where it meets more bars (meetsMoreBars()). On the 36 disks of
   // issue 5's sweep it was kept on the camel head at 1000 vertices (12.3 -> 31.4 degrees,
   // Hausdorff 2.34 -> 1.27%), then meeting all bars; at 0.75 of their sizes on the camel head
   // and CGAL's lion head (25.6 -> 32.2 degrees, 2.48 -> 1.23%). Twice as far would have kept
@@ -180,18 +174,16 @@ struct BorderTrial {
   std::vector<Vec3> corners;  // the input's border vertices kept as samples
   int withoutBars = 0, withBars = 0;  // bars met (barsMet), without the corners kept and with
   double withoutHausdorff = 0, withHausdorff = 0;  // % of the diagonal
-  bool withoutFolds = false, withFolds = false;    // each folds back on itself (foldDecides())
   bool keptWith = false;
   std::string failed;  // not empty: the run with them failed (why), the first stands
 
-  // The run with the corners kept is kept where the run without folds and it does not
-  // (foldDecides()); else where it meets as many of the bars or more and is
+  // The run with the corners kept is kept where it meets as many of the bars or more and is
   // closer to the input by kCloserBy at least (the saddle of docs/synthetic_disks.py at 1000
   // vertices: 0.134 -> 0.043% of the diagonal, CGAL's remesher 0.045%). Not where it is as far
   // to the last bit: the same farthest point found again on a mesh that differs elsewhere
   // (CGAL's blobby clipped at 30% along y, at 500 vertices).
   static constexpr double kCloserBy = 0.99;
-  bool withBetter() const;
+  bool withBetter() const { return withBars >= withoutBars && withHausdorff < kCloserBy * withoutHausdorff; }
 };
 
 // remesh() takes kSmallestRemeshedShare (core/sites) vertices at least: fewer asked for a

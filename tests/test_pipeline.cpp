@@ -467,18 +467,6 @@ TEST(Pipeline, TheRunWithoutTheFirstPassIsKeptWhereItMeetsMoreBarsAndIsNotMuchFa
   EXPECT_FALSE(keptWithout(0, 1, 6.05, 8.26));  // a spike no longer reached
   EXPECT_FALSE(keptWithout(2, 2, 2.34, 1.27));  // as many bars: the first pass stands
   EXPECT_FALSE(keptWithout(2, 1, 2.34, 1.27));
-  // A run that folds back on itself (and the input nowhere) loses first (foldDecides).
-  FirstPassTrial folded;
-  folded.withBars = 3;
-  folded.withFolds = true;
-  EXPECT_TRUE(folded.withoutBetter());
-  folded.withoutFolds = true;  // both: as without
-  EXPECT_FALSE(folded.withoutBetter());
-  folded.withFolds = false;
-  folded.withoutBars = 3;
-  folded.withHausdorff = 2.0;
-  folded.withoutHausdorff = 1.0;
-  EXPECT_FALSE(folded.withoutBetter());
 }
 
 // A nearly closed disk's two runs: more bars win; where both meet the three, the closer to the
@@ -500,15 +488,6 @@ TEST(Pipeline, TheSlitTrialKeepsMoreBarsThenTheCloserThenTheRounder) {
   EXPECT_FALSE(wholeKept(3, 2, 53.5, 55.0, 2.0, 1.0));
   EXPECT_TRUE(wholeKept(2, 2, 52.0, 52.5, 0, 0));      // as many, not all: the rounder
   EXPECT_FALSE(wholeKept(1, 1, 52.5, 52.0, 0, 0));
-  // A run that folds back on itself (and the input nowhere) loses first, whatever its bars.
-  SlitTrial folded{55.0, 52.0, 3, 1};
-  folded.slitFolds = true;
-  EXPECT_TRUE(folded.wholeBetter());
-  folded.slitFolds = false;
-  folded.wholeFolds = true;
-  folded.wholeBars = 3;
-  folded.whole = 56.0;
-  EXPECT_FALSE(folded.wholeBetter());
 }
 
 // A local change of the last steps (a valence move, a vertex moved for its angles) may take a
@@ -1080,10 +1059,6 @@ TEST(Pipeline, TheBorderTrialKeepsARunThatIsCloserNotOneAsFar) {
   t.withHausdorff = 0.55;
   EXPECT_TRUE(t.withBetter());
   t.withBars = 2;
-  EXPECT_FALSE(t.withBetter());
-  t.withoutFolds = true;  // the first run folds back on itself, the input nowhere: it loses first
-  EXPECT_TRUE(t.withBetter());
-  t.withFolds = true;
   EXPECT_FALSE(t.withBetter());
 }
 

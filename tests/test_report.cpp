@@ -104,13 +104,6 @@ TEST(Report, TheFirstPassTrialSaysWhatEachRunMet) {
   EXPECT_NE(firstPassTrialText(r).find("2 with, 2 without: not more without"), std::string::npos) << firstPassTrialText(r);
   EXPECT_EQ(firstPassTrialText(r).find("Hausdorff"), std::string::npos);
   EXPECT_TRUE(toJson(r, RemeshOptions{})["first_pass_trial"]["without_hausdorff_percent"].is_null());
-  // Where a fold decided, the line says which run folded, not "not more without".
-  r.firstPassTrial->withFolds = true;
-  r.firstPassTrial->keptWithout = true;
-  const std::string folded = firstPassTrialText(r);
-  EXPECT_NE(folded.find("2 with, 2 without; the run with folds back on itself, the run without does not"),
-            std::string::npos) << folded;
-  EXPECT_EQ(toJson(r, RemeshOptions{})["first_pass_trial"]["with_folds"], true);
   r.firstPassTrial = FirstPassTrial{};
   r.firstPassTrial->failed = "m.off: the parameterization is not one-to-one";
   EXPECT_EQ(firstPassTrialText(r), "Kept with the first resampling (a bar was missed with it: remeshed without it "
