@@ -149,6 +149,24 @@ std::string makeTemporary(const std::string& path, const std::filesystem::path& 
   return name;
 }
 
+// Where a write of `path` goes: its target (through links), the permissions of the file it
+// replaces (none: a new file), and an empty temporary beside it. The check before a run
+// (requireWritable) and the write (FileBatch::add) make it alike: what the one passes, the
+// other can do.
+struct Destination {
+  std::filesystem::path target;
+  std::optional<mode_t> replacedMode;
+  std::string temporary;
+};
+
+Destination destinationOf(const std::string& path) {
+  Destination d;
+  d.target = targetOf(path);
+  d.replacedMode = requireReplaceable(path, d.target);
+  d.temporary = makeTemporary(path, d.target, d.replacedMode.has_value());
+  return d;
+}
+
 }  // namespace
 
 // A temporary written beside its target, renamed onto it, or removed where that never comes.
@@ -176,9 +194,8 @@ void FileBatch::add(const std::string& path, const std::function<void(std::ostre
     if (!out) throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
     return;
   }
-  const std::filesystem::path target = targetOf(path);
-  const std::optional<mode_t> mode = requireReplaceable(path, target);
-  auto staged = std::make_unique<Staged>(path, makeTemporary(path, target, mode.has_value()), target);
+  const Destination to = destinationOf(path);
+  auto staged = std::make_unique<Staged>(path, to.temporary, to.target);
   std::ofstream out(staged->temporary, std::ios::binary | std::ios::trunc);
   if (!out) throw Error(path + ": cannot write " + staged->temporary + " (" + std::strerror(errno) + ")");
   write(out);  // out of memory, say: the temporary goes with `staged`
@@ -187,7 +204,7 @@ void FileBatch::add(const std::string& path, const std::function<void(std::ostre
     throw Error(path + ": cannot write " + staged->temporary + " (disk full?)");
   // The file it replaces keeps its permissions, set once written (a read-only one's would
   // not have let it be written).
-  if (mode && chmod(staged->temporary.c_str(), *mode) != 0)
+  if (to.replacedMode && chmod(staged->temporary.c_str(), *to.replacedMode) != 0)
     throw Error(path + ": cannot keep its permissions (" + std::strerror(errno) + ")");
   staged_.push_back(std::move(staged));
 }
@@ -214,8 +231,7 @@ void requireWritable(const std::string& path) {
       throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
     return;
   }
-  const std::filesystem::path target = targetOf(path);
-  std::remove(makeTemporary(path, target, requireReplaceable(path, target).has_value()).c_str());
+  std::remove(destinationOf(path).temporary.c_str());
 }
 
 std::string newTemporaryFile(const std::string& suffix) {
