@@ -165,15 +165,18 @@ Mesh load(const std::string& path, bool repair) {
   return std::move(read.mesh);
 }
 
-// --simplify over the input's size, where the input's own vertices are the sites (relocate, the
-// report's preset): there is nothing to coarsen, and no vertex is added (the result had the
-// input's 500 for the 1000 asked, said nowhere, and the report blamed the clean-up).
-void noteSizeLeftAsItIs(const RemeshOptions& o, const Mesh& input) {
+// The mesh to remesh with `o` (remesh, inspect and bench-frames alike), noting --simplify over its
+// size where its own vertices are the sites (relocate, the report's preset): there is nothing
+// to coarsen, and no vertex is added (the result had the input's 500 for the 1000 asked, said
+// nowhere, and the report blamed the clean-up).
+Mesh loadToRemesh(const RemeshArgs& a, const RemeshOptions& o) {
+  Mesh input = load(a.input, a.repair);
   const bool relocate = o.method == RemeshMethod::Relocate;
   if ((relocate || o.sites.fromInputVertices) && o.simplifyTo > input.vertexCount())
     std::cerr << "note: --simplify " << o.simplifyTo << " has no effect here: the input has " << input.vertexCount()
               << " vertices, and they are the sites (" << (relocate ? "relocate moves them" : "the report's preset starts from them")
               << ")\n";
+  return input;
 }
 
 int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
@@ -182,8 +185,7 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   if (!a.output.empty()) requireMeshWritable(a.output);
   if (!a.record.empty()) requireWritable(a.record);
   refuseSameFile(a);
-  const Mesh input = load(a.input, a.repair);
-  noteSizeLeftAsItIs(options, input);
+  const Mesh input = loadToRemesh(a, options);
   const RemeshResult result = remesh(input, options, a.input);
   // Both or neither: where either cannot be written, neither file there is replaced (the output
   // was, then the recording failed; the other way round, the recording was).
@@ -388,8 +390,7 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
     return std::move(run.result);
   }
   options = remeshOptions(a, cmd);
-  Mesh mesh = load(in, a.repair);
-  noteSizeLeftAsItIs(options, mesh);
+  Mesh mesh = loadToRemesh(a, options);
   RemeshResult result = remesh(mesh, options, in);
   if (result.recording.iterations.empty())  // the panes show iterations (it crashed)
     throw Error(in + ": nothing to show: no Lloyd iteration was run (" + kNoIterationWhy + ")");
