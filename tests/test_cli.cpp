@@ -481,32 +481,26 @@ TEST(Cli, AnOutputThatCannotBeWrittenLeavesTheRecordingAlone) {
 // options with relocate, were accepted and changed nothing (the output was byte for byte the same).
 TEST(Cli, AnOptionWithNoEffectIsSaid) {
   const std::string mesh = test::assetPath("sphere_cap.off"), out = test::tempPath("ignored.off");
-  const CliRun plain = runCli("remesh " + mesh + " --sites 100 -o " + out);
-  ASSERT_EQ(plain.code, 0) << plain.err;
-  EXPECT_EQ(plain.err.find("note:"), std::string::npos) << plain.err;
-  const CliRun alpha = runCli("remesh " + mesh + " --sites 100 --alpha 3 -o " + out);
-  ASSERT_EQ(alpha.code, 0) << alpha.err;
-  EXPECT_NE(alpha.err.find("note: --alpha has no effect here: it shapes the curvature density"), std::string::npos) << alpha.err;
-  EXPECT_EQ(runCli("remesh " + mesh + " --sites 100 --density curvature --alpha 3 -o " + out).err.find("note:"),
-            std::string::npos);
-  const CliRun relocate = runCli("remesh " + mesh + " --method relocate --no-fit --polish 5 -o " + out);
-  ASSERT_EQ(relocate.code, 0) << relocate.err;
-  EXPECT_NE(relocate.err.find("note: --no-fit has no effect here"), std::string::npos) << relocate.err;
-  EXPECT_NE(relocate.err.find("note: --polish has no effect here"), std::string::npos) << relocate.err;
+  // `options` remesh the cap, and each of `notes` is said on stderr.
+  const auto noted = [&](const std::string& options, const std::vector<std::string>& notes) {
+    const CliRun r = runCli("remesh " + mesh + " " + options + " -o " + out);
+    EXPECT_EQ(r.code, 0) << options << ": " << r.err;
+    for (const std::string& note : notes) EXPECT_NE(r.err.find(note), std::string::npos) << options << ": " << r.err;
+    return r;
+  };
+  EXPECT_EQ(noted("--sites 100", {}).err.find("note:"), std::string::npos);
+  noted("--sites 100 --alpha 3", {"note: --alpha has no effect here: it shapes the curvature density"});
+  EXPECT_EQ(noted("--sites 100 --density curvature --alpha 3", {}).err.find("note:"), std::string::npos);
+  noted("--method relocate --no-fit --polish 5",
+        {"note: --no-fit has no effect here", "note: --polish has no effect here"});
   // A disk relocate keeps as it is; a size --simplify sets (their runs were the same with these).
-  const CliRun slit = runCli("remesh " + mesh + " --method relocate --no-slit -o " + out);
-  ASSERT_EQ(slit.code, 0) << slit.err;
-  EXPECT_NE(slit.err.find("note: --no-slit has no effect here"), std::string::npos) << slit.err;
-  const CliRun whole = runCli("remesh " + mesh + " --simplify 100 --sites 200 --full-input -o " + out);
-  ASSERT_EQ(whole.code, 0) << whole.err;
-  EXPECT_NE(whole.err.find("note: --full-input has no effect here"), std::string::npos) << whole.err;
-  EXPECT_EQ(runCli("remesh " + mesh + " --sites 100 --full-input -o " + out).err.find("note:"), std::string::npos);
+  noted("--method relocate --no-slit", {"note: --no-slit has no effect here"});
+  noted("--simplify 100 --sites 200 --full-input", {"note: --full-input has no effect here"});
+  EXPECT_EQ(noted("--sites 100 --full-input", {}).err.find("note:"), std::string::npos);
   // A size over the input's where its own vertices are the sites: the cap has 500.
   for (const std::string own : {"--method relocate", "--preset reference"}) {
-    const CliRun r = runCli("remesh " + mesh + " " + own + " --simplify 1000 --no-fidelity -o " + out);
-    ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.err.find("note: --simplify 1000 has no effect here: the input has 500 vertices, and they are the sites"),
-              std::string::npos) << own << ": " << r.err;
+    const CliRun r = noted(own + " --simplify 1000 --no-fidelity",
+                           {"note: --simplify 1000 has no effect here: the input has 500 vertices, and they are the sites"});
     EXPECT_EQ(r.out.find("vertices for the 1000 asked"), std::string::npos) << r.out;  // the clean-up was blamed
   }
 }
