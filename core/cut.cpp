@@ -288,10 +288,10 @@ std::vector<std::pair<int, int>> seamEdges(const Mesh& disk, double tolerance) {
 }
 
 double seamTolerance(const Mesh& mesh) {
-  double largest = 0;
-  for (const Vec3& p : mesh.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  const auto [lo, hi] = boundingBox(mesh);  // its corners hold the largest coordinate too
+  const double largest = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
   constexpr double kRoundingSteps = 64;
-  return std::max(kSeamTolerance * boundingBoxDiagonal(mesh), kRoundingSteps * std::numeric_limits<double>::epsilon() * largest);
+  return std::max(kSeamTolerance * (hi - lo).norm(), kRoundingSteps * std::numeric_limits<double>::epsilon() * largest);
 }
 
 namespace {
