@@ -68,10 +68,18 @@ std::string unknownExtension(const std::string& path) {
 
 // ------------------------------------------------------------------------------------- numbers
 
+// A leading '+', which from_chars does not take, gone; "" where a sign follows it ("+-1" was
+// read as -1, which strtod refuses).
+std::string_view withoutPlus(std::string_view token) {
+  if (token.empty() || token[0] != '+') return token;
+  token.remove_prefix(1);
+  return !token.empty() && (token[0] == '-' || token[0] == '+') ? std::string_view() : token;
+}
+
 // The whole token must be a number. Out-of-range values become +-inf or 0 like strtod does,
 // so that "1e999" is reported as a non-finite coordinate rather than as garbage.
 bool parseDouble(std::string_view token, double& value) {
-  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  token = withoutPlus(token);
   if (token.empty()) return false;
   const char* end = token.data() + token.size();
   const auto [stop, ec] = std::from_chars(token.data(), end, value);
@@ -82,7 +90,7 @@ bool parseDouble(std::string_view token, double& value) {
 }
 
 bool parseInteger(std::string_view token, long long& value) {
-  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  token = withoutPlus(token);
   if (token.empty()) return false;
   const char* end = token.data() + token.size();
   const auto [stop, ec] = std::from_chars(token.data(), end, value);
@@ -129,32 +137,54 @@ struct Numbering {
 
 // ------------------------------------------------------------------------------- text reading
 
-// Splits text into lines and lines into white-space separated tokens; '#' starts a comment.
+// Splits text into lines and lines into white-space separated tokens; a '#' that starts a token
+// starts a comment. Within a token it is part of it: old Microsoft libraries wrote a NaN as
+// "-1.#IND", which read as -1 and a comment, without a word.
 class LineReader {
  public:
-  explicit LineReader(std::string_view text) : text_(text) {}
+  // `continuations`: a line that ends in a backslash goes on on the next one (OBJ's rule).
+  explicit LineReader(std::string_view text, bool continuations = false)
+      : text_(text), continuations_(continuations) {}
 
   // Moves to the next line that has a token; false at the end of the text.
   bool next(std::vector<std::string_view>& tokens) {
+    tokens.clear();
     while (pos_ < text_.size()) {
       size_t end = text_.find('\n', pos_);
       if (end == std::string_view::npos) end = text_.size();
       std::string_view line = text_.substr(pos_, end - pos_);
       pos_ = std::min(end + 1, text_.size());
       ++lineNumber_;
-      line = line.substr(0, line.find('#'));
+      line = withoutComment(line);
+      const bool goesOn = continuations_ && endsInBackslash(line);
       split(line, tokens);
+      if (goesOn) continue;
       if (!tokens.empty()) return true;
     }
-    return false;
+    return !tokens.empty();
   }
 
   int lineNumber() const { return lineNumber_; }
   size_t position() const { return pos_; }  // first character after the current line
 
  private:
+  static std::string_view withoutComment(std::string_view line) {
+    for (size_t at = line.find('#'); at != std::string_view::npos; at = line.find('#', at + 1))
+      if (at == 0 || isSpace(line[at - 1])) return line.substr(0, at);
+    return line;
+  }
+
+  // Drops the backslash that ends `line` (white space after it aside), if there is one.
+  static bool endsInBackslash(std::string_view& line) {
+    size_t end = line.size();
+    while (end > 0 && isSpace(line[end - 1])) --end;
+    if (end == 0 || line[end - 1] != '\\') return false;
+    line = line.substr(0, end - 1);
+    return true;
+  }
+
+  // Appends the tokens of `line`.
   static void split(std::string_view line, std::vector<std::string_view>& tokens) {
-    tokens.clear();
     size_t i = 0;
     while (i < line.size()) {
       while (i < line.size() && isSpace(line[i])) ++i;
@@ -165,6 +195,7 @@ class LineReader {
   }
 
   std::string_view text_;
+  bool continuations_;
   size_t pos_ = 0;
   int lineNumber_ = 0;
 };
@@ -306,10 +337,55 @@ RawMesh readBinaryOff(const std::string& path, std::string_view data) {
   return raw;
 }
 
+// Geomview's OFF is free format: a plain OFF file may hold several vertices on one line, or one
+// over several. Its vertices then, three numbers each, and its faces, each the vertex count and
+// the indices (the rest of the face's last line is its colour); nothing where `body` is not so.
+std::optional<RawMesh> readFreeFormatOff(std::string_view body, int nv, int nf) {
+  LineReader lines(body);
+  std::vector<std::string_view> tokens;
+  size_t at = 0;  // the next token in `tokens`
+  const auto next = [&](std::string_view& token) {
+    while (at == tokens.size()) {
+      if (!lines.next(tokens)) return false;
+      at = 0;
+    }
+    token = tokens[at++];
+    return true;
+  };
+  RawMesh raw;
+  std::string_view token;
+  for (int i = 0; i < nv; ++i) {
+    Vec3 p;
+    for (int c = 0; c < 3; ++c)
+      if (!next(token) || !parseDouble(token, p[c])) return std::nullopt;
+    raw.points.push_back(p);
+  }
+  for (int f = 0; f < nf; ++f) {
+    long long n, v;
+    if (!next(token) || !parseInteger(token, n) || n < 0) return std::nullopt;
+    for (long long k = 0; k < n; ++k) {
+      if (!next(token) || !parseInteger(token, v)) return std::nullopt;
+      raw.indices.push_back(v);
+    }
+    raw.endPolygon();
+    at = tokens.size();
+  }
+  if (lines.next(tokens)) return std::nullopt;
+  return raw;
+}
+
+RawMesh readOffLines(const std::string& path, LineReader& lines, int nv, int nf, size_t bodySize);
+
 RawMesh readOff(const std::string& path, std::string_view text) {
   LineReader lines(text);
   std::vector<std::string_view> tokens;
   if (!lines.next(tokens)) fail(path, "bad header: the file has only comments, no 'OFF' line");
+  // "OFF500 938 0": the vertex count written against the keyword (as in ModelNet40's files).
+  const size_t digits = tokens[0].find_first_of("0123456789");
+  if (digits != std::string_view::npos && digits > 0 && isSupportedOffKeyword(tokens[0].substr(0, digits))) {
+    tokens.insert(tokens.begin() + 1, tokens[0].substr(digits));
+    tokens[0] = tokens[0].substr(0, digits);
+  }
   if (!isSupportedOffKeyword(tokens[0])) {
     fail(path, "bad header: expected 'OFF' (or COFF, NOFF, ...) but the file starts with " +
                    shown(tokens[0]));
@@ -330,8 +406,23 @@ RawMesh readOff(const std::string& path, std::string_view text) {
   const int nv = headerCount(path, lines.lineNumber(), counts[0], "vertex");
   const int nf = headerCount(path, lines.lineNumber(), counts[1], "face");
   if (counts.size() == 3) headerCount(path, lines.lineNumber(), counts[2], "edge");  // unused, but must be sane
+  const bool plain = tokens[0] == "OFF";
+  const std::string_view body = text.substr(lines.position());
+  try {
+    return readOffLines(path, lines, nv, nf, body.size());
+  } catch (const Error&) {
+    if (plain)
+      if (std::optional<RawMesh> raw = readFreeFormatOff(body, nv, nf)) return std::move(*raw);
+    throw;
+  }
+}
+
+// An OFF file's vertices and faces, a line each (values after a vertex's three or a face's
+// indices are colours, normals ... which we do not need), from the line after the counts on.
+RawMesh readOffLines(const std::string& path, LineReader& lines, int nv, int nf, size_t bodySize) {
+  std::vector<std::string_view> tokens;
   RawMesh raw;
-  reservePoints(raw, nv, text.size() - lines.position(), 6);  // "0 0 0\n"
+  reservePoints(raw, nv, bodySize, 6);  // "0 0 0\n"
   size_t widest = 0;  // the most numbers on one vertex line, and where
   int widestLine = 0;
   for (int i = 0; i < nv; ++i) {
@@ -416,7 +507,7 @@ RawMesh readObj(const std::string& path, std::string_view text) {
   }
   RawMesh raw;
   raw.base = 1;
-  LineReader lines(text);
+  LineReader lines(text, /*continuations=*/true);
   std::vector<std::string_view> tokens;
   while (lines.next(tokens)) {
     const int line = lines.lineNumber();
@@ -651,6 +742,33 @@ class PlyValues {
   int line_;        // ASCII only
 };
 
+// The integer list of vertex indices of a face element, or of triangle strips: null where there
+// is no such element; an error where it has no such list.
+const PlyProperty* indexList(const std::string& path, const PlyElement* element) {
+  if (!element) return nullptr;
+  const PlyProperty* list = element->find("vertex_indices");
+  if (!list) list = element->find("vertex_index");
+  if (!list || !list->isList || !isIntegerType(list->type))
+    fail(path, "bad header: the " + element->name + " element has no integer 'vertex_indices' list");
+  return list;
+}
+
+// The triangles of a strip (PLY's "tristrips", as MeshLab writes them): -1 ends a strip, and
+// every other triangle of a strip turns the other way so that all face one way. A triangle on
+// two equal indices joins two strips: it is no face.
+void addStrip(const std::vector<long long>& strip, RawMesh& raw) {
+  for (size_t i = 0, start = 0; i < strip.size(); ++i) {
+    if (strip[i] == -1) start = i + 1;
+    if (strip[i] == -1 || i < start + 2) continue;
+    long long a = strip[i - 2], b = strip[i - 1];
+    const long long c = strip[i];
+    if ((i - start) % 2 == 1) std::swap(a, b);
+    if (a == b || b == c || a == c) continue;
+    raw.indices.insert(raw.indices.end(), {a, b, c});
+    raw.endPolygon();
+  }
+}
+
 RawMesh readPly(const std::string& path, std::string_view text) {
   const PlyHeader header = readPlyHeader(path, text);
   const PlyElement* vertexElement = header.find("vertex");
@@ -659,13 +777,10 @@ RawMesh readPly(const std::string& path, std::string_view text) {
   for (int c = 0; c < 3; ++c) {
     if (!xyz[c] || xyz[c]->isList) fail(path, std::string("bad header: the vertex element has no '") + "xyz"[c] + "' property");
   }
-  const PlyElement* faceElement = header.find("face");
-  if (!faceElement) fail(path, "the mesh has no faces (the header declares no 'face' element)");
-  const PlyProperty* indexProperty = faceElement->find("vertex_indices");
-  if (!indexProperty) indexProperty = faceElement->find("vertex_index");
-  if (!indexProperty || !indexProperty->isList || !isIntegerType(indexProperty->type)) {
-    fail(path, "bad header: the face element has no integer 'vertex_indices' list");
-  }
+  const PlyElement *faceElement = header.find("face"), *stripElement = header.find("tristrips");
+  if (!faceElement && !stripElement)
+    fail(path, "the mesh has no faces (the header declares no 'face' or 'tristrips' element)");
+  const PlyProperty *indexProperty = indexList(path, faceElement), *stripProperty = indexList(path, stripElement);
 
   const std::string_view body = text.substr(header.bodyStart);
   RawMesh raw;
@@ -675,9 +790,10 @@ RawMesh readPly(const std::string& path, std::string_view text) {
   // said with the error that follows from it ("line 29: '1.0' is not an integer" named the
   // face that read a vertex's extra column, not the vertex).
   std::string longRow;
+  std::vector<long long> strip;
   try {
     for (const PlyElement& element : header.elements) {
-      const bool isVertex = &element == vertexElement, isFace = &element == faceElement;
+      const bool isVertex = &element == vertexElement;
       for (long long i = 0; i < element.count; ++i) {
         const auto truncated = [&] {
           fail(path, "file is truncated: it ends inside " + element.name + " " + str(i) + " of " + str(element.count));
@@ -695,7 +811,9 @@ RawMesh readPly(const std::string& path, std::string_view text) {
           if (value < 0) fail(path, element.name + " " + str(i) + " has a list of negative length");
           // Every item takes at least one byte: refuse a length the remaining data cannot hold.
           if (value > static_cast<double>(values.remaining())) truncated();
-          const bool isIndexList = isFace && &property == indexProperty;
+          const bool isFace = &property == indexProperty, isStrip = &property == stripProperty;
+          const bool isIndexList = isFace || isStrip;
+          strip.clear();
           for (long long k = 0; k < static_cast<long long>(value); ++k) {
             double item = 0;
             if (!values.read(property.type, item)) truncated();
@@ -704,9 +822,10 @@ RawMesh readPly(const std::string& path, std::string_view text) {
             // -9223372036854775808); no mesh reaches 2^62 vertices anyway.
             if (!(std::abs(item) < 0x1p62))
               fail(path, element.name + " " + str(i) + " has a vertex index past any mesh's size");
-            raw.indices.push_back(static_cast<long long>(item));
+            (isFace ? raw.indices : strip).push_back(static_cast<long long>(item));
           }
-          if (isIndexList) raw.endPolygon();
+          if (isFace) raw.endPolygon();
+          if (isStrip) addStrip(strip, raw);
         }
         if (isVertex) raw.points.push_back(point);
         if (longRow.empty() && values.moreOnThisLine())
@@ -1177,11 +1296,13 @@ std::string loadFile(const std::string& path) {
   // first vertex was lost with it, an OFF's header refused.
   if (data.rfind("\xEF\xBB\xBF", 0) == 0) data.erase(0, 3);
   // Lines ended by CR alone (classic Mac OS) are lines: an OBJ written so was one line, a
-  // comment, and refused as "the mesh has no faces". Only in text: a binary file's numbers hold
-  // zero bytes (a face's count, 3, as 4 bytes), and its bytes 13 were coordinates and indices,
+  // comment, and refused as "the mesh has no faces". So they were where the file had no LF;
+  // one LF at its end made it one line again. Only in text: a binary file's numbers hold zero
+  // bytes (a face's count, 3, as 4 bytes), and its bytes 13 were coordinates and indices,
   // changed without a word.
-  if (data.find('\n') == std::string::npos && data.find('\0') == std::string::npos)
-    std::replace(data.begin(), data.end(), '\r', '\n');
+  if (data.find('\0') == std::string::npos)
+    for (size_t i = 0; i < data.size(); ++i)
+      if (data[i] == '\r' && (i + 1 == data.size() || data[i + 1] != '\n')) data[i] = '\n';
   if (onlySpace(data)) fail(path, "the file is empty");
   return data;
 }

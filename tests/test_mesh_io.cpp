@@ -193,6 +193,9 @@ TEST(MeshIo, ReadsAsciiOffWithCommentsAndColours) {
 TEST(MeshIo, ReadsLinesEndedByCarriageReturnsAlone) {
   expectUnitSquare(readMesh(writeFile("mac.obj", "# square\rv 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3\rf 1 3 4\r")).mesh);
   expectUnitSquare(readMesh(writeFile("mac.off", "OFF\r4 2 0\r0 0 0\r1 0 0\r1 1 0\r0 1 0\r3 0 1 2\r3 0 2 3\r")).mesh);
+  // So they are where one LF ends the file, or its first line: both read as the lines between.
+  expectUnitSquare(readMesh(writeFile("mac_lf.obj", "v 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3\rf 1 3 4\n")).mesh);
+  expectUnitSquare(readMesh(writeFile("lf_mac.off", "OFF\n4 2 0\r0 0 0\r1 0 0\r1 1 0\r0 1 0\r3 0 1 2\r3 0 2 3\r")).mesh);
 }
 
 // A binary PLY whose header ends its lines in CR alone: its bytes 13 were read as line ends
@@ -229,6 +232,13 @@ TEST(MeshIo, BinaryBytesAreNeverReadAsLineEnds) {
 
 TEST(MeshIo, ReadsOffVariantsAndCountsOnTheKeywordLine) {
   expectUnitSquare(readMesh(writeFile("counts.off", "OFF 4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3"))
+                       .mesh);
+  // The vertex count against the keyword, as in ModelNet40's files: it was "bad header".
+  expectUnitSquare(readMesh(writeFile("glued.off", "OFF4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3"))
+                       .mesh);
+  // Free format, as Geomview reads it: two vertices on a line, one over two lines, and a face's
+  // colour after its indices. It was "file is truncated" (the faces read as vertices).
+  expectUnitSquare(readMesh(writeFile("free.off", "OFF\n4 2 0\n0 0 0  1 0 0\n1 1\n0\n0 1 0 3 0 1 2 1 0 0\n3 0 2 3\n"))
                        .mesh);
   expectUnitSquare(readMesh(writeFile("colours.COFF.off",
                                       "COFF\n4 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n1 1 0 1 0 0 1\n"
@@ -267,6 +277,31 @@ TEST(MeshIo, ReadsObjWithSlashesNegativeIndicesAndQuads) {
 
 // Some editors start a text file with a UTF-8 byte order mark: an OBJ lost its first vertex
 // to it (its faces then pointed one past the end), an OFF's header was refused.
+// A line that ends in a backslash goes on on the next (the OBJ format's rule, which Blender
+// reads): "f 1 2 \" was refused as "'\' is not a vertex index".
+TEST(MeshIo, AnObjLineEndingInABackslashGoesOn) {
+  expectUnitSquare(
+      readMesh(writeFile("continued.obj", "v 0 0 0\nv 1 0\\\r\n0\nv 1 1 0\nv 0 1 0\nf 1 2 \\\n  3 # a comment\nf 1\\\n3 4\\\n"))
+          .mesh);
+}
+
+// Triangle strips (MeshLab writes them): "the mesh has no faces" where they were the faces.
+TEST(MeshIo, ReadsPlyTriangleStrips) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element tristrips 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  // One strip; two cut by -1; two joined by a repeated index. Every other triangle of a strip
+  // turns the other way, so that both face up.
+  for (const char* strip : {"4 1 2 0 3", "7 1 2 0 -1 0 2 3", "7 1 2 0 0 0 2 3"}) {
+    SCOPED_TRACE(strip);
+    const Mesh mesh = readMesh(writeFile("strips.ply", header + strip + "\n")).mesh;
+    ASSERT_EQ(mesh.vertexCount(), 4);
+    ASSERT_EQ(mesh.faceCount(), 2);
+    for (const Triangle& t : mesh.triangles)
+      EXPECT_GT((mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).z(), 0);
+  }
+}
+
 TEST(MeshIo, AByteOrderMarkIsNotPartOfTheFirstLine) {
   const std::string bom = "\xEF\xBB\xBF";
   const std::string obj = writeFile("bom.obj", bom + "v 5 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
@@ -593,6 +628,13 @@ TEST(MeshIoErrors, NumberDoesNotParse) {
   // The texture and normal indices too, which are not used (both were read as vertex 1).
   expectFileError("texture.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x/y 2 3\n", "'1/x/y' is not a vertex index");
   expectFileError("slashes.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "'1/1/1/1' is not a vertex index");
+  // A '#' within a number is no comment: old Microsoft libraries wrote NaN as -1.#IND, read
+  // as -1 without a word, and infinity as 1.#INF, which left "1 coordinate" on its line.
+  expectFileError("msvc_nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 -1.#IND\nf 1 2 3\n", "'-1.#IND' is not a number");
+  expectFileError("msvc_inf.off", "OFF\n3 1 0\n0 0 0\n1.#INF 0 0\n0 1 0\n3 0 1 2\n", "line 4: '1.#INF' is not a number");
+  // A sign after the plus: strtod refuses "+-1", which was read as -1.
+  expectFileError("plus_minus.obj", "v 0 0 0\nv 1 +-1 0\nv 0 1 0\nf 1 2 3\n", "'+-1' is not a number");
+  expectFileError("plus_minus_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf +-3 2 3\n", "'+-3' is not a vertex index");
   expectFileError("word.ply",
                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
