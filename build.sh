@@ -11,7 +11,7 @@ cd "$(dirname "$0")"
 PACKAGES=(cmake g++ make pkg-config libcgal-dev libcgal-demo libeigen3-dev libgtest-dev
           libcli11-dev nlohmann-json3-dev libtbb-dev
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools libglfw3-dev
-          libimgui-dev libglm-dev libstb-dev fonts-dejavu-core xvfb xauth xdotool)
+          libimgui-dev libglm-dev libstb-dev fonts-dejavu-core xvfb xauth xdotool x11-utils libx11-dev)
 # CGAL's sample meshes used by tests and benchmarks, from libcgal-demo: five disks, and closed
 # surfaces of genus 2 and 3 (eight, femur, elephant) and 0 (the cow, which touches itself at a
 # point; the triceratops, whose first resampling no map holds) for cutting and stitching, and

@@ -121,10 +121,9 @@ class OffscreenRenderer {
 }  // namespace
 
 namespace {
-// Under 960x600 the panes are too small to read (at 640x480 the plots' titles ran into each
-// other and the timeline's buttons were cut off): a smaller picture is a larger one scaled.
+// A picture smaller than the inspector's layout (kSmallestLayoutWidth) is a larger one scaled.
 // 8192 is a side every Vulkan device can render.
-constexpr long long kSmallestWidth = 960, kSmallestHeight = 600, kLargestSide = 8192;
+constexpr long long kSmallestWidth = kSmallestLayoutWidth, kSmallestHeight = kSmallestLayoutHeight, kLargestSide = 8192;
 }  // namespace
 
 std::string pictureSizes() {

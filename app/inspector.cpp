@@ -760,13 +760,33 @@ Inspector::Shown3D Inspector::shown3D() const {
 
 void Inspector::showMessage(std::string text) {
   message_ = inWindowWords(std::move(text));
-  ++messageCount_;  // the same error twice is news too
+  messageShownAt_ = ImGui::GetTime();  // the same error twice is news too
+}
+
+// Long enough to read it twice at a lecture's pace.
+double Inspector::messageSecondsLeft() const {
+  if (message_.empty()) return 0;
+  return std::max(0.0, 6.0 + 0.06 * message_.size() - (ImGui::GetTime() - messageShownAt_));
+}
+
+// Light text on a dark box across the views' foot, over whatever is there (the foreground).
+void Inspector::messageOverlay(const ImVec2& pos, float width) {
+  // Not in an export's pictures: the next picture showed the last one's "saved ...".
+  if (messageSecondsLeft() <= 0 || exporting()) return;
+  const float margin = 8, pad = 6, font = ImGui::GetFontSize();
+  const float wrap = std::max(1.0f, width - 2 * (margin + pad));
+  const ImVec2 text = ImGui::GetFont()->CalcTextSizeA(font, FLT_MAX, wrap, message_.c_str());
+  const ImVec2 top(pos.x + margin, pos.y - margin - text.y - 2 * pad);
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  dl->AddRectFilled(top, ImVec2(pos.x + width - margin, pos.y - margin), rgb(0.12f, 0.12f, 0.14f), 4.0f);
+  dl->AddText(ImGui::GetFont(), font, ImVec2(top.x + pad, top.y + pad), rgb(1, 1, 1), message_.c_str(), nullptr, wrap);
 }
 
 double Inspector::secondsToChange() const {
   if (running() || exportJob_ || fitPending_) return 0;
   double seconds = std::numeric_limits<double>::infinity();
-  if (playing_) seconds = std::max(0.0f, 1.0f - playClock_) / playSpeed_;
+  if (messageSecondsLeft() > 0) seconds = messageSecondsLeft();  // then it goes
+  if (playing_) seconds = std::min<double>(seconds, std::max(0.0f, 1.0f - playClock_) / playSpeed_);
   if (lesson_.playing()) seconds = std::min<double>(seconds, lesson_.secondsToNextStep() / (playSpeed_ / 10.0f));
   return seconds;
 }
@@ -860,6 +880,7 @@ void Inspector::frame() {
   domainPane2D(ImVec2(left + viewWidth, viewsTop), ImVec2(display.x - left - viewWidth, viewsHeight));
   plotsPane(ImVec2(left, plotsTop), ImVec2(display.x - left, plotsHeight));
   timelinePane(ImVec2(left, plotsTop + plotsHeight), ImVec2(display.x - left, timelineHeight));
+  messageOverlay(ImVec2(left, plotsTop), display.x - left);
   if (bigFont) ImGui::PopFont();
   animatedLastFrame_ = animating();
 }
@@ -1019,14 +1040,6 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
   settingsControls();
   fileControls();
   exportControls();
-  // Not in an export's pictures: the next picture showed the last one's "saved ...".
-  if (!message_.empty() && !exporting()) {
-    wrappedText(message_);
-    // A new message is scrolled into view: with Files or Export open it fell below the window
-    // (1280x800), and a failed Open mesh looked like nothing at all.
-    if (messageCount_ != scrolledToMessage_) ImGui::SetScrollHereY(1.0f);
-  }
-  scrolledToMessage_ = messageCount_;
   ImGui::End();
 }
 
@@ -1573,9 +1586,12 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     return ImVec2(at.x, at.y);
   };
   const Vec2 mouseUV = view2D_.toDomain(mouse, fit, base);
-  if (clickedNotDragged())
+  // Cells are offered where they are drawn: the lesson's load stage, which draws none, offered
+  // one to pin under the pointer.
+  const bool picks = pickTriangles2D_ || layers().cells2D;
+  if (picks && clickedNotDragged())
     pick2D(mouseUV);  // not the end of a pan
-  else if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+  else if (picks && ImGui::IsItemHovered() && !ImGui::IsItemActive())
     hoverTooltip2D(mouseUV);
 
   ImDrawList* dl = ImGui::GetWindowDrawList();

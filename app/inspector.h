@@ -86,6 +86,10 @@ struct OpeningView {
   void applyTo(Inspector& inspector) const;
 };
 
+// The smallest room the inspector lays out in, in units: under it the panes are too small to
+// read (at 640x480 the plots' titles ran into each other, the timeline's buttons were cut off).
+constexpr int kSmallestLayoutWidth = 960, kSmallestLayoutHeight = 600;
+
 class Inspector {
  public:
   // `result` is the finished run the inspector opens on (its recording drives every pane).
@@ -250,9 +254,14 @@ class Inspector {
   BackgroundTask run_;  // steps session_
   std::mutex pendingMutex_;
   std::vector<IterationRecord> pending_;  // from the worker, not yet in the replay
-  std::string message_;                   // what the last file action did, or its error: under the controls
-  int messageCount_ = 0, scrolledToMessage_ = 0;  // messages shown; the last the pane scrolled to
+  // What the last action did, or why it could not: over the foot of the views for a while, in
+  // presentation mode too. Under the controls, it moved them (the pane scrolled to it, and the
+  // next click landed on another control), and presentation mode hid it.
+  std::string message_;
+  double messageShownAt_ = 0;  // ImGui::GetTime()
   void showMessage(std::string text);
+  double messageSecondsLeft() const;
+  void messageOverlay(const ImVec2& pos, float width);
   std::string runNotes_;                  // how the result was made, or why its run failed: under the table
   struct Comparison {  // another solver's run from the same first sites
     CvtSolver solver;

@@ -459,6 +459,11 @@ int runWindow(const std::string& meshName, const RemeshOptions& options, RemeshR
   GLFWwindow* window = glfwCreateWindow(static_cast<int>(std::lround(1280 * pixelsPerUnit)),
                                         static_cast<int>(std::lround(800 * pixelsPerUnit)), "Lloydscope", nullptr, nullptr);
   if (!window) throw Error("cannot open a window on this display");
+  // No smaller than the layout reads in (the pictures' least --size): at 640x400 the plots'
+  // titles and the legends were cut off, and a note covered the 2D legend.
+  glfwSetWindowSizeLimits(window, static_cast<int>(std::lround(kSmallestLayoutWidth * pixelsPerUnit)),
+                          static_cast<int>(std::lround(kSmallestLayoutHeight * pixelsPerUnit)), GLFW_DONT_CARE,
+                          GLFW_DONT_CARE);
   const OnExit closeWindow{[&] { glfwDestroyWindow(window); }};
   glfwSetWindowUserPointer(window, &events);
   gpu::Context gpu(surfaceExtensions(), true, validation);
