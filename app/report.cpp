@@ -125,9 +125,13 @@ PlotAxis plotAxis(const std::vector<double>& values, const std::vector<std::vect
   }
   axis.lo = std::floor(lo) - (zeros ? 1 : 0);
   axis.hi = std::ceil(hi);
-  for (int decade = static_cast<int>(axis.lo); decade <= static_cast<int>(axis.hi); ++decade)
-    axis.ticks.push_back({std::pow(10.0, decade), "1e" + std::to_string(decade)});
-  if (zeros) axis.ticks.front() = {0.0, "0"};
+  // A tick a decade, or every few decades down from the top where there are more than fit: a
+  // distance threshold of 1e-310 (which the command line takes) drew 300 labels over each other.
+  const int top = static_cast<int>(axis.hi), bottom = static_cast<int>(axis.lo) + (zeros ? 1 : 0);
+  const int step = std::max(1, (top - bottom + PlotAxis::kMostLogTicks - 2) / (PlotAxis::kMostLogTicks - 1));
+  for (int decade = top; decade >= bottom; decade -= step)
+    axis.ticks.insert(axis.ticks.begin(), {std::pow(10.0, decade), "1e" + std::to_string(decade)});
+  if (zeros) axis.ticks.insert(axis.ticks.begin(), {0.0, "0"});
   return axis;
 }
 

@@ -44,6 +44,7 @@ std::vector<std::string> tickLabels(const std::vector<double>& values);
 // energy) read as the frame, in grey (Lloyd's colour) not at all.
 struct PlotAxis {
   static constexpr double kMargin = 0.07;  // of the plot's height, under and over the range
+  static constexpr int kMostLogTicks = 8;  // decades labelled on a log axis, the row of zeros aside
   bool log = false;
   double lo = 0, hi = 1;  // the range; log10 of it on a log axis
   struct Tick {

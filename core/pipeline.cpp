@@ -15,8 +15,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <future>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -1186,28 +1188,52 @@ RemeshOptions optionsFromSettings(const std::string& settings) {
   const auto integer = [&](const std::string& v) {
     return number(v, [](const std::string& text, size_t* used) { return std::stoi(text, used); });
   };
+  // strtod, not std::stod, which throws on a subnormal: the command line's
+  // --distance-threshold 1e-310 made a recording that did not read back.
   const auto real = [&](const std::string& v) {
-    return number(v, [](const std::string& text, size_t* used) { return std::stod(text, used); });
+    return number(v, [](const std::string& text, size_t* used) {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      *used = static_cast<size_t>(end - text.c_str());
+      return value;
+    });
+  };
+  // As the command line takes them: a recording's max-iterations=2147483647 and its threshold
+  // of 1e-300 made the inspector's Compare run for ever.
+  const auto within = [&](auto value, double low, double high, const char* range) {
+    if (!(value >= low && value <= high))
+      throw Error("setting " + key + "=" + settingValue(settings, key) + " is not " + range);
+    return value;
+  };
+  const auto nonNegative = [&](const std::string& v) { return within(real(v), 0, INFINITY, "a number >= 0"); };
+  const auto verticesAsked = [&](const std::string& v) {
+    return within(integer(v), kSmallestRemeshedShare, kMostRemeshedVertices, "a vertex count the command line takes");
   };
   auto yes = [](const std::string& v) { return v == "yes"; };
-  with("simplify", [&](const std::string& v) { o.simplifyTo = integer(v); });
+  with("simplify", [&](const std::string& v) { o.simplifyTo = verticesAsked(v); });
   with("method", [&](const std::string& v) { o.method = parseRemeshMethod(v); });
   with("resample", [&](const std::string& v) { o.resample = yes(v); });
   with("param", [&](const std::string& v) { o.param.method = parseParamMethod(v); });
   with("border", [&](const std::string& v) { o.param.border = parseBorder(v); });
   with("density", [&](const std::string& v) { o.density.kind = parseDensityKind(v); });
-  with("alpha", [&](const std::string& v) { o.density.alpha = real(v); });
-  with("beta", [&](const std::string& v) { o.density.beta = real(v); });
-  with("floor", [&](const std::string& v) { o.density.floor = real(v); });
+  with("alpha", [&](const std::string& v) { o.density.alpha = nonNegative(v); });
+  with("beta", [&](const std::string& v) { o.density.beta = nonNegative(v); });
+  with("floor", [&](const std::string& v) { o.density.floor = nonNegative(v); });
   with("sites", [&](const std::string& v) {
     o.sites.fromInputVertices = v == "input-vertices";
-    o.sites.count = v == "input-vertices" || v == "as-many-as-input" ? 0 : integer(v);
+    o.sites.count = v == "input-vertices" || v == "as-many-as-input" ? 0 : verticesAsked(v);
   });
   with("solver", [&](const std::string& v) { o.lloyd.solver = parseCvtSolver(v); });
-  with("distance-threshold", [&](const std::string& v) { o.lloyd.distanceThreshold = real(v); });
-  with("percent-threshold", [&](const std::string& v) { o.lloyd.percentThreshold = real(v); });
-  with("max-iterations", [&](const std::string& v) { o.lloyd.maxIterations = integer(v); });
-  with("polish", [&](const std::string& v) { o.polish = integer(v); });
+  with("distance-threshold", [&](const std::string& v) {
+    o.lloyd.distanceThreshold = within(real(v), std::numeric_limits<double>::denorm_min(), INFINITY, "a number > 0");
+  });
+  with("percent-threshold", [&](const std::string& v) {
+    o.lloyd.percentThreshold = within(real(v), 0, 100, "a percentage from 0 to 100");
+  });
+  with("max-iterations", [&](const std::string& v) {
+    o.lloyd.maxIterations = within(integer(v), 1, kMostIterations, "an iteration count the command line takes");
+  });
+  with("polish", [&](const std::string& v) { o.polish = within(integer(v), -1, kMostPolishPasses, "from -1 to 100"); });
   with("polish-target", [&](const std::string& v) { o.polishTarget = parsePolishTarget(v); });
   with("snap", [&](const std::string& v) { o.snapToTips = yes(v); });
   with("fit", [&](const std::string& v) { o.fit = yes(v); });

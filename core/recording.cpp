@@ -144,6 +144,13 @@ std::string encodePayload(const Recording& r) {
 
 // How far a recorded map may stray from the unit square it was scaled to (rounding).
 constexpr double kUnitSquareSlack = 1e-9;
+// Beyond it a cell's integrals overflow (a density of 1e308 made a centroid NaN, and CGAL's
+// exact point location stopped the inspector with SIGFPE); no map distorts areas by so much.
+constexpr double kLargestDensity = 1e100;
+// A site is at most the unit square's diagonal from its centroid, both in the square.
+const double kLargestDisplacement = std::sqrt(2.0) * (1 + kUnitSquareSlack);
+// Longer than any run takes (about four months): more overflowed the plots' time axis.
+constexpr double kLongestIterationMs = 1e10;
 
 // What the replay takes for granted, which a file of the right size and checksum may still
 // break (made by another program, or edited): each broke it with a crash.
@@ -157,8 +164,9 @@ void checkContents(const Recording& r, const std::string& path) {
   // value no option takes, or a control character sent to the terminal, is damage.
   if (!std::all_of(r.settings.begin(), r.settings.end(), [](char c) { return c >= ' ' && c <= '~'; }))
     damaged("its settings hold a character no run writes");
+  RemeshOptions recorded;
   try {
-    optionsFromSettings(r.settings);
+    recorded = optionsFromSettings(r.settings);
     recordedParamMethod(r.settings);
   } catch (const Error& e) {
     damaged(e.what());
@@ -166,11 +174,23 @@ void checkContents(const Recording& r, const std::string& path) {
   if (r.input.triangles.empty()) damaged("no triangles");
   if (!allFinite(r.input.points) || !allFinite(r.uv) || !allFinite(r.fixedSites))
     damaged("a coordinate is not a finite number");
+  // As every command takes a mesh: at 1e300 the 3D view was empty and the smallest angle 180.
+  try {
+    requireExactPredicatesRange(r.input, "its surface", "replayed");
+  } catch (const Error& e) {
+    damaged(e.what());
+  }
   // As the command line takes them: a run never records others (the plots drew a threshold of
   // -1 nowhere, and one of 200% over the top of the plot).
   if (!(std::isfinite(r.distanceThreshold) && r.distanceThreshold > 0 && r.percentThreshold >= 0 &&
         r.percentThreshold <= 100))
     damaged("a threshold is not one a run takes (a distance above 0, a percentage from 0 to 100)");
+  // The settings line and the numbers the replay reads are of one run: a picture said
+  // "Thresholds: 1e-06" beside a threshold line drawn at 1e308.
+  const bool thresholdsSet = !settingValue(r.settings, "distance-threshold").empty();
+  if (thresholdsSet && (recorded.lloyd.distanceThreshold != r.distanceThreshold || recorded.lloyd.percentThreshold != r.percentThreshold))
+    damaged("its thresholds differ from its settings'");
+  if (!settingValue(r.settings, "method").empty() && recorded.method != r.method) damaged("its method differs from its settings'");
   // The map as parameterize() leaves it: scaled to the unit square, counter-clockwise, no
   // triangle turned over (mirrored, it crashed the replay's point location; scaled by 1e-150
   // it raised a floating-point exception there; border sites 1e300 away made it hang).
@@ -197,7 +217,7 @@ void checkContents(const Recording& r, const std::string& path) {
       damaged("a parameter triangle is turned over");
   for (const auto& corners : r.density)
     for (double d : corners)
-      if (!std::isfinite(d) || d < 0) damaged("a density is negative or not a finite number");
+      if (!std::isfinite(d) || d < 0 || d > kLargestDensity) damaged("a density is negative, not a finite number or over 1e100");
   const size_t sites = r.iterations.front().sites.size();
   if (!r.movableVertex.empty() && r.movableVertex.size() != sites) damaged("its sites' vertices are not one per site");
   for (int v : r.movableVertex)
@@ -211,7 +231,9 @@ enum class Keep { AllIterations, FirstIteration };
 Recording decodePayload(Reader& in, const std::string& path, Keep keep = Keep::AllIterations) {
   Recording r;
   r.settings = in.getString();
-  r.method = in.get<std::uint8_t>() == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate;
+  const std::uint8_t method = in.get<std::uint8_t>();
+  if (method > 1) throw Error(path + ": damaged recording (its method is neither relocate nor retriangulate)");
+  r.method = method == 0 ? RemeshMethod::Relocate : RemeshMethod::Retriangulate;
   r.distanceThreshold = in.get<double>();
   r.percentThreshold = in.get<double>();
   r.input.points.resize(in.getCount(24));
@@ -255,16 +277,24 @@ Recording decodePayload(Reader& in, const std::string& path, Keep keep = Keep::A
     it.meanDisplacement = in.get<double>();
     it.fractionMoving = in.get<double>();
     it.milliseconds = in.get<double>();
-    // What a run measures is never negative, nor a fraction over 1 (info printed "nan").
-    const auto measure = [](double v) { return std::isfinite(v) && v >= 0; };
-    if (!measure(it.energy) || !measure(it.maxDisplacement) || !measure(it.meanDisplacement) ||
-        !measure(it.milliseconds) || !(it.fractionMoving >= 0 && it.fractionMoving <= 1))
+    // What a run measures is never negative, nor a fraction over 1 (info printed "nan"), nor
+    // a distance over the domain's diagonal (the log plots drew hundreds of labels at 1e308).
+    const auto measure = [](double v, double most) { return std::isfinite(v) && v >= 0 && v <= most; };
+    if (!measure(it.energy, INFINITY) || !measure(it.maxDisplacement, kLargestDisplacement) ||
+        !measure(it.meanDisplacement, kLargestDisplacement) || !measure(it.milliseconds, kLongestIterationMs) ||
+        !measure(it.fractionMoving, 1))
       throw Error(path + ": damaged recording (an iteration's energy, distances, share moving or time is out of range)");
+    // Its place: info listed an iteration -2147483648.
+    if (it.index != static_cast<int>(i)) throw Error(path + ": damaged recording (an iteration is out of order)");
     std::vector<std::uint32_t> coords(2 * size_t(in.getCount(8)));
     for (std::uint32_t& q : coords) q = in.get<std::uint32_t>();
     it.sites = PackedSites::fromRaw(std::move(coords));
     if (it.sites.size() != r.iterations.front().sites.size())
       throw Error(path + ": damaged recording (iterations differ in their number of sites)");
+    // A share of the sites: a whole number of them (5e-324 drew 300 decades of labels).
+    const double moving = it.fractionMoving * static_cast<double>(it.sites.size()), whole = std::round(moving);
+    if (std::abs(moving - whole) > 1e-6 || (whole == 0) != (it.fractionMoving == 0))
+      throw Error(path + ": damaged recording (an iteration's share moving is no whole number of sites)");
   }
   if (!in.done()) throw Error(path + ": damaged recording (unexpected data after the end)");
   checkContents(r, path);

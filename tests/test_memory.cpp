@@ -90,6 +90,7 @@ TEST(Memory, SavingARecordingHoldsOneCopyOfItsBytesAtMost) {
   const std::vector<IterationRecord> run = recording.iterations;
   while (recording.iterations.size() * run.front().sites.size() < 1000000)
     recording.iterations.insert(recording.iterations.end(), run.begin(), run.end());
+  for (size_t k = 0; k < recording.iterations.size(); ++k) recording.iterations[k].index = static_cast<int>(k);  // as a run numbers them
   const std::string path = test::tempPath("memory.lsrec");
   const long long peak = peakBytesOf([&] { saveRecording(recording, path); });
   const long long fileBytes = static_cast<long long>(test::readText(path).size());

@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -91,6 +93,13 @@ TEST(Recording, ABorderOfFewerThanThreeSitesIsRefused) {
 TEST(Recording, ContentsNoRunRecordsAreRefused) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::string kBadThreshold = "a threshold is not one a run takes (a distance above 0, a percentage from 0 to 100)";
+  const std::string kBadDensity = "a density is negative, not a finite number or over 1e100";
+  const std::string kBadMeasure = "an iteration's energy, distances, share moving or time is out of range";
+  const auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from << " not in " << text;
+    return at == std::string::npos ? text : text.replace(at, from.size(), to);
+  };
   const std::vector<std::pair<std::function<void(Recording&)>, std::string>> edits = {
       {[](Recording& r) { r.iterations.clear(); }, "no iterations"},
       {[](Recording& r) { r.input.triangles.clear(), r.density.clear(); }, "no triangles"},
@@ -98,8 +107,33 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[&](Recording& r) { r.input.points[0].z() = nan; }, "a coordinate is not a finite number"},
       {[&](Recording& r) { r.fixedSites[1].y() = nan; }, "a coordinate is not a finite number"},
       {[](Recording& r) { std::fill(r.uv.begin(), r.uv.end(), Vec2(0, 0)); }, "its parameter domain has no area"},
-      {[&](Recording& r) { r.density[5][1] = nan; }, "a density is negative or not a finite number"},
-      {[](Recording& r) { r.density[5][1] = -1; }, "a density is negative or not a finite number"},
+      {[&](Recording& r) { r.density[5][1] = nan; }, kBadDensity},
+      {[](Recording& r) { r.density[5][1] = -1; }, kBadDensity},
+      // a centroid overflowed to NaN, and CGAL's point location stopped the inspector (SIGFPE)
+      {[](Recording& r) { for (auto& corners : r.density) corners = {1e308, 1e308, 1e308}; }, kBadDensity},
+      // the 3D view was empty, the smallest angle 180 degrees
+      {[](Recording& r) { for (Vec3& p : r.input.points) p *= 1e300; },
+       "its surface: coordinates as large as 1e+300 are beyond what can be replayed in double precision (up to 1e+30); "
+       "scale the mesh down"},
+      // a threshold line at 1e308 beside "Thresholds: 1e-06"; the plots' labels over each other
+      {[](Recording& r) { r.distanceThreshold = 1e308; }, "its thresholds differ from its settings'"},
+      {[](Recording& r) { r.percentThreshold = 50; }, "its thresholds differ from its settings'"},
+      {[](Recording& r) { r.method = RemeshMethod::Relocate; }, "its method differs from its settings'"},
+      {[](Recording& r) { r.iterations[0].maxDisplacement = 1e308; }, kBadMeasure},
+      {[](Recording& r) { r.iterations[1].meanDisplacement = 2; }, kBadMeasure},
+      {[](Recording& r) { r.iterations[1].milliseconds = 1e308; }, kBadMeasure},
+      {[](Recording& r) { r.iterations[0].fractionMoving = 5e-324; },
+       "an iteration's share moving is no whole number of sites"},
+      // info listed it so
+      {[](Recording& r) { r.iterations.back().index = -2147483647 - 1; }, "an iteration is out of order"},
+      {[](Recording& r) { std::swap(r.iterations[0].index, r.iterations[1].index); }, "an iteration is out of order"},
+      // Compare, with the threshold below, ran for ever
+      {[&](Recording& r) { r.settings = replaced(r.settings, "max-iterations=12", "max-iterations=2147483647"); },
+       "setting max-iterations=2147483647 is not an iteration count the command line takes"},
+      {[&](Recording& r) { r.settings = replaced(r.settings, "sites=", "sites=-5 was="); },
+       "setting sites=-5 is not a vertex count the command line takes"},
+      {[](Recording& r) { r.settings += " alpha=-1"; }, "setting alpha=-1 is not a number >= 0"},
+      {[&](Recording& r) { r.settings = replaced(r.settings, "polish=3", "polish=1000000"); }, "setting polish=1000000 is not from -1 to 100"},
       {[&](Recording& r) { r.distanceThreshold = nan; }, kBadThreshold},
       {[](Recording& r) { r.distanceThreshold = 0; }, kBadThreshold},
       {[](Recording& r) { r.percentThreshold = -5; }, kBadThreshold},
@@ -119,10 +153,8 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[](Recording& r) { std::fill(r.fixedSites.begin(), r.fixedSites.end(), Vec2(0.5, 0.5)); },
        "the border of the parameter domain encloses no area"},
       // info printed them as "nan", the plots drew what they could
-      {[&](Recording& r) { r.iterations.back().energy = nan; },
-       "an iteration's energy, distances, share moving or time is out of range"},
-      {[](Recording& r) { r.iterations.back().fractionMoving = 2; },
-       "an iteration's energy, distances, share moving or time is out of range"},
+      {[&](Recording& r) { r.iterations.back().energy = nan; }, kBadMeasure},
+      {[](Recording& r) { r.iterations.back().fractionMoving = 2; }, kBadMeasure},
       {[](Recording& r) { std::swap(r.input.triangles[10][0], r.input.triangles[10][1]); },
        "a parameter triangle is turned over"},
       // info printed these (inspect refused the first), the escape sequence to the terminal
@@ -153,6 +185,38 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
   std::fill(r.movableVertex.begin(), r.movableVertex.end(), -1);
   saveRecording(r, path);
   EXPECT_NO_THROW(loadRecording(path));
+}
+
+// The command line takes any distance threshold above 0, but a subnormal one (1e-310) made a
+// recording that did not read back: std::stod throws on it ("is not a number").
+TEST(Recording, ASubnormalThresholdReadsBack) {
+  RemeshOptions o;
+  o.lloyd.maxIterations = 3;
+  o.lloyd.distanceThreshold = 1e-310;
+  o.measureFidelity = false;
+  const RemeshResult run = remesh(readMesh(test::assetPath("sphere_cap.off")).mesh, o, "sphere_cap.off");
+  const std::string path = test::tempPath("subnormal.lsrec");
+  saveRecording(run.recording, path);
+  EXPECT_EQ(loadRecording(path).distanceThreshold, 1e-310);
+}
+
+// The method is a byte, 0 relocate or 1 retriangulate: any other (255) read as retriangulate.
+// The checksum made again, as another program's file would have it.
+TEST(Recording, AMethodByteNoRunWritesIsDamaged) {
+  const Recording& r = sphereCapRun().recording;
+  const std::string path = test::tempPath("method.lsrec");
+  saveRecording(r, path);
+  std::string bytes = test::readText(path);
+  const size_t header = 20, checksum = 8;  // the magic, version and size; FNV-1a of the payload
+  bytes[header + 4 + r.settings.size()] = '\xff';  // after the settings' length and text
+  std::uint64_t hash = 1469598103934665603ull;
+  for (size_t i = header; i + checksum < bytes.size(); ++i) {
+    hash ^= static_cast<unsigned char>(bytes[i]);
+    hash *= 1099511628211ull;
+  }
+  std::memcpy(&bytes[bytes.size() - checksum], &hash, checksum);
+  test::writeText(path, bytes);
+  expectError(path, "damaged recording (its method is neither relocate nor retriangulate)");
 }
 
 TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {

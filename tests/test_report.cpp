@@ -339,6 +339,20 @@ TEST(Report, ZerosOnALogAxisHaveARowOfTheirOwn) {
   EXPECT_DOUBLE_EQ(energy.position(2.0172e-4), onFrame(0));
 }
 
+// A distance threshold of 1e-310, which the command line takes (any above 0), put 311 decades
+// on the axis, each labelled: the labels ran into a grey block. A few, evenly spaced, from the
+// top decade down.
+TEST(Report, ALogAxisOverHundredsOfDecadesLabelsAFew) {
+  const PlotAxis axis = plotAxis({0.5, 1e-3}, {}, 1e-310, true);
+  ASSERT_GE(axis.ticks.size(), 3u);
+  EXPECT_LE(axis.ticks.size(), static_cast<size_t>(PlotAxis::kMostLogTicks));
+  EXPECT_EQ(axis.ticks.back().label, "1e0");
+  const double spacing = axis.position(axis.ticks[1].value) - axis.position(axis.ticks[0].value);
+  for (size_t k = 1; k < axis.ticks.size(); ++k)
+    EXPECT_NEAR(axis.position(axis.ticks[k].value) - axis.position(axis.ticks[k - 1].value), spacing, 1e-12);
+  EXPECT_GE(axis.position(1e-310), 0.0);  // the threshold's line on the plot
+}
+
 // The camel head's masses spanned 2.7e-8 to 8.8e-2: on a linear scale every cell but one had
 // the lowest colour. Over a factor 100 the scale is logarithmic.
 TEST(Report, AFillSpanningDecadesIsScaledByItsLogarithm) {
