@@ -1586,9 +1586,9 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
     return ImVec2(at.x, at.y);
   };
   const Vec2 mouseUV = view2D_.toDomain(mouse, fit, base);
-  // Cells are offered where they are drawn: the lesson's load stage, which draws none, offered
-  // one to pin under the pointer.
-  const bool picks = pickTriangles2D_ || layers().cells2D;
+  // Cells and triangles are offered where they are drawn: the lesson's load stage, which draws
+  // neither, offered one to pin under the pointer.
+  const bool picks = pickTriangles2D_ ? iterationResultIn2D() : layers().cells2D;
   if (picks && clickedNotDragged())
     pick2D(mouseUV);  // not the end of a pan
   else if (picks && ImGui::IsItemHovered() && !ImGui::IsItemActive())

@@ -117,9 +117,9 @@ class Inspector {
   // Ctrl+Q was pressed: the window closes (a picture made headless has no keys).
   bool closeRequested() const { return closeRequested_; }
   // Seconds until the picture changes without input: 0 while a run, an export or the first
-  // view's fit goes on, the
-  // time to playback's next iteration or the lesson's next step, infinity where nothing moves
-  // on its own. The window waits for input until then.
+  // view's fit goes on, the time to playback's next iteration, the lesson's next step or a
+  // message's going, infinity where nothing moves on its own. The window waits for input until
+  // then.
   double secondsToChange() const;
   bool animating() const { return secondsToChange() < std::numeric_limits<double>::infinity(); }
   // Called from another thread when something the window shows is ready (the comparison's

@@ -254,7 +254,7 @@ bool keyHeld() {
 
 // Draws at once while a run goes on or input is settling; otherwise sleeps until an event (a
 // thread's glfwPostEmptyEvent too) or the picture's next change (playback's next iteration,
-// the lesson's next step), which gets a frame more to settle. Minimized, there is nothing to
+// the lesson's next step, a message's going), which gets a frame more to settle. Minimized, there is nothing to
 // draw until it is shown again.
 void awaitNextFrame(GLFWwindow* window, const Inspector& inspector) {
   WindowEvents& events = eventsOf(window);

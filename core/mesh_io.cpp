@@ -137,9 +137,9 @@ struct Numbering {
 
 // ------------------------------------------------------------------------------- text reading
 
-// Splits text into lines and lines into white-space separated tokens; a '#' that starts a token
-// starts a comment. Within a token it is part of it: old Microsoft libraries wrote a NaN as
-// "-1.#IND", which read as -1 and a comment, without a word.
+// Splits text into lines and lines into white-space separated tokens; '#' starts a comment,
+// unless a '.' comes right before it: old Microsoft libraries wrote a NaN as "-1.#IND", which
+// read as -1 and a comment, without a word. It is now a word that is no number.
 class LineReader {
  public:
   // `continuations`: a line that ends in a backslash goes on on the next one (OBJ's rule).
@@ -170,7 +170,7 @@ class LineReader {
  private:
   static std::string_view withoutComment(std::string_view line) {
     for (size_t at = line.find('#'); at != std::string_view::npos; at = line.find('#', at + 1))
-      if (at == 0 || isSpace(line[at - 1])) return line.substr(0, at);
+      if (at == 0 || line[at - 1] != '.') return line.substr(0, at);
     return line;
   }
 
@@ -337,9 +337,10 @@ RawMesh readBinaryOff(const std::string& path, std::string_view data) {
   return raw;
 }
 
-// Geomview's OFF is free format: a plain OFF file may hold several vertices on one line, or one
-// over several. Its vertices then, three numbers each, and its faces, each the vertex count and
-// the indices (the rest of the face's last line is its colour); nothing where `body` is not so.
+// Geomview's OFF is free format: a plain OFF file may hold several vertices on a line. Its
+// vertices then, three numbers each, whole on their lines, two or more on some line; and its
+// faces, a line each: the vertex count, the indices, then a colour. Nothing where `body` is not
+// so: a vertex line one number short (damage) read as a vertex over two lines, without a word.
 std::optional<RawMesh> readFreeFormatOff(std::string_view body, int nv, int nf) {
   LineReader lines(body);
   std::vector<std::string_view> tokens;
@@ -354,12 +355,19 @@ std::optional<RawMesh> readFreeFormatOff(std::string_view body, int nv, int nf) 
   };
   RawMesh raw;
   std::string_view token;
+  bool packed = false;
   for (int i = 0; i < nv; ++i) {
+    if (at == tokens.size()) {  // a new line: whole vertices
+      if (!lines.next(tokens) || tokens.size() % 3 != 0) return std::nullopt;
+      at = 0;
+      packed = packed || tokens.size() > 3;
+    }
     Vec3 p;
     for (int c = 0; c < 3; ++c)
       if (!next(token) || !parseDouble(token, p[c])) return std::nullopt;
     raw.points.push_back(p);
   }
+  if (!packed || at != tokens.size()) return std::nullopt;
   for (int f = 0; f < nf; ++f) {
     long long n, v;
     if (!next(token) || !parseInteger(token, n) || n < 0) return std::nullopt;
@@ -780,7 +788,10 @@ RawMesh readPly(const std::string& path, std::string_view text) {
   const PlyElement *faceElement = header.find("face"), *stripElement = header.find("tristrips");
   if (!faceElement && !stripElement)
     fail(path, "the mesh has no faces (the header declares no 'face' or 'tristrips' element)");
-  const PlyProperty *indexProperty = indexList(path, faceElement), *stripProperty = indexList(path, stripElement);
+  // Strips without indices beside faces (another program's own element) are no matter.
+  const bool stripsIndexed = stripElement && (stripElement->find("vertex_indices") || stripElement->find("vertex_index"));
+  const PlyProperty *indexProperty = indexList(path, faceElement),
+                    *stripProperty = stripsIndexed || !faceElement ? indexList(path, stripElement) : nullptr;
 
   const std::string_view body = text.substr(header.bodyStart);
   RawMesh raw;
@@ -1299,10 +1310,11 @@ std::string loadFile(const std::string& path) {
   // comment, and refused as "the mesh has no faces". So they were where the file had no LF;
   // one LF at its end made it one line again. Only in text: a binary file's numbers hold zero
   // bytes (a face's count, 3, as 4 bytes), and its bytes 13 were coordinates and indices,
-  // changed without a word.
+  // changed without a word. CR CR LF (a CRLF file converted twice) is one line end: each of
+  // its lines was followed by an empty one, and messages counted lines twice.
   if (data.find('\0') == std::string::npos)
     for (size_t i = 0; i < data.size(); ++i)
-      if (data[i] == '\r' && (i + 1 == data.size() || data[i + 1] != '\n')) data[i] = '\n';
+      if (data[i] == '\r' && (i + 1 == data.size() || (data[i + 1] != '\n' && data[i + 1] != '\r'))) data[i] = '\n';
   if (onlySpace(data)) fail(path, "the file is empty");
   return data;
 }
@@ -1351,7 +1363,8 @@ void validateMesh(const Mesh& mesh, const std::string& name) {
 // header (OFF, COFF, NOFF, STOFF, 4OFF ...), else "" (an OBJ starts with anything).
 std::string extensionByContent(std::string_view text) {
   const size_t start = std::find_if_not(text.begin(), text.end(), isSpace) - text.begin();
-  const std::string_view word = text.substr(start, std::find_if(text.begin() + start, text.end(), isSpace) - text.begin() - start);
+  std::string_view word = text.substr(start, std::find_if(text.begin() + start, text.end(), isSpace) - text.begin() - start);
+  while (!word.empty() && word.back() >= '0' && word.back() <= '9') word.remove_suffix(1);  // OFF500: a count against it
   if (word == "ply") return ".ply";
   const bool off = word.size() >= 3 && word.size() <= 8 && word.substr(word.size() - 3) == "OFF";
   return off ? ".off" : "";

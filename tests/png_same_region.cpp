@@ -28,6 +28,10 @@ int main(int argc, char** argv) {
   }
   const int x0 = std::atoi(argv[3]), y0 = std::atoi(argv[4]);
   const int x1 = std::min(std::atoi(argv[5]), width[0]), y1 = std::min(std::atoi(argv[6]), height[0]);
+  if (x0 < 0 || y0 < 0 || x0 >= x1 || y0 >= y1) {  // nothing to compare: no answer
+    std::fprintf(stderr, "the rectangle %d %d %d %d holds no pixel of the pictures\n", x0, y0, x1, y1);
+    return 2;
+  }
   long differing = 0;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {

@@ -193,6 +193,9 @@ TEST(MeshIo, ReadsAsciiOffWithCommentsAndColours) {
 TEST(MeshIo, ReadsLinesEndedByCarriageReturnsAlone) {
   expectUnitSquare(readMesh(writeFile("mac.obj", "# square\rv 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3\rf 1 3 4\r")).mesh);
   expectUnitSquare(readMesh(writeFile("mac.off", "OFF\r4 2 0\r0 0 0\r1 0 0\r1 1 0\r0 1 0\r3 0 1 2\r3 0 2 3\r")).mesh);
+  // CR CR LF (a CRLF file converted twice) ends a line once: messages counted lines twice.
+  expectReadError(writeFile("crcrlf.off", "OFF\r\r\n3 1 0\r\r\n0 0 0\r\r\n1 x 0\r\r\n0 1 0\r\r\n3 0 1 2\r\r\n"),
+                  "line 4: 'x' is not a number");
   // So they are where one LF ends the file, or its first line: both read as the lines between.
   expectUnitSquare(readMesh(writeFile("mac_lf.obj", "v 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3\rf 1 3 4\n")).mesh);
   expectUnitSquare(readMesh(writeFile("lf_mac.off", "OFF\n4 2 0\r0 0 0\r1 0 0\r1 1 0\r0 1 0\r3 0 1 2\r3 0 2 3\r")).mesh);
@@ -236,10 +239,14 @@ TEST(MeshIo, ReadsOffVariantsAndCountsOnTheKeywordLine) {
   // The vertex count against the keyword, as in ModelNet40's files: it was "bad header".
   expectUnitSquare(readMesh(writeFile("glued.off", "OFF4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3"))
                        .mesh);
-  // Free format, as Geomview reads it: two vertices on a line, one over two lines, and a face's
-  // colour after its indices. It was "file is truncated" (the faces read as vertices).
-  expectUnitSquare(readMesh(writeFile("free.off", "OFF\n4 2 0\n0 0 0  1 0 0\n1 1\n0\n0 1 0 3 0 1 2 1 0 0\n3 0 2 3\n"))
+  // Free format, as Geomview reads it: two vertices on a line, a face's colour after its
+  // indices. It was "file is truncated" (the faces read as vertices).
+  expectUnitSquare(readMesh(writeFile("free.off", "OFF\n4 2 0\n0 0 0  1 0 0\n1 1 0  0 1 0\n3 0 1 2 1 0 0\n3 0 2 3\n"))
                        .mesh);
+  // But a vertex line a number short is damage, not a vertex over two lines: with integer
+  // coordinates and face colours, free format read it as another mesh, without a word.
+  expectReadError(writeFile("short.off", "OFF\n4 2 0\n0 0 0\n1 0\n1 1 0\n0 1 0\n3 3 1 2 0 0 0\n3 0 2 3 0 0 0\n"),
+                  "line 4: vertex 1 has 2 coordinates (expected 3)");
   expectUnitSquare(readMesh(writeFile("colours.COFF.off",
                                       "COFF\n4 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n1 1 0 1 0 0 1\n"
                                       "0 1 0 1 0 0 1\n3 0 1 2\n3 0 2 3\n"))
@@ -631,6 +638,8 @@ TEST(MeshIoErrors, NumberDoesNotParse) {
   // A '#' within a number is no comment: old Microsoft libraries wrote NaN as -1.#IND, read
   // as -1 without a word, and infinity as 1.#INF, which left "1 coordinate" on its line.
   expectFileError("msvc_nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 -1.#IND\nf 1 2 3\n", "'-1.#IND' is not a number");
+  // A comment against a word still is one (Geomview and tinyobjloader read it so).
+  EXPECT_EQ(readMesh(writeFile("glued.obj", "v 0 0 0#c\nv 1 0 0\nv 0 1 0\nf 1 2 3#c\n")).mesh.faceCount(), 1);
   expectFileError("msvc_inf.off", "OFF\n3 1 0\n0 0 0\n1.#INF 0 0\n0 1 0\n3 0 1 2\n", "line 4: '1.#INF' is not a number");
   // A sign after the plus: strtod refuses "+-1", which was read as -1.
   expectFileError("plus_minus.obj", "v 0 0 0\nv 1 +-1 0\nv 0 1 0\nf 1 2 3\n", "'+-1' is not a number");

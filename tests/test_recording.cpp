@@ -131,7 +131,7 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[&](Recording& r) { r.settings = replaced(r.settings, "max-iterations=12", "max-iterations=2147483647"); },
        "setting max-iterations=2147483647 is not an iteration count the command line takes"},
       {[&](Recording& r) { r.settings = replaced(r.settings, "sites=", "sites=-5 was="); },
-       "setting sites=-5 is not a vertex count the command line takes"},
+       "setting sites=-5 is not a count of vertices"},
       {[](Recording& r) { r.settings += " alpha=-1"; }, "setting alpha=-1 is not a number >= 0"},
       {[&](Recording& r) { r.settings = replaced(r.settings, "polish=3", "polish=1000000"); }, "setting polish=1000000 is not from -1 to 100"},
       {[&](Recording& r) { r.distanceThreshold = nan; }, kBadThreshold},
@@ -198,6 +198,18 @@ TEST(Recording, ASubnormalThresholdReadsBack) {
   const std::string path = test::tempPath("subnormal.lsrec");
   saveRecording(run.recording, path);
   EXPECT_EQ(loadRecording(path).distanceThreshold, 1e-310);
+}
+
+// A chart's or a component's run records its own share of the vertices asked (a cube's chart:
+// sites=18 of 25): read as the command line's least (20), saving it was refused as damage.
+TEST(Recording, APartsShareOfTheVerticesReadsBack) {
+  Recording r = sphereCapRun().recording;
+  const size_t at = r.settings.find("sites="), end = r.settings.find(' ', at);
+  ASSERT_NE(at, std::string::npos);
+  r.settings.replace(at, end - at, "sites=18");
+  const std::string path = test::tempPath("chart.lsrec");
+  saveRecording(r, path);
+  EXPECT_NE(loadRecording(path).settings.find("sites=18"), std::string::npos);
 }
 
 // The method is a byte, 0 relocate or 1 retriangulate: any other (255) read as retriangulate.

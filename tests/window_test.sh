@@ -72,8 +72,7 @@ size=$(od -An -tu1 -j16 -N8 first.png | tr -s ' ')
 [ "$(stat -c %s first.png)" -gt 20000 ] || fail "the picture saved is nearly empty"
 
 # T plots the convergence against time, and T again against iterations: the window saved after
-# each differs, then is as it was. (From the second picture on, each shows the message line's
-# "saved lloydscope.png".)
+# each differs, then is as it was. (The pictures leave out the message "saved lloydscope.png".)
 save iterations.png
 xdotool key t
 sleep 0.5
@@ -135,7 +134,7 @@ grabSettled clicked.png
 xdotool key l
 sleep 0.2
 
-xdotool windowsize --sync "$window" 900 600
+xdotool windowsize --sync "$window" 1100 700
 sleep 1
 kill -0 "$pid" 2>/dev/null || fail "the inspector ended before Ctrl+Q"
 xdotool key ctrl+q
