@@ -185,6 +185,7 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   if (!a.output.empty()) requireMeshWritable(a.output);
   if (!a.record.empty()) requireWritable(a.record);
   refuseSameFile(a);
+  if (!a.record.empty()) requireRecordingName(a.record);  // onto the input or the output: said above
   const Mesh input = loadToRemesh(a, options);
   const RemeshResult result = remesh(input, options, a.input);
   // Both or neither: where either cannot be written, neither file there is replaced (the output
@@ -380,7 +381,7 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
                                std::optional<Mesh>* input = nullptr) {
   const std::string& in = a.input;
   // By its name (as the mesh formats are, in any case: a damaged x.LSREC was told to be opened
-  // with inspect), or by its first bytes where it was saved under another (--record takes any).
+  // with inspect), or by its first bytes where it was saved under another (--record takes any but a mesh's).
   // Its refusal of the remeshing options comes before they are read: notes that they had no
   // effect came first, and an unknown --param value's error instead.
   if (lowercaseExtension(in) == ".lsrec" || isRecording(in)) {
@@ -418,7 +419,7 @@ struct RemeshCommand {
     cmd = app.add_subcommand("remesh", "Remesh a triangle mesh (a surface that is not a disk is cut open first)");
     cmd->add_option("input", args.input, "Input mesh (OFF, OBJ or PLY)")->required();
     cmd->add_option("-o,--output", args.output, "Output mesh (OFF, OBJ or PLY)")->check(kFileName);
-    cmd->add_option("--record", args.record, "Save every Lloyd iteration to this file")->check(kFileName);
+    cmd->add_option("--record", args.record, "Save every Lloyd iteration to this file (.lsrec; not a mesh's .off, .obj or .ply)")->check(kFileName);
     cmd->add_flag("--json", args.json, "Print the results as one JSON object");
     addRemeshOptions(*cmd, args);
   }

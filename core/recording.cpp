@@ -348,7 +348,15 @@ void saveRecording(const Recording& recording, const std::string& path) {
   batch.commit();
 }
 
+void requireRecordingName(const std::string& path) {
+  const std::string ext = lowercaseExtension(path);
+  if (ext == ".off" || ext == ".obj" || ext == ".ply")
+    throw Error(path + ": a recording is not saved under a mesh's extension (" + ext +
+                "): it would replace a mesh with what no mesh reader reads; name it .lsrec");
+}
+
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch) {
+  requireRecordingName(path);
   if (recording.iterations.empty())
     throw Error(path + ": nothing to record: no Lloyd iteration was run (" + kNoIterationWhy + ")");
   const std::string payload = encodePayload(recording);

@@ -59,6 +59,10 @@ constexpr const char* kNoIterationWhy = "every part of the mesh was kept as it i
 void saveRecording(const Recording& recording, const std::string& path);
 // The same, saved with the other files of `batch` (FileBatch, core/files.h) when it commits.
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch);
+// Throws Error("<path>: ...") where `path` has a mesh's extension (.off, .obj, .ply): a
+// recording saved so replaced the mesh (the window's Save recording, given the input's name by
+// mistake, wrote a recording over it). saveRecording checks it; remesh --record before its run.
+void requireRecordingName(const std::string& path);
 // saveRecording without its checks: the damaged files the tests of loadRecording's refusals make.
 void saveRecordingUnchecked(const Recording& recording, const std::string& path);
 // The largest recording read: 5000 iterations of 100,000 sites at 8 bytes a site. (A link to

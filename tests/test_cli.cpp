@@ -464,6 +464,21 @@ TEST(Cli, AFailedRunLeavesTheUsersFileAlone) {
   EXPECT_EQ(test::readText(out), kTriangle);
 }
 
+// A recording under a mesh's name replaced that mesh (the window's Save recording wrote one
+// over the input). Refused before the run, the file left as it was, nothing else written.
+TEST(Cli, ARecordingIsNotSavedUnderAMeshsExtension) {
+  const std::string mesh = test::tempPath("mine.OBJ"), out = test::tempPath("never_written.off");
+  test::writeText(mesh, "the user's own mesh");
+  std::remove(out.c_str());
+  const CliRun r = runCli("remesh " + test::assetPath("sphere_cap.off") + " --record " + mesh + " -o " + out);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + mesh +
+                       ": a recording is not saved under a mesh's extension (.obj): it would replace a mesh with what "
+                       "no mesh reader reads; name it .lsrec\n");
+  EXPECT_EQ(test::readText(mesh), "the user's own mesh");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // The recording and the output are saved both or neither: with the output on a full disk the
 // recording of the run before was replaced all the same.
 TEST(Cli, AnOutputThatCannotBeWrittenLeavesTheRecordingAlone) {

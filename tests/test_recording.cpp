@@ -212,6 +212,21 @@ TEST(Recording, APartsShareOfTheVerticesReadsBack) {
   EXPECT_NE(loadRecording(path).settings.find("sites=18"), std::string::npos);
 }
 
+// As the window's Save recording saves it, given a mesh's name: refused, the mesh kept.
+TEST(Recording, IsNotSavedUnderAMeshsExtension) {
+  for (const char* name : {"mesh.off", "mesh.PLY", "mesh.obj"}) {
+    const std::string path = test::tempPath(name);
+    test::writeText(path, "OFF\n");
+    try {
+      saveRecording(sphereCapRun().recording, path);
+      ADD_FAILURE() << "saved as " << name;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("a recording is not saved under a mesh's extension"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(test::readText(path), "OFF\n");
+  }
+}
+
 // The method is a byte, 0 relocate or 1 retriangulate: any other (255) read as retriangulate.
 // The checksum made again, as another program's file would have it.
 TEST(Recording, AMethodByteNoRunWritesIsDamaged) {
