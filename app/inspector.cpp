@@ -1140,15 +1140,16 @@ void Inspector::qualityTable() {
 // Where the run is, how far the result is from the input, how it was made, and Compare.
 void Inspector::runStatus() {
   const std::string iterations = iterationsText(replay_->iterationCount());
+  // Two lines each, however many the run's state takes: the controls under them keep their place.
   if (session_ && running())
-    wrappedText("Running: " + iterations + " so far");
+    wrappedTextInLines("Running: " + iterations + " so far", 2);
   else if (session_ && session_->finished())  // for the frame before finishSession() (a second)
-    wrappedText("Done after " + iterations + ": the clean-up on the surface follows");
+    wrappedTextInLines("Done after " + iterations + ": the clean-up on the surface follows", 2);
   else if (session_)
-    wrappedText("Stopped after " + iterations + ": Step or Run goes on");
+    wrappedTextInLines("Stopped after " + iterations + ": Step or Run goes on", 2);
   else
-    wrappedText("Final: " + iterations + (replay_->recording().converged() ? ", converged" : ", not converged"));
-  wrappedText(shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr));
+    wrappedTextInLines("Final: " + iterations + (replay_->recording().converged() ? ", converged" : ", not converged"), 2);
+  wrappedTextInLines(shownDistanceText(result_.fidelity, options_.measureFidelity, session_ != nullptr), 2);
   if (showTimings_ && !session_ && result_.ms.total > 0)  // a recording opened alone has no times
     ImGui::Text("Time: %.0f ms (Lloyd %.0f ms)", result_.ms.total, result_.ms.lloyd);
   else if (showTimings_ && session_)

@@ -99,6 +99,15 @@ void wrappedText(const std::string& text) {
   ImGui::TextUnformatted(wrappedLines(text, ImGui::GetContentRegionAvail().x).c_str());
 }
 
+void wrappedTextInLines(const std::string& text, int lines) {
+  const float top = ImGui::GetCursorPosY();
+  wrappedText(text);
+  // The cursor is now under the text and the spacing after it; it goes as far as the text
+  // would go had it `lines` lines.
+  const float rest = top + lines * ImGui::GetTextLineHeight() + ImGui::GetStyle().ItemSpacing.y - ImGui::GetCursorPosY();
+  if (rest > 0) ImGui::SetCursorPosY(ImGui::GetCursorPosY() + rest);
+}
+
 void greyedText(const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   wrappedText(text);

@@ -47,5 +47,9 @@ float captionTextHeight(const std::string& title, const std::string& formula, co
 void wrappedText(const std::string& text);
 // The same, greyed: a hint or a note beside the numbers.
 void greyedText(const std::string& text);
+// wrappedText taking `lines` lines at least: a line whose text changes as a run goes on
+// ("Running: 9 iterations so far", then "Stopped after ...: Step or Run goes on" over two)
+// moved every control under it, and a click aimed at one landed on its neighbour.
+void wrappedTextInLines(const std::string& text, int lines);
 
 }  // namespace lloydscope

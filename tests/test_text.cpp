@@ -127,6 +127,40 @@ TEST(Text, TheCaptionTakesTheHeightItIsGiven) {
   ImGui::DestroyContext();
 }
 
+// The run's state line took one line or two as the run went on ("Running: 9 iterations so far",
+// "Stopped after 120 iterations: Step or Run goes on"), and every control under it moved. In
+// two lines at least, one line of text ends where two do, and three go on.
+TEST(Text, TextInTwoLinesEndsWhereTwoLinesDo) {
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(800, 600);
+  io.DeltaTime = 1.0f / 60.0f;
+  unsigned char* pixels = nullptr;
+  int atlasWidth = 0, atlasHeight = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &atlasWidth, &atlasHeight);
+  const auto bottom = [](const std::string& text, bool inLines) {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(280, 600));
+    ImGui::Begin("controls", nullptr, ImGuiWindowFlags_NoTitleBar);
+    if (inLines) wrappedTextInLines(text, 2);
+    else wrappedText(text);
+    const float y = ImGui::GetCursorPosY();
+    ImGui::End();
+    ImGui::EndFrame();
+    return y;
+  };
+  const std::string one = "Running: 9 iterations so far", two = "Stopped after 120 iterations: Step or Run goes on, "
+                                                                   "and so on and so on",
+                    three = two + ", and on and on, and on and on and on";
+  ASSERT_LT(bottom(one, false), bottom(two, false));  // one line, two lines
+  EXPECT_FLOAT_EQ(bottom(one, true), bottom(two, false));
+  EXPECT_FLOAT_EQ(bottom(two, true), bottom(two, false));
+  EXPECT_GT(bottom(three, true), bottom(two, true));
+  ImGui::DestroyContext();
+}
+
 // Table II's number columns were five digits wide: "100000" (vertices at 100,000 sites) was cut
 // short.
 TEST(Text, ANumberColumnFitsItsWidestNumber) {
