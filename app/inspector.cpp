@@ -235,7 +235,7 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   if (result_.borderTrial && result_.borderTrial->keptWith) options_.sites.keptBorderPoints = result_.borderTrial->corners;
   // And an input simplified because it failed as it was.
   if (!result_.fullInputFailed.empty()) options_.simplifyTo = simplifiedAfterFailure_ = verticesAsked(options_);
-  settings_ = options_;
+  settings_ = withinCommandLineBounds(options_);  // a recording's own (a chart's 18 sites) are not
   noteFirst(firstPassTrialText(result_));
   noteFirst(borderTrialText(result_));
   noteFirst(fullInputFailedText(result_.fullInputFailed, options_.simplifyTo));
@@ -1140,7 +1140,8 @@ void Inspector::qualityTable() {
 // Where the run is, how far the result is from the input, how it was made, and Compare.
 void Inspector::runStatus() {
   const std::string iterations = iterationsText(replay_->iterationCount());
-  // Two lines each, however many the run's state takes: the controls under them keep their place.
+  // Two lines at least, which every state takes at 960 and wider: the controls under them keep
+  // their place (a state of three lines, in a narrower pane, still moves them).
   if (session_ && running())
     wrappedTextInLines("Running: " + iterations + " so far", 2);
   else if (session_ && session_->finished())  // for the frame before finishSession() (a second)
@@ -1310,8 +1311,6 @@ void Inspector::settingsControls() {
   };
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("simplify to (0: no)", &settings_.simplifyTo, 100, 1000);
-  settings_.simplifyTo =
-      settings_.simplifyTo > 0 ? std::clamp(settings_.simplifyTo, kSmallestRemeshedShare, kMostRemeshedVertices) : 0;
   int param = static_cast<int>(settings_.param.method);
   if (combo("parameterization", param, "auto\0authalic\0conformal\0mean-value\0tutte\0lscm\0"))
     settings_.param.method = static_cast<ParamMethod>(param);
@@ -1343,7 +1342,6 @@ void Inspector::settingsControls() {
   if (!own) {
     ImGui::SetNextItemWidth(130);
     ImGui::InputInt("sites (0: as input)", &settings_.sites.count, 100, 1000);
-    settings_.sites.count = settings_.sites.count > 0 ? std::clamp(settings_.sites.count, kSmallestRemeshedShare, kMostRemeshedVertices) : 0;
   }
   // Within the command line's bounds: a distance above 0, a percentage from 0 to 100, at most
   // kMostIterations (the run is recorded whole: one that never converges grows to its limit).
@@ -1358,10 +1356,9 @@ void Inspector::settingsControls() {
   settings_.lloyd.percentThreshold = std::min(settings_.lloyd.percentThreshold, 100.0);
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("polish (-1: none)", &settings_.polish, 1, 1);
-  settings_.polish = std::clamp(settings_.polish, -1, kMostPolishPasses);
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("max iterations", &settings_.lloyd.maxIterations, 10, 100);
-  settings_.lloyd.maxIterations = std::clamp(settings_.lloyd.maxIterations, 1, kMostIterations);
+  settings_ = withinCommandLineBounds(settings_);
   // Wrapped: the pane is narrower than the line (it ran past its edge).
   greyedText("then Restart below the plots: the run on screen keeps its own settings until then");
 }
@@ -1423,6 +1420,7 @@ void Inspector::fileControls() {
   if (ImGui::Button("Save recording")) {
     try {
       refuseReplacing(recordingPath_, shownPath_, "recording");
+      requireRecordingName(recordingPath_);  // before the run stops for it
       stopRun();
       saveRecording(replay_->recording(), recordingPath_);
       showMessage(std::string("saved ") + recordingPath_);
@@ -1442,7 +1440,8 @@ void Inspector::fileControls() {
       forgetResult();
       // Its own name, settings, map and iterations, as `inspect` opens it (the last run's name,
       // solver and thresholds stayed on show, and Compare ran the recording's own solver again).
-      options_ = settings_ = run.options;
+      options_ = run.options;
+      settings_ = withinCommandLineBounds(options_);  // the next mesh's run
       asked_ = {options_.slitDisks, options_.resample};
       simplifiedAfterFailure_ = 0;
       result_ = std::move(run.result);

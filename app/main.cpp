@@ -183,9 +183,10 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   const RemeshOptions options = remeshOptions(a, cmd);
   // Where the files cannot be saved, say so now, not after minutes of work.
   if (!a.output.empty()) requireMeshWritable(a.output);
-  if (!a.record.empty()) requireWritable(a.record);
   refuseSameFile(a);
-  if (!a.record.empty()) requireRecordingName(a.record);  // onto the input or the output: said above
+  // After the refusals that say more (onto the input, onto the output), before the check that
+  // opens a pipe, which waits for a reader.
+  if (!a.record.empty()) requireRecordingName(a.record), requireWritable(a.record);
   const Mesh input = loadToRemesh(a, options);
   const RemeshResult result = remesh(input, options, a.input);
   // Both or neither: where either cannot be written, neither file there is replaced (the output
@@ -419,7 +420,7 @@ struct RemeshCommand {
     cmd = app.add_subcommand("remesh", "Remesh a triangle mesh (a surface that is not a disk is cut open first)");
     cmd->add_option("input", args.input, "Input mesh (OFF, OBJ or PLY)")->required();
     cmd->add_option("-o,--output", args.output, "Output mesh (OFF, OBJ or PLY)")->check(kFileName);
-    cmd->add_option("--record", args.record, "Save every Lloyd iteration to this file (.lsrec; not a mesh's .off, .obj or .ply)")->check(kFileName);
+    cmd->add_option("--record", args.record, "Save every Lloyd iteration to this file (any name but a mesh's .off, .obj or .ply; .lsrec by custom)")->check(kFileName);
     cmd->add_flag("--json", args.json, "Print the results as one JSON object");
     addRemeshOptions(*cmd, args);
   }

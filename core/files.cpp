@@ -18,8 +18,6 @@
 
 namespace lloydscope {
 
-namespace {
-
 // Where a write goes: through a link to its target (renaming onto the link replaced it with a
 // file and left the target as it was), a target not there yet too (a link to a file to be made
 // was replaced by the file), link after link; refused after as many as the system follows (a
@@ -36,6 +34,8 @@ std::filesystem::path targetOf(const std::string& path) {
   }
   return target;
 }
+
+namespace {
 
 // Says why no file could be made in the target's folder: a missing folder by its name, else the
 // system's reason.

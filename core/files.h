@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <istream>
 #include <memory>
@@ -54,6 +55,10 @@ std::string lowercaseExtension(const std::string& path);
 // Whether two names (non-empty) are one file, there or not yet: "x.off", "./x.off", "sub/../x.off"
 // and its absolute path are, and so are a link and its target (not there yet, too).
 bool sameFile(const std::string& a, const std::string& b);
+
+// Where a write of `path` goes: through links, link after link, to their target, there or not
+// yet. Throws Error("<path>: cannot write: ...") for a loop of links.
+std::filesystem::path targetOf(const std::string& path);
 
 // Makes the folder `path` and the folders above it where missing. Throws Error("<path>: cannot
 // make the folder (why)") where it cannot be made or is a file.

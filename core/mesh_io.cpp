@@ -368,15 +368,15 @@ std::optional<RawMesh> readFreeFormatOff(std::string_view body, int nv, int nf) 
     raw.points.push_back(p);
   }
   if (!packed || at != tokens.size()) return std::nullopt;
-  for (int f = 0; f < nf; ++f) {
+  for (int f = 0; f < nf; ++f) {  // a line each: a face one index short took the next line's
     long long n, v;
-    if (!next(token) || !parseInteger(token, n) || n < 0) return std::nullopt;
-    for (long long k = 0; k < n; ++k) {
-      if (!next(token) || !parseInteger(token, v)) return std::nullopt;
+    if (!lines.next(tokens) || !parseInteger(tokens[0], n) || n < 0 || n >= static_cast<long long>(tokens.size()))
+      return std::nullopt;
+    for (long long k = 1; k <= n; ++k) {
+      if (!parseInteger(tokens[k], v)) return std::nullopt;
       raw.indices.push_back(v);
     }
     raw.endPolygon();
-    at = tokens.size();
   }
   if (lines.next(tokens)) return std::nullopt;
   return raw;
@@ -1310,11 +1310,15 @@ std::string loadFile(const std::string& path) {
   // comment, and refused as "the mesh has no faces". So they were where the file had no LF;
   // one LF at its end made it one line again. Only in text: a binary file's numbers hold zero
   // bytes (a face's count, 3, as 4 bytes), and its bytes 13 were coordinates and indices,
-  // changed without a word. CR CR LF (a CRLF file converted twice) is one line end: each of
-  // its lines was followed by an empty one, and messages counted lines twice.
+  // changed without a word. CRs before an LF are no line ends: CR CR LF (a CRLF file converted
+  // twice) was two, and messages counted lines twice; CR CR alone is two (a blank line).
   if (data.find('\0') == std::string::npos)
-    for (size_t i = 0; i < data.size(); ++i)
-      if (data[i] == '\r' && (i + 1 == data.size() || (data[i + 1] != '\n' && data[i + 1] != '\r'))) data[i] = '\n';
+    for (size_t i = 0, end; i < data.size(); i = end) {
+      end = i + 1;
+      if (data[i] != '\r') continue;
+      while (end < data.size() && data[end] == '\r') ++end;
+      if (end == data.size() || data[end] != '\n') std::fill(data.begin() + i, data.begin() + end, '\n');
+    }
   if (onlySpace(data)) fail(path, "the file is empty");
   return data;
 }

@@ -1207,8 +1207,10 @@ RemeshOptions optionsFromSettings(const std::string& settings) {
   };
   const auto nonNegative = [&](const std::string& v) { return within(real(v), 0, INFINITY, "a number >= 0"); };
   // A chart's or a component's run records its own share of the vertices (18 of 25 asked):
-  // not the command line's range, a count.
-  const auto count = [&](const std::string& v) { return within(integer(v), 1, INFINITY, "a count of vertices"); };
+  // not the command line's range; its border and seams take at most a few times the most asked.
+  const auto count = [&](const std::string& v) {
+    return within(integer(v), 1, 10.0 * kMostRemeshedVertices, "a count of vertices a run records (1 to 10000000)");
+  };
   auto yes = [](const std::string& v) { return v == "yes"; };
   with("simplify", [&](const std::string& v) { o.simplifyTo = count(v); });
   with("method", [&](const std::string& v) { o.method = parseRemeshMethod(v); });
@@ -1239,6 +1241,15 @@ RemeshOptions optionsFromSettings(const std::string& settings) {
   with("fit", [&](const std::string& v) { o.fit = yes(v); });
   with("slit-disks", [&](const std::string& v) { o.slitDisks = yes(v); });
   with("full-input", [&](const std::string& v) { o.coarsenInput = !yes(v); });
+  return o;
+}
+
+RemeshOptions withinCommandLineBounds(RemeshOptions o) {
+  const auto asked = [](int n) { return n > 0 ? std::clamp(n, kSmallestRemeshedShare, kMostRemeshedVertices) : 0; };
+  o.simplifyTo = asked(o.simplifyTo);
+  o.sites.count = asked(o.sites.count);
+  o.polish = std::clamp(o.polish, -1, kMostPolishPasses);
+  o.lloyd.maxIterations = std::clamp(o.lloyd.maxIterations, 1, kMostIterations);
   return o;
 }
 

@@ -349,10 +349,13 @@ void saveRecording(const Recording& recording, const std::string& path) {
 }
 
 void requireRecordingName(const std::string& path) {
-  const std::string ext = lowercaseExtension(path);
-  if (ext == ".off" || ext == ".obj" || ext == ".ply")
-    throw Error(path + ": a recording is not saved under a mesh's extension (" + ext +
-                "): it would replace a mesh with what no mesh reader reads; name it .lsrec");
+  // The name, and where it leads: run.lsrec, a link to mine.off, replaced the mesh.
+  for (const std::string& name : {path, targetOf(path).string()}) {
+    const std::string ext = lowercaseExtension(name);
+    if (ext == ".off" || ext == ".obj" || ext == ".ply")
+      throw Error(path + ": a recording is not saved under a mesh's extension (" + ext + (name == path ? "" : ", through a link") +
+                  "): it would replace a mesh with what no mesh reader reads; name it .lsrec");
+  }
 }
 
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch) {

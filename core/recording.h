@@ -59,9 +59,10 @@ constexpr const char* kNoIterationWhy = "every part of the mesh was kept as it i
 void saveRecording(const Recording& recording, const std::string& path);
 // The same, saved with the other files of `batch` (FileBatch, core/files.h) when it commits.
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch);
-// Throws Error("<path>: ...") where `path` has a mesh's extension (.off, .obj, .ply): a
-// recording saved so replaced the mesh (the window's Save recording, given the input's name by
-// mistake, wrote a recording over it). saveRecording checks it; remesh --record before its run.
+// Throws Error("<path>: ...") where `path`, or the file a link there leads to, has a mesh's
+// extension (.off, .obj, .ply): a recording saved so replaced the mesh (the window's Save
+// recording, given the input's name by mistake, wrote a recording over it). saveRecording checks
+// it; remesh --record and the window's Save recording before they stop or start anything.
 void requireRecordingName(const std::string& path);
 // saveRecording without its checks: the damaged files the tests of loadRecording's refusals make.
 void saveRecordingUnchecked(const Recording& recording, const std::string& path);
@@ -70,7 +71,8 @@ void saveRecordingUnchecked(const Recording& recording, const std::string& path)
 constexpr std::uint64_t kLargestRecording = 4'000'000'000;
 // Throws Error("<path>: ...") for a missing, truncated, corrupt, other-version or too large file.
 Recording loadRecording(const std::string& path);
-// Whether the file starts as a recording does, whatever its name (remesh --record takes any);
+// Whether the file starts as a recording does, whatever its name (remesh --record takes any but
+// a mesh's, and older versions took those too);
 // false for a pipe, which it leaves unread for its reader (a recording through one is told by
 // its name).
 bool isRecording(const std::string& path);

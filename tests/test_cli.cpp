@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
 #include <unistd.h>
 #include <sys/wait.h>
 #include <thread>
@@ -436,12 +437,18 @@ TEST(Cli, ARecordingNeitherReplacesTheInputNorTheOutputNorReadsAFolder) {
   EXPECT_EQ(test::readText(mesh), test::readText(test::assetPath("jittered_grid.off")));
   EXPECT_EQ(test::readText(out), kTriangle);
   // The same new file named two ways, the output written first and then replaced by the
-  // recording: a bare name of no file yet was not resolved against the folder it is in.
+  // recording: a bare name of no file yet was not resolved against the folder it is in. (A
+  // recording takes no mesh's name now: here a link to the output, by its full name.)
   const std::string here = test::emptyFolder("two_spellings");
+  ASSERT_EQ(symlink("new.off", (here + "/run.lsrec").c_str()), 0);
   const int status = std::system(("cd " + here + " && " + std::string(LLOYDSCOPE_CLI) + " remesh " + mesh +
                                   " --max-iterations 2 --no-fidelity -o new.off --record " + here +
-                                  "/new.off >/dev/null 2>/dev/null").c_str());
+                                  "/run.lsrec >/dev/null 2>err.txt").c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+  EXPECT_EQ(test::readText(here + "/err.txt"),
+            "lloydscope: " + here + "/run.lsrec: --record and --output name the same file; give them two\n");
+  std::remove((here + "/err.txt").c_str());
+  std::remove((here + "/run.lsrec").c_str());
   EXPECT_TRUE(test::filesIn(here).empty());
   // bench's CSV onto one of its inputs replaced the mesh with the table.
   r = runCli("bench " + mesh + " --sizes 100 --no-reference --csv " + mesh);
@@ -477,6 +484,14 @@ TEST(Cli, ARecordingIsNotSavedUnderAMeshsExtension) {
                        "no mesh reader reads; name it .lsrec\n");
   EXPECT_EQ(test::readText(mesh), "the user's own mesh");
   EXPECT_FALSE(std::filesystem::exists(out));
+  // Said before the pipe is opened to see that it can be written: it waited for a reader.
+  const std::string pipe = test::tempPath("waits.off");
+  std::remove(pipe.c_str());
+  ASSERT_EQ(mkfifo(pipe.c_str(), 0666), 0);
+  const CliRun piped = runCli("remesh " + test::assetPath("sphere_cap.off") + " --record " + pipe);
+  EXPECT_EQ(piped.code, 1);
+  EXPECT_NE(piped.err.find("a recording is not saved under a mesh's extension (.off)"), std::string::npos) << piped.err;
+  std::remove(pipe.c_str());
 }
 
 // The recording and the output are saved both or neither: with the output on a full disk the

@@ -196,6 +196,8 @@ TEST(MeshIo, ReadsLinesEndedByCarriageReturnsAlone) {
   // CR CR LF (a CRLF file converted twice) ends a line once: messages counted lines twice.
   expectReadError(writeFile("crcrlf.off", "OFF\r\r\n3 1 0\r\r\n0 0 0\r\r\n1 x 0\r\r\n0 1 0\r\r\n3 0 1 2\r\r\n"),
                   "line 4: 'x' is not a number");
+  // But CR CR alone is two line ends, a blank line between: it was one.
+  expectReadError(writeFile("mac_blank.off", "OFF\r\r3 1 0\r0 0 0\r1 x 0\r0 1 0\r3 0 1 2\r"), "line 5: 'x' is not a number");
   // So they are where one LF ends the file, or its first line: both read as the lines between.
   expectUnitSquare(readMesh(writeFile("mac_lf.obj", "v 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3\rf 1 3 4\n")).mesh);
   expectUnitSquare(readMesh(writeFile("lf_mac.off", "OFF\n4 2 0\r0 0 0\r1 0 0\r1 1 0\r0 1 0\r3 0 1 2\r3 0 2 3\r")).mesh);
@@ -247,6 +249,12 @@ TEST(MeshIo, ReadsOffVariantsAndCountsOnTheKeywordLine) {
   // coordinates and face colours, free format read it as another mesh, without a word.
   expectReadError(writeFile("short.off", "OFF\n4 2 0\n0 0 0\n1 0\n1 1 0\n0 1 0\n3 3 1 2 0 0 0\n3 0 2 3 0 0 0\n"),
                   "line 4: vertex 1 has 2 coordinates (expected 3)");
+  // Nor is a face line one index short a face over two lines (it took the next line's first).
+  expectReadError(writeFile("short_face.off", "OFF\n4 2 0\n0 0 0  1 0 0\n1 1 0  0 1 0\n3 0 1\n3 0 2 3\n3 1 2 3\n"),
+                  "file is truncated");
+  // Its first word is an OFF file's, the count against it: named .obj, it is said so.
+  expectReadError(writeFile("glued_off.obj", "OFF4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n"),
+                  "its first word is that of an OFF");
   expectUnitSquare(readMesh(writeFile("colours.COFF.off",
                                       "COFF\n4 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n1 1 0 1 0 0 1\n"
                                       "0 1 0 1 0 0 1\n3 0 1 2\n3 0 2 3\n"))
@@ -299,6 +307,13 @@ TEST(MeshIo, ReadsPlyTriangleStrips) {
       "element tristrips 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
   // One strip; two cut by -1; two joined by a repeated index. Every other triangle of a strip
   // turns the other way, so that both face up.
+  // Beside faces, a strips element without indices (another program's own) is no matter.
+  EXPECT_EQ(readMesh(writeFile("flags.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                            "element tristrips 1\nproperty int flags\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                                            "3 0 1 2\n7\n"))
+                .mesh.faceCount(),
+            1);
   for (const char* strip : {"4 1 2 0 3", "7 1 2 0 -1 0 2 3", "7 1 2 0 0 0 2 3"}) {
     SCOPED_TRACE(strip);
     const Mesh mesh = readMesh(writeFile("strips.ply", header + strip + "\n")).mesh;

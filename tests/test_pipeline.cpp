@@ -874,6 +874,24 @@ TEST(Names, EachNameReadsBackAndAnUnknownOneListsThemAll) {
   EXPECT_EQ(refusal(parsePolishTarget, ""), "unknown polish target '' (voronoi, centroid, circumcenter)");
 }
 
+// The window's next run takes the settings within the command line's bounds; a recording's own
+// counts (a chart's sites=18) are not, and reached the next Open mesh's run as they were.
+TEST(Pipeline, SettingsAreKeptWithinTheCommandLinesBounds) {
+  RemeshOptions o;
+  o.sites.count = 18;
+  o.simplifyTo = 5;
+  o.polish = 1000;
+  o.lloyd.maxIterations = 0;
+  const RemeshOptions kept = withinCommandLineBounds(o);
+  EXPECT_EQ(kept.sites.count, kSmallestRemeshedShare);
+  EXPECT_EQ(kept.simplifyTo, kSmallestRemeshedShare);
+  EXPECT_EQ(kept.polish, kMostPolishPasses);
+  EXPECT_EQ(kept.lloyd.maxIterations, 1);
+  o.sites.count = o.simplifyTo = 0;  // as many as the input; no simplification
+  EXPECT_EQ(withinCommandLineBounds(o).sites.count, 0);
+  EXPECT_EQ(withinCommandLineBounds(o).simplifyTo, 0);
+}
+
 // A recording's settings read back as the options asked: the coarse input a run simplified a
 // large input to was written as simplify=500, read back as asked, and --full-input was not
 // written at all.

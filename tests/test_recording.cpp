@@ -131,7 +131,9 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       {[&](Recording& r) { r.settings = replaced(r.settings, "max-iterations=12", "max-iterations=2147483647"); },
        "setting max-iterations=2147483647 is not an iteration count the command line takes"},
       {[&](Recording& r) { r.settings = replaced(r.settings, "sites=", "sites=-5 was="); },
-       "setting sites=-5 is not a count of vertices"},
+       "setting sites=-5 is not a count of vertices a run records (1 to 10000000)"},
+      {[&](Recording& r) { r.settings = replaced(r.settings, "sites=", "sites=2000000000 was="); },
+       "setting sites=2000000000 is not a count of vertices a run records (1 to 10000000)"},
       {[](Recording& r) { r.settings += " alpha=-1"; }, "setting alpha=-1 is not a number >= 0"},
       {[&](Recording& r) { r.settings = replaced(r.settings, "polish=3", "polish=1000000"); }, "setting polish=1000000 is not from -1 to 100"},
       {[&](Recording& r) { r.distanceThreshold = nan; }, kBadThreshold},
@@ -212,18 +214,22 @@ TEST(Recording, APartsShareOfTheVerticesReadsBack) {
   EXPECT_NE(loadRecording(path).settings.find("sites=18"), std::string::npos);
 }
 
-// As the window's Save recording saves it, given a mesh's name: refused, the mesh kept.
+// As the window's Save recording saves it, given a mesh's name: refused, the mesh kept. So
+// through a link named as a recording that leads to a mesh (run.lsrec -> mine.off).
 TEST(Recording, IsNotSavedUnderAMeshsExtension) {
-  for (const char* name : {"mesh.off", "mesh.PLY", "mesh.obj"}) {
-    const std::string path = test::tempPath(name);
-    test::writeText(path, "OFF\n");
+  const std::string mine = test::tempPath("mine.off"), link = test::tempPath("run.lsrec");
+  std::remove(link.c_str());
+  ASSERT_EQ(symlink(mine.c_str(), link.c_str()), 0);
+  for (const std::string& path : {test::tempPath("mesh.off"), test::tempPath("mesh.PLY"), test::tempPath("mesh.obj"), link}) {
+    const std::string name = path == link ? mine : path;
+    test::writeText(name, "OFF\n");
     try {
       saveRecording(sphereCapRun().recording, path);
-      ADD_FAILURE() << "saved as " << name;
+      ADD_FAILURE() << "saved as " << path;
     } catch (const Error& e) {
       EXPECT_NE(std::string(e.what()).find("a recording is not saved under a mesh's extension"), std::string::npos) << e.what();
     }
-    EXPECT_EQ(test::readText(path), "OFF\n");
+    EXPECT_EQ(test::readText(name), "OFF\n");
   }
 }
 
@@ -262,7 +268,8 @@ TEST(Recording, CellsRecomputedInAnyOrderAreBitIdentical) {
   }
 }
 
-// A recording is told by its first bytes, whatever its name: remesh --record takes any.
+// A recording is told by its first bytes, whatever its name: remesh --record takes any but a
+// mesh's, and recordings saved before that under a mesh's name still open.
 TEST(Recording, IsToldByItsFirstBytes) {
   const std::string saved = test::tempPath("run.rec"), mesh = test::tempPath("mesh_named.lsrec"),
                     tiny = test::tempPath("tiny.rec");
