@@ -53,6 +53,19 @@ std::vector<std::string> everyCaption() {
   return texts;
 }
 
+// An ImGui context of that display size, its default font built, for laying out without a
+// window (ImGui::DestroyContext() after).
+void startImGui(ImVec2 display) {
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = display;
+  io.DeltaTime = 1.0f / 60.0f;
+  unsigned char* pixels = nullptr;
+  int atlasWidth = 0, atlasHeight = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &atlasWidth, &atlasHeight);
+}
+
 }  // namespace
 
 TEST(Fonts, EveryCaptionCharacterHasAGlyphInBothFonts) {
@@ -90,14 +103,7 @@ TEST(Text, SubscriptsAreWrittenInlineForTheSmallFont) {
 // captionTextHeight says, at every width (the pane was three lines tall whatever the caption,
 // and a caption of four lost its last line at 960x600).
 TEST(Text, TheCaptionTakesTheHeightItIsGiven) {
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  io.DisplaySize = ImVec2(1200, 600);
-  io.DeltaTime = 1.0f / 60.0f;
-  unsigned char* pixels = nullptr;
-  int atlasWidth = 0, atlasHeight = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &atlasWidth, &atlasHeight);
+  startImGui(ImVec2(1200, 600));
   CaptionFacts facts;
   facts.solver = "lbfgs";
   facts.iteration = 2;
@@ -131,14 +137,7 @@ TEST(Text, TheCaptionTakesTheHeightItIsGiven) {
 // "Stopped after 120 iterations: Step or Run goes on"), and every control under it moved. In
 // two lines at least, one line of text ends where two do, and three go on.
 TEST(Text, TextInTwoLinesEndsWhereTwoLinesDo) {
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  io.DisplaySize = ImVec2(800, 600);
-  io.DeltaTime = 1.0f / 60.0f;
-  unsigned char* pixels = nullptr;
-  int atlasWidth = 0, atlasHeight = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &atlasWidth, &atlasHeight);
+  startImGui(ImVec2(800, 600));
   const auto bottom = [](const std::string& text, bool inLines) {
     ImGui::NewFrame();
     ImGui::SetNextWindowPos(ImVec2(0, 0));
@@ -164,14 +163,7 @@ TEST(Text, TextInTwoLinesEndsWhereTwoLinesDo) {
 // Table II's number columns were five digits wide: "100000" (vertices at 100,000 sites) was cut
 // short.
 TEST(Text, ANumberColumnFitsItsWidestNumber) {
-  ImGui::CreateContext();
-  unsigned char* pixels = nullptr;
-  int atlasWidth = 0, atlasHeight = 0;
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  io.DisplaySize = ImVec2(800, 600);
-  io.DeltaTime = 1.0f / 60.0f;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &atlasWidth, &atlasHeight);
+  startImGui(ImVec2(800, 600));
   ImGui::NewFrame();
   const float fiveDigits = ImGui::CalcTextSize("00000").x;
   EXPECT_FLOAT_EQ(numberColumnWidth("It. 5", {"500", "73.2"}), fiveDigits);  // steady while scrubbing
