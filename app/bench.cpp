@@ -210,7 +210,7 @@ void printRows(const std::vector<Row>& rows) {
   for (const Row& r : rows)
     if (!r.failed.empty())
       std::cout << "| " << cell(r.model) << " | " << r.size << " | " << r.method << " | failed: "
-                << cell(r.failed) << " |||||||||\n";
+                << cell(r.failed) << " ||||||||||\n";  // and the nine cells after it, empty
     else
       std::cout << "| " << cell(r.model) << " | " << r.size << " | " << r.method << " | "
               << r.after.vertices << " | " << r.after.faces << " | " << r.iterations << " | "
@@ -232,18 +232,26 @@ std::string csvText(const std::vector<Row>& rows) {
          "irregular_all_after,min_angle_before,min_angle_after,avg_min_angle_before,"
          "avg_min_angle_after,under30_percent,hausdorff_percent,rms_percent,ms_simplify,ms_cut,ms_resample,"
          "ms_parameterize,ms_density,ms_sites,ms_lloyd,ms_remesh,ms_other_way,failed\n";
-  for (const Row& r : rows)
-    csv << csvField(r.model) << "," << r.size << "," << r.method << "," << r.after.vertices << ","
-        << r.after.faces << "," << r.before.vertices << "," << r.before.faces << "," << r.iterations << ","
-        << r.milliseconds << ","
-        << r.before.irregularBoundaryAware << "," << r.after.irregularBoundaryAware << ","
-        << r.after.irregularPercent << "," << r.before.minAngle << "," << r.after.minAngle << ","
-        << r.before.avgMinAngle << "," << r.after.avgMinAngle << "," << r.after.percentUnder30
-        << "," << r.fidelity.hausdorffPercent << "," << r.fidelity.rmsPercent << ","
-        << r.stages.simplify << "," << r.stages.cut << "," << r.stages.resample << "," << r.stages.parameterize << ","
-        << r.stages.density << "," << r.stages.sites << "," << r.stages.lloyd << "," << r.stages.remesh << ","
-        << r.stages.compared << ","
-        << csvField(r.failed) << "\n";
+  for (const Row& r : rows) {
+    // A failed row's results, and CGAL's stages, are empty, as in the markdown: zeros were
+    // averaged in as results by a spreadsheet.
+    const bool ran = r.failed.empty(), staged = ran && r.method.rfind("lloydscope", 0) == 0;
+    const auto of = [](bool known, double value) {
+      std::ostringstream field;
+      if (known) field << value;
+      return field.str();
+    };
+    csv << csvField(r.model) << "," << r.size << "," << r.method << "," << of(ran, r.after.vertices) << ","
+        << of(ran, r.after.faces) << "," << r.before.vertices << "," << r.before.faces << "," << of(ran, r.iterations) << ","
+        << of(ran, r.milliseconds) << "," << r.before.irregularBoundaryAware << "," << of(ran, r.after.irregularBoundaryAware)
+        << "," << of(ran, r.after.irregularPercent) << "," << r.before.minAngle << "," << of(ran, r.after.minAngle) << ","
+        << r.before.avgMinAngle << "," << of(ran, r.after.avgMinAngle) << "," << of(ran, r.after.percentUnder30) << ","
+        << of(ran, r.fidelity.hausdorffPercent) << "," << of(ran, r.fidelity.rmsPercent) << ",";
+    for (double ms : {r.stages.simplify, r.stages.cut, r.stages.resample, r.stages.parameterize, r.stages.density,
+                      r.stages.sites, r.stages.lloyd, r.stages.remesh, r.stages.compared})
+      csv << of(staged, ms) << ",";
+    csv << csvField(r.failed) << "\n";
+  }
   return csv.str();
 }
 

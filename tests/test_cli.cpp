@@ -588,6 +588,40 @@ TEST(Cli, BenchComparesWithCgalAndWritesCsv) {
   EXPECT_EQ(rows.rfind("model,size,method,vertices", 0), 0u);
 }
 
+// A row that failed (a strip 1000 times as long as wide, at 20 vertices) was one cell short in the markdown, and
+// all zeros in the CSV, which a spreadsheet averages in as results: its results are empty, its
+// input's (before) kept; CGAL's row has no stages, empty too.
+TEST(Cli, BenchLeavesAFailedRowsResultsEmpty) {
+  std::ostringstream strip;
+  strip << "OFF\n400 398 0\n";
+  for (int i = 0; i < 200; ++i) strip << i << " 0 0\n" << i << " 0.2 0\n";  // 1000 times as long as wide
+  for (int i = 0; i + 1 < 200; ++i)
+    strip << "3 " << 2 * i << " " << 2 * i + 2 << " " << 2 * i + 1 << "\n3 " << 2 * i + 1 << " " << 2 * i + 2 << " " << 2 * i + 3 << "\n";
+  const std::string mesh = test::tempPath("long_strip.off"), csv = test::tempPath("failed_rows.csv");
+  test::writeText(mesh, strip.str());
+  const CliRun r = runCli("bench " + mesh + " --sizes 20 --no-reference --csv " + csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string failed = lineStarting(r.out, "| long_strip | 20 | lloydscope |");
+  ASSERT_NE(failed.find("failed: "), std::string::npos) << r.out;
+  EXPECT_EQ(cells(failed).size(), cells(lineStarting(r.out, "| model | size | method |")).size()) << failed;
+  const auto fields = [&](const std::string& start) {
+    const std::string text = test::readText(csv);
+    const size_t at = text.find("\n" + start);
+    std::vector<std::string> row;
+    std::istringstream line(text.substr(at + 1, text.find('\n', at + 1) - at - 1));
+    for (std::string field; std::getline(line, field, ',') && row.size() < 28;) row.push_back(field);
+    return row;
+  };
+  const std::vector<std::string> row = fields("long_strip,20,lloydscope,");
+  ASSERT_EQ(row.size(), 28u);
+  for (int k : {3, 4, 7, 8, 10, 11, 13, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27}) EXPECT_EQ(row[k], "") << "field " << k;
+  EXPECT_EQ(row[5], "20");  // vertices_before: the input as given
+  const std::vector<std::string> cgal = fields("long_strip,20,cgal isotropic,");
+  ASSERT_EQ(cgal.size(), 28u);
+  EXPECT_NE(cgal[3], "");
+  for (int k = 19; k < 28; ++k) EXPECT_EQ(cgal[k], "") << "stage field " << k;
+}
+
 // Issue 5 asks the bench to print the input's size (Table I before) and the time of each stage
 // too: a table of the defaults' stages, its total the main table's time, and the same in the CSV.
 TEST(Cli, BenchPrintsWhereTheTimeGoes) {
