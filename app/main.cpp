@@ -669,7 +669,7 @@ struct SimplifyCommand {
     size->add_option("--vertices", target.vertices, "Target number of vertices")->check(kPositiveCount);
     size->add_option("--faces", target.faces, "Target number of faces")->check(kPositiveCount);
     size->add_option("--ratio", target.ratio, "Target fraction of the vertices, in (0, 1]")
-        ->check(finiteNumber(std::numeric_limits<double>::min(), "a fraction in (0, 1]", 1));
+        ->check(finiteNumber(std::numeric_limits<double>::denorm_min(), "a fraction in (0, 1]", 1));
     size->require_option(1);
     addRepairFlag(*cmd, repair);
   }
@@ -685,6 +685,7 @@ struct SimplifyCommand {
     std::cout << input << ": " << mesh.vertexCount() << " vertices, " << mesh.faceCount() << " faces -> "
               << s.mesh.vertexCount() << " vertices, " << s.mesh.faceCount() << " faces (" << s.collapses
               << " collapses, " << std::lround(s.milliseconds) << " ms)\n";
+    if (!s.stoppedShort.empty()) std::cerr << "note: " << s.stoppedShort << "\n";
     return 0;
   }
 };

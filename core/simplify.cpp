@@ -108,6 +108,14 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
   // One vertex goes with each collapse (edge_collapse counts the edges removed: three inside).
   result.collapses = input.vertexCount() - result.mesh.vertexCount();
   if (!offset.isZero()) result.mesh = moved(std::move(result.mesh), offset);
+  const bool byFaces = stop.faces > 0;
+  const size_t reached = byFaces ? result.mesh.faceCount() : result.mesh.vertexCount(),
+               asked = byFaces ? stop.faces : stop.vertices;
+  if (reached > asked)
+    result.stoppedShort = "stopped at " + std::to_string(reached) + (byFaces ? " faces" : " vertices") + ", not " +
+                          std::to_string(asked) +
+                          ": no edge is left whose collapse keeps the surface's topology (its components, border "
+                          "loops and genus) and its border where it is";
   result.milliseconds = stopwatch.lap();
   return result;
 }

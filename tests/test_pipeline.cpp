@@ -746,6 +746,11 @@ TEST(Cli, SimplifyWritesTheTargetSize) {
                          " -o " + out + " --vertices 300 > /dev/null").c_str()),
             0);
   EXPECT_EQ(readMesh(out).mesh.vertexCount(), 300);
+  // Any ratio in (0, 1], a subnormal one too (1e-310 was "not in (0, 1]"): as few as it goes.
+  EXPECT_EQ(std::system((std::string(LLOYDSCOPE_CLI) + " simplify " + test::assetPath("bumpy_disk.off") + " -o " + out +
+                         " --ratio 1e-310 > /dev/null").c_str()),
+            0);
+  EXPECT_EQ(readMesh(out).mesh.vertexCount(), 3);
 }
 
 // A 34-degree sector, bent, remeshed to 100 vertices: the border, sampled evenly into its

@@ -52,6 +52,19 @@ TEST(Simplify, TargetsByFacesAndRatio) {
   EXPECT_EQ(simplify(input, {1000}, "square").mesh.triangles, input.triangles);  // already small
 }
 
+// Each collapse keeps the surface's topology: a closed one (an octahedron) goes no lower than a
+// tetrahedron. It stopped there without a word (CGAL's eight at --vertices 3: 14); now it says.
+TEST(Simplify, StoppingShortOfTheSizeAskedIsSaid) {
+  Mesh octahedron;
+  octahedron.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  octahedron.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  const SimplifyResult r = simplify(octahedron, {3}, "octahedron");
+  EXPECT_EQ(r.mesh.vertexCount(), 4);
+  EXPECT_EQ(r.stoppedShort.rfind("stopped at 4 vertices, not 3: no edge is left whose collapse keeps", 0), 0u) << r.stoppedShort;
+  EXPECT_EQ(simplify(jitteredSquare(), {150}, "square").stoppedShort, "");
+  EXPECT_EQ(simplify(jitteredSquare(), {0, 400}, "square").stoppedShort, "");
+}
+
 TEST(Simplify, BadTargetsAreOneLineErrors) {
   const Mesh input = jitteredSquare();
   for (const SimplifyOptions& bad : {SimplifyOptions{}, SimplifyOptions{0, 0, 1.5}, SimplifyOptions{-3}}) {
