@@ -344,19 +344,10 @@ RawMesh readBinaryOff(const std::string& path, std::string_view data) {
 std::optional<RawMesh> readFreeFormatOff(std::string_view body, int nv, int nf) {
   LineReader lines(body);
   std::vector<std::string_view> tokens;
-  size_t at = 0;  // the next token in `tokens`
-  const auto next = [&](std::string_view& token) {
-    while (at == tokens.size()) {
-      if (!lines.next(tokens)) return false;
-      at = 0;
-    }
-    token = tokens[at++];
-    return true;
-  };
+  size_t at = 0;  // the next vertex's first number in `tokens`
   RawMesh raw;
-  std::string_view token;
   bool packed = false;
-  for (int i = 0; i < nv; ++i) {
+  for (int i = 0; i < nv; ++i, at += 3) {
     if (at == tokens.size()) {  // a new line: whole vertices
       if (!lines.next(tokens) || tokens.size() % 3 != 0) return std::nullopt;
       at = 0;
@@ -364,7 +355,7 @@ std::optional<RawMesh> readFreeFormatOff(std::string_view body, int nv, int nf) 
     }
     Vec3 p;
     for (int c = 0; c < 3; ++c)
-      if (!next(token) || !parseDouble(token, p[c])) return std::nullopt;
+      if (!parseDouble(tokens[at + c], p[c])) return std::nullopt;
     raw.points.push_back(p);
   }
   if (!packed || at != tokens.size()) return std::nullopt;
