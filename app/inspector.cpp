@@ -235,7 +235,8 @@ Inspector::Inspector(gpu::Context& gpu, VkRenderPass renderPass, std::string mes
   if (result_.borderTrial && result_.borderTrial->keptWith) options_.sites.keptBorderPoints = result_.borderTrial->corners;
   // And an input simplified because it failed as it was.
   if (!result_.fullInputFailed.empty()) options_.simplifyTo = simplifiedAfterFailure_ = verticesAsked(options_);
-  settings_ = withinCommandLineBounds(options_);  // a recording's own (a chart's 18 sites) are not
+  settings_ = options_;
+  keepWithinCommandLineBounds(settings_);  // a recording's own (a chart's 18 sites) are not
   noteFirst(firstPassTrialText(result_));
   noteFirst(borderTrialText(result_));
   noteFirst(fullInputFailedText(result_.fullInputFailed, options_.simplifyTo));
@@ -785,7 +786,7 @@ void Inspector::messageOverlay(const ImVec2& pos, float width) {
 double Inspector::secondsToChange() const {
   if (running() || exportJob_ || fitPending_) return 0;
   double seconds = std::numeric_limits<double>::infinity();
-  if (messageSecondsLeft() > 0) seconds = messageSecondsLeft();  // then it goes
+  if (const double message = messageSecondsLeft(); message > 0) seconds = message;  // then it goes
   if (playing_) seconds = std::min<double>(seconds, std::max(0.0f, 1.0f - playClock_) / playSpeed_);
   if (lesson_.playing()) seconds = std::min<double>(seconds, lesson_.secondsToNextStep() / (playSpeed_ / 10.0f));
   return seconds;
@@ -1358,7 +1359,7 @@ void Inspector::settingsControls() {
   ImGui::InputInt("polish (-1: none)", &settings_.polish, 1, 1);
   ImGui::SetNextItemWidth(130);
   ImGui::InputInt("max iterations", &settings_.lloyd.maxIterations, 10, 100);
-  settings_ = withinCommandLineBounds(settings_);
+  keepWithinCommandLineBounds(settings_);
   // Wrapped: the pane is narrower than the line (it ran past its edge).
   greyedText("then Restart below the plots: the run on screen keeps its own settings until then");
 }
@@ -1441,7 +1442,8 @@ void Inspector::fileControls() {
       // Its own name, settings, map and iterations, as `inspect` opens it (the last run's name,
       // solver and thresholds stayed on show, and Compare ran the recording's own solver again).
       options_ = run.options;
-      settings_ = withinCommandLineBounds(options_);  // the next mesh's run
+      settings_ = options_;
+      keepWithinCommandLineBounds(settings_);  // the next mesh's run
       asked_ = {options_.slitDisks, options_.resample};
       simplifiedAfterFailure_ = 0;
       result_ = std::move(run.result);

@@ -1244,13 +1244,12 @@ RemeshOptions optionsFromSettings(const std::string& settings) {
   return o;
 }
 
-RemeshOptions withinCommandLineBounds(RemeshOptions o) {
+void keepWithinCommandLineBounds(RemeshOptions& o) {
   const auto asked = [](int n) { return n > 0 ? std::clamp(n, kSmallestRemeshedShare, kMostRemeshedVertices) : 0; };
   o.simplifyTo = asked(o.simplifyTo);
   o.sites.count = asked(o.sites.count);
   o.polish = std::clamp(o.polish, -1, kMostPolishPasses);
   o.lloyd.maxIterations = std::clamp(o.lloyd.maxIterations, 1, kMostIterations);
-  return o;
 }
 
 ParamMethod recordedParamMethod(const std::string& settings) {

@@ -397,10 +397,10 @@ std::string settingValue(const std::string& settings, const std::string& key);
 // with what the run was), keys it does not name at their defaults. Throws Error on a value
 // that is not one of the setting's.
 RemeshOptions optionsFromSettings(const std::string& settings);
-// `options` with its counts within the command line's bounds: vertices asked (0 aside),
-// polish passes and iterations. A recording's own (a chart's sites=18) are not: the window
-// runs its next mesh with them.
-RemeshOptions withinCommandLineBounds(RemeshOptions options);
+// Brings `options`' counts within the command line's bounds: vertices asked (0 aside), polish
+// passes and iterations. A recording's own (a chart's sites=18) are not: the window runs its
+// next mesh with them. In place: the window's Settings keep theirs so every frame.
+void keepWithinCommandLineBounds(RemeshOptions& options);
 // The map a recorded run used: its line's param-used (the map "auto" chose, or the input's own,
 // ParamMethod::Given), else the one asked (older recordings). Throws Error as optionsFromSettings.
 ParamMethod recordedParamMethod(const std::string& settings);

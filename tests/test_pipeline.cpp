@@ -887,14 +887,16 @@ TEST(Pipeline, SettingsAreKeptWithinTheCommandLinesBounds) {
   o.simplifyTo = 5;
   o.polish = 1000;
   o.lloyd.maxIterations = 0;
-  const RemeshOptions kept = withinCommandLineBounds(o);
+  RemeshOptions kept = o;
+  keepWithinCommandLineBounds(kept);
   EXPECT_EQ(kept.sites.count, kSmallestRemeshedShare);
   EXPECT_EQ(kept.simplifyTo, kSmallestRemeshedShare);
   EXPECT_EQ(kept.polish, kMostPolishPasses);
   EXPECT_EQ(kept.lloyd.maxIterations, 1);
   o.sites.count = o.simplifyTo = 0;  // as many as the input; no simplification
-  EXPECT_EQ(withinCommandLineBounds(o).sites.count, 0);
-  EXPECT_EQ(withinCommandLineBounds(o).simplifyTo, 0);
+  keepWithinCommandLineBounds(o);
+  EXPECT_EQ(o.sites.count, 0);
+  EXPECT_EQ(o.simplifyTo, 0);
 }
 
 // A recording's settings read back as the options asked: the coarse input a run simplified a
