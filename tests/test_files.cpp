@@ -5,8 +5,10 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include <fcntl.h>
 #include <grp.h>
@@ -214,6 +216,31 @@ TEST(Files, ASpecialFileIsWrittenIntoNotReplaced) {
   EXPECT_EQ(std::string(got), "mesh");
   close(reader);
   EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"link.off", "pipe.off"}));  // no temporary
+}
+
+// The check before a run opens no pipe: a reader (`cat pipe.off`) took its open and close for
+// the end of what it would read and left, and the write after the run then waited for ever.
+TEST(Files, TheCheckBeforeARunLeavesAPipesReaderWaiting) {
+  const std::string fifo = test::emptyFolder("pipe_reader") + "/pipe.off";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0666), 0);
+  std::promise<std::string> read;
+  std::future<std::string> got = read.get_future();
+  std::thread reader([&] {
+    const int fd = open(fifo.c_str(), O_RDONLY);  // waits for a writer
+    std::string text;
+    char buffer[16];
+    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<size_t>(n));
+    close(fd);
+    read.set_value(text);
+  });
+  EXPECT_EQ(errorOf([&] { requireWritable(fifo); }), "");
+  if (got.wait_for(std::chrono::milliseconds(300)) == std::future_status::ready) {
+    ADD_FAILURE() << "the check ended the reader's stream, before the write, with \"" << got.get() << "\"";
+  } else {
+    writeAtomically(fifo, [](std::ostream& out) { out << "mesh"; });
+    EXPECT_EQ(got.get(), "mesh");
+  }
+  reader.join();
 }
 
 // No name, or one longer than the system takes, is refused before a run, not after it.
