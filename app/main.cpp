@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -410,6 +411,14 @@ void keepFreedMemory() {
   mallopt(M_TOP_PAD, 64 << 20);
 }
 
+// What a command printed was lost where the standard output could not take it (a full disk,
+// a closed stream): said, with exit code 1, not 0 with the file the user asked for empty.
+int withOutputChecked(int code) {
+  if (std::cout.flush()) return code;
+  std::cerr << "lloydscope: the standard output could not be written (a full disk, or a closed stream)\n";
+  return code == 0 ? 1 : code;
+}
+
 // One struct a command: its arguments, the options that fill them (add) and its work (run).
 
 struct RemeshCommand {
@@ -771,14 +780,13 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return withOutputChecked(app.exit(e));
     std::cerr << "lloydscope: " << oneLine(e.what() + dashedFileHint(argc, argv))
               << " (--help lists the options)\n";
     return 1;
   }
 
-  try {
-    if (app.get_subcommands().empty()) return inspect.runDefault();
+  const auto runChosen = [&] {
     if (remesh.cmd->parsed()) return remesh.run();
     if (inspect.cmd->parsed()) return inspect.run();
     if (frameBench.cmd->parsed()) return frameBench.run();
@@ -786,6 +794,10 @@ int main(int argc, char** argv) {
     if (simplify.cmd->parsed()) return simplify.run();
     if (metrics.cmd->parsed()) return metrics.run();
     if (info.cmd->parsed()) return info.run();
+    return inspect.runDefault();
+  };
+  try {
+    return withOutputChecked(runChosen());
   } catch (const Error& e) {
     std::cerr << "lloydscope: " << oneLine(e.what()) << "\n";
     return 1;
@@ -806,5 +818,4 @@ int main(int argc, char** argv) {
     std::cerr << "lloydscope: internal error: " << oneLine(e.what()) << "\n";
     return 2;
   }
-  return 0;
 }

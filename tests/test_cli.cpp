@@ -104,6 +104,22 @@ TEST(Cli, NoSlitKeepsANearlyClosedDiskWhole) {
 }
 
 // --no-snap leaves the snaps to tips out: on a spike the result cuts off, the distance stays.
+// What a command prints is its output (metrics, info, --json): where the standard output cannot
+// take it (a full disk, a closed stream) that is said, with exit code 1, not 0 with nothing written.
+TEST(Cli, AStandardOutputThatCannotBeWrittenIsAnError) {
+  for (const std::string redirect : {">/dev/full", ">&-"}) {
+    const std::string err = test::tempPath("cli.err");
+    const int status = std::system((std::string(LLOYDSCOPE_CLI) + " metrics " + test::assetPath("bumpy_disk.off") +
+                                    " " + redirect + " 2>" + err)
+                                       .c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << redirect;
+    EXPECT_EQ(test::readText(err),
+              "lloydscope: the standard output could not be written (a full disk, or a closed stream)\n")
+        << redirect;
+  }
+  EXPECT_EQ(runCli("metrics " + test::assetPath("bumpy_disk.off")).code, 0);
+}
+
 TEST(Cli, NoSnapLeavesTheTipsAlone) {
   Mesh spike = test::grid(40);
   spike.points[20 * 41 + 20].z() = 0.3;
