@@ -129,9 +129,15 @@ int createUnique(const std::filesystem::path& folder, const std::string& stem, c
 // naming a temporary already gone and no reason. Returns its permissions, which its
 // replacement gets.
 std::optional<mode_t> requireReplaceable(const std::string& path, const std::filesystem::path& target) {
-  struct stat existing;
+  struct stat existing, folder;
   if (stat(target.c_str(), &existing) != 0) return std::nullopt;  // not there yet
   if (access(target.c_str(), W_OK) != 0) throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
+  // In a folder with the sticky bit (/tmp), only the file's owner or the folder's (or root) may
+  // rename onto it: refused after the run, after the other file of its batch was replaced.
+  const uid_t user = geteuid();
+  if (stat(target.has_parent_path() ? target.parent_path().c_str() : ".", &folder) == 0 &&
+      (folder.st_mode & S_ISVTX) && user != 0 && user != existing.st_uid && user != folder.st_uid)
+    throw Error(path + ": cannot write: it is another user's, in a folder where only its owner may replace it");
   return existing.st_mode & 07777;
 }
 

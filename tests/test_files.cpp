@@ -5,6 +5,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <future>
 #include <iostream>
 #include <sstream>
@@ -150,10 +151,30 @@ TEST(Files, WriteAtomicallyTouchesNoOtherFileAndKeepsLinksAndPermissions) {
   EXPECT_NE(fs::status(longName).permissions() & fs::perms::others_read, fs::perms::none);
 }
 
+namespace {
+
+// Runs `check` in a child process as a user other than root (root may write anything): as
+// nobody where the tests run as root. 0: it held; 1: it did not; 3: there is no other user who
+// reaches `folder`. The child ends with _exit: exit() would run the static destructor that
+// removes this process's temporary folder.
+int exitOfAsAnotherUser(const std::string& folder, const std::function<bool()>& check) {
+  const pid_t child = fork();
+  if (child < 0) return 1;
+  if (child == 0) {
+    if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(65534) != 0)) _exit(3);
+    if (access(folder.c_str(), W_OK | X_OK) != 0) _exit(3);
+    _exit(check() ? 0 : 1);
+  }
+  int status = 0;
+  if (waitpid(child, &status, 0) != child || !WIFEXITED(status)) return 1;
+  return WEXITSTATUS(status);
+}
+
+}  // namespace
+
 // A file its owner may not write (read-only) is refused before the run, saying why, and stays
 // as it was: its folder let it be replaced, and it was tried after the run, failing with a
-// message naming a temporary already gone and no reason. Run as a user other than root (root
-// may write anything): as nobody where the tests run as root.
+// message naming a temporary already gone and no reason.
 TEST(Files, AReadOnlyFileIsRefusedBeforehandSayingWhy) {
   namespace fs = std::filesystem;
   const std::string here = test::emptyFolder("read_only"), path = here + "/kept.off";
@@ -161,25 +182,38 @@ TEST(Files, AReadOnlyFileIsRefusedBeforehandSayingWhy) {
   test::writeText(path, "old");
   fs::permissions(path, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
   const std::string refused = path + ": cannot write (Permission denied)";
-  // The child ends with _exit: exit() would run the static destructor that removes this
-  // process's temporary folder. 3: it could not become another user who reaches the folder.
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(65534) != 0)) _exit(3);
-    if (access(here.c_str(), W_OK | X_OK) != 0) _exit(3);
+  const int status = exitOfAsAnotherUser(here, [&] {
     const std::string before = errorOf([&] { requireWritable(path); });
     const std::string after = errorOf([&] { writeAtomically(path, [](std::ostream& out) { out << "new"; }); });
     std::cerr << before << "|" << after << "\n";
-    _exit(before == refused && after == refused ? 0 : 1);
-  }
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status));
-  if (WEXITSTATUS(status) == 3) GTEST_SKIP() << "no other user to run as who reaches " << here;
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+    return before == refused && after == refused;
+  });
+  if (status == 3) GTEST_SKIP() << "no other user to run as who reaches " << here;
+  EXPECT_EQ(status, 0);
   EXPECT_EQ(test::readText(path), "old");
   EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"kept.off"});
+}
+
+// Another user's file in a folder with the sticky bit (/tmp) may be written but not replaced:
+// refused before the run. It was refused at the rename after the run, and `remesh --record A
+// -o B` had replaced A by then, B kept: not both or neither.
+TEST(Files, AnotherUsersFileInAStickyFolderIsRefusedBeforehand) {
+  namespace fs = std::filesystem;
+  const std::string here = test::emptyFolder("sticky"), path = here + "/shared.off";
+  fs::permissions(here, fs::perms::all | fs::perms::sticky_bit);
+  test::writeText(path, "old");
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                            fs::perms::group_write | fs::perms::others_read | fs::perms::others_write);
+  const std::string refused =
+      path + ": cannot write: it is another user's, in a folder where only its owner may replace it";
+  const int status = exitOfAsAnotherUser(here, [&] {
+    const std::string before = errorOf([&] { requireWritable(path); });
+    std::cerr << before << "\n";
+    return before == refused;
+  });
+  if (status == 3 || geteuid() != 0) GTEST_SKIP() << "no other user to run as who reaches " << here;
+  EXPECT_EQ(status, 0);
+  EXPECT_EQ(test::readText(path), "old");
 }
 
 // A link and the file it will make are one file: --record and -o, one through such a link, were
