@@ -366,7 +366,7 @@ void runStepBench(const BenchOptions& options) {
   const Mesh input = std::move(read.mesh);
   // What recording every iteration costs, in a file of its own: "<csv>.lsrec" replaced and then
   // deleted a user's file of that name (or wrote through a link of that name).
-  const std::string file = newTemporaryFile(".lsrec");
+  const TemporaryFile file(".lsrec");
   Recording recording;
   std::cout << "| sites | density | threads | median ms per iteration | µs per site, median | "
                "µs per site, best |\n|---|---|---|---|---|---|\n";
@@ -396,13 +396,12 @@ void runStepBench(const BenchOptions& options) {
       if (density == DensityKind::Area && threads == 0) recording = session.finish().recording;
     }
   // What recording every iteration costs, in memory and in a file, and reading it back.
-  saveRecording(recording, file);
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  saveRecording(recording, file.path());
+  std::ifstream in(file.path(), std::ios::binary | std::ios::ate);
   const double fileBytes = static_cast<double>(in.tellg());
   Stopwatch load;
-  const Recording loaded = loadRecording(file);
+  const Recording loaded = loadRecording(file.path());
   const double loadMs = load.lap();
-  std::remove(file.c_str());
   double memoryBytes = 0, readMs = 0;
   for (const IterationRecord& it : loaded.iterations) {
     memoryBytes += sizeof(std::uint32_t) * it.sites.raw().size() + sizeof(IterationRecord);

@@ -241,16 +241,22 @@ void requireWritable(const std::string& path) {
   std::remove(destinationOf(path).temporary.c_str());
 }
 
-std::string newTemporaryFile(const std::string& suffix) {
+struct TemporaryFile::RemovedIfInterrupted {
+  explicit RemovedIfInterrupted(const std::string& path) : inFlight(path) {}
+  InFlight inFlight;
+};
+
+TemporaryFile::TemporaryFile(const std::string& suffix) {
   std::error_code error;
   const std::filesystem::path folder = std::filesystem::temp_directory_path(error);
   if (error) throw Error("cannot find a folder for temporary files (" + error.message() + ")");
-  std::string name;
-  const int fd = createUnique(folder, "lloydscope-", suffix, 0600, name);
-  if (fd < 0) throw Error(name + ": cannot make a temporary file (" + std::strerror(errno) + ")");
+  const int fd = createUnique(folder, "lloydscope-", suffix, 0600, path_);
+  if (fd < 0) throw Error(path_ + ": cannot make a temporary file (" + std::strerror(errno) + ")");
   close(fd);
-  return name;
+  removedIfInterrupted_ = std::make_unique<RemovedIfInterrupted>(path_);
 }
+
+TemporaryFile::~TemporaryFile() { std::remove(path_.c_str()); }
 
 std::string lowercaseExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();

@@ -46,8 +46,22 @@ void requireWritable(const std::string& path);
 void requireFileName(const std::string& path);
 
 // A new empty file of a name of its own in the system's temporary folder (TMPDIR, else /tmp),
-// ending in `suffix`, for the caller to use and remove. Throws Error where none can be made.
-std::string newTemporaryFile(const std::string& suffix);
+// ending in `suffix`, removed when this goes, or when the run is interrupted (Ctrl+C, kill):
+// `bench --lloyd-step` left one behind at each error and each Ctrl+C. Throws Error where none
+// can be made.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(const std::string& suffix);
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  struct RemovedIfInterrupted;
+  std::string path_;
+  std::unique_ptr<RemovedIfInterrupted> removedIfInterrupted_;
+};
 
 // `path`'s extension in lower case (".off" for "x.OFF"; "" for none): formats are told by it.
 std::string lowercaseExtension(const std::string& path);

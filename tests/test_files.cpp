@@ -298,6 +298,29 @@ TEST(Files, AnInterruptedWriteLeavesNoTemporary) {
   EXPECT_EQ(test::readText(path), "old");
 }
 
+// A temporary file of the system's folder goes with its owner, at an error or a Ctrl+C: `bench
+// --lloyd-step` left /tmp/lloydscope-<pid>-0.lsrec behind at each.
+TEST(Files, ATemporaryFileGoesEvenWhenTheRunIsInterrupted) {
+  const std::string here = test::emptyFolder("temporary_files");
+  const char* before = std::getenv("TMPDIR");
+  const std::string kept = before ? before : "";
+  setenv("TMPDIR", here.c_str(), 1);
+  {
+    const TemporaryFile file(".lsrec");
+    EXPECT_EQ(test::filesIn(here).size(), 1u);
+    EXPECT_EQ(file.path().substr(file.path().size() - 6), ".lsrec");
+  }
+  EXPECT_TRUE(test::filesIn(here).empty());
+  EXPECT_EXIT(
+      {
+        const TemporaryFile file(".lsrec");
+        std::raise(SIGINT);
+      },
+      ::testing::KilledBySignal(SIGINT), "");
+  EXPECT_TRUE(test::filesIn(here).empty());
+  if (before) setenv("TMPDIR", kept.c_str(), 1); else unsetenv("TMPDIR");
+}
+
 TEST(Files, MakeFolderMakesTheFoldersAboveAndRefusesAFile) {
   const std::string top = test::tempPath("made");
   EXPECT_EQ(errorOf([&] { makeFolder(top + "/inner"); }), "");
