@@ -777,6 +777,12 @@ TEST(Cli, BenchTablesHoldAnyModelName) {
   EXPECT_EQ(saved.code, 1);
   EXPECT_NE(saved.err.find("--save-inputs would replace the input mesh"), std::string::npos) << saved.err;
   EXPECT_EQ(test::readText(here + "/a_100.off"), test::readText(test::assetPath("sphere_cap.off")));
+  // So is a CSV onto a prepared input: it replaced the input just saved, exit 0.
+  const CliRun onInput = runCli("bench " + here + "/a.off --sizes 100 --as-is --no-reference --save-inputs " + here +
+                                " --csv " + here + "/a_100.off");
+  EXPECT_EQ(onInput.code, 1);
+  EXPECT_EQ(onInput.err, "lloydscope: " + here + "/a_100.off: --csv and --save-inputs name the same file; give them two\n");
+  EXPECT_EQ(test::readText(here + "/a_100.off"), test::readText(test::assetPath("sphere_cap.off")));
 }
 
 // A file name that is not UTF-8 goes into --json's strings (here the charts' failure) with
