@@ -244,9 +244,14 @@ CLI::Validator wholeNumber(int low, int high = std::numeric_limits<int>::max()) 
       bounded ? std::to_string(low) + ".." + std::to_string(high) : ">= " + std::to_string(low));
 }
 const CLI::Validator kPositiveCount = wholeNumber(1);
-// A file to write: `-o ''` (an unset variable) was taken as no file, and the run wrote nothing.
-const CLI::Validator kFileName(
-    [](std::string& text) -> std::string { return text.empty() ? "expected a file name, not an empty one" : ""; }, "FILE");
+// A value given empty (`-o ''`, an unset variable) was taken as none given: the run wrote no
+// file, saved no inputs (--save-inputs), one picture (--iterations), the default size or view.
+CLI::Validator nonEmpty(const std::string& expected, const std::string& name = "") {
+  return CLI::Validator(
+      [expected](std::string& text) -> std::string { return text.empty() ? "expected " + expected + ", not an empty one" : ""; },
+      name);
+}
+const CLI::Validator kFileName = nonEmpty("a file name", "FILE");
 // The vertices a run is asked for (core/sites); the most relaxation passes it polishes with
 // (the default is 3) and frames bench-frames times: more is a slip of the keyboard that would
 // run for hours.
@@ -279,7 +284,8 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
       ->check(kVerticesAsked);
   cmd.add_option("--preset", r.preset,
                  "best (default) or reference: the report's settings (authalic, square border, "
-                 "uniform density, input vertices as sites, plain Lloyd)");
+                 "uniform density, input vertices as sites, plain Lloyd)")
+      ->check(nonEmpty("best or reference"));
   cmd.add_option("--method", r.method, "relocate or retriangulate (default)");
   cmd.add_option("--param", r.param,
                  "auto (default: lscm, or mean-value where lscm folds), authalic, conformal, "
@@ -461,7 +467,8 @@ struct InspectCommand {
     cmd->add_option("--pane", pane, "With --screenshot: window (default), 3d, 2d or plots")->needs(screenshot);
     CLI::Option* pictures =
         cmd->add_option("--iterations", iterations, "With --screenshot: FIRST:LAST, one numbered PNG per iteration")
-            ->needs(screenshot);
+            ->needs(screenshot)
+            ->check(nonEmpty("FIRST:LAST"));
     cmd->add_option("--iteration", shot.view.iteration, "Iteration to show (default: the last)")
         ->check(wholeNumber(0))
         ->excludes(pictures);
@@ -491,9 +498,11 @@ struct InspectCommand {
         ->excludes(final);
     cmd->add_option("--camera", shot.view.camera,
                     "3D view as \"yaw pitch distance x y z\": angles in radians, the distance from "
-                    "the point x y z looked at (the inspector's Copy view)");
+                    "the point x y z looked at (the inspector's Copy view)")
+        ->check(nonEmpty("\"yaw pitch distance x y z\""));
     cmd->add_option("--size", size, "With --screenshot: picture size WxH, " + pictureSizes() + " (default 1280x800)")
-        ->needs(screenshot);
+        ->needs(screenshot)
+        ->check(nonEmpty("WxH"));
     cmd->add_flag("--validation", shot.validation, "Enable the Vulkan validation layer; fail if it reports anything");
     CLI::Option* noTimingsFlag = cmd->add_flag(
         "--no-timings", noTimings, "Leave timings out of the picture (or the window), so that it is the same on every run");
@@ -601,7 +610,8 @@ struct FrameBenchCommand {
     cmd = app.add_subcommand("bench-frames", "Median frame time of the inspector while scrubbing a run's iterations (headless)");
     cmd->add_option("input", args.input, "Mesh")->required();
     cmd->add_option("--frames", frames, "Frames to time" + defaultIs(frames))->check(wholeNumber(1, kMostFrames));
-    cmd->add_option("--size", size, "Frame size WxH, " + pictureSizes() + " (default 1280x800)");
+    cmd->add_option("--size", size, "Frame size WxH, " + pictureSizes() + " (default 1280x800)")
+        ->check(nonEmpty("WxH"));
     addRemeshOptions(*cmd, args);
   }
 
@@ -641,7 +651,8 @@ struct BenchCommand {
     CLI::Option* comparisonOnly[] = {
         cmd->add_option("--sizes", options.sizes, "Vertex counts (default 500 1000 2000)")->check(kVerticesAsked),
         cmd->add_option("--csv", options.csv, "CSV output (default bench.csv)")->check(kFileName),
-        cmd->add_option("--save-inputs", options.saveInputs, "Also write each prepared input to DIR/<model>_<size>.off"),
+        cmd->add_option("--save-inputs", options.saveInputs, "Also write each prepared input to DIR/<model>_<size>.off")
+            ->check(nonEmpty("a folder", "DIR")),
         cmd->add_flag("--no-reference", noReference, "Leave out the report's preset (slow)"),
         cmd->add_flag("--as-is", options.asIs,
                       "Use the models as they come, not prepared: each remeshed to each size "

@@ -936,6 +936,13 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"remesh " + mesh + " --record ''", "--record: expected a file name, not an empty one"},
       {"bench " + mesh + " --csv ''", "--csv: expected a file name, not an empty one"},
       {"inspect " + mesh + " --screenshot ''", "--screenshot: expected a file name, not an empty one"},
+      // Nor an empty value (it was taken as none: one picture, the default size or view, no inputs saved).
+      {"bench " + mesh + " --save-inputs ''", "--save-inputs: expected a folder, not an empty one"},
+      {"inspect " + mesh + " --iterations '' --screenshot x.png", "--iterations: expected FIRST:LAST, not an empty one"},
+      {"inspect " + mesh + " --size '' --screenshot x.png", "--size: expected WxH, not an empty one"},
+      {"bench-frames " + mesh + " --size ''", "--size: expected WxH, not an empty one"},
+      {"inspect " + mesh + " --camera '' --screenshot x.png", "--camera: expected \"yaw pitch distance x y z\", not an empty one"},
+      {"remesh " + mesh + " --preset ''", "--preset: expected best or reference, not an empty one"},
       // Every iteration is recorded: a run that never converges grew by 30 MB a second.
       {"remesh " + mesh + " --max-iterations 2000000000", "--max-iterations: expected a whole number from 1 to 100000"},
       // A line break in a file name or a value stays on the error's one line.
