@@ -604,6 +604,9 @@ void Inspector::startExport(ExportJob job) {
     throw Error(range + ": FIRST comes after LAST (the pictures go from FIRST up to LAST)");
   if (job.first >= 0 && job.last >= count)
     throw Error(range + ": expected FIRST:LAST within 0:" + std::to_string(count - 1));
+  // Every picture's name, before the first is saved: a folder named as the third stopped the
+  // sequence there, the first two written (or replaced).
+  for (int k = job.first; k >= 0 && k <= job.last; ++k) requireWritable(exportPath(job, k));
   exportNext_ = job.first >= 0 ? job.first : iteration_;
   iterationBeforeExport_ = iteration_;
   exportJob_ = std::move(job);

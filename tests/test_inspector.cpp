@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -519,6 +520,19 @@ TEST(Inspector, ExportsANumberedSequenceOfOnePane) {
   EXPECT_EQ(first.width, last.width);
   EXPECT_EQ(first.height, last.height);
   EXPECT_NE(first.rgba, last.rgba);  // the result changed between iterations 2 and 4
+}
+
+// A sequence one of whose names cannot be written (a folder of that name) is refused before its
+// first picture: it stopped at that one, the pictures before it saved.
+TEST(Inspector, ASequenceOneOfWhoseNamesCannotBeWrittenSavesNone) {
+  const std::string here = test::emptyFolder("sequence_blocked"), base = here + "/x.png";
+  std::filesystem::create_directory(here + "/x_0002.png");
+  const std::string err = here + "/err.txt";
+  EXPECT_EQ(run("inspect " + test::assetPath("sphere_cap.off") + " --screenshot " + base +
+                " --size 960x600 --no-timings --pane 3d --iterations 0:3 2> " + err),
+            1);
+  EXPECT_EQ(test::readText(err), "lloydscope: " + here + "/x_0002.png: cannot write: it is a folder\n");
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"err.txt", "x_0002.png"}));
 }
 
 // Each picture of a sequence of the Move stage quotes its own arrows' magnification: the
