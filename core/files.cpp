@@ -41,9 +41,10 @@ namespace {
 // system's reason.
 [[noreturn]] void cannotMake(const std::string& path, const std::filesystem::path& folder) {
   const std::string reason = std::strerror(errno);
-  std::error_code ignored;
-  if (!std::filesystem::exists(folder, ignored))
-    throw Error(path + ": cannot write: there is no folder " + folder.string());
+  std::error_code unknown;  // a path longer than the system takes: no folder found, nor missing
+  const bool there = std::filesystem::exists(folder, unknown);
+  if (unknown) throw Error(path + ": cannot write (" + reason + ")");
+  if (!there) throw Error(path + ": cannot write: there is no folder " + folder.string());
   throw Error(path + ": cannot write in " + folder.string() + " (" + reason + ")");
 }
 

@@ -283,6 +283,11 @@ TEST(Files, ANameNoFileCanHaveIsRefusedBeforehand) {
   const std::string here = test::emptyFolder("long_names"), name = here + "/" + std::string(300, 'n') + ".off";
   EXPECT_EQ(errorOf([&] { requireWritable(name); }),
             name + ": cannot write: its name is 304 bytes long, more than a file name may be here (255)");
+  // A path longer than the system takes was said to be in "no folder ././...", which was there.
+  std::string deep = here;
+  while (deep.size() < 5000) deep += "/.";
+  deep += "/x.off";
+  EXPECT_EQ(errorOf([&] { requireWritable(deep); }), deep + ": cannot write (File name too long)");
 }
 
 // Interrupted while writing (Ctrl+C), the run leaves no temporary behind, and the file as it was.
