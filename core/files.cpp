@@ -216,12 +216,66 @@ void FileBatch::add(const std::string& path, const std::function<void(std::ostre
   staged_.push_back(std::move(staged));
 }
 
+namespace {
+
+// A second name for the file at `target`, beside it, to put it back by if a later rename of its
+// batch fails; removed when this goes.
+class KeptFile {
+ public:
+  explicit KeptFile(const std::filesystem::path& target) : target_(target) {
+    struct stat existing;
+    existed_ = lstat(target.c_str(), &existing) == 0;
+    if (!existed_) return;
+    std::string name;
+    const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+    const int fd = createUnique(folder, ".lloydscope-kept-", "", 0600, name);
+    if (fd < 0) return;
+    close(fd);
+    // link() makes no name that is there already: the empty file made for the name goes first.
+    if (std::remove(name.c_str()) == 0 && link(target.c_str(), name.c_str()) == 0) {
+      kept_ = name;
+      removedIfInterrupted_.emplace(name);
+    }
+  }
+  ~KeptFile() {
+    if (!kept_.empty()) std::remove(kept_.c_str());
+  }
+  KeptFile(const KeptFile&) = delete;
+  KeptFile& operator=(const KeptFile&) = delete;
+  // The target as it was: the kept file renamed back onto it, or, where there was none, the new
+  // one removed. False where that could not be done (the system made no second name).
+  bool putBack() {
+    if (!existed_) return std::remove(target_.c_str()) == 0;
+    if (kept_.empty() || std::rename(kept_.c_str(), target_.c_str()) != 0) return false;
+    kept_.clear();
+    return true;
+  }
+
+ private:
+  std::filesystem::path target_;
+  bool existed_ = false;
+  std::string kept_;
+  std::optional<InFlight> removedIfInterrupted_;
+};
+
+}  // namespace
+
 void FileBatch::commit() {
-  for (const auto& staged : staged_) {
-    if (std::rename(staged->temporary.c_str(), staged->target.c_str()) != 0)
-      throw Error(staged->path + ": cannot write: renaming " + staged->temporary + " onto it failed (" +
-                  std::strerror(errno) + ")");
-    staged->renamed = true;
+  // Each file replaced so far is put back where a later one's rename fails (another user's
+  // file in a sticky folder, refused beforehand now; a folder made in its place during the run).
+  std::vector<std::unique_ptr<KeptFile>> kept;
+  for (size_t i = 0; i + 1 < staged_.size(); ++i) kept.push_back(std::make_unique<KeptFile>(staged_[i]->target));
+  for (size_t i = 0; i < staged_.size(); ++i) {
+    Staged& staged = *staged_[i];
+    if (std::rename(staged.temporary.c_str(), staged.target.c_str()) != 0) {
+      const std::string reason = std::strerror(errno);
+      std::string replaced;
+      for (size_t before = 0; before < i; ++before)
+        if (!kept[before]->putBack()) replaced += "; " + staged_[before]->path + " was replaced";
+      throw Error(staged.path + ": cannot write: renaming " + staged.temporary + " onto it failed (" + reason + ")" +
+                  replaced);
+    }
+    staged.renamed = true;
   }
 }
 

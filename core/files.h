@@ -23,7 +23,9 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
 // Files saved together, each as writeAtomically saves one: add() writes a file's temporary,
 // commit() renames them all onto their files. Where an add() throws, or commit() never comes,
 // no file is replaced (remesh -o on a full disk replaced the --record file it had saved first,
-// then failed). A device (/dev/stdout) has no temporary: add() writes into it at once.
+// then failed); where a rename fails, those before it are put back (through a second name
+// for each file replaced; the message says which, if any, could not be). A device
+// (/dev/stdout) has no temporary: add() writes into it at once.
 class FileBatch {
  public:
   FileBatch();

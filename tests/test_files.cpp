@@ -100,6 +100,27 @@ TEST(Files, ABatchReplacesAllOfItsFilesOrNone) {
   batch.commit();
   EXPECT_EQ(test::readText(first), "new first");
   EXPECT_EQ(test::readText(second), "new second");
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"first.txt", "second.txt"}));
+}
+
+// Where the second file's rename fails at the commit (here a folder made in its place during the
+// run), the first, renamed already, is put back: it stayed replaced, the second not.
+TEST(Files, ABatchWhoseSecondRenameFailsPutsTheFirstBack) {
+  const std::string here = test::emptyFolder("batch_put_back");
+  const std::string first = here + "/first.txt", second = here + "/second.txt", made = here + "/made.txt";
+  test::writeText(first, "old first");
+  const std::string why = errorOf([&] {
+    FileBatch batch;
+    batch.add(made, [](std::ostream& out) { out << "new made"; });  // not there before: removed again
+    batch.add(first, [](std::ostream& out) { out << "new first"; });
+    batch.add(second, [](std::ostream& out) { out << "new second"; });
+    std::filesystem::create_directories(second + "/inside");
+    batch.commit();
+  });
+  EXPECT_EQ(why.rfind(second + ": cannot write: renaming ", 0), 0u) << why;
+  EXPECT_EQ(why.find("was replaced"), std::string::npos) << why;
+  EXPECT_EQ(test::readText(first), "old first");
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"first.txt", "second.txt"}));  // nothing kept stays
 }
 
 // The temporary is a name of its own beside the file: a user's "<name>.tmp" was deleted, and a
