@@ -776,6 +776,13 @@ std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options)
          (r.componentsKept > 0 ? ", and components too small for their share are kept as they are" : "");
 }
 
+std::string lloydIterationsLine(const RemeshResult& r) {
+  const std::string parts = r.components > 1 ? ", all components together"
+                            : r.charts > 0   ? ", all " + std::to_string(r.charts) + " charts together (the recording is the largest one's)"
+                                             : "";
+  return "Lloyd iterations: " + std::to_string(r.iterations) + parts + (r.converged ? " (converged)" : " (not converged)");
+}
+
 std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   std::ostringstream out;
   out << "Settings: " << describe(o) << "\n\n";
@@ -794,8 +801,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << " recording, are the largest one's)"
         << (r.componentsKept > 0 ? "; " + std::to_string(r.componentsKept) + " with " + std::to_string(kSmallestRemeshedShare) + " vertices or fewer, too small for their share, kept as they are" : "")
         << "\n";
-  out << "Lloyd iterations: " << r.iterations << (r.components > 1 ? ", all components" : "")
-      << (r.converged ? " (converged)" : " (not converged)") << "\n";
+  out << lloydIterationsLine(r) << "\n";
   if (r.componentsKept < r.components)  // all kept as they are: nothing was parameterized
     out << "Parameterization" << (r.charts > 0 ? " (largest chart)" : "") << ": " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
         << format("%.3g", r.distortion.maxAreaRatio)

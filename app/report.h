@@ -235,6 +235,10 @@ std::string thresholdsText(const LloydOptions& options);
 // "1 iteration (0)" ("Stopped at 4 iterations" read as one more than the timeline's "0-3").
 std::string iterationsText(int count);
 
+// "Lloyd iterations: 160 (converged)": a surface remeshed in parts (components, charts) sums
+// its parts' iterations, and says so: 251 for 8 charts at --max-iterations 40 read as over it.
+std::string lloydIterationsLine(const RemeshResult& r);
+
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,
                          const Fidelity* fidelity);

@@ -185,6 +185,23 @@ TEST(Report, ChartsThatStandInForAFailedDiskSaySo) {
   EXPECT_EQ(toJson(r, RemeshOptions{})["chart_trial"]["kept"], "charts");
 }
 
+// The iterations of a surface remeshed in parts are their sum, said so: a sphere in 8 charts at
+// --max-iterations 40 said "Lloyd iterations: 251", where the recording (the largest chart's) has 40.
+TEST(Report, IterationsSummedOverPartsSaySo) {
+  RemeshResult r;
+  r.iterations = 160;
+  r.converged = true;
+  EXPECT_EQ(lloydIterationsLine(r), "Lloyd iterations: 160 (converged)");
+  r.iterations = 251;
+  r.converged = false;
+  r.charts = 8;
+  EXPECT_EQ(lloydIterationsLine(r),
+            "Lloyd iterations: 251, all 8 charts together (the recording is the largest one's) (not converged)");
+  r.charts = 0;
+  r.components = 3;
+  EXPECT_EQ(lloydIterationsLine(r), "Lloyd iterations: 251, all components together (not converged)");
+}
+
 // Charts tried only because the one disk missed a bar say so; the JSON has the flag.
 TEST(Report, ChartsTriedForAMissedBarSaySo) {
   RemeshResult r;
