@@ -217,7 +217,8 @@ std::string curveLegend(const char* solver, bool thisRun, bool firstCompared, co
   if (withTime) {
     double ms = 0;
     for (const IterationRecord& it : its) ms += it.milliseconds;
-    text += format(", %.0f", ms) + " ms";
+    // Two digits under 10 ms: a run of a tenth of a millisecond read "0 ms" beside its curve.
+    text += format(ms < 10 ? ", %.2g" : ", %.0f", ms) + " ms";
   }
   return converged || thisRun ? text : text + ", not converged";
 }

@@ -522,10 +522,15 @@ TEST(Report, TheCurvesLegendSaysWhichRunIsWhich) {
   its[1].milliseconds = 1;
   its[2].milliseconds = 1.25;
   EXPECT_EQ(curveLegend("lbfgs", true, false, its, true, false), "lbfgs, this run: 3 iterations");
-  EXPECT_EQ(curveLegend("lbfgs", true, false, its, true, true), "lbfgs, this run: 3 iterations, 5 ms");
+  EXPECT_EQ(curveLegend("lbfgs", true, false, its, true, true), "lbfgs, this run: 3 iterations, 4.8 ms");
   EXPECT_EQ(curveLegend("lloyd", false, true, its, false, false), "lloyd, same start: 3, not converged");
-  EXPECT_EQ(curveLegend("lloyd", false, true, its, false, true), "lloyd, same start: 3, 5 ms, not converged");
-  EXPECT_EQ(curveLegend("newton", false, false, its, true, true), "newton: 3, 5 ms");
+  EXPECT_EQ(curveLegend("lloyd", false, true, its, false, true), "lloyd, same start: 3, 4.8 ms, not converged");
+  EXPECT_EQ(curveLegend("newton", false, false, its, true, true), "newton: 3, 4.8 ms");
+  // A run of under a millisecond read "0 ms", its curve ending at 0.44 below.
+  for (IterationRecord& it : its) it.milliseconds = 0.44 / 3;
+  EXPECT_EQ(curveLegend("newton", false, false, its, true, true), "newton: 3, 0.44 ms");
+  for (IterationRecord& it : its) it.milliseconds = 41.2;
+  EXPECT_EQ(curveLegend("newton", false, false, its, true, true), "newton: 3, 124 ms");
   EXPECT_EQ(curveLegend("newton", true, false, {IterationRecord()}, true, false), "newton, this run: 1 iteration");
 }
 
