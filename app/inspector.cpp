@@ -1536,7 +1536,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   // over it); pinned triangles are the iteration's result's or the final result's, each drawn
   // over its own mesh.
   selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen, eye,
-                    shown.cells2D, iterationResultIn3D());
+                    shown.cells2D, pinnedTrianglesIn3D());
   if (final) selection_.drawFinal3D(dl, result_.output, toScreen, eye);
   dl->PopClipRect();
 

@@ -224,6 +224,10 @@ class Inspector {
   // where the view shows neither the input nor the final result.
   bool iterationResultIn2D() const { return layers().sites2D; }
   bool iterationResultIn3D() const { return !layers().input3D && !finalShown(); }
+  // The iteration's pinned triangles are drawn over its result in 3D, or, where the stage shows
+  // the input there, over the input between its lifted sites, their corners (the Voronoi to
+  // Lift stages drew them in 2D alone).
+  bool pinnedTrianglesIn3D() const { return iterationResultIn3D() || (layers().sites3D && !finalShown()); }
   void fitCamera();
   void fit2D();  // the whole domain in the 2D pane, as it opens
 

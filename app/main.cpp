@@ -547,6 +547,7 @@ struct InspectCommand {
       return runWindow(args.input, options, std::move(result), shot.validation, std::move(input), shot.view, uiScale);
     }
     requirePictureSize(shot.width, shot.height, shot.uiScale);  // before minutes of work
+    requirePinsShownAtStage();
     requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
     refuseReplacing(shot.picture, args.input);
     RemeshResult result = openForInspection(args, *cmd, options, &input);
@@ -584,6 +585,15 @@ struct InspectCommand {
       throw Error("--fill " + fill + ": the " + stageName + " stage fills the cells by " + toString(*own));
     if (!layersFor(*shot.view.stage).cells2D)
       throw Error("--fill " + fill + ": the " + stageName + " stage shows no cells to fill");
+  }
+
+  // The stages before Voronoi draw no cells and no result: a picture of one with a pin showed
+  // it nowhere, exit 0. (A window may open there, pins and all, for the stages after.)
+  void requirePinsShownAtStage() const {
+    if (!shot.view.stage || layersFor(*shot.view.stage).sites2D) return;
+    for (const char* option : {"--select-cell", "--select-triangle", "--select-worst"})
+      if (cmd->count(option) > 0)
+        throw Error(std::string(option) + " has nothing to show at --stage " + stage + ": it draws no cells and no result");
   }
 
   // --iterations FIRST:LAST

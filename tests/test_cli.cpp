@@ -931,6 +931,10 @@ TEST(Cli, CommandLineMistakesAreOneLineErrors) {
       {"inspect " + mesh + " --pane 2d --camera '1 0.5 3 0 0 0' --screenshot x.png", "--camera has nothing to show in --pane 2d: it is for the 3D view"},
       {"inspect " + mesh + " --pane 2d --final --screenshot x.png", "--final has nothing to show in --pane 2d"},
       {"inspect " + mesh + " --pane 3d --fill energy --screenshot x.png", "--fill has nothing to show in --pane 3d"},
+      {"inspect " + mesh + " --stage load --select-cell 3 --screenshot x.png",
+       "--select-cell has nothing to show at --stage load: it draws no cells and no result"},
+      {"inspect " + mesh + " --stage parameterize --select-triangle 3 --screenshot x.png",
+       "--select-triangle has nothing to show at --stage parameterize"},
       // No file name (an unset variable): the run went on and wrote nothing.
       {"remesh " + mesh + " -o ''", "--output: expected a file name, not an empty one"},
       {"remesh " + mesh + " --record ''", "--record: expected a file name, not an empty one"},

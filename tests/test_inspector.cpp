@@ -211,15 +211,13 @@ TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
   EXPECT_GE(tealPixels(readPng(png)), 180);
 }
 
-// The lesson's Load stage shows no cells and no result: a pinned triangle's ring floated on the
-// empty domain, and a pinned cell's highlight beside it.
-TEST(Inspector, TheLoadStageShowsNoPins) {
-  const std::string png = test::tempPath("load_pins.png");
-  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --stage load --select-cell 100 --select-triangle 5 --pane 2d", png),
-            0);
-  const Picture picture = readPng(png);
-  ASSERT_GT(picture.width, 0);
-  EXPECT_EQ(tealPixels(picture) + magentaPixels(picture), 0);
+// The lesson's Voronoi to Lift stages show the input in 3D, with the sites lifted onto it: a
+// pinned triangle, filled and ringed in 2D, is drawn there between its lifted corners too (it
+// was in 2D alone: no teal in the 3D pane).
+TEST(Inspector, TheVoronoiStageDrawsAPinnedTriangleIn3DToo) {
+  const std::string png = test::tempPath("voronoi_pin.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --stage voronoi --select-triangle 400 --pane 3d", png), 0);
+  EXPECT_GE(tealPixels(readPng(png)), 60);
 }
 
 // A fill's colour bar and its labels stand beside the domain: over it they hid a square
