@@ -667,13 +667,13 @@ void Inspector::fitCamera() {
   fitPending_ = true;  // the distance, once the pane's shape is known
 }
 
+// Drawn over the mesh, with no depth test: a seam behind the surface is left out. Its facing
+// alone hid the seams of a chart seen from behind, an open sheet whose back is in view.
 void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const Vec3& eye) const {
   ImVec2 a, b;
-  for (const SeamEdge& e : seam3D_) {
-    const Vec3 toEye = eye - 0.5 * (e.a + e.b);
-    if (e.normal.dot(toEye) <= 0) continue;  // on the far side (no depth test here)
-    if (screen(e.a, a) && screen(e.b, b)) dl->AddLine(a, b, kSeamColor, presentation_ ? 4.0f : 3.0f);
-  }
+  for (const auto& [from, to] : seam3D_)
+    if (!hiddenBehind(seamSurface_, eye, 0.5 * (from + to)) && screen(from, a) && screen(to, b))
+      dl->AddLine(a, b, kSeamColor, presentation_ ? 4.0f : 3.0f);
 }
 
 const QualityMetrics& Inspector::currentQuality() {
@@ -723,12 +723,10 @@ void Inspector::uploadMesh() {
       seams.insert({a, b});
       seams.insert({b, a});
     }
-  for (const Triangle& t : cut.triangles)  // each seam edge with its triangle's normal
+  for (const Triangle& t : cut.triangles)
     for (int k = 0; k < 3; ++k)
-      if (seams.count({t[k], t[(k + 1) % 3]})) {
-        const Vec3 &a = cut.points[t[k]], &b = cut.points[t[(k + 1) % 3]], &c = cut.points[t[(k + 2) % 3]];
-        seam3D_.push_back({a, b, (b - a).cross(c - a).normalized()});
-      }
+      if (seams.count({t[k], t[(k + 1) % 3]})) seam3D_.push_back({cut.points[t[k]], cut.points[t[(k + 1) % 3]]});
+  seamSurface_ = seam3D_.empty() ? Mesh() : cut;
   std::vector<Marker> marks;
   const Shown3D now = shown3D();
   // With the valence fill, the irregular sites are dots of its colours, as their cells are in

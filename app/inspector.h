@@ -310,10 +310,8 @@ class Inspector {
   RemeshMethod measuredMethod_ = RemeshMethod::Retriangulate;
   QualityMetrics quality_;
   std::vector<std::pair<Vec2, Vec2>> cellEdges_;
-  struct SeamEdge {
-    Vec3 a, b, normal;  // normal: of the triangle on the edge, to hide the far side's
-  };
-  std::vector<SeamEdge> seam3D_;  // of the mesh uploaded to the 3D pane
+  std::vector<std::pair<Vec3, Vec3>> seam3D_;  // of the mesh uploaded to the 3D pane
+  Mesh seamSurface_;                           // which they lie on, to hide those behind it
   int edgesIteration_ = -1;
   bool showInput_ = false, showFinal_ = false;
   // What the 3D pane's buffers show: uploaded again when what it should show differs.

@@ -805,6 +805,20 @@ TEST(Inspector, DrawsTheSeamsOfACutSurface) {
   EXPECT_GT(purple2D, 100);
 }
 
+// A chart of a closed surface is an open sheet: seen from behind, its seams with the other
+// charts are in view all round. Their triangles' facing hid them (CGAL's elephant in charts,
+// its largest chart from the first view: two stretches of its outline drawn, 360 pixels).
+TEST(Inspector, DrawsAChartsSeamsSeenFromBehind) {
+  const std::string mesh = test::cgalSample("elephant.off");
+  SKIP_UNLESS_EXTRACTED(mesh);
+  const std::string png = test::tempPath("elephant_chart.png");
+  ASSERT_EQ(run("inspect " + mesh + " --simplify 1000 --stage parameterize --pane 3d --no-timings --size 960x600 --screenshot " + png), 0);
+  const int purple = pixelsWhere(readPng(png), [](const unsigned char* c) {
+    return std::abs(c[0] - 150) < 30 && std::abs(c[1] - 40) < 30 && std::abs(c[2] - 190) < 30;
+  });
+  EXPECT_GT(purple, 1000) << purple;
+}
+
 // CGAL's triceratops: every map of its first resampling collapses a horn, so the run is made
 // without that pass (remesh() says why, and so does the inspector's left pane) instead of
 // the inspector refusing to open it.
