@@ -1532,7 +1532,8 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   }
   // Pinned cells lie on the input surface, under the final result too (they were not drawn
   // over it); pinned triangles are the iteration's result's or the final result's, each drawn
-  // over its own mesh.
+  // over its own mesh, or the iteration's over the input between its lifted sites (the Voronoi
+  // to Lift stages).
   selection_.draw3D(dl, replay_->recording(), replay_->domain(), replay_->view(iteration_), toScreen, eye,
                     shown.cells2D, pinnedTrianglesIn3D());
   if (final) selection_.drawFinal3D(dl, result_.output, toScreen, eye);

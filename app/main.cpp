@@ -185,8 +185,7 @@ int runRemesh(const RemeshArgs& a, const CLI::App& cmd) {
   // Where the files cannot be saved, say so now, not after minutes of work.
   if (!a.output.empty()) requireMeshWritable(a.output);
   refuseSameFile(a);
-  // After the refusals that say more (onto the input, onto the output), before the check that
-  // opens a pipe, which waits for a reader.
+  // After the refusals that say more (onto the input, onto the output).
   if (!a.record.empty()) requireRecordingName(a.record), requireWritable(a.record);
   const Mesh input = loadToRemesh(a, options);
   const RemeshResult result = remesh(input, options, a.input);

@@ -287,10 +287,15 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
 
 void requireWritable(const std::string& path) {
   requireFileName(path);
-  // Asked, not opened: a pipe's reader takes an open and close for the end of what it reads,
-  // and then nothing reads the write after the run, which waited for one for ever.
   if (isSpecialFile(path)) {
-    if (access(path.c_str(), W_OK) != 0) throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
+    struct stat special {};
+    if (stat(path.c_str(), &special) == 0 && S_ISSOCK(special.st_mode))
+      throw Error(path + ": cannot write: it is a socket");
+    // A pipe is asked, not opened: its reader takes an open and close for the end of what it
+    // reads, and then nothing reads the write after the run, which waited for one for ever.
+    if (S_ISFIFO(special.st_mode) ? access(path.c_str(), W_OK) != 0
+                                  : !std::ofstream(path, std::ios::binary | std::ios::app))
+      throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
     return;
   }
   std::remove(destinationOf(path).temporary.c_str());

@@ -1436,7 +1436,7 @@ void requireWritableExtension(const std::string& ext, const std::string& path) {
 void requireMeshWritable(const std::string& path) {
   requireFileName(path);  // a folder is said to be one, not to have no extension
   requireWritableExtension(lowercaseExtension(path), path);
-  requireWritable(path);  // last: it opens a pipe, which waits for a reader
+  requireWritable(path);  // last: the refusals above say more
 }
 
 void writeMesh(const Mesh& mesh, const std::string& path) {

@@ -103,7 +103,6 @@ TEST(Cli, NoSlitKeepsANearlyClosedDiskWhole) {
   EXPECT_EQ(whole.out.find("Cut open"), std::string::npos) << whole.out;
 }
 
-// --no-snap leaves the snaps to tips out: on a spike the result cuts off, the distance stays.
 // What a command prints is its output (metrics, info, --json): where the standard output cannot
 // take it (a full disk, a closed stream) that is said, with exit code 1, not 0 with nothing written.
 TEST(Cli, AStandardOutputThatCannotBeWrittenIsAnError) {
@@ -120,6 +119,7 @@ TEST(Cli, AStandardOutputThatCannotBeWrittenIsAnError) {
   EXPECT_EQ(runCli("metrics " + test::assetPath("bumpy_disk.off")).code, 0);
 }
 
+// --no-snap leaves the snaps to tips out: on a spike the result cuts off, the distance stays.
 TEST(Cli, NoSnapLeavesTheTipsAlone) {
   Mesh spike = test::grid(40);
   spike.points[20 * 41 + 20].z() = 0.3;

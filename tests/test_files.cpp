@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -13,6 +14,8 @@
 
 #include <fcntl.h>
 #include <grp.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -296,6 +299,21 @@ TEST(Files, TheCheckBeforeARunLeavesAPipesReaderWaiting) {
     EXPECT_EQ(got.get(), "mesh");
   }
   reader.join();
+}
+
+// A socket, which no file can be written into (its open fails), is refused before the run: the
+// pipe's check, which asks rather than opens, let it through to fail after the run.
+TEST(Files, ASocketIsRefusedBeforehand) {
+  const std::string path = test::emptyFolder("socket") + "/sock.off";
+  const int fd = socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  ASSERT_LT(path.size(), sizeof address.sun_path);
+  std::strcpy(address.sun_path, path.c_str());
+  ASSERT_EQ(bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+  EXPECT_EQ(errorOf([&] { requireWritable(path); }), path + ": cannot write: it is a socket");
+  close(fd);
 }
 
 // No name, or one longer than the system takes, is refused before a run, not after it.

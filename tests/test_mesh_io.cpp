@@ -528,7 +528,7 @@ TEST(MeshIoErrors, UnknownExtension) {
 }
 
 // An output that is a folder is said to be one, not to have no extension ("-o results/"); a
-// pipe of the wrong extension is refused for it before it is opened (an open waits for a reader).
+// pipe of the wrong extension is refused for it, not written into.
 TEST(MeshIoErrors, AFolderToWriteAMeshToIsSaidToBeOne) {
   const std::string pipe = test::tempPath("pipe.txt");
   std::remove(pipe.c_str());
