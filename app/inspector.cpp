@@ -672,7 +672,7 @@ void Inspector::fitCamera() {
 void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const Vec3& eye) const {
   ImVec2 a, b;
   for (const auto& [from, to] : seam3D_)
-    if (!hiddenBehind(seamSurface_, eye, 0.5 * (from + to)) && screen(from, a) && screen(to, b))
+    if (!seamSurface_->hides(eye, 0.5 * (from + to)) && screen(from, a) && screen(to, b))
       dl->AddLine(a, b, kSeamColor, presentation_ ? 4.0f : 3.0f);
 }
 
@@ -726,7 +726,8 @@ void Inspector::uploadMesh() {
   for (const Triangle& t : cut.triangles)
     for (int k = 0; k < 3; ++k)
       if (seams.count({t[k], t[(k + 1) % 3]})) seam3D_.push_back({cut.points[t[k]], cut.points[t[(k + 1) % 3]]});
-  seamSurface_ = seam3D_.empty() ? Mesh() : cut;
+  seamSurface_.reset();
+  if (!seam3D_.empty()) seamSurface_.emplace(cut);
   std::vector<Marker> marks;
   const Shown3D now = shown3D();
   // With the valence fill, the irregular sites are dots of its colours, as their cells are in

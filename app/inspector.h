@@ -311,7 +311,7 @@ class Inspector {
   QualityMetrics quality_;
   std::vector<std::pair<Vec2, Vec2>> cellEdges_;
   std::vector<std::pair<Vec3, Vec3>> seam3D_;  // of the mesh uploaded to the 3D pane
-  Mesh seamSurface_;                           // which they lie on, to hide those behind it
+  std::optional<SurfaceProjection> seamSurface_;  // which they lie on, to hide those behind it
   int edgesIteration_ = -1;
   bool showInput_ = false, showFinal_ = false;
   // What the 3D pane's buffers show: uploaded again when what it should show differs.

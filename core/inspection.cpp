@@ -161,43 +161,29 @@ int triangleAtUV(const IterationView& view, const Vec2& p) {
   return -1;
 }
 
-namespace {
-
-// Where the ray from `origin` along `direction` crosses triangle f (Möller-Trumbore, both
-// sides), in units of `direction`; infinity where it does not.
-double rayHit(const Mesh& mesh, size_t f, const Vec3& origin, const Vec3& direction) {
-  const Triangle& t = mesh.triangles[f];
-  const Vec3 &a = mesh.points[t[0]], e1 = mesh.points[t[1]] - a, e2 = mesh.points[t[2]] - a;
-  const Vec3 p = direction.cross(e2);
-  const double det = e1.dot(p);
-  if (std::abs(det) < 1e-300) return INFINITY;
-  const Vec3 s = origin - a;
-  const double u = s.dot(p) / det;
-  if (u < 0 || u > 1) return INFINITY;
-  const Vec3 q = s.cross(e1);
-  const double v = direction.dot(q) / det;
-  if (v < 0 || u + v > 1) return INFINITY;
-  return e2.dot(q) / det;
-}
-
-}  // namespace
-
 int triangleOnRay(const Mesh& mesh, const Vec3& origin, const Vec3& direction) {
-  int best = -1;  // the nearest hit in front of the origin
+  // Möller-Trumbore, both sides, nearest hit in front of the origin.
+  int best = -1;
   double nearest = INFINITY;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f)
-    if (const double distance = rayHit(mesh, f, origin, direction); distance > 0 && distance < nearest) {
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 &a = mesh.points[t[0]], e1 = mesh.points[t[1]] - a, e2 = mesh.points[t[2]] - a;
+    const Vec3 p = direction.cross(e2);
+    const double det = e1.dot(p);
+    if (std::abs(det) < 1e-300) continue;
+    const Vec3 s = origin - a;
+    const double u = s.dot(p) / det;
+    if (u < 0 || u > 1) continue;
+    const Vec3 q = s.cross(e1);
+    const double v = direction.dot(q) / det;
+    if (v < 0 || u + v > 1) continue;
+    const double distance = e2.dot(q) / det;
+    if (distance > 0 && distance < nearest) {
       nearest = distance;
       best = static_cast<int>(f);
     }
+  }
   return best;
-}
-
-bool hiddenBehind(const Mesh& mesh, const Vec3& eye, const Vec3& point) {
-  // Short of the point by a millionth of the way: the point's own triangles hold it.
-  for (size_t f = 0; f < mesh.triangles.size(); ++f)
-    if (const double distance = rayHit(mesh, f, eye, point - eye); distance > 0 && distance < 1 - 1e-6) return true;
-  return false;
 }
 
 }  // namespace lloydscope

@@ -88,7 +88,5 @@ int triangleWithCorners(const IterationView& view, const TriangleCorners& corner
 int triangleAtUV(const IterationView& view, const Vec2& p);
 // The output triangle the ray from `origin` along `direction` hits first, or -1.
 int triangleOnRay(const Mesh& mesh, const Vec3& origin, const Vec3& direction);
-// Whether a triangle of `mesh` lies between `eye` and `point` (a point on the mesh), hiding it.
-bool hiddenBehind(const Mesh& mesh, const Vec3& eye, const Vec3& point);
 
 }  // namespace lloydscope

@@ -69,6 +69,10 @@ SurfaceProjection::SurfaceProjection(const Mesh& surface) : tree_(std::make_uniq
 SurfaceProjection::~SurfaceProjection() = default;
 SurfaceProjection::SurfaceProjection(SurfaceProjection&&) noexcept = default;
 
+bool SurfaceProjection::hides(const Vec3& eye, const Vec3& p) const {
+  return tree_->tree.do_intersect(Kernel::Segment_3(point(eye), point(eye + (1 - 1e-6) * (p - eye))));
+}
+
 Vec3 SurfaceProjection::closestPoint(const Vec3& p) const {
   const Point3 c = tree_->tree.closest_point(point(p));
   return Vec3(c.x(), c.y(), c.z());

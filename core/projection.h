@@ -29,6 +29,11 @@ class SurfaceProjection {
   // point of a triangle in the Hausdorff distance).
   double squaredDistance(const Vec3& p, Vec3& onSurface) const;
 
+  // Whether the surface crosses the line of sight from `eye` to `point`, a point on it, short of
+  // the point by a millionth of the way (its own triangles hold it): what hides it from the eye
+  // (the 3D view's seams, drawn over the mesh with no depth test).
+  bool hides(const Vec3& eye, const Vec3& point) const;
+
   // closestPoint, squaredDistance of each, several times faster for many points (inSpatialOrder),
   // split over `threads` threads (0: all cores; one under a thousand points).
   std::vector<Vec3> closestPoints(const std::vector<Vec3>& points, int threads = 0) const;

@@ -503,3 +503,22 @@ TEST(Fidelity, TheReflexCornersOfACoarseBorderThatAResultCutsAcrossAreFound) {
   }
 }
 
+// A point on a sheet is hidden from an eye behind another sheet, not by its own triangles, and
+// seen from either side of its own sheet where nothing is between (the seams of a chart seen
+// from behind).
+TEST(Projection, APointIsHiddenOnlyBehindAnotherPartOfTheSurface) {
+  Mesh sheets = test::grid(4);  // z = 0, and a copy at z = 1
+  const int n = sheets.vertexCount();
+  for (int v = 0; v < n; ++v) sheets.points.push_back(sheets.points[v] + Vec3(0, 0, 1));
+  const size_t faces = sheets.triangles.size();
+  for (size_t f = 0; f < faces; ++f) {
+    const Triangle& t = sheets.triangles[f];
+    sheets.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  }
+  const SurfaceProjection surface(sheets);
+  const Vec3 onLower(0.5, 0.5, 0), onEdge(0.25, 0, 0);  // inside, and on the border
+  EXPECT_TRUE(surface.hides(Vec3(0.5, 0.5, 5), onLower));
+  EXPECT_FALSE(surface.hides(Vec3(0.5, 0.5, -5), onLower));  // from below: its back, in view
+  EXPECT_FALSE(surface.hides(Vec3(0.25, -3, -1), onEdge));
+  EXPECT_FALSE(surface.hides(Vec3(0.5, 0.5, 0.5), onLower));  // between the sheets
+}
