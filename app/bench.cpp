@@ -274,8 +274,8 @@ std::string savedInputPath(const BenchOptions& options, const std::string& model
 
 // The CSV's folder checked, and a CSV or prepared input that would replace a model (a_30.off,
 // saving a.off at 30), a CSV onto a prepared input, or two models of one name saved onto each
-// other, refused: before any
-// model is run, so that a bad one fails in a moment, not after minutes of the others' work.
+// other, refused: before any model is run, so that a bad one fails in a moment, not after
+// minutes of the others' work.
 void checkOutputs(const BenchOptions& options, const std::vector<std::string>& models) {
   requireWritable(options.csv);
   for (const std::string& path : models)
@@ -283,16 +283,16 @@ void checkOutputs(const BenchOptions& options, const std::vector<std::string>& m
   if (options.saveInputs.empty()) return;
   makeFolder(options.saveInputs);
   for (const std::string& path : models)
-    for (int size : options.sizes)
+    for (int size : options.sizes) {
+      const std::string saved = savedInputPath(options, path, size);
+      if (sameFile(saved, options.csv)) throw Error(saved + ": --csv and --save-inputs name the same file; give them two");
       for (const std::string& other : models) {
-        const std::string saved = savedInputPath(options, path, size);
         if (sameFile(saved, other))
           throw Error(saved + ": --save-inputs would replace the input mesh " + other + "; save them elsewhere");
-        if (sameFile(saved, options.csv))
-          throw Error(saved + ": --csv and --save-inputs name the same file; give them two");
         if (other != path && name(other) == name(path))
           throw Error(path + " and " + other + ": --save-inputs would save both as " + saved + "; rename one");
       }
+    }
 }
 
 }  // namespace

@@ -75,7 +75,8 @@ bool isSpecialFile(const std::string& path) {
 }
 
 // The temporaries being written, removed if the run is interrupted (Ctrl+C, kill) before they
-// are renamed: a slot each, for the few files one batch writes.
+// are renamed: a slot each, for the few files one batch writes (a batch of n files takes 2n - 1:
+// its temporaries, and the second names kept while it commits).
 constexpr int kSlots = 4;
 char inFlight[kSlots][4096];
 volatile std::sig_atomic_t slotUsed[kSlots] = {};
@@ -271,7 +272,7 @@ void FileBatch::commit() {
       const std::string reason = std::strerror(errno);
       std::string replaced;
       for (size_t before = 0; before < i; ++before)
-        if (!kept[before]->putBack()) replaced += "; " + staged_[before]->path + " was replaced";
+        if (!kept[before]->putBack()) replaced += "; " + staged_[before]->path + " was saved all the same";
       throw Error(staged.path + ": cannot write: renaming " + staged.temporary + " onto it failed (" + reason + ")" +
                   replaced);
     }
