@@ -548,6 +548,10 @@ struct InspectCommand {
     requirePictureSize(shot.width, shot.height, shot.uiScale);  // before minutes of work
     requirePinsShownAtStage();
     requirePngPath(shot.picture.path);  // its folder too (numbered pictures go there as well)
+    // A sequence's names, as far as a run has iterations: a folder named as one was found only
+    // after the run (the window's export checks them all before its first picture).
+    for (int k = shot.picture.first; k >= 0 && k <= shot.picture.last && k - shot.picture.first < kMostIterations; ++k)
+      requireFileName(exportPath(shot.picture, k));
     refuseReplacing(shot.picture, args.input);
     RemeshResult result = openForInspection(args, *cmd, options, &input);
     renderScreenshot(args.input, options, std::move(result), shot, std::move(input));
