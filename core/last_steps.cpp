@@ -725,41 +725,56 @@ int earsAtSharpCorners(Mesh& m, const SearchableSurface& surface, std::vector<in
     }
     std::sort(corners.begin(), corners.end());
     std::optional<StaysClose> close;  // built for the first try: it searches the whole result
+    // A flip is tried on `m` itself and undone where refused: a copy of the whole mesh and its
+    // flips for each try took a 961-vertex disk stretched 10^4 times along x (a thousand sharp
+    // corners on its border) over ten minutes.
+    std::optional<EdgeFlips> flips;
+    // Whether `tried` (m itself, or a copy), its `faces` changed from `before`, keeps closer to
+    // the input and raises their smallest angle.
+    const auto better = [&](Mesh& tried, const std::vector<int>& faces, const std::vector<Triangle>& before,
+                            const std::vector<std::pair<int, int>>& oldEdges,
+                            const std::vector<std::pair<int, int>>& newEdges) {
+      std::vector<Triangle> changed;
+      for (int f : faces) changed.push_back(tried.triangles[f]);
+      const auto show = [&](bool asChanged) {
+        for (size_t i = 0; i < faces.size(); ++i) tried.triangles[faces[i]] = asChanged ? changed[i] : before[i];
+      };
+      const double smallestAfter = smallestAnglesOf(tried, faces).smallest;
+      show(false);
+      const double smallestBefore = smallestAnglesOf(tried, faces).smallest;
+      if (smallestAfter > smallestBefore + 1e-6 && !close) close.emplace(tried, surface);  // shown as m was
+      show(true);
+      return smallestAfter > smallestBefore + 1e-6 && close->allows(tried, faces, newEdges, oldEdges, show);
+    };
     for (const auto& [smallest, v] : corners) {
       for (int k = rings.offset[v]; k < rings.offset[v + 1] && !again; ++k)
         for (int u : m.triangles[rings.faces[k]]) {
           if (border[u] || !refused.insert({v, u}).second) continue;
-          Mesh tried = m;
-          std::vector<int> faces;  // the triangles that change, by index in both meshes
-          std::vector<std::pair<int, int>> oldEdges, newEdges;
-          const bool removes = rings.offset[u + 1] - rings.offset[u] == 3;
-          if (removes) {  // u goes into v: its three triangles become one, v's only one
+          if (rings.offset[u + 1] - rings.offset[u] == 3) {  // u goes into v: its three triangles become one, v's only one
+            Mesh tried = m;
             if (fixed[u] || !mergeVertex(tried, u, v)) continue;
-            faces.assign(rings.faces.begin() + rings.offset[u], rings.faces.begin() + rings.offset[u + 1]);
-            for (int f : faces)
+            const std::vector<int> faces(rings.faces.begin() + rings.offset[u], rings.faces.begin() + rings.offset[u + 1]);
+            std::vector<Triangle> before;
+            std::vector<std::pair<int, int>> oldEdges;
+            for (int f : faces) {
+              before.push_back(m.triangles[f]);
               for (int w : m.triangles[f])
                 if (w != u) oldEdges.emplace_back(u, w);
+            }
+            if (!better(tried, faces, before, oldEdges, {})) continue;
+            eraseMergedTriangles(tried);
+            m = std::move(tried);
+            dropUnusedVertices(m, pinned);
           } else {  // v's edge to u flipped: v has one triangle fewer
-            EdgeFlips flips(tried, nullptr);
-            const std::optional<EdgeFlips::Candidate> flip = flips.candidate(v, u);
-            if (!flip || flips.folds(*flip)) continue;
-            flips.flip(*flip);
-            faces = {flip->f1, flip->f2};
-            oldEdges = {{v, u}};
-            newEdges = {{flip->c, flip->d}};
+            if (!flips) flips.emplace(m, nullptr);
+            const std::optional<EdgeFlips::Candidate> flip = flips->candidate(v, u);
+            if (!flip || flips->folds(*flip)) continue;
+            flips->flip(*flip);
+            if (!better(m, {flip->f1, flip->f2}, {flip->before1, flip->before2}, {{v, u}}, {{flip->c, flip->d}})) {
+              flips->undo(*flip);
+              continue;
+            }
           }
-          if (smallestAnglesOf(tried, faces).smallest <= smallestAnglesOf(m, faces).smallest + 1e-6) continue;
-          if (!close) close.emplace(m, surface);
-          std::vector<Triangle> changed;
-          for (int f : faces) changed.push_back(tried.triangles[f]);
-          const auto show = [&](bool asChanged) {
-            for (size_t i = 0; i < faces.size(); ++i)
-              tried.triangles[faces[i]] = asChanged ? changed[i] : m.triangles[faces[i]];
-          };
-          if (!close->allows(tried, faces, newEdges, oldEdges, show)) continue;
-          eraseMergedTriangles(tried);
-          m = std::move(tried);
-          if (removes) dropUnusedVertices(m, pinned);
           refused.clear();
           ++made;
           again = true;
