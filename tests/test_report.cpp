@@ -735,7 +735,13 @@ TEST(Report, AVertexCountOtherThanAskedIsSaid) {
   options.sites.count = 300;
   const std::string strip = vertexCountText(r, options);
   EXPECT_EQ(strip.rfind("1002 vertices for the 300 asked: its border alone takes 1002 at their spacing", 0), 0u) << strip;
-  r.after.boundaryVertices = 200;  // the clean-up's, again
+  // A border taking over half of them, sampled with the inside at a spacing kept under twice the
+  // surface's width: not the clean-up either (a square with 160 teeth on its border, 3000 asked: 4364).
+  r.after.boundaryVertices = 200;
+  const std::string jagged = vertexCountText(r, options);
+  EXPECT_EQ(jagged.rfind("1002 vertices for the 300 asked: its border takes 200 of them, sampled with the inside", 0), 0u)
+      << jagged;
+  r.after.boundaryVertices = 100;  // the clean-up's, again
   EXPECT_NE(vertexCountText(r, options).find("the clean-up adds or removes"), std::string::npos);
   options.sites.count = 500;
   r.after.vertices = 497;
