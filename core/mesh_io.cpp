@@ -1365,12 +1365,14 @@ std::string extensionByContent(std::string_view text) {
   return off ? ".off" : "";
 }
 
+bool isMeshExtension(const std::string& ext) { return ext == ".off" || ext == ".obj" || ext == ".ply"; }
+
 ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   requireFileThere(path);
   const std::string ext = lowercaseExtension(path);
   // A recording given where a mesh goes: `remesh run.lsrec` is a natural first try.
   if (ext == ".lsrec") fail(path, "a recording, not a mesh (.off, .obj or .ply): lloydscope inspect or info opens it");
-  if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, unknownExtension(path));
+  if (!isMeshExtension(ext)) fail(path, unknownExtension(path));
   const std::string text = loadFile(path);
   // An OFF named .obj was refused as "the mesh has no faces", which named nothing wrong.
   if (const std::string says = extensionByContent(text); !says.empty() && says != ext)
@@ -1429,7 +1431,7 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
 
 namespace {
 void requireWritableExtension(const std::string& ext, const std::string& path) {
-  if (ext != ".off" && ext != ".obj" && ext != ".ply") fail(path, "cannot write: " + unknownExtension(path));
+  if (!isMeshExtension(ext)) fail(path, "cannot write: " + unknownExtension(path));
 }
 }  // namespace
 

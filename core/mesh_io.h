@@ -28,6 +28,10 @@ struct ReadOptions {
 // The largest mesh file read: about 40 million triangles as binary PLY, 20 million as OFF.
 constexpr std::uint64_t kLargestMeshFile = 2'000'000'000;
 
+// Whether `ext` (lowercaseExtension's: ".off") is one meshes are read and written by: .off, .obj
+// or .ply. (A recording is never saved under one: it would replace a mesh.)
+bool isMeshExtension(const std::string& ext);
+
 // Reads by extension (.off, .obj, .ply; case-insensitive) and validates with validateMesh().
 // A problem that the repair would fix says so ("... (--repair fixes this)"). A file larger than
 // kLargestMeshFile is refused.

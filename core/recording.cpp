@@ -1,6 +1,7 @@
 #include "recording.h"
 
 #include "files.h"
+#include "mesh_io.h"
 #include "pipeline.h"
 
 #include <algorithm>
@@ -352,7 +353,7 @@ void requireRecordingName(const std::string& path) {
   // The name, and where it leads: run.lsrec, a link to mine.off, replaced the mesh.
   for (const std::string& name : {path, targetOf(path).string()}) {
     const std::string ext = lowercaseExtension(name);
-    if (ext == ".off" || ext == ".obj" || ext == ".ply")
+    if (isMeshExtension(ext))
       throw Error(path + ": a recording is not saved under a mesh's extension (" + ext + (name == path ? "" : ", through a link") +
                   "): it would replace a mesh with what no mesh reader reads; name it .lsrec");
   }
