@@ -54,6 +54,11 @@ int tealPixels(const Picture& picture) {
   });
 }
 
+// A seam's purple (kSeamColor in app/inspector.cpp: 150, 40, 190), give or take.
+bool isSeamPurple(const unsigned char* c) {
+  return std::abs(c[0] - 150) < 30 && std::abs(c[1] - 40) < 30 && std::abs(c[2] - 190) < 30;
+}
+
 // Pixels of a pinned cell's magenta (Selection::cellColor: 217, 13, 179).
 int magentaPixels(const Picture& picture) {
   return pixelsWhere(picture, [](const unsigned char* c) { return c[0] > 170 && c[1] < 60 && c[2] > 130; });
@@ -796,11 +801,8 @@ TEST(Inspector, DrawsTheSeamsOfACutSurface) {
   ASSERT_EQ(p.width, 960);
   int purple3D = 0, purple2D = 0;  // the 3D pane is left of x = 620, the 2D pane right of it
   for (int y = 0; y < 370; ++y)
-    for (int x = 290; x < p.width; ++x) {
-      const unsigned char* c = p.at(x, y);
-      if (std::abs(c[0] - 150) < 30 && std::abs(c[1] - 40) < 30 && std::abs(c[2] - 190) < 30)
-        ++(x < 620 ? purple3D : purple2D);
-    }
+    for (int x = 290; x < p.width; ++x)
+      if (isSeamPurple(p.at(x, y))) ++(x < 620 ? purple3D : purple2D);
   EXPECT_GT(purple3D, 100);
   EXPECT_GT(purple2D, 100);
 }
@@ -813,9 +815,7 @@ TEST(Inspector, DrawsAChartsSeamsSeenFromBehind) {
   SKIP_UNLESS_EXTRACTED(mesh);
   const std::string png = test::tempPath("elephant_chart.png");
   ASSERT_EQ(run("inspect " + mesh + " --simplify 1000 --stage parameterize --pane 3d --no-timings --size 960x600 --screenshot " + png), 0);
-  const int purple = pixelsWhere(readPng(png), [](const unsigned char* c) {
-    return std::abs(c[0] - 150) < 30 && std::abs(c[1] - 40) < 30 && std::abs(c[2] - 190) < 30;
-  });
+  const int purple = pixelsWhere(readPng(png), isSeamPurple);
   EXPECT_GT(purple, 1000) << purple;
 }
 
