@@ -285,6 +285,7 @@ void Inspector::noteTheResult() {
   noteFirst(farFromTheInputText(result_.fidelity));
   noteFirst(foldsText(result_.before, result_.after));
   noteFirst(sharpCornerText(result_.before, result_.after));
+  noteFirst(pinholeText(result_.after));
   noteFirst(curvatureText(result_.after));
 }
 

@@ -724,6 +724,16 @@ std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& 
          "there; " + elsewhere;
 }
 
+std::string pinholeText(const QualityMetrics& after) {
+  if (after.minAngle >= kLeastMinAngle || after.minAngleHoleEdges == 0) return "";
+  return "The smallest angle, " + format("%.1f", after.minAngle) + " degrees, at " + pointText(after.minAngleAt) +
+         ", is beside a hole of " + std::to_string(after.minAngleHoleEdges) + " border edges, " +
+         format("%.3g", after.minAngleHoleLength) + " long in all, far shorter than the mean edge (" +
+         format("%.3g", after.meanEdge) +
+         "): the border is kept as it is, so the triangles around the hole are needles (a pinhole in a scan; "
+         "close it to remesh it away)";
+}
+
 std::string curvatureText(const QualityMetrics& after) {
   // CGAL's armadillo halved along y at 500 vertices: 19% irregular, its curvature 24 units
   // per 100 vertices; at 1000, 11% and 16 units.
@@ -803,6 +813,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   }
   if (const std::string folds = foldsText(r.before, r.after); !folds.empty()) out << folds << "\n";
   if (const std::string corner = sharpCornerText(r.before, r.after); !corner.empty()) out << corner << "\n";
+  if (const std::string pinhole = pinholeText(r.after); !pinhole.empty()) out << pinhole << "\n";
   if (const std::string curved = curvatureText(r.after); !curved.empty()) out << curved << "\n";
   if (const std::string count = vertexCountText(r, o); !count.empty()) out << count << "\n";
   if (r.components > 1)

@@ -215,6 +215,9 @@ std::string foldsText(const QualityMetrics& before, const QualityMetrics& after)
 // input has too: that the bar is out of reach there, where, and the smallest angle elsewhere;
 // else "".
 std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& after);
+// Where the result's smallest angle is under 30 degrees beside a hole shorter than its mean
+// edge (QualityMetrics::minAngleHoleEdges): that the hole, kept, leaves needles; else "".
+std::string pinholeText(const QualityMetrics& after);
 // Where the result is over kMostIrregularPercent irregular and the surface curves for its
 // vertices by as much (QualityMetrics::curvatureDefects): that equilateral triangles would be
 // as irregular there, and what may help; else "".

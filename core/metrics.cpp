@@ -122,6 +122,32 @@ std::vector<VertexValence> vertexValences(const Mesh& mesh) {
   return valences;
 }
 
+namespace {
+
+// Sets m's minAngleHole... where `worst` touches a border loop shorter than the mean edge.
+void findPinholeAt(const Mesh& mesh, const Triangle& worst, const std::vector<bool>& boundary, QualityMetrics& m) {
+  if (std::none_of(worst.begin(), worst.end(), [&](int v) { return boundary[v]; })) return;
+  const auto length = [&](const std::vector<int>& loop) {
+    double sum = 0;
+    for (size_t i = 0; i < loop.size(); ++i) sum += (mesh.points[loop[(i + 1) % loop.size()]] - mesh.points[loop[i]]).norm();
+    return sum;
+  };
+  const std::vector<MeshEdge> edges = uniqueEdges(mesh);
+  double sum = 0;
+  for (const MeshEdge& e : edges) sum += (mesh.points[e.to] - mesh.points[e.from]).norm();
+  m.meanEdge = sum / edges.size();
+  for (const std::vector<int>& loop : analyzeTopology(mesh).boundaryLoops) {
+    const bool touched = std::any_of(worst.begin(), worst.end(), [&](int v) { return std::count(loop.begin(), loop.end(), v) > 0; });
+    if (touched && length(loop) < m.meanEdge) {
+      m.minAngleHoleEdges = static_cast<int>(loop.size());
+      m.minAngleHoleLength = length(loop);
+      return;
+    }
+  }
+}
+
+}  // namespace
+
 QualityMetrics measureQuality(const Mesh& mesh) {
   QualityMetrics m;
   m.vertices = mesh.vertexCount();
@@ -148,11 +174,13 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   std::vector<double> angleSum(mesh.points.size(), 0.0);
   std::vector<std::array<double, 3>> cornerAngles;
   cornerAngles.reserve(mesh.triangles.size());
+  int worst = 0;
   for (const Triangle& t : mesh.triangles) {
     const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
     cornerAngles.push_back(angles);
     for (int k = 0; k < 3; ++k) angleSum[t[k]] += angles[k];
     const double lo = *std::min_element(angles.begin(), angles.end());
+    if (lo < m.minAngle) worst = static_cast<int>(cornerAngles.size()) - 1;
     m.minAngle = std::min(m.minAngle, lo);
     m.maxAngle = std::max(m.maxAngle, *std::max_element(angles.begin(), angles.end()));
     sumMin += lo;
@@ -184,6 +212,9 @@ QualityMetrics measureQuality(const Mesh& mesh) {
       if (!filledCorner[mesh.triangles[f][k]])
         m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, cornerAngles[f][k]);
   m.foldedEdges = countFoldedEdges(mesh, rings);
+  const auto& angles = cornerAngles[worst];
+  m.minAngleAt = mesh.points[mesh.triangles[worst][std::min_element(angles.begin(), angles.end()) - angles.begin()]];
+  if (m.minAngle < kLeastMinAngle) findPinholeAt(mesh, mesh.triangles[worst], boundary, m);
   return m;
 }
 

@@ -63,6 +63,13 @@ struct QualityMetrics {
   // The smallest angle but those at a sharp corner that one triangle fills: the angles a
   // remesher has a say in.
   double minAngleOffSharpCorners = 180;
+  // Where the smallest angle is (its corner's vertex); and where its triangle touches a border
+  // loop shorter than the mesh's mean edge, that loop's edges and length: a pinhole the border
+  // keeps, ringed by needles no remeshing widens (a sphere with a hole 10^-6 across: 0.0001
+  // degrees, said nowhere). No edges where it touches none.
+  Vec3 minAngleAt = Vec3::Zero();
+  int minAngleHoleEdges = 0;
+  double minAngleHoleLength = 0, meanEdge = 0;
 };
 constexpr double kFoldDegrees = 150.0;
 // Border corners kept in QualityMetrics::sharpCorners: those under 30 degrees, and those a

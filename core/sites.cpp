@@ -437,7 +437,7 @@ InitialSites initialSites(const Mesh& mesh, const Parameterization& param, const
                 " (3 at least), far too short for the surface inside it (a small hole, a spike, a fold); " +
                 (enough <= kMostRemeshedVertices
                      ? "about " + std::to_string(static_cast<long long>(enough)) + " vertices would take 3"
-                     : "it would take more vertices than a run is asked for (" + std::to_string(kMostRemeshedVertices) + ")"));
+                     : "it would take more than the " + std::to_string(kMostRemeshedVertices) + " vertices a run may be asked for"));
   }
   const long long most = static_cast<long long>(kMostBorderPerVertex) * std::max(count, kSmallestRemeshedShare);
   if (static_cast<long long>(sites.fixed.size()) > most)

@@ -400,6 +400,39 @@ TEST(Quality, MeasuresTheSharpCornersOfTheBorder) {
   EXPECT_NEAR(q.sharpCorners[0].shorterEdge, 1.0, 1e-12);
 }
 
+// A flat ring of 12 outer points around a hole of 3, of radius `hole`: each inner point fans to
+// four outer ones, and three triangles join the inner points across the hole's sides.
+Mesh ringAroundAHole(double hole) {
+  Mesh ring;
+  for (int k = 0; k < 3; ++k) {
+    const double a = (45 + 120 * k) * M_PI / 180;
+    ring.points.emplace_back(hole * std::cos(a), hole * std::sin(a), 0);
+  }
+  for (int i = 0; i < 12; ++i) ring.points.emplace_back(std::cos(i * M_PI / 6), std::sin(i * M_PI / 6), 0);
+  for (int i = 0; i < 12; ++i) {
+    const int k = i / 4, next = (i + 1) % 12;
+    ring.triangles.push_back({k, 3 + i, 3 + next});
+    if (next / 4 != k) ring.triangles.push_back({k, 3 + next, next / 4});
+  }
+  return ring;
+}
+
+// A sphere with a pinhole 10^-6 across was remeshed with needles of 0.0001 degrees around the
+// hole, which the border keeps, and nothing said why: the metrics find the hole beside the
+// smallest angle.
+TEST(Quality, FindsAPinholeBesideTheSmallestAngle) {
+  const QualityMetrics pinhole = measureQuality(ringAroundAHole(1e-6));
+  EXPECT_LT(pinhole.minAngle, 1e-3);
+  EXPECT_EQ(pinhole.minAngleHoleEdges, 3);
+  EXPECT_NEAR(pinhole.minAngleHoleLength, 3 * std::sqrt(3.0) * 1e-6, 1e-12);
+  EXPECT_GT(pinhole.meanEdge, 0.5);
+  EXPECT_LT(pinhole.minAngleAt.norm(), 1.0 + 1e-12);
+  EXPECT_GT(pinhole.minAngleAt.norm(), 1.0 - 1e-12);  // the needles' tips are on the outer ring
+  const QualityMetrics wide = measureQuality(ringAroundAHole(0.5));  // a hole longer than the edges
+  EXPECT_EQ(wide.minAngleHoleEdges, 0);
+  EXPECT_EQ(measureQuality(test::sector(20)).minAngleHoleEdges, 0);  // a sharp corner, no hole
+}
+
 // Each corner's own shorter border edge, read from its own triangles: a strip
 // with three teeth on top, of widths 1, 2 and 0.5 and height 4 (tips of 14.3, 28.1 and 7.2
 // degrees); each tooth's shorter border edge is its side, sqrt(4^2 + (w/2)^2).

@@ -692,6 +692,29 @@ TEST(Report, ASmallestAngleAtTheInputsSharpBorderCornerIsExplained) {
   EXPECT_EQ(sharpCornerText(before, after), "");
 }
 
+// A sphere with a pinhole 10^-6 across: needles of 0.0001 degrees around the hole, which the
+// border keeps, and nothing said why.
+TEST(Report, ASmallestAngleBesideAPinholeIsExplained) {
+  QualityMetrics after;
+  after.minAngle = 0.0001;
+  EXPECT_EQ(pinholeText(after), "");  // no hole found there
+  after.minAngleAt = Vec3(0.5, 0.25, 1);
+  after.minAngleHoleEdges = 3;
+  after.minAngleHoleLength = 5.2e-6;
+  after.meanEdge = 0.091;
+  const std::string text = pinholeText(after);
+  EXPECT_EQ(text.rfind("The smallest angle, 0.0 degrees, at (0.5, 0.25, 1), is beside a hole of 3 border edges, "
+                       "5.2e-06 long in all, far shorter than the mean edge (0.091)",
+                       0),
+            0u)
+      << text;
+  RemeshResult r;
+  r.after = after;
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("the triangles around the hole are needles"), std::string::npos);
+  after.minAngle = 31;  // the bar met: nothing to explain
+  EXPECT_EQ(pinholeText(after), "");
+}
+
 // The controls pane counts iterations with the timeline's numbers ("Stopped at 4 iterations"
 // beside "iteration 3 (0-3)" read as one too many).
 TEST(Report, IterationsAreCountedWithTheirNumbers) {
