@@ -772,11 +772,17 @@ std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options)
     return {};
   // A border far longer than the surface is wide (a strip, a ribbon) takes more samples at their
   // spacing than were asked: the clean-up was blamed for a strip's 1002 of 300.
+  // A strip 10^4 long and 1 wide at 500: 4040, its triangles 5 times as long as the strip is wide,
+  // and the note said fewer vertices would have made them so.
   if (got > asked && r.after.boundaryVertices > asked)
     return std::to_string(got) + " vertices for the " + std::to_string(asked) + " asked: its border alone takes " +
            std::to_string(r.after.boundaryVertices) +
            " at their spacing (a border far longer than the surface is wide: a strip, a ribbon, a star of "
-           "thin spikes); fewer would leave triangles longer than the surface is wide";
+           "thin spikes); fewer would leave its triangles longer and thinner still" +
+           (r.after.avgMinAngle < kLeastAvgMinAngle
+                ? "; they are thin even so (average smallest angle " + format("%.1f", r.after.avgMinAngle) +
+                      " degrees): more vertices asked (--sites) round them"
+                : "");
   // A border that takes over half of them is sampled with the inside at one spacing, kept under
   // twice the surface's mean width (core/sites): a square with 160 teeth on its border, 3000
   // asked, got 4364, and the clean-up was blamed for "a few".
@@ -784,8 +790,8 @@ std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options)
     return std::to_string(got) + " vertices for the " + std::to_string(asked) + " asked: its border takes " +
            std::to_string(r.after.boundaryVertices) +
            " of them, sampled with the inside at a spacing kept under twice the surface's mean width (a border long "
-           "for the surface inside it: a strip, a ribbon, a jagged outline); wider, triangles would be longer than "
-           "the surface is wide";
+           "for the surface inside it: a strip, a ribbon, a jagged outline); farther apart, its triangles would be "
+           "longer and thinner";
   return std::to_string(got) + " vertices for the " + std::to_string(asked) +
          " asked: the clean-up adds or removes a few (seams stitched, short border edges merged, "
          "flat triangles removed)" +

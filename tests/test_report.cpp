@@ -758,6 +758,12 @@ TEST(Report, AVertexCountOtherThanAskedIsSaid) {
   options.sites.count = 300;
   const std::string strip = vertexCountText(r, options);
   EXPECT_EQ(strip.rfind("1002 vertices for the 300 asked: its border alone takes 1002 at their spacing", 0), 0u) << strip;
+  EXPECT_NE(strip.find("fewer would leave its triangles longer and thinner still; they are thin even so (average "
+                       "smallest angle 0.0 degrees): more vertices asked (--sites) round them"),
+            std::string::npos)
+      << strip;
+  r.after.avgMinAngle = 55;  // round enough: only that fewer would not be
+  EXPECT_EQ(vertexCountText(r, options).find("thin even so"), std::string::npos) << vertexCountText(r, options);
   // A border taking over half of them, sampled with the inside at a spacing kept under twice the
   // surface's width: not the clean-up either (a square with 160 teeth on its border, 3000 asked: 4364).
   r.after.boundaryVertices = 200;
