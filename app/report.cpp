@@ -696,11 +696,12 @@ std::string farFromTheInputText(const Fidelity& f) {
 }
 
 std::string foldsText(const QualityMetrics& before, const QualityMetrics& after) {
-  if (!foldsAnew(after, before)) return "";
+  const int anew = foldsAnew(after, before);
+  if (anew == 0) return "";
   // The lion head's ear at 1000 vertices: two triangles bridging the ear's rim, folded 179
   // degrees onto each other, seen by no angle (an independent check found them).
-  return "Warning: the result folds back on itself at " + std::to_string(after.foldedEdges) + " edge" +
-         (after.foldedEdges > 1 ? "s" : "") + " (its triangles turn more than " + format("%.0f", kFoldDegrees) +
+  return "Warning: the result folds back on itself at " + std::to_string(anew) + " edge" +
+         (anew > 1 ? "s" : "") + " (its triangles turn more than " + format("%.0f", kFoldDegrees) +
          " degrees there), where the input folds nowhere that much: a part thinner than its triangles "
          "(an ear, a fin); more vertices asked may follow it";
 }

@@ -208,8 +208,8 @@ std::string pinsLeftOutByStage(const std::string& stage, bool cellsOut, bool tri
 // (the results here are 0.1-3%): a warning that says so, and what may help; else empty.
 constexpr double kFarFromTheInputPercent = 10;
 std::string farFromTheInputText(const Fidelity& f);
-// A warning where the result folds back on itself (QualityMetrics::foldedEdges) and the input
-// does not, else "".
+// A warning where the result folds back on itself (QualityMetrics::folds) where the input does
+// not (foldsAnew), else "".
 std::string foldsText(const QualityMetrics& before, const QualityMetrics& after);
 // Where the result's smallest angle is under 30 degrees at a sharp corner of the border that the
 // input has too: that the bar is out of reach there, where, and the smallest angle elsewhere;

@@ -64,8 +64,14 @@ bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input)
   return any;
 }
 
-bool foldsAnew(const QualityMetrics& result, const QualityMetrics& input) {
-  return result.foldedEdges > 0 && input.foldedEdges == 0;
+int foldsAnew(const QualityMetrics& result, const QualityMetrics& input) {
+  const auto inputsOwn = [&](const QualityMetrics::Fold& fold) {
+    return std::any_of(input.folds.begin(), input.folds.end(), [&](const QualityMetrics::Fold& other) {
+      return (fold.at - other.at).norm() <= 2 * std::max(fold.length, other.length);
+    });
+  };
+  return static_cast<int>(std::count_if(result.folds.begin(), result.folds.end(),
+                                        [&](const QualityMetrics::Fold& fold) { return !inputsOwn(fold); }));
 }
 
 int barsMet(const QualityMetrics& result, const QualityMetrics& input) {
@@ -78,14 +84,14 @@ namespace {
 // Each inside edge once, from the triangle where it runs from its smaller end to its larger
 // (the other runs it back), its other triangle found among its smaller end's: no sort of all
 // the edges, as measureQuality runs for every iteration the inspector shows.
-int countFoldedEdges(const Mesh& mesh, const Rings& rings) {
+std::vector<QualityMetrics::Fold> foldedEdges(const Mesh& mesh, const Rings& rings) {
   std::vector<Vec3> normal(mesh.triangles.size(), Vec3::Zero());
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Vec3 n = faceNormal(mesh, mesh.triangles[f]);
     if (n.norm() > 0) normal[f] = n.normalized();
   }
   const double cosFold = std::cos(kFoldDegrees * M_PI / 180.0);
-  int folded = 0;
+  std::vector<QualityMetrics::Fold> folded;
   for (int f = 0; f < mesh.faceCount(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
@@ -93,7 +99,8 @@ int countFoldedEdges(const Mesh& mesh, const Rings& rings) {
       for (int i = rings.offset[a]; i < rings.offset[a + 1]; ++i) {
         const Triangle& g = mesh.triangles[rings.faces[i]];
         if (rings.faces[i] != f && std::find(g.begin(), g.end(), b) != g.end()) {
-          if (normal[f].dot(normal[rings.faces[i]]) < cosFold) ++folded;
+          if (normal[f].dot(normal[rings.faces[i]]) < cosFold)
+            folded.push_back({0.5 * (mesh.points[a] + mesh.points[b]), (mesh.points[b] - mesh.points[a]).norm()});
           break;
         }
       }
@@ -211,7 +218,8 @@ QualityMetrics measureQuality(const Mesh& mesh) {
     for (int k = 0; k < 3; ++k)
       if (!filledCorner[mesh.triangles[f][k]])
         m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, cornerAngles[f][k]);
-  m.foldedEdges = countFoldedEdges(mesh, rings);
+  m.folds = foldedEdges(mesh, rings);
+  m.foldedEdges = static_cast<int>(m.folds.size());
   const auto& angles = cornerAngles[worst];
   m.minAngleAt = mesh.points[mesh.triangles[worst][std::min_element(angles.begin(), angles.end()) - angles.begin()]];
   if (m.minAngle < kLeastMinAngle) findPinholeAt(mesh, mesh.triangles[worst], boundary, m);

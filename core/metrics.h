@@ -54,6 +54,13 @@ struct QualityMetrics {
   // back on itself there (a fin, or a result's triangles bridging the two sides of a thin flap:
   // no angle shows it).
   int foldedEdges = 0;
+  // Where they are: each one's midpoint and length (folds of the result the input has there
+  // too are its own, not the remeshing's).
+  struct Fold {
+    Vec3 at = Vec3::Zero();
+    double length = 0;
+  };
+  std::vector<Fold> folds;
   // The smallest sum of the angles at a border vertex, degrees (360 with no border).
   double sharpestBorderCorner = 360;
   // The border's corners sharper than kSharpCornerDegrees, by sharpness: a remesher that keeps
@@ -98,9 +105,10 @@ inline bool filledByOneTriangle(const BorderCorner& c) { return c.triangles == 1
 const BorderCorner* inputCornerKept(const QualityMetrics& input, const BorderCorner& corner);
 // How many of the three a result of `input` meets.
 int barsMet(const QualityMetrics& result, const QualityMetrics& input);
-// Whether a result folds back on itself (foldedEdges) and `input` nowhere that much (the counts
-// are compared, not the places).
-bool foldsAnew(const QualityMetrics& result, const QualityMetrics& input);
+// The result's folded edges (QualityMetrics::folds) where `input` folds nowhere that much: none
+// of its own within twice the longer edge's length. (The counts were compared: one fold of the
+// dino's anywhere hid the result's 30 at its legs and neck.)
+int foldsAnew(const QualityMetrics& result, const QualityMetrics& input);
 
 struct Fidelity {
   // Two-sided distances between the surfaces, in % of the reference's bounding-box diagonal.

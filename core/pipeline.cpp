@@ -604,8 +604,8 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
     trial.chartsAvgMinAngle = charted.after.avgMinAngle;
     trial.oneCutBars = barsMet(kept.after, kept.before);
     trial.chartsBars = barsMet(charted.after, charted.before);
-    trial.oneCutFolds = foldsAnew(kept.after, kept.before);
-    trial.chartsFold = foldsAnew(charted.after, charted.before);
+    trial.oneCutFolds = foldsAnew(kept.after, kept.before) > 0;
+    trial.chartsFold = foldsAnew(charted.after, charted.before) > 0;
     if (trial.distancesDecide()) {
       measureFidelityOf(kept, prepared);
       measureFidelityOf(charted, prepared);

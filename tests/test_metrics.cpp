@@ -354,6 +354,26 @@ TEST(Quality, CountsTheEdgesWhereTheSurfaceFoldsBackOnItself) {
   EXPECT_EQ(measureQuality(hinge(120)).foldedEdges, 0);
   EXPECT_EQ(measureQuality(hinge(170)).foldedEdges, 1);
   EXPECT_EQ(measureQuality(test::grid(4)).foldedEdges, 0);
+  const QualityMetrics folded = measureQuality(hinge(170));
+  ASSERT_EQ(folded.folds.size(), 1u);
+  EXPECT_TRUE(folded.folds[0].at.isApprox(Vec3(0.5, 0, 0)));  // the hinge's midpoint
+  EXPECT_DOUBLE_EQ(folded.folds[0].length, 1.0);
+}
+
+// A result's folds are the remeshing's where the input folds nowhere near them: CGAL's dino at
+// 500 folded at 30 edges of its legs and neck, with no warning, because the input folds once,
+// elsewhere.
+TEST(Quality, FoldsAnewAreThoseAwayFromTheInputsOwn) {
+  QualityMetrics input, result;
+  result.folds = {{Vec3(0, 0, 0), 0.1}, {Vec3(5, 0, 0), 0.1}, {Vec3(5.1, 0, 0), 0.1}};
+  EXPECT_EQ(foldsAnew(result, input), 3);
+  input.folds = {{Vec3(0.15, 0, 0), 0.01}};  // within twice the result's edge of the first
+  EXPECT_EQ(foldsAnew(result, input), 2);
+  input.folds.push_back({Vec3(5, 1, 0), 0.01});  // farther from the others than that
+  EXPECT_EQ(foldsAnew(result, input), 2);
+  input.folds.push_back({Vec3(5.05, 0.19, 0), 0.01});
+  EXPECT_EQ(foldsAnew(result, input), 0);
+  EXPECT_EQ(foldsAnew(QualityMetrics(), input), 0);
 }
 
 TEST(Quality, TheBarsAreMetAtTheirEdges) {

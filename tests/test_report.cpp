@@ -649,13 +649,17 @@ TEST(Report, AResultFarFromTheInputIsWarnedOf) {
 TEST(Report, AResultThatFoldsWhereTheInputDoesNotIsWarnedOf) {
   QualityMetrics before, after;
   EXPECT_EQ(foldsText(before, after), "");
+  for (int i = 0; i < 6; ++i) after.folds.push_back({Vec3(i, 0, 0), 0.1});
   after.foldedEdges = 6;
   EXPECT_EQ(foldsText(before, after).rfind("Warning: the result folds back on itself at 6 edges", 0), 0u)
       << foldsText(before, after);
   RemeshResult r;
   r.after = after;
   EXPECT_NE(remeshReport(r, RemeshOptions{}).find("folds back on itself at 6 edges"), std::string::npos);
-  before.foldedEdges = 4;  // the camel head's fins: the input folds so too
+  before.folds = {{Vec3(0, 0.05, 0), 0.01}};  // the input folds at one of them (CGAL's dino at 500: once, elsewhere)
+  EXPECT_EQ(foldsText(before, after).rfind("Warning: the result folds back on itself at 5 edges", 0), 0u)
+      << foldsText(before, after);
+  for (int i = 1; i < 6; ++i) before.folds.push_back({Vec3(i, 0.1, 0), 0.01});  // at all of them: its own
   EXPECT_EQ(foldsText(before, after), "");
 }
 
