@@ -1950,7 +1950,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (ImGui::Button("<")) setIteration(iteration_ - 1);
   ImGui::SameLine();
   const bool moving = lesson_.playing() ? !lesson_.paused() : playing_;
-  if (ImGui::Button(moving ? "Pause" : "Play ")) togglePlay();
+  if (steadyButton(moving ? "Pause" : "Play", {"Pause", "Play"})) togglePlay();
   ImGui::SameLine();
   if (ImGui::Button(">")) setIteration(iteration_ + 1);
   ImGui::SameLine();
@@ -1990,12 +1990,12 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   ImGui::SameLine();
   const bool lessonWaits = running && !lesson_.playing();
   if (lessonWaits) ImGui::BeginDisabled();
-  if (ImGui::Button(lesson_.playing() || stage_ ? "End lesson" : "Lesson")) toggleLesson();
+  if (steadyButton(lesson_.playing() || stage_ ? "End lesson" : "Lesson", {"End lesson", "Lesson"})) toggleLesson();
   if (lessonWaits) ImGui::EndDisabled();
   if (lessonWaits && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("After the run: Stop it, or let it finish");
   ImGui::SameLine();
-  if (ImGui::Button(presentation_ ? "Controls" : "Present")) presentation_ = !presentation_;
+  if (steadyButton(presentation_ ? "Controls" : "Present", {"Controls", "Present"})) presentation_ = !presentation_;
   ImGui::SameLine();
   // The speed slider and its label keep their room, in the font's units (a fixed 180 px cut
   // "it/s" off in presentation mode's large font). Where the buttons leave the iteration slider

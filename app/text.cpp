@@ -44,6 +44,12 @@ float numberColumnWidth(const std::string& header, const std::vector<std::string
   return width;
 }
 
+bool steadyButton(const char* label, const std::vector<const char*>& labels) {
+  float widest = 0;
+  for (const char* each : labels) widest = std::max(widest, ImGui::CalcTextSize(each).x);
+  return ImGui::Button(label, ImVec2(widest + 2 * ImGui::GetStyle().FramePadding.x, 0));
+}
+
 std::string wrappedLines(const std::string& text, float width, const std::string& gap) {
   const auto measure = [](const std::string& line) { return ImGui::CalcTextSize(line.c_str()).x; };
   std::string lines;

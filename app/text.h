@@ -30,6 +30,12 @@ std::string wrappedLines(const std::string& text, float width, const std::string
 // short at 100,000 sites.
 float numberColumnWidth(const std::string& header, const std::vector<std::string>& values);
 
+// A button showing `label`, as wide as the widest of `labels` (the labels it changes between):
+// the controls after it stay where they are when its label changes. ("Play " padded to Pause's
+// width in ImGui's fixed-width font; in presentation mode's proportional font the buttons after
+// it moved 10 px at each press.) True when pressed.
+bool steadyButton(const char* label, const std::vector<const char*>& labels);
+
 // `text` with its subscripts written inline for ImGui's small font, which draws them as smudges a
 // few pixels high: "sᵢ" as "s_i", "yⱼ₊₁" as "y_(j+1)". Other characters stay as they are.
 std::string inlineIndices(const std::string& text);

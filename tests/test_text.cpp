@@ -174,6 +174,26 @@ TEST(Text, ANumberColumnFitsItsWidestNumber) {
   ImGui::DestroyContext();
 }
 
+// In presentation mode's proportional font "Play " was narrower than "Pause": the buttons after
+// it moved at each press. The next control stands at the same place whichever label it shows.
+TEST(Text, ASteadyButtonKeepsTheNextControlInPlace) {
+  startImGui(ImVec2(800, 600));
+  const auto nextControlAt = [](const char* label) {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::Begin("timeline");
+    steadyButton(label, {"Lesson", "End lesson"});
+    ImGui::SameLine();
+    const float x = ImGui::GetCursorPosX();
+    ImGui::End();
+    ImGui::EndFrame();
+    return x;
+  };
+  EXPECT_FLOAT_EQ(nextControlAt("Lesson"), nextControlAt("End lesson"));
+  EXPECT_GT(ImGui::CalcTextSize("End lesson").x, ImGui::CalcTextSize("Lesson").x);  // plain buttons would move it
+  ImGui::DestroyContext();
+}
+
 // Presentation mode's type was 21 px whatever the window: a hundredth of a 2560x1600 picture.
 TEST(Text, PresentationTypeGrowsWithTheWindow) {
   EXPECT_FLOAT_EQ(presentationTextSize(600), 21.0f);  // never smaller
