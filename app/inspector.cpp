@@ -1070,10 +1070,7 @@ void Inspector::runSummary() {
   if (!canRelocate) ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::RadioButton("retriangulate", &method, 1)) replay_->setMethod(RemeshMethod::Retriangulate);
-  if (!canRelocate) {
-    greyedText("Relocate needs the input's vertices as sites: under Settings choose method "
-               "relocate, then Restart and Run.");
-  }
+  if (!canRelocate) greyedText(relocateNeedsText(input_.has_value()));
 
 }
 

@@ -725,6 +725,13 @@ std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& 
          "there; " + elsewhere;
 }
 
+std::string relocateNeedsText(bool canRun) {
+  return std::string("Relocate needs the input's vertices as sites: ") +
+         (canRun ? "under Settings choose method relocate, then Restart and Run."
+                 : "this recording's run placed its own. Open one recorded by remesh --method relocate "
+                   "--record <file>.");
+}
+
 std::string pinholeText(const QualityMetrics& after) {
   if (after.minAngle >= kLeastMinAngle || after.minAngleHoleEdges == 0) return "";
   return "The smallest angle, " + format("%.1f", after.minAngle) + " degrees, at " + pointText(after.minAngleAt) +

@@ -215,6 +215,10 @@ std::string foldsText(const QualityMetrics& before, const QualityMetrics& after)
 // input has too: that the bar is out of reach there, where, and the smallest angle elsewhere;
 // else "".
 std::string sharpCornerText(const QualityMetrics& before, const QualityMetrics& after);
+// Why the inspector's relocate is greyed (the run's sites are not the input's vertices), and
+// what gives a run that can: a new run where the input is open (`canRun`); a recording alone
+// has no Settings and cannot run (it was told to choose them and press Restart, both missing).
+std::string relocateNeedsText(bool canRun);
 // Where the result's smallest angle is under 30 degrees beside a hole shorter than its mean
 // edge (QualityMetrics::minAngleHoleEdges): that the hole, kept, leaves needles; else "".
 std::string pinholeText(const QualityMetrics& after);

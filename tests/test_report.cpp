@@ -696,6 +696,17 @@ TEST(Report, ASmallestAngleAtTheInputsSharpBorderCornerIsExplained) {
   EXPECT_EQ(sharpCornerText(before, after), "");
 }
 
+// A recording opened alone has no Settings and no Restart: its greyed relocate told the user to
+// use them.
+TEST(Report, RelocateSaysWhatGivesARunThatCan) {
+  EXPECT_NE(relocateNeedsText(true).find("under Settings choose method relocate, then Restart and Run"),
+            std::string::npos);
+  const std::string recording = relocateNeedsText(false);
+  EXPECT_EQ(recording.find("Settings"), std::string::npos) << recording;
+  EXPECT_EQ(recording.find("Restart"), std::string::npos) << recording;
+  EXPECT_NE(recording.find("remesh --method relocate --record"), std::string::npos) << recording;
+}
+
 // A sphere with a pinhole 10^-6 across: needles of 0.0001 degrees around the hole, which the
 // border keeps, and nothing said why.
 TEST(Report, ASmallestAngleBesideAPinholeIsExplained) {
