@@ -108,9 +108,8 @@ void boxedText(ImDrawList* dl, ImVec2 where, const char* text) {
 constexpr float kColorBarWidth = 12.0f;
 constexpr float kFillBarHeight = 90.0f;
 
-void drawColorBar(ImDrawList* dl, ImVec2 at, float height, const char* top, const char* bottom,
+void drawColorBar(ImDrawList* dl, ImVec2 at, float width, float height, const char* top, const char* bottom,
                   const std::function<ImU32(float)>& color) {
-  const float width = kColorBarWidth;
   const int steps = 24;
   for (int i = 0; i < steps; ++i) {
     const float t0 = static_cast<float>(i) / steps, t1 = static_cast<float>(i + 1) / steps;
@@ -674,7 +673,7 @@ void Inspector::drawSeams3D(ImDrawList* dl, const ScreenOf3D& screen, const Vec3
   ImVec2 a, b;
   for (const auto& [from, to] : seam3D_)
     if (!seamSurface_->hides(eye, 0.5 * (from + to)) && screen(from, a) && screen(to, b))
-      dl->AddLine(a, b, kSeamColor, presentation_ ? 4.0f : 3.0f);
+      dl->AddLine(a, b, kSeamColor, (presentation_ ? 4.0f : 3.0f) * markScale());
 }
 
 const QualityMetrics& Inspector::currentQuality() {
@@ -736,7 +735,7 @@ void Inspector::uploadMesh() {
   // result shown), the irregular vertices of the mesh shown. First: a site's square at the
   // same depth after it would cover its middle.
   auto markIrregular = [&](const Vec3& at, const VertexValence& s) {
-    if (s.irregular()) marks.push_back(marker(gpu_.to(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
+    if (s.irregular()) marks.push_back(marker(gpu_.to(at), 7.0f * now.marks, MarkerShape::Dot, valenceColor(s)));
   };
   if (now.valences && now.sites && !final) {
     const std::vector<VertexValence> valences = siteValences(view);
@@ -747,7 +746,7 @@ void Inspector::uploadMesh() {
   }
   if (now.sites && !final)
     for (const Vec3& s : view.liftedSites)
-      marks.push_back(marker(gpu_.to(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+      marks.push_back(marker(gpu_.to(s), 3.0f * now.marks, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
   renderer_.uploadMarkers(marks);
   uploaded_ = now;
 }
@@ -759,7 +758,11 @@ bool Inspector::cellsFilled() const { return fillShown() != CellFill::None && la
 Inspector::Shown3D Inspector::shown3D() const {
   const Layers shown = layers();
   return {iteration_,   shown.input3D,   shown.mapped3D, shown.sites3D, finalShown(),
-          colorByAngle_, cellsFilled() && fillShown() == CellFill::Valence, replay_->method()};
+          colorByAngle_, cellsFilled() && fillShown() == CellFill::Valence, replay_->method(), markScale()};
+}
+
+float Inspector::markScale() const {
+  return presentation_ ? presentationTextSize(ImGui::GetIO().DisplaySize.y) / presentationTextSize(0) : 1.0f;
 }
 
 void Inspector::showMessage(std::string text) {
@@ -1501,7 +1504,8 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   MeshDraw& draw = meshCallback_.second;
   meshCallback_.first = &renderer_;
   draw.wireframe = wireframe_;
-  draw.wireWidth = presentation_ ? 2.2f : 1.2f;
+  draw.wireWidth = (presentation_ ? 2.2f : 1.2f) * markScale();
+  draw.markerScale = markScale();
   std::copy(glm::value_ptr(viewProjection), glm::value_ptr(viewProjection) + 16,
             draw.viewProjection.begin());
   draw.viewport[0] = p0.x;
@@ -1523,7 +1527,7 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
   if (final) {
     ImVec2 at;  // drawn over the mesh: where the result strays farthest is often behind a tip
     if (result_.fidelity.samples > 0 && toScreen(result_.fidelity.farthestPoint, at)) {
-      const float r = presentation_ ? 14.0f : 9.0f, width = presentation_ ? 4.0f : 2.5f;
+      const float r = (presentation_ ? 14.0f : 9.0f) * markScale(), width = (presentation_ ? 4.0f : 2.5f) * markScale();
       // On a white halo: over red (0°) triangles the red ring was lost.
       dl->AddCircle(at, r, IM_COL32(255, 255, 255, 230), 24, width + 3.0f);
       dl->AddCircle(at, r, kFarthestColor, 24, width);
@@ -1540,8 +1544,8 @@ void Inspector::viewPane3D(const ImVec2& pos, const ImVec2& size) {
 
   boxedText(dl, ImVec2(p0.x + 8, p0.y + 4), wrapped.c_str());
   if (colorByAngle_)
-    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + ImGui::CalcTextSize(wrapped.c_str()).y + 0.5f * ImGui::GetFontSize() + 4.5f), 90,
-                 "60 deg", "0 deg", [](float t) {
+    drawColorBar(dl, ImVec2(p0.x + 10, p0.y + ImGui::CalcTextSize(wrapped.c_str()).y + 0.5f * ImGui::GetFontSize() + 4.5f),
+                 kColorBarWidth * markScale(), kFillBarHeight * markScale(), "60 deg", "0 deg", [](float t) {
                    const auto c = angleColor(60.0 * t);
                    return rgb(c[0], c[1], c[2]);
                  });
@@ -1666,15 +1670,15 @@ void Inspector::fillLegend(ImDrawList* dl, const ImVec2& at, float bottom) const
   boxedText(dl, at, name.c_str());
   // Shorter where the pane is low (its lower label hangs under it), down to two lines of labels.
   const float font = ImGui::GetFontSize();
-  const float height = std::clamp(room - 0.4f * font, 2.0f * font, kFillBarHeight);
-  drawColorBar(dl, barAt, height, format("%.2e", fillScale_.hi).c_str(),
+  const float height = std::clamp(room - 0.4f * font, 2.0f * font, kFillBarHeight * markScale());
+  drawColorBar(dl, barAt, kColorBarWidth * markScale(), height, format("%.2e", fillScale_.hi).c_str(),
                format("%.2e", fillScale_.lo).c_str(), [](float t) { return quantityColor(t); });
 }
 
 // The legend's name line, and its colour bar with the labels beside it ("2.48e-03").
 float Inspector::fillLegendTop() const { return 1.5f * ImGui::GetFontSize() + 4.5f; }
 float Inspector::fillLegendWidth() const {
-  return 10 + kColorBarWidth + 4 + ImGui::CalcTextSize("0.00e-00").x + 8;
+  return 10 + kColorBarWidth * markScale() + 4 + ImGui::CalcTextSize("0.00e-00").x + 8;
 }
 
 // Each cell's colour under the fill: its kind of valence, or its quantity on fillScale_.
@@ -1794,9 +1798,10 @@ struct Curve {
 
 // A plot with axes and ticks over the whole recording; returns the iteration clicked, or -1.
 // `run` is the run's curve; `others`, drawn behind it, other runs' (none: empty). Along x, the
-// iterations, or (`unit` "ms") the time.
+// iterations, or (`unit` "ms") the time. Its lines and dot `marks` times as thick as at 800 px
+// (Inspector::markScale).
 int plot(const PlotTitle& heading, const Curve& run, const std::vector<Curve>& others, const char* unit,
-         bool logScale, double threshold, int current, const ImVec2& asked) {
+         bool logScale, double threshold, int current, const ImVec2& asked, float marks) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   const ImVec2 size = drawable(asked);
@@ -1863,18 +1868,18 @@ int plot(const PlotTitle& heading, const Curve& run, const std::vector<Curve>& o
     for (int i = 0; i <= last; ++i) xTick(i * step, format("%g", i * step) + (i == last ? std::string(" ") + unit : ""));
   }
   dl->PushClipRect(a, b, true);
-  if (threshold > 0) dl->AddLine(ImVec2(a.x, y(threshold)), ImVec2(b.x, y(threshold)), rgb(0.2f, 0.6f, 0.2f), 1.5f);
+  if (threshold > 0) dl->AddLine(ImVec2(a.x, y(threshold)), ImVec2(b.x, y(threshold)), rgb(0.2f, 0.6f, 0.2f), 1.5f * marks);
   auto polyline = [&](const Curve& c) {
     std::vector<ImVec2> line;
     for (size_t k = 0; k < c.values.size(); ++k) line.emplace_back(x(c.at[k]), y(c.values[k]));
-    dl->AddPolyline(line.data(), static_cast<int>(line.size()), c.colour, 0, 1.5f);
+    dl->AddPolyline(line.data(), static_cast<int>(line.size()), c.colour, 0, 1.5f * marks);
   };
   for (const Curve& c : others) polyline(c);
   polyline(run);
   const bool onTheRun = current < static_cast<int>(run.values.size());
   const float cx = x(onTheRun ? run.at[current] : current);
-  dl->AddLine(ImVec2(cx, a.y), ImVec2(cx, b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f);
-  if (onTheRun) dl->AddCircleFilled(ImVec2(cx, y(run.values[current])), 4.0f, rgb(0.85f, 0.3f, 0.1f));
+  dl->AddLine(ImVec2(cx, a.y), ImVec2(cx, b.y), rgb(0.85f, 0.3f, 0.1f), 2.0f * marks);
+  if (onTheRun) dl->AddCircleFilled(ImVec2(cx, y(run.values[current])), 4.0f * marks, rgb(0.85f, 0.3f, 0.1f));
   dl->PopClipRect();
   if (active) {
     const float mx = ImGui::GetIO().MousePos.x;
@@ -1926,14 +1931,14 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   const char* unit = time ? "ms" : "";
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 each((avail.x - 2 * ImGui::GetStyle().ItemSpacing.x) / 3, avail.y);
-  int jump = plot({"CVT energy", "CVT energy"}, run.energy, energy, unit, false, 0, iteration_, each);
+  int jump = plot({"CVT energy", "CVT energy"}, run.energy, energy, unit, false, 0, iteration_, each, markScale());
   ImGui::SameLine();
   int k = plot({"max distance site-centroid (log)", "max |c - s| (log)"}, run.displacement, displacement, unit, true,
-               replay_->recording().distanceThreshold, iteration_, each);
+               replay_->recording().distanceThreshold, iteration_, each, markScale());
   if (k >= 0) jump = k;
   ImGui::SameLine();
   k = plot({"% sites farther than threshold (log)", "% moving (log)"}, run.moving, moving, unit, true,
-           replay_->recording().percentThreshold, iteration_, each);
+           replay_->recording().percentThreshold, iteration_, each, markScale());
   if (k >= 0) jump = k;
   if (jump >= 0) setIteration(jump);
   ImGui::End();

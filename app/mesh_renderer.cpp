@@ -73,10 +73,10 @@ namespace {
 // the near plane at a hundredth of the camera's distance (OrbitCamera): 2.5e-5 there is about
 // 0.25% of that distance. (It was 5e-5 of a depth the projection made as OpenGL's, -1..1,
 // GLM's default, which the same nudge halves.)
-std::array<float, 16> nudgedTowardsTheEye(std::array<float, 16> viewProjection) {
-  constexpr float kNudge = 2.5e-5f;
-  for (int column = 0; column < 4; ++column)  // z' = z - kNudge w, column-major
-    viewProjection[4 * column + 2] -= kNudge * viewProjection[4 * column + 3];
+std::array<float, 16> nudgedTowardsTheEye(std::array<float, 16> viewProjection, float markerScale) {
+  const float nudge = 2.5e-5f * markerScale;
+  for (int column = 0; column < 4; ++column)  // z' = z - nudge w, column-major
+    viewProjection[4 * column + 2] -= nudge * viewProjection[4 * column + 3];
   return viewProjection;
 }
 
@@ -100,7 +100,7 @@ void MeshRenderer::draw(VkCommandBuffer cmd, const MeshDraw& d) const {
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertices_.buffer, &offset);
   vkCmdDraw(cmd, vertexCount_, 1, 0, 0);
-  markers_.draw(cmd, d.viewport, nudgedTowardsTheEye(d.viewProjection));
+  markers_.draw(cmd, d.viewport, nudgedTowardsTheEye(d.viewProjection, d.markerScale));
 }
 
 }  // namespace lloydscope

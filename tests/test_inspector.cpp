@@ -687,6 +687,29 @@ TEST(Inspector, FillsTheCellsByTheirValence) {
   checkScene("inspector_fill_valence.png", "--fill valence --pane 2d");
 }
 
+// Presentation mode's type grows with the window; its lines and marks grow with it. On a
+// 3840x2160 screen the valence dots in 3D stayed 7 px and the plots' lines 1.5 px beside type
+// 56 px high. Twice as tall a window: dots of twice the diameter (four times the pixels, with
+// the mesh drawn twice as large; the same count without), threshold lines twice as thick.
+TEST(Inspector, PresentationMarksGrowWithTheWindow) {
+  const auto picture = [](const std::string& pane, const std::string& size) {
+    const std::string png = test::tempPath("marks_" + pane + "_" + size + ".png");
+    EXPECT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") + " --presentation --stage valence --pane " + pane +
+                  " --no-timings --size " + size + " --screenshot " + png),
+              0);
+    return readPng(png);
+  };
+  const int dots = valencePixels(picture("3d", "960x800")), largerDots = valencePixels(picture("3d", "960x1600"));
+  EXPECT_GT(dots, 500);
+  EXPECT_GT(largerDots, 3 * dots) << dots << " " << largerDots;
+  const auto green = [](const Picture& p) {
+    return pixelsWhere(p, [](const unsigned char* c) { return c[1] > 120 && c[0] < 90 && c[2] < 90; });
+  };
+  const int lines = green(picture("plots", "960x800")), thicker = green(picture("plots", "960x1600"));
+  EXPECT_GT(lines, 100);  // two plots have a threshold
+  EXPECT_GT(thicker, 1.6 * lines) << lines << " " << thicker;
+}
+
 // The valence legend's five swatches all show whole in presentation mode at 960x600, where the
 // pane's own legend (two lines) leaves less room than five rows: there it covered the last, "4-".
 TEST(Inspector, TheValenceLegendFitsALowPane) {
