@@ -131,23 +131,47 @@ std::vector<VertexValence> vertexValences(const Mesh& mesh) {
 
 namespace {
 
-// Sets m's minAngleHole... where `worst` touches a border loop shorter than the mean edge.
-void findPinholeAt(const Mesh& mesh, const Triangle& worst, const std::vector<bool>& boundary, QualityMetrics& m) {
-  if (std::none_of(worst.begin(), worst.end(), [&](int v) { return boundary[v]; })) return;
-  const auto length = [&](const std::vector<int>& loop) {
-    double sum = 0;
-    for (size_t i = 0; i < loop.size(); ++i) sum += (mesh.points[loop[(i + 1) % loop.size()]] - mesh.points[loop[i]]).norm();
-    return sum;
+// The next vertex along the border from `v`, in the faces' orientation: the end of the edge
+// leaving v that no triangle runs back; -1 where none does.
+int nextOnBorder(const Mesh& mesh, const Rings& rings, int v) {
+  const auto after = [&](const Triangle& t, int shift) {
+    const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+    return t[(k + shift) % 3];
   };
-  const std::vector<MeshEdge> edges = uniqueEdges(mesh);
-  double sum = 0;
-  for (const MeshEdge& e : edges) sum += (mesh.points[e.to] - mesh.points[e.from]).norm();
-  m.meanEdge = sum / edges.size();
-  for (const std::vector<int>& loop : analyzeTopology(mesh).boundaryLoops) {
-    const bool touched = std::any_of(worst.begin(), worst.end(), [&](int v) { return std::count(loop.begin(), loop.end(), v) > 0; });
-    if (touched && length(loop) < m.meanEdge) {
-      m.minAngleHoleEdges = static_cast<int>(loop.size());
-      m.minAngleHoleLength = length(loop);
+  for (int i = rings.offset[v]; i < rings.offset[v + 1]; ++i) {
+    const int to = after(mesh.triangles[rings.faces[i]], 1);
+    bool back = false;  // a triangle running to -> v
+    for (int j = rings.offset[v]; j < rings.offset[v + 1] && !back; ++j)
+      back = after(mesh.triangles[rings.faces[j]], 2) == to;
+    if (!back) return to;
+  }
+  return -1;
+}
+
+// Sets m's minAngleHole... where `worst` touches a border loop shorter than the mean edge. Each
+// loop is followed only as far as the mean edge: the inspector measures every iteration it
+// shows, and a sort of all the edges there slowed its scrubbing.
+void findPinholeAt(const Mesh& mesh, const Rings& rings, const Triangle& worst, const std::vector<bool>& boundary,
+                   QualityMetrics& m) {
+  if (std::none_of(worst.begin(), worst.end(), [&](int v) { return boundary[v]; })) return;
+  double sides = 0;  // every triangle's: an inside edge counts twice, a fair mean all the same
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) sides += (mesh.points[t[(k + 1) % 3]] - mesh.points[t[k]]).norm();
+  m.meanEdge = sides / (3.0 * mesh.faceCount());
+  for (int start : worst) {
+    if (!boundary[start]) continue;
+    double length = 0;
+    int edges = 0, v = start;
+    do {
+      const int next = nextOnBorder(mesh, rings, v);
+      if (next < 0) break;
+      length += (mesh.points[next] - mesh.points[v]).norm();
+      ++edges;
+      v = next;
+    } while (v != start && length < m.meanEdge && edges < mesh.vertexCount());
+    if (v == start && edges > 0 && length < m.meanEdge) {
+      m.minAngleHoleEdges = edges;
+      m.minAngleHoleLength = length;
       return;
     }
   }
@@ -222,7 +246,7 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   m.foldedEdges = static_cast<int>(m.folds.size());
   const auto& angles = cornerAngles[worst];
   m.minAngleAt = mesh.points[mesh.triangles[worst][std::min_element(angles.begin(), angles.end()) - angles.begin()]];
-  if (m.minAngle < kLeastMinAngle) findPinholeAt(mesh, mesh.triangles[worst], boundary, m);
+  if (m.minAngle < kLeastMinAngle) findPinholeAt(mesh, rings, mesh.triangles[worst], boundary, m);
   return m;
 }
 
