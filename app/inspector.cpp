@@ -735,7 +735,7 @@ void Inspector::uploadMesh() {
   // result shown), the irregular vertices of the mesh shown. First: a site's square at the
   // same depth after it would cover its middle.
   auto markIrregular = [&](const Vec3& at, const VertexValence& s) {
-    if (s.irregular()) marks.push_back(marker(gpu_.to(at), 7.0f * now.marks, MarkerShape::Dot, valenceColor(s)));
+    if (s.irregular()) marks.push_back(marker(gpu_.to(at), 7.0f, MarkerShape::Dot, valenceColor(s)));
   };
   if (now.valences && now.sites && !final) {
     const std::vector<VertexValence> valences = siteValences(view);
@@ -746,7 +746,7 @@ void Inspector::uploadMesh() {
   }
   if (now.sites && !final)
     for (const Vec3& s : view.liftedSites)
-      marks.push_back(marker(gpu_.to(s), 3.0f * now.marks, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+      marks.push_back(marker(gpu_.to(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
   renderer_.uploadMarkers(marks);
   uploaded_ = now;
 }
@@ -758,7 +758,7 @@ bool Inspector::cellsFilled() const { return fillShown() != CellFill::None && la
 Inspector::Shown3D Inspector::shown3D() const {
   const Layers shown = layers();
   return {iteration_,   shown.input3D,   shown.mapped3D, shown.sites3D, finalShown(),
-          colorByAngle_, cellsFilled() && fillShown() == CellFill::Valence, replay_->method(), markScale()};
+          colorByAngle_, cellsFilled() && fillShown() == CellFill::Valence, replay_->method()};
 }
 
 float Inspector::markScale() const {

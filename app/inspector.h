@@ -319,8 +319,7 @@ class Inspector {
     int iteration = -1;
     bool input = false, mapped = false, sites = false, final = false, byAngle = false, valences = false;
     RemeshMethod method = RemeshMethod::Retriangulate;
-    float marks = 1;  // markScale()
-    auto tied() const { return std::tie(iteration, input, mapped, sites, final, byAngle, valences, method, marks); }
+    auto tied() const { return std::tie(iteration, input, mapped, sites, final, byAngle, valences, method); }
     bool operator==(const Shown3D& o) const { return tied() == o.tied(); }
   };
   Shown3D uploaded_;
@@ -349,7 +348,7 @@ class Inspector {
   bool presentation_ = false;
   // How much larger than at 800 px presentation mode draws the 3D view's lines and marks, the
   // colour bars and the plots' lines: they grow with its type (presentationTextSize); 1 outside
-  // it. (On a 3840x2160 screen its type was 56 px, its curves 1.5 px, its valence dots 5 px, its
+  // it. (On a 3840x2160 screen its type was 56 px, its curves 1.5 px, its valence dots 7 px, its
   // colour bar squeezed between its labels.) The 2D view's marks go by the sites' spacing.
   float markScale() const;
   // The timeline's iteration slider has a row of its own: the buttons left it too little room

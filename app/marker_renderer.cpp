@@ -38,14 +38,14 @@ void MarkerRenderer::upload(const std::vector<Marker>& markers) {
 }
 
 void MarkerRenderer::draw(VkCommandBuffer cmd, const float (&viewport)[4],
-                          const std::array<float, 16>& transform) const {
+                          const std::array<float, 16>& transform, float scale) const {
   if (count_ == 0) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline);
   gpu::setViewport(cmd, viewport);
   // The diameters are in units of the layout: on a denser screen, as many pixels more.
   std::array<float, 17> push;
   std::copy(transform.begin(), transform.end(), push.begin());
-  push[16] = gpu::pixelsPerUnit();
+  push[16] = gpu::pixelsPerUnit() * scale;
   vkCmdPushConstants(cmd, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(push), push.data());
   const VkDeviceSize offset = 0;

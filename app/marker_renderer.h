@@ -33,9 +33,10 @@ class MarkerRenderer {
   MarkerRenderer& operator=(const MarkerRenderer&) = delete;
 
   void upload(const std::vector<Marker>& markers);
-  // `transform` (column-major) takes positions to clip space; the viewport is the pane.
+  // `transform` (column-major) takes positions to clip space; the viewport is the pane. Each
+  // marker is drawn `scale` times its size (presentation mode's marks, which grow with its type).
   void draw(VkCommandBuffer cmd, const float (&viewport)[4],
-            const std::array<float, 16>& transform) const;
+            const std::array<float, 16>& transform, float scale = 1.0f) const;
 
  private:
   gpu::Context& gpu_;

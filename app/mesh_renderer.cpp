@@ -100,7 +100,7 @@ void MeshRenderer::draw(VkCommandBuffer cmd, const MeshDraw& d) const {
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertices_.buffer, &offset);
   vkCmdDraw(cmd, vertexCount_, 1, 0, 0);
-  markers_.draw(cmd, d.viewport, nudgedTowardsTheEye(d.viewProjection, d.markerScale));
+  markers_.draw(cmd, d.viewport, nudgedTowardsTheEye(d.viewProjection, d.markerScale), d.markerScale);
 }
 
 }  // namespace lloydscope

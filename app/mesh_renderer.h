@@ -17,9 +17,9 @@ struct MeshDraw {
   float viewport[4];                     // x, y, width, height in units of the layout
   bool wireframe = true;
   float wireWidth = 1.2f;                // units of the layout
-  // How much larger than usual the markers are: their depth is nudged towards the eye as much
-  // more, or a large dot on a slope sinks half into the surface (a point sprite has its centre's
-  // depth throughout).
+  // How much larger than their size the markers are drawn; their depth is nudged towards the
+  // eye as much more, or a large dot on a slope sinks half into the surface (a point sprite has
+  // its centre's depth throughout).
   float markerScale = 1.0f;
   VkClearColorValue background = {{0.93f, 0.94f, 0.96f, 1.0f}};  // the pane is cleared to it
 };
