@@ -736,10 +736,10 @@ std::string pinholeText(const QualityMetrics& after) {
   if (after.minAngle >= kLeastMinAngle || after.minAngleHoleEdges == 0) return "";
   return "The smallest angle, " + format("%.1f", after.minAngle) + " degrees, at " + pointText(after.minAngleAt) +
          ", is beside a hole of " + std::to_string(after.minAngleHoleEdges) + " border edges, " +
-         format("%.3g", after.minAngleHoleLength) + " long in all, far shorter than the mean edge (" +
+         format("%.3g", after.minAngleHoleLength) + " long in all, under half the mean edge (" +
          format("%.3g", after.meanEdge) +
-         "): the border is kept as it is, so the triangles around the hole are needles (a pinhole in a scan; "
-         "close it to remesh it away)";
+         "): a hole is kept, with 3 border vertices at least, so the triangles around one this small are "
+         "needles (a pinhole in a scan; close it to remesh it away)";
 }
 
 std::string curvatureText(const QualityMetrics& after) {
@@ -747,6 +747,14 @@ std::string curvatureText(const QualityMetrics& after) {
   // per 100 vertices; at 1000, 11% and 16 units.
   if (!(after.irregularBoundaryAware > kMostIrregularPercent && after.curvatureDefects > kMostIrregularPercent))
     return "";
+  // Mostly the border's turns (a flat gear, a jagged rim): the surface inside may be flat.
+  if (2 * after.curvatureDefectsOnBorder > after.curvatureDefects)
+    return format("%.1f", after.irregularBoundaryAware) + "% of the vertices are irregular where the border turns by " +
+           format("%.1f", after.curvatureDefectsOnBorder) +
+           " units of 60 degrees per 100 vertices at this size (the surface inside curves by " +
+           format("%.1f", after.curvatureDefects - after.curvatureDefectsOnBorder) +
+           "): equilateral triangles on these vertices would leave about as many irregular (a border vertex of 3 "
+           "neighbours where the border bends out, of 5 where it bends in); more vertices share the turns";
   return format("%.1f", after.irregularBoundaryAware) + "% of the vertices are irregular where the surface curves by " +
          format("%.1f", after.curvatureDefects) +
          " units of 60 degrees per 100 vertices at this size: equilateral triangles on these vertices would "

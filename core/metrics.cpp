@@ -67,7 +67,7 @@ bool meetsMinAngleBar(const QualityMetrics& result, const QualityMetrics& input)
 int foldsAnew(const QualityMetrics& result, const QualityMetrics& input) {
   const auto inputsOwn = [&](const QualityMetrics::Fold& fold) {
     return std::any_of(input.folds.begin(), input.folds.end(), [&](const QualityMetrics::Fold& other) {
-      return (fold.at - other.at).norm() <= 2 * std::max(fold.length, other.length);
+      return distanceToSegment(fold.middle(), other.from, other.to) <= 2 * fold.length();
     });
   };
   return static_cast<int>(std::count_if(result.folds.begin(), result.folds.end(),
@@ -100,7 +100,7 @@ std::vector<QualityMetrics::Fold> foldedEdges(const Mesh& mesh, const Rings& rin
         const Triangle& g = mesh.triangles[rings.faces[i]];
         if (rings.faces[i] != f && std::find(g.begin(), g.end(), b) != g.end()) {
           if (normal[f].dot(normal[rings.faces[i]]) < cosFold)
-            folded.push_back({0.5 * (mesh.points[a] + mesh.points[b]), (mesh.points[b] - mesh.points[a]).norm()});
+            folded.push_back({mesh.points[a], mesh.points[b]});
           break;
         }
       }
@@ -148,9 +148,9 @@ int nextOnBorder(const Mesh& mesh, const Rings& rings, int v) {
   return -1;
 }
 
-// Sets m's minAngleHole... where `worst` touches a border loop shorter than the mean edge. Each
-// loop is followed only as far as the mean edge: the inspector measures every iteration it
-// shows, and a sort of all the edges there slowed its scrubbing.
+// Sets m's minAngleHole... where `worst` touches a border loop shorter than kPinholeOfMeanEdge of
+// the mean edge. Each loop is followed only as far as that: the inspector measures every
+// iteration it shows, and a sort of all the edges there slowed its scrubbing.
 void findPinholeAt(const Mesh& mesh, const Rings& rings, const Triangle& worst, const std::vector<bool>& boundary,
                    QualityMetrics& m) {
   if (std::none_of(worst.begin(), worst.end(), [&](int v) { return boundary[v]; })) return;
@@ -168,8 +168,8 @@ void findPinholeAt(const Mesh& mesh, const Rings& rings, const Triangle& worst, 
       length += (mesh.points[next] - mesh.points[v]).norm();
       ++edges;
       v = next;
-    } while (v != start && length < m.meanEdge && edges < mesh.vertexCount());
-    if (v == start && edges > 0 && length < m.meanEdge) {
+    } while (v != start && length < kPinholeOfMeanEdge * m.meanEdge && edges < mesh.vertexCount());
+    if (v == start && edges > 0 && length < kPinholeOfMeanEdge * m.meanEdge) {
       m.minAngleHoleEdges = edges;
       m.minAngleHoleLength = length;
       return;
@@ -205,13 +205,11 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   std::vector<double> angleSum(mesh.points.size(), 0.0);
   std::vector<std::array<double, 3>> cornerAngles;
   cornerAngles.reserve(mesh.triangles.size());
-  int worst = 0;
   for (const Triangle& t : mesh.triangles) {
     const auto angles = cornerAnglesDeg(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
     cornerAngles.push_back(angles);
     for (int k = 0; k < 3; ++k) angleSum[t[k]] += angles[k];
     const double lo = *std::min_element(angles.begin(), angles.end());
-    if (lo < m.minAngle) worst = static_cast<int>(cornerAngles.size()) - 1;
     m.minAngle = std::min(m.minAngle, lo);
     m.maxAngle = std::max(m.maxAngle, *std::max_element(angles.begin(), angles.end()));
     sumMin += lo;
@@ -220,10 +218,15 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   }
   m.avgMinAngle = sumMin / mesh.faceCount();
   m.percentUnder30 = 100.0 * under30 / mesh.faceCount();
-  double defects = 0;  // in units of 60 degrees
+  double defects = 0, onBorder = 0;  // in units of 60 degrees
   for (size_t v = 0; v < angleSum.size(); ++v)
-    if (valence[v] > 0) defects += std::abs((boundary[v] ? 180.0 : 360.0) - angleSum[v]) / 60.0;
+    if (valence[v] > 0) {
+      const double defect = std::abs((boundary[v] ? 180.0 : 360.0) - angleSum[v]) / 60.0;
+      defects += defect;
+      if (boundary[v]) onBorder += defect;
+    }
   m.curvatureDefects = 100.0 * defects / used;
+  m.curvatureDefectsOnBorder = 100.0 * onBorder / used;
   const Rings rings(mesh);
   std::vector<bool> filledCorner(mesh.points.size(), false);  // filledByOneTriangle
   for (size_t v = 0; v < angleSum.size(); ++v) {
@@ -244,9 +247,12 @@ QualityMetrics measureQuality(const Mesh& mesh) {
         m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, cornerAngles[f][k]);
   m.folds = foldedEdges(mesh, rings);
   m.foldedEdges = static_cast<int>(m.folds.size());
-  const auto& angles = cornerAngles[worst];
-  m.minAngleAt = mesh.points[mesh.triangles[worst][std::min_element(angles.begin(), angles.end()) - angles.begin()]];
-  if (m.minAngle < kLeastMinAngle) findPinholeAt(mesh, rings, mesh.triangles[worst], boundary, m);
+  if (m.minAngle < kLeastMinAngle) {  // the one "Pin the worst triangle" pins
+    const int worst = worstTriangle(mesh);
+    const auto& angles = cornerAngles[worst];
+    m.minAngleAt = mesh.points[mesh.triangles[worst][std::min_element(angles.begin(), angles.end()) - angles.begin()]];
+    findPinholeAt(mesh, rings, mesh.triangles[worst], boundary, m);
+  }
   return m;
 }
 

@@ -49,16 +49,21 @@ struct QualityMetrics {
   // share the same curvature and lower it. It depends on where the vertices are, not on how
   // they are joined (a flat region adds nothing, whatever its valences).
   double curvatureDefects = 0;
+  // The part of it from the border's vertices (their turns), in the same units: all of it on a
+  // flat disk with a jagged rim (a flat gear of 40 teeth at 400 vertices: 59.9 units, said to
+  // be the surface curving).
+  double curvatureDefectsOnBorder = 0;
   std::array<int, 18> angleHistogram{};  // all corner angles in 10-degree bins, 0..180
   // Inside edges whose two triangles' normals turn more than kFoldDegrees: the surface folds
   // back on itself there (a fin, or a result's triangles bridging the two sides of a thin flap:
   // no angle shows it).
   int foldedEdges = 0;
-  // Where they are: each one's midpoint and length (folds of the result the input has there
-  // too are its own, not the remeshing's).
+  // Where they are: each one's ends (folds of the result the input has there too are its own,
+  // not the remeshing's).
   struct Fold {
-    Vec3 at = Vec3::Zero();
-    double length = 0;
+    Vec3 from = Vec3::Zero(), to = Vec3::Zero();
+    Vec3 middle() const { return 0.5 * (from + to); }
+    double length() const { return (to - from).norm(); }
   };
   std::vector<Fold> folds;
   // The smallest sum of the angles at a border vertex, degrees (360 with no border).
@@ -70,15 +75,17 @@ struct QualityMetrics {
   // The smallest angle but those at a sharp corner that one triangle fills: the angles a
   // remesher has a say in.
   double minAngleOffSharpCorners = 180;
-  // Where the smallest angle is (its corner's vertex); and where its triangle touches a border
-  // loop shorter than the mesh's mean edge, that loop's edges and length: a pinhole the border
-  // keeps, ringed by needles no remeshing widens (a sphere with a hole 10^-6 across: 0.0001
-  // degrees, said nowhere). No edges where it touches none.
+  // Under 30 degrees: where the smallest angle is (its corner's vertex, of worstTriangle()); and
+  // where its triangle touches a border loop shorter than kPinholeOfMeanEdge of the mean edge,
+  // that loop's edges and length, and the mean edge (of every triangle's sides: an inside edge
+  // counts twice): a pinhole the border keeps, ringed by needles no remeshing widens (a sphere
+  // with a hole 10^-6 across: 0.0001 degrees, said nowhere). Zeros where not.
   Vec3 minAngleAt = Vec3::Zero();
   int minAngleHoleEdges = 0;
   double minAngleHoleLength = 0, meanEdge = 0;
 };
 constexpr double kFoldDegrees = 150.0;
+constexpr double kPinholeOfMeanEdge = 0.5;
 // Border corners kept in QualityMetrics::sharpCorners: those under 30 degrees, and those a
 // little wider that a result's corner at the same place may be a little sharper than (the
 // first border samples along two sides that curve outward cut the corner's chords inward).
@@ -106,8 +113,9 @@ const BorderCorner* inputCornerKept(const QualityMetrics& input, const BorderCor
 // How many of the three a result of `input` meets.
 int barsMet(const QualityMetrics& result, const QualityMetrics& input);
 // The result's folded edges (QualityMetrics::folds) where `input` folds nowhere that much: none
-// of its own within twice the longer edge's length. (The counts were compared: one fold of the
-// dino's anywhere hid the result's 30 at its legs and neck.)
+// of its folded edges within twice the result's edge's length of the result edge's middle.
+// (The counts were compared: one fold of the dino's anywhere hid the result's 30 at its legs
+// and neck.)
 int foldsAnew(const QualityMetrics& result, const QualityMetrics& input);
 
 struct Fidelity {

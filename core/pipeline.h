@@ -116,7 +116,7 @@ struct ChartTrial {
   // How many of issue 5's bars that need no reference each meets (barsMet), as the slit trial
   // counts.
   int oneCutBars = 0, chartsBars = 0;
-  // Each folds back on itself, and the input nowhere (foldsAnew): triangles turned over, a
+  // Each folds back on itself where the input does not (foldsAnew): triangles turned over, a
   // result broken there however close to the input (a flat annulus at 700 vertices, its cut's
   // map distorted: one disk kept with a turned triangle of 0.2 degrees, 0.077% of the diagonal
   // from the input, over unfolded charts 0.143% from it that met all three bars).

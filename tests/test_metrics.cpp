@@ -82,7 +82,9 @@ TEST(Quality, TheCurvatureDependsOnWhereTheVerticesAreNotOnHowTheyAreJoined) {
   }
   const QualityMetrics a = measureQuality(alike), b = measureQuality(alternating);
   EXPECT_NEAR(a.curvatureDefects, 100.0 * 6 / 25, 1e-9);
+  EXPECT_NEAR(a.curvatureDefectsOnBorder, a.curvatureDefects, 1e-9);  // flat: all of it the border's corners
   EXPECT_NEAR(b.curvatureDefects, a.curvatureDefects, 1e-9);
+  EXPECT_EQ(measureQuality(test::cube(3, true)).curvatureDefectsOnBorder, 0.0);  // no border
   EXPECT_NE(b.irregularBoundaryAware, a.irregularBoundaryAware);
 }
 
@@ -356,8 +358,8 @@ TEST(Quality, CountsTheEdgesWhereTheSurfaceFoldsBackOnItself) {
   EXPECT_EQ(measureQuality(test::grid(4)).foldedEdges, 0);
   const QualityMetrics folded = measureQuality(hinge(170));
   ASSERT_EQ(folded.folds.size(), 1u);
-  EXPECT_TRUE(folded.folds[0].at.isApprox(Vec3(0.5, 0, 0)));  // the hinge's midpoint
-  EXPECT_DOUBLE_EQ(folded.folds[0].length, 1.0);
+  EXPECT_TRUE(folded.folds[0].middle().isApprox(Vec3(0.5, 0, 0)));  // the hinge
+  EXPECT_DOUBLE_EQ(folded.folds[0].length(), 1.0);
 }
 
 // A result's folds are the remeshing's where the input folds nowhere near them: CGAL's dino at
@@ -365,15 +367,22 @@ TEST(Quality, CountsTheEdgesWhereTheSurfaceFoldsBackOnItself) {
 // elsewhere.
 TEST(Quality, FoldsAnewAreThoseAwayFromTheInputsOwn) {
   QualityMetrics input, result;
-  result.folds = {{Vec3(0, 0, 0), 0.1}, {Vec3(5, 0, 0), 0.1}, {Vec3(5.1, 0, 0), 0.1}};
+  const auto edge = [](double x) { return QualityMetrics::Fold{Vec3(x - 0.05, 0, 0), Vec3(x + 0.05, 0, 0)}; };
+  result.folds = {edge(0), edge(5), edge(5.1)};  // 0.1 long
   EXPECT_EQ(foldsAnew(result, input), 3);
-  input.folds = {{Vec3(0.15, 0, 0), 0.01}};  // within twice the result's edge of the first
+  input.folds = {{Vec3(0.15, 0, 0), Vec3(0.16, 0, 0)}};  // within twice the result's edge of the first
   EXPECT_EQ(foldsAnew(result, input), 2);
-  input.folds.push_back({Vec3(5, 1, 0), 0.01});  // farther from the others than that
+  input.folds.push_back({Vec3(5, 1, 0), Vec3(5.01, 1, 0)});  // farther from the others than that
   EXPECT_EQ(foldsAnew(result, input), 2);
-  input.folds.push_back({Vec3(5.05, 0.19, 0), 0.01});
+  input.folds.push_back({Vec3(5.05, 0.19, 0), Vec3(5.06, 0.19, 0)});
   EXPECT_EQ(foldsAnew(result, input), 0);
   EXPECT_EQ(foldsAnew(QualityMetrics(), input), 0);
+  // A long folded sliver of the input is its own fold only near itself, not all around it (by
+  // its midpoint and length, one sliver 10 long hid every fold of the result within 20).
+  input.folds = {{Vec3(-10, 3, 0), Vec3(0, 3, 0)}};
+  EXPECT_EQ(foldsAnew(result, input), 3);
+  input.folds = {{Vec3(-10, 0.15, 0), Vec3(0, 0.15, 0)}};  // along the first
+  EXPECT_EQ(foldsAnew(result, input), 2);
 }
 
 TEST(Quality, TheBarsAreMetAtTheirEdges) {
@@ -448,8 +457,9 @@ TEST(Quality, FindsAPinholeBesideTheSmallestAngle) {
   EXPECT_GT(pinhole.meanEdge, 0.5);
   EXPECT_LT(pinhole.minAngleAt.norm(), 1.0 + 1e-12);
   EXPECT_GT(pinhole.minAngleAt.norm(), 1.0 - 1e-12);  // the needles' tips are on the outer ring
-  const QualityMetrics wide = measureQuality(ringAroundAHole(0.5));  // a hole longer than the edges
-  EXPECT_EQ(wide.minAngleHoleEdges, 0);
+  const QualityMetrics wide = measureQuality(ringAroundAHole(0.2));  // a hole longer than half the mean edge
+  ASSERT_LT(wide.minAngle, 30.0);  // so the hole is looked for
+  EXPECT_EQ(wide.minAngleHoleEdges, 0) << wide.minAngleHoleLength << " " << wide.meanEdge;
   EXPECT_EQ(measureQuality(test::sector(20)).minAngleHoleEdges, 0);  // a sharp corner, no hole
 }
 

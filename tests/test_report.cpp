@@ -649,17 +649,17 @@ TEST(Report, AResultFarFromTheInputIsWarnedOf) {
 TEST(Report, AResultThatFoldsWhereTheInputDoesNotIsWarnedOf) {
   QualityMetrics before, after;
   EXPECT_EQ(foldsText(before, after), "");
-  for (int i = 0; i < 6; ++i) after.folds.push_back({Vec3(i, 0, 0), 0.1});
+  for (int i = 0; i < 6; ++i) after.folds.push_back({Vec3(i, 0, 0), Vec3(i + 0.1, 0, 0)});
   after.foldedEdges = 6;
   EXPECT_EQ(foldsText(before, after).rfind("Warning: the result folds back on itself at 6 edges", 0), 0u)
       << foldsText(before, after);
   RemeshResult r;
   r.after = after;
   EXPECT_NE(remeshReport(r, RemeshOptions{}).find("folds back on itself at 6 edges"), std::string::npos);
-  before.folds = {{Vec3(0, 0.05, 0), 0.01}};  // the input folds at one of them (CGAL's dino at 500: once, elsewhere)
+  before.folds = {{Vec3(0, 0.05, 0), Vec3(0.01, 0.05, 0)}};  // the input folds at one of them (CGAL's dino at 500: once, elsewhere)
   EXPECT_EQ(foldsText(before, after).rfind("Warning: the result folds back on itself at 5 edges", 0), 0u)
       << foldsText(before, after);
-  for (int i = 1; i < 6; ++i) before.folds.push_back({Vec3(i, 0.1, 0), 0.01});  // at all of them: its own
+  for (int i = 1; i < 6; ++i) before.folds.push_back({Vec3(i, 0.1, 0), Vec3(i + 0.01, 0.1, 0)});  // at all: its own
   EXPECT_EQ(foldsText(before, after), "");
 }
 
@@ -719,13 +719,15 @@ TEST(Report, ASmallestAngleBesideAPinholeIsExplained) {
   after.meanEdge = 0.091;
   const std::string text = pinholeText(after);
   EXPECT_EQ(text.rfind("The smallest angle, 0.0 degrees, at (0.5, 0.25, 1), is beside a hole of 3 border edges, "
-                       "5.2e-06 long in all, far shorter than the mean edge (0.091)",
+                       "5.2e-06 long in all, under half the mean edge (0.091)",
                        0),
             0u)
       << text;
   RemeshResult r;
   r.after = after;
-  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("the triangles around the hole are needles"), std::string::npos);
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find("a hole is kept, with 3 border vertices at least, so the triangles "
+                                                  "around one this small are needles"),
+            std::string::npos);
   after.minAngle = 31;  // the bar met: nothing to explain
   EXPECT_EQ(pinholeText(after), "");
 }
@@ -851,4 +853,15 @@ TEST(Report, IrregularityOnACurvedSurfaceIsExplained) {
   r.after.curvatureDefects = 24.0;
   r.after.irregularBoundaryAware = 11.0;  // under the bar
   EXPECT_EQ(curvatureText(r.after), "");
+  // A flat gear: its border's turns, not the surface, make the units (it was said to curve).
+  r.after.irregularBoundaryAware = 50.4;
+  r.after.curvatureDefects = 59.9;
+  r.after.curvatureDefectsOnBorder = 59.9;
+  const std::string gear = curvatureText(r.after);
+  EXPECT_EQ(gear.rfind("50.4% of the vertices are irregular where the border turns by 59.9 units of 60 degrees per 100 "
+                       "vertices at this size (the surface inside curves by 0.0)",
+                       0),
+            0u)
+      << gear;
+  EXPECT_EQ(gear.find("surface bulges"), std::string::npos) << gear;
 }
