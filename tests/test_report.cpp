@@ -710,6 +710,21 @@ TEST(Report, ASmallestAngleAtTheInputsSharpBorderCornerIsExplained) {
       << sharpCornerText(before, after);
   after.minAngleOffSharpCorners = 12.5;  // smaller away from the corners: not the corner's doing
   EXPECT_EQ(sharpCornerText(before, after), "");
+  // A horn whose sides bend away from its tip: the result's corner (25.4) is wider than the
+  // input's (21.5), so it is not "kept as it is", and closer samples might reach 30; its two
+  // far corners, the input's own, are under 30 too.
+  QualityMetrics horn, hornResult;
+  horn.sharpCorners = {{tip, 21.5, 3, 0.05}, {Vec3(1, 0, 0), 29.56, 1, 0.2}, {Vec3(0, 1, 0), 29.56, 1, 0.2}};
+  hornResult.minAngle = 25.4;
+  hornResult.minAngleOffSharpCorners = 35.0;
+  hornResult.sharpCorners = {{tip, 25.4, 1, 0.05}, {Vec3(1, 0, 0), 29.67, 1, 0.2}, {Vec3(0, 1, 0), 29.68, 1, 0.2}};
+  const std::string wider = sharpCornerText(horn, hornResult);
+  EXPECT_EQ(wider.find("kept as it is"), std::string::npos) << wider;
+  EXPECT_NE(wider.find("(21.5 degrees at (0.285, -0.658, -2.233)), which one triangle fills, its sides the chords to "
+                       "the border's next samples; no angle elsewhere is under 30 but at 2 more of the input's own "
+                       "sharp corners"),
+            std::string::npos)
+      << wider;
   after.minAngleOffSharpCorners = 35.0;
   after.minAngle = after.sharpCorners[0].degrees = 12.0;  // a corner sharper than the input's
   EXPECT_EQ(sharpCornerText(before, after), "");
