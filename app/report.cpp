@@ -270,6 +270,7 @@ nlohmann::json toJson(const QualityMetrics& m) {
           {"percent_under_30_deg", m.percentUnder30},
           {"max_angle_deg", m.maxAngle},
           {"curvature_defects_percent", m.curvatureDefects},
+          {"curvature_defects_on_border_percent", m.curvatureDefectsOnBorder},
           {"angle_histogram_10deg", m.angleHistogram},
           {"folded_edges", m.foldedEdges},
           {"min_angle_off_sharp_corners_deg", m.minAngleOffSharpCorners},

@@ -863,11 +863,13 @@ TEST(Report, TheCurvatureIsInTheTableAndTheJson) {
   RemeshResult r;
   r.before.curvatureDefects = 6.6;
   r.after.curvatureDefects = 24.0;
+  r.after.curvatureDefectsOnBorder = 20.0;
   const std::string table = qualityTable(r.before, r.after, nullptr);
   EXPECT_NE(table.find("| Curvature (60-deg defects, %)      |        6.6 |       24.0 |"), std::string::npos) << table;
   const nlohmann::json json = toJson(r, RemeshOptions{});
   EXPECT_EQ(json["input"]["curvature_defects_percent"], 6.6);
   EXPECT_EQ(json["output"]["curvature_defects_percent"], 24.0);
+  EXPECT_EQ(json["output"]["curvature_defects_on_border_percent"], 20.0);  // the border's part
 }
 
 // Where the result misses the irregularity bar on a surface that curves as much for its
