@@ -432,8 +432,6 @@ std::string ofTheResultReplaced(const RemeshResult& r, std::string text) {
   text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
   return "Before the border's corners were kept: " + text;
 }
-std::string chartTrialFigures(const RemeshResult& r);
-std::string firstPassTrialFigures(const RemeshResult& r);
 }  // namespace
 
 std::string slitTrialText(const RemeshResult& r) {
@@ -456,52 +454,46 @@ std::string slitTrialText(const RemeshResult& r) {
              format("%.1f", t.slit) + " deg slit, " + format("%.1f", t.whole) + " deg whole" + why);
 }
 
-std::string chartTrialText(const RemeshResult& r) { return ofTheResultReplaced(r, chartTrialFigures(r)); }
-
-namespace {
-std::string chartTrialFigures(const RemeshResult& r) {
+std::string chartTrialText(const RemeshResult& r) {
   if (!r.chartTrial) return "";
   const ChartTrial& t = *r.chartTrial;
   if (!t.failed.empty())
-    return "Kept as one disk (remeshed chart by chart too, which failed: " + t.failed + ")";
+    return ofTheResultReplaced(r, "Kept as one disk (remeshed chart by chart too, which failed: " + t.failed + ")");
   if (!t.oneCutFailed.empty())
     return "Remeshed chart by chart, in " + std::to_string(t.charts) + " charts (as one disk it failed: " +
            t.oneCutFailed + ")";
-  return std::string(r.charts > 0 ? "Kept chart by chart" : "Kept as one disk") +
-         (t.forBars ? " (a bar was missed as one disk: remeshed chart by chart too): average smallest angle "
-                    : " (remeshed both ways, as one disk and chart by chart): average smallest angle ") +
-         format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +
-         format("%.1f", t.oneCutAvgMinAngle) + " deg one disk" +
-         (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.chartsHausdorff) + "% and " +
-                                    format("%.3f", t.oneCutHausdorff) + "%"
-                              : "") +
-         "; bars met (irregular, smallest angle, average) " + std::to_string(t.chartsBars) + " and " +
-         std::to_string(t.oneCutBars) +
-         (t.distancesDecide() || t.oneCutFolds != t.chartsFold ? "" : ": not more in charts") +
-         (t.oneCutFolds == t.chartsFold ? ""
-          : t.oneCutFolds              ? "; one disk folds back on itself, the charts do not"
-                                       : "; the charts fold back on themselves, one disk does not");
+  return ofTheResultReplaced(
+      r, std::string(r.charts > 0 ? "Kept chart by chart" : "Kept as one disk") +
+             (t.forBars ? " (a bar was missed as one disk: remeshed chart by chart too): average smallest angle "
+                        : " (remeshed both ways, as one disk and chart by chart): average smallest angle ") +
+             format("%.1f", t.chartsAvgMinAngle) + " deg in " + std::to_string(t.charts) + " charts, " +
+             format("%.1f", t.oneCutAvgMinAngle) + " deg one disk" +
+             (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.chartsHausdorff) + "% and " +
+                                        format("%.3f", t.oneCutHausdorff) + "%"
+                                  : "") +
+             "; bars met (irregular, smallest angle, average) " + std::to_string(t.chartsBars) + " and " +
+             std::to_string(t.oneCutBars) +
+             (t.distancesDecide() || t.oneCutFolds != t.chartsFold ? "" : ": not more in charts") +
+             (t.oneCutFolds == t.chartsFold ? ""
+              : t.oneCutFolds              ? "; one disk folds back on itself, the charts do not"
+                                           : "; the charts fold back on themselves, one disk does not"));
 }
 
-}  // namespace
-
-std::string firstPassTrialText(const RemeshResult& r) { return ofTheResultReplaced(r, firstPassTrialFigures(r)); }
-
-namespace {
-std::string firstPassTrialFigures(const RemeshResult& r) {
+std::string firstPassTrialText(const RemeshResult& r) {
   if (!r.firstPassTrial) return "";
   const FirstPassTrial& t = *r.firstPassTrial;
   if (!t.failed.empty())
-    return "Kept with the first resampling (a bar was missed with it: remeshed without it too, which failed: " +
-           t.failed + ")";
-  return std::string(t.keptWithout ? "Kept without the first resampling" : "Kept with the first resampling") +
-         " (a bar was missed with it: remeshed without it too): bars met (irregular, smallest angle, average) " +
-         std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without" +
-         (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.withHausdorff) + "% and " +
-                                    format("%.3f", t.withoutHausdorff) + "%"
-                              : ": not more without");
+    return ofTheResultReplaced(
+        r, "Kept with the first resampling (a bar was missed with it: remeshed without it too, which failed: " +
+               t.failed + ")");
+  return ofTheResultReplaced(
+      r, std::string(t.keptWithout ? "Kept without the first resampling" : "Kept with the first resampling") +
+             " (a bar was missed with it: remeshed without it too): bars met (irregular, smallest angle, average) " +
+             std::to_string(t.withBars) + " with, " + std::to_string(t.withoutBars) + " without" +
+             (t.distancesDecide() ? "; Hausdorff " + format("%.3f", t.withHausdorff) + "% and " +
+                                        format("%.3f", t.withoutHausdorff) + "%"
+                                  : ": not more without"));
 }
-}  // namespace
 
 std::string borderTrialText(const RemeshResult& r) {
   if (!r.borderTrial) return "";

@@ -84,7 +84,7 @@ namespace {
 // Each inside edge once, from the triangle where it runs from its smaller end to its larger
 // (the other runs it back), its other triangle found among its smaller end's: no sort of all
 // the edges, as measureQuality runs for every iteration the inspector shows.
-std::vector<QualityMetrics::Fold> foldedEdges(const Mesh& mesh, const Rings& rings) {
+std::vector<QualityMetrics::Fold> foldsOf(const Mesh& mesh, const Rings& rings) {
   std::vector<Vec3> normal(mesh.triangles.size(), Vec3::Zero());
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Vec3 n = faceNormal(mesh, mesh.triangles[f]);
@@ -245,7 +245,7 @@ QualityMetrics measureQuality(const Mesh& mesh) {
     for (int k = 0; k < 3; ++k)
       if (!filledCorner[mesh.triangles[f][k]])
         m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, cornerAngles[f][k]);
-  m.folds = foldedEdges(mesh, rings);
+  m.folds = foldsOf(mesh, rings);
   m.foldedEdges = static_cast<int>(m.folds.size());
   if (m.minAngle < kLeastMinAngle) {  // the one "Pin the worst triangle" pins
     const int worst = worstTriangle(mesh);
