@@ -1569,7 +1569,8 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   // two lines where the pane is narrower than it (960x600).
   const Layers shown = layers();
   const bool seams = !replay_->seams().empty() || !replay_->recording().sharedSeams.empty();
-  const std::string legend = wrappedLines(domainLegend(shown.sites2D, shown.centroids2D, seams), extent.x - 16, "  ");
+  const std::string legend = wrappedLines(
+      domainLegend(shown.sites2D, shown.centroids2D, seams, presentation_ && pickTriangles2D_), extent.x - 16, "  ");
   const float legendHeight = ImGui::CalcTextSize(legend.c_str()).y;
   // A fill's legend (its name over a colour bar, top left) has its own room too: over the
   // domain it hid a square domain's corner cells.

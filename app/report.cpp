@@ -524,13 +524,14 @@ std::string coarseInputText(int coarse, int inputVertices) {
          "against the input itself";
 }
 
-std::string domainLegend(bool sites, bool centroids, bool seams) {
+std::string domainLegend(bool sites, bool centroids, bool seams, bool clicksPinTriangles) {
   std::string legend;
   auto add = [&](const char* part) { legend += (legend.empty() ? "" : "  ") + std::string(part); };
   if (sites) add("dots: sites");
   if (centroids) add("rings: centroids");
   if (sites) add(seams ? "squares: fixed" : "squares: fixed border sites");
   if (seams) add("purple: seams");
+  if (clicksPinTriangles) add("a click pins a triangle");
   return legend;
 }
 

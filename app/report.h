@@ -152,8 +152,10 @@ std::string distanceText(const Fidelity& f);
 std::string shownDistanceText(const Fidelity& f, bool asked, bool running);
 
 // The 2D pane's legend for what it draws: the sites (dots, and the fixed ones as squares), the
-// centroids (rings), and a cut surface's seams.
-std::string domainLegend(bool sites, bool centroids, bool seams);
+// centroids (rings), and a cut surface's seams; and that a click pins a triangle, where the
+// choice is not in sight (classroom mode hides it: the lesson's "click a large cell" pinned a
+// triangle, with no sign why).
+std::string domainLegend(bool sites, bool centroids, bool seams, bool clicksPinTriangles = false);
 
 // What the 3D view shows, in its top-left label.
 struct ViewLabel3D {

@@ -577,6 +577,7 @@ TEST(Report, TheDomainLegendNamesWhatIsDrawn) {
   EXPECT_EQ(domainLegend(false, false, false), "");
   EXPECT_EQ(domainLegend(false, false, true), "purple: seams");
   EXPECT_EQ(domainLegend(true, true, true), "dots: sites  rings: centroids  squares: fixed  purple: seams");
+  EXPECT_EQ(domainLegend(true, false, false, true), "dots: sites  squares: fixed border sites  a click pins a triangle");
 }
 
 // A pinned triangle's corners: the valence on the vertex's row, the sites on a row of their own.
