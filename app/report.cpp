@@ -272,7 +272,7 @@ nlohmann::json toJson(const QualityMetrics& m) {
           {"curvature_defects_percent", m.curvatureDefects},
           {"curvature_defects_on_border_percent", m.curvatureDefectsOnBorder},
           {"angle_histogram_10deg", m.angleHistogram},
-          {"folded_edges", m.foldedEdges},
+          {"folded_edges", m.foldedEdges()},
           {"min_angle_off_sharp_corners_deg", m.minAngleOffSharpCorners},
           {"sharpest_border_corner_deg",
            m.boundaryVertices > 0 ? nlohmann::json(m.sharpestBorderCorner) : nlohmann::json(nullptr)}};

@@ -246,7 +246,6 @@ QualityMetrics measureQuality(const Mesh& mesh) {
       if (!filledCorner[mesh.triangles[f][k]])
         m.minAngleOffSharpCorners = std::min(m.minAngleOffSharpCorners, cornerAngles[f][k]);
   m.folds = foldsOf(mesh, rings);
-  m.foldedEdges = static_cast<int>(m.folds.size());
   if (m.minAngle < kLeastMinAngle) {  // the one "Pin the worst triangle" pins
     const int worst = worstTriangle(mesh);
     const auto& angles = cornerAngles[worst];

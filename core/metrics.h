@@ -56,16 +56,15 @@ struct QualityMetrics {
   std::array<int, 18> angleHistogram{};  // all corner angles in 10-degree bins, 0..180
   // Inside edges whose two triangles' normals turn more than kFoldDegrees: the surface folds
   // back on itself there (a fin, or a result's triangles bridging the two sides of a thin flap:
-  // no angle shows it).
-  int foldedEdges = 0;
-  // Where they are: each one's ends (folds of the result the input has there too are its own,
-  // not the remeshing's).
+  // no angle shows it). Each one's ends: folds of the result the input has there too are its
+  // own, not the remeshing's.
   struct Fold {
     Vec3 from = Vec3::Zero(), to = Vec3::Zero();
     Vec3 middle() const { return 0.5 * (from + to); }
     double length() const { return (to - from).norm(); }
   };
   std::vector<Fold> folds;
+  int foldedEdges() const { return static_cast<int>(folds.size()); }
   // The smallest sum of the angles at a border vertex, degrees (360 with no border).
   double sharpestBorderCorner = 360;
   // The border's corners sharper than kSharpCornerDegrees, by sharpness: a remesher that keeps

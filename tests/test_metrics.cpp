@@ -352,10 +352,10 @@ TEST(Quality, CountsTheEdgesWhereTheSurfaceFoldsBackOnItself) {
     m.triangles = {{0, 1, 2}, {1, 0, 3}};
     return m;
   };
-  EXPECT_EQ(measureQuality(hinge(0)).foldedEdges, 0);
-  EXPECT_EQ(measureQuality(hinge(120)).foldedEdges, 0);
-  EXPECT_EQ(measureQuality(hinge(170)).foldedEdges, 1);
-  EXPECT_EQ(measureQuality(test::grid(4)).foldedEdges, 0);
+  EXPECT_EQ(measureQuality(hinge(0)).foldedEdges(), 0);
+  EXPECT_EQ(measureQuality(hinge(120)).foldedEdges(), 0);
+  EXPECT_EQ(measureQuality(hinge(170)).foldedEdges(), 1);
+  EXPECT_EQ(measureQuality(test::grid(4)).foldedEdges(), 0);
   const QualityMetrics folded = measureQuality(hinge(170));
   ASSERT_EQ(folded.folds.size(), 1u);
   EXPECT_TRUE(folded.folds[0].middle().isApprox(Vec3(0.5, 0, 0)));  // the hinge
