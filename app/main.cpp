@@ -321,9 +321,10 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
                "Leave out the first step after the polish, which snaps a vertex onto each thin tip of "
                "the input the result would cut off");
   cmd.add_flag("--no-fit", r.noFit,
-               "Leave every vertex of the result on the input (by default retriangulate's last step "
-               "moves them along their normals, and the border's across the border, so that the result "
-               "lies closer to the input, angles kept)");
+               "Leave out the fit: by default retriangulate's last step moves the vertices along their "
+               "normals, and the border's across the border, so that the result lies closer to the "
+               "input, angles kept. Without it every vertex stays on the input, or, where the input was "
+               "simplified first (--simplify, or a large input), on it or on that simplification");
   cmd.add_flag("--no-slit", r.noSlit,
                "Keep a nearly closed disk whole (by default it is also remeshed slit open, and the "
                "result meeting more of the quality bars kept; where both meet them, the closer to the "

@@ -191,6 +191,17 @@ TEST(Cli, TooFewVerticesAskedIsAnError) {
   EXPECT_EQ(runCli("remesh " + path + " --sites 20 --no-fidelity -o " + test::tempPath("twenty.off")).code, 0);
 }
 
+// --no-fit's help said every vertex stays "on the input"; where the input was simplified first
+// the vertices the last steps leave alone are on the simplification (the lion simplified to 500
+// and remeshed at 1000: up to 0.86% of its diagonal from the input).
+TEST(Cli, TheNoFitHelpSaysTheVerticesMayBeOnTheSimplification) {
+  const std::string help = runCli("remesh --help").out;
+  const size_t at = help.find("--no-fit");
+  ASSERT_NE(at, std::string::npos);
+  const std::string noFit = help.substr(at, help.find("\n  -", at + 1) - at);
+  EXPECT_NE(noFit.find("on that simplification"), std::string::npos) << noFit;
+}
+
 // The JSON's settings are the text report's settings line, every key of it: "sites" read 0 for
 // "as many as the input" and for relocate's input vertices, and resample, the polish's target
 // and the slits were left out. A recording's summary has the same object.
