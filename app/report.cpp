@@ -369,6 +369,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
                                                           {"without_hausdorff_percent", measuredOrNull(r.borderTrial->failed.empty(), r.borderTrial->withoutHausdorff)},
                                                           {"with_hausdorff_percent", measuredOrNull(r.borderTrial->failed.empty(), r.borderTrial->withHausdorff)},
                                                           {"kept", r.borderTrial->keptWith ? "with" : "without"},
+                                                          {"corners_moved", r.borderTrial->cornersMoved},
                                                           {"failed", r.borderTrial->failed}}
                                          : nlohmann::json()},
           {"coarse_input_vertices", r.coarseInput},
@@ -502,7 +503,10 @@ std::string borderTrialText(const RemeshResult& r) {
   if (!t.failed.empty())
     return "Kept as sampled (its border cut corners of the input's: remeshed with " + corners +
            " kept too, which failed: " + t.failed + ")";
-  return std::string(t.keptWith ? "Kept with " + corners + " as border samples" : "Kept as sampled") +
+  const std::string moved = t.cornersMoved > 0 ? ", " + std::to_string(t.cornersMoved) +
+                                                     " of them since moved along it where that raised a small angle"
+                                               : "";
+  return std::string(t.keptWith ? "Kept with " + corners + " as border samples" + moved : "Kept as sampled") +
          " (its border cut corners of the input's: remeshed with them kept too): Hausdorff " +
          format("%.3f", t.withHausdorff) + "% with, " + format("%.3f", t.withoutHausdorff) +
          "% without; bars met (irregular, smallest angle, average) " + std::to_string(t.withBars) + " and " +

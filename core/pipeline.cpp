@@ -746,6 +746,21 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
   countTheOtherRun(kept, other);
 }
 
+// How many of `points` no border vertex of `m` is at (to a millionth of its diagonal, as the
+// sites keep them): kept corners that the polish's slides or the merges of short border edges
+// moved on, where that raised a small angle (a zigzag border's notches).
+int offTheBorder(const std::vector<Vec3>& points, const Mesh& m) {
+  const std::vector<bool> border = vertexEdges(m).onBoundary;
+  const double samePoint = 1e-6 * boundingBoxDiagonal(m);
+  std::vector<Vec3> borderPoints;
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (border[v]) borderPoints.push_back(m.points[v]);
+  return static_cast<int>(std::count_if(points.begin(), points.end(), [&](const Vec3& p) {
+    return std::none_of(borderPoints.begin(), borderPoints.end(),
+                        [&](const Vec3& q) { return (p - q).norm() <= samePoint; });
+  }));
+}
+
 // The disk remeshed again with the corners of the input's border that the kept result's border
 // cuts (off or across) kept as border samples (borderCornersCut), and that kept if
 // BorderTrial::withBetter().
@@ -787,6 +802,7 @@ void tryKeepingBorderCorners(RemeshResult& kept, const Mesh& input, const Remesh
     other.chartTrial = kept.chartTrial;
     other.resampleDropped = kept.resampleDropped;
     std::swap(kept, other);
+    trial.cornersMoved = offTheBorder(trial.corners, kept.output);
   }
   kept.borderTrial = std::move(trial);
   countTheOtherRun(kept, other);

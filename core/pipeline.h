@@ -172,6 +172,7 @@ struct FirstPassTrial {
 // run gave.
 struct BorderTrial {
   std::vector<Vec3> corners;  // the input's border vertices kept as samples
+  int cornersMoved = 0;  // of those, kept with: how many no border vertex of the result is at
   int withoutBars = 0, withBars = 0;  // bars met (barsMet), without the corners kept and with
   double withoutHausdorff = 0, withHausdorff = 0;  // % of the diagonal
   bool keptWith = false;

@@ -149,6 +149,14 @@ TEST(Report, TheBorderTrialSaysWhatEachRunGave) {
   EXPECT_EQ(json["border_trial"]["corners"], 48);
   EXPECT_EQ(json["border_trial"]["kept"], "with");
   EXPECT_DOUBLE_EQ(json["border_trial"]["without_hausdorff_percent"].get<double>(), 0.134);
+  EXPECT_EQ(json["border_trial"]["corners_moved"], 0);
+  r.borderTrial->cornersMoved = 36;  // slid along the border by the polish
+  EXPECT_EQ(borderTrialText(r).rfind("Kept with 48 corners of the input's coarse border as border samples, 36 of "
+                                     "them since moved along it where that raised a small angle (its border cut ",
+                                     0),
+            0u)
+      << borderTrialText(r);
+  EXPECT_EQ(toJson(r, RemeshOptions{})["border_trial"]["corners_moved"], 36);
   r.borderTrial->keptWith = false;
   EXPECT_EQ(borderTrialText(r).rfind("Kept as sampled (", 0), 0u) << borderTrialText(r);
   r.borderTrial->failed = "the parameterization is not one-to-one";
