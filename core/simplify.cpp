@@ -21,14 +21,22 @@ namespace {
 namespace SMS = CGAL::Surface_mesh_simplification;
 using Profile = SMS::Edge_profile<SurfaceMesh>;
 
+// Whether v, an end of the profile's edge, is on the border: one of the border edges the profile
+// has gathered around both ends ends at it. CGAL::is_border(v) walks v's whole ring, and this is
+// asked of every edge around a vertex again after each collapse there: around a hub of 1000
+// triangles that was 41% of the time.
+bool onBorder(const Profile& profile, SurfaceMesh::Vertex_index v) {
+  const SurfaceMesh& sm = profile.surface_mesh();
+  return std::any_of(profile.border_edges().begin(), profile.border_edges().end(),
+                     [&](SurfaceMesh::Halfedge_index h) { return sm.source(h) == v || sm.target(h) == v; });
+}
+
 // Garland-Heckbert placement, except where the boundary would move (see simplify()).
 template <typename Inner>
 struct BoundaryKeepingPlacement {
   Inner inner;
   boost::optional<Point3> operator()(const Profile& profile) const {
-    const SurfaceMesh& sm = profile.surface_mesh();
-    const bool border0 = bool(CGAL::is_border(profile.v0(), sm));
-    const bool border1 = bool(CGAL::is_border(profile.v1(), sm));
+    const bool border0 = onBorder(profile, profile.v0()), border1 = onBorder(profile, profile.v1());
     if (!border0 && !border1) return inner(profile);
     if (border0 && border1) {
       if (!profile.is_v0_v1_a_border() && !profile.is_v1_v0_a_border()) return boost::none;

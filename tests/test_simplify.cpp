@@ -44,6 +44,26 @@ TEST(Simplify, ReachesTheTargetAndStaysADiskWithItsBorderInPlace) {
   for (const Vec3& p : r.mesh.points) EXPECT_NEAR(p.z(), 0.0, 1e-9);  // a plane stays flat
 }
 
+// A round, curved disk: Garland and Heckbert's placements would pull its border inward where an
+// edge from the inside, or across a corner of the border, collapses; every border vertex of the
+// result stays on the input's border polyline (BoundaryKeepingPlacement, which tells a border
+// vertex by the border edges around the collapsing edge).
+TEST(Simplify, ACurvedBorderStaysOnTheInputsBorder) {
+  const Mesh input = test::polarDisk(48, 12, 0.1, [](double r, double a) { return 0.3 * r * r * std::sin(3 * a); });
+  const SimplifyResult r = simplify(input, {120}, "bowl");
+  ASSERT_EQ(r.mesh.vertexCount(), 120);
+  const Topology t = analyzeTopology(r.mesh);
+  ASSERT_TRUE(t.isDisk()) << t.describe();
+  const int rim = input.vertexCount() - 48;  // the outer ring's first vertex
+  for (int v : t.boundaryLoops.at(0)) {
+    double nearest = INFINITY;
+    for (int i = 0; i < 48; ++i)
+      nearest = std::min(nearest, distanceToSegment(r.mesh.points[v], input.points[rim + i],
+                                                    input.points[rim + (i + 1) % 48]));
+    EXPECT_LT(nearest, 1e-12) << v;
+  }
+}
+
 TEST(Simplify, TargetsByFacesAndRatio) {
   const Mesh input = jitteredSquare();  // 441 vertices, 800 faces
   EXPECT_EQ(simplify(input, {0, 0, 0.5}, "square").mesh.vertexCount(), 221);
