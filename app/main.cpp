@@ -165,6 +165,16 @@ Mesh load(const std::string& path, bool repair) {
   return std::move(read.mesh);
 }
 
+// Before a simplification that would seem to hang: CGAL's edge collapse takes time cubic in the
+// triangles around a vertex (a hub of 3000: half a minute; kMostTrianglesAroundAVertexToSimplify).
+void noteASlowSimplification(const Mesh& mesh, const std::string& name) {
+  const int around = mostTrianglesAroundAVertex(mesh);
+  if (around > kMostTrianglesAroundAVertexToSimplify)
+    std::cerr << "note: " << name << ": one vertex has " << around
+              << " triangles around it, and simplifying takes time cubic in that number (seconds at 1000, half a "
+                 "minute at 3000)\n";
+}
+
 // The mesh to remesh with `o` (remesh, inspect and bench-frames alike), noting --simplify over its
 // size where its own vertices are the sites (relocate, the report's preset): there is nothing
 // to coarsen, and no vertex is added (the result had the input's 500 for the 1000 asked, said
@@ -176,6 +186,8 @@ Mesh loadToRemesh(const RemeshArgs& a, const RemeshOptions& o) {
     std::cerr << "note: --simplify " << o.simplifyTo << " has no effect here: the input has " << input.vertexCount()
               << " vertices, and they are the sites (" << (relocate ? "relocate moves them" : "the report's preset starts from them")
               << ")\n";
+  else if (o.simplifyTo > 0 && o.simplifyTo < input.vertexCount())
+    noteASlowSimplification(input, a.input);
   return input;
 }
 
@@ -713,6 +725,7 @@ struct SimplifyCommand {
     const Mesh mesh = load(input, repair);
     // Beyond it the quadrics overflow: at 1e78 nothing collapsed, and the mesh was written as read.
     requireExactPredicatesRange(mesh, input, "simplified");
+    noteASlowSimplification(mesh, input);
     const SimplifyResult s = simplify(mesh, target, input);
     writeMesh(s.mesh, output);
     std::cout << input << ": " << mesh.vertexCount() << " vertices, " << mesh.faceCount() << " faces -> "

@@ -119,6 +119,26 @@ TEST(Cli, AStandardOutputThatCannotBeWrittenIsAnError) {
   EXPECT_EQ(runCli("metrics " + test::assetPath("bumpy_disk.off")).code, 0);
 }
 
+// A fan of 1200 triangles around one vertex (a CAD disk's hub, or a 1200-gon an OBJ reader fans
+// out): simplifying it takes time cubic in that (a hub of 3000: half a minute, printing
+// nothing, and it looked hung). simplify and remesh --simplify say so first; a mesh without a
+// hub gets no such note.
+TEST(Cli, ASimplificationAroundAHubSaysItIsSlow) {
+  const Mesh hub = test::polarDisk(1200, 2);
+  const std::string in = test::tempPath("hub.off");
+  writeMesh(hub, in);
+  const std::string note = "note: " + in + ": one vertex has 1200 triangles around it, and simplifying takes time "
+                           "cubic in that number (seconds at 1000, half a minute at 3000)\n";
+  CliRun r = runCli("simplify " + in + " --ratio 0.999 -o " + test::tempPath("hub_out.off"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, note);
+  r = runCli("remesh " + in + " --simplify 2390 --sites 100 --max-iterations 2 --no-fidelity -o " +
+             test::tempPath("hub_remeshed.off"));
+  EXPECT_EQ(r.err.rfind(note, 0), 0u) << r.err;
+  r = runCli("simplify " + test::assetPath("bumpy_disk.off") + " --ratio 0.5 -o " + test::tempPath("bumpy_out.off"));
+  EXPECT_EQ(r.err, "");
+}
+
 // --no-snap leaves the snaps to tips out: on a spike the result cuts off, the distance stays.
 TEST(Cli, NoSnapLeavesTheTipsAlone) {
   Mesh spike = test::grid(40);
