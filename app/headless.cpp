@@ -96,9 +96,9 @@ class OffscreenRenderer {
     if (readBack) gpu_.waitSubmitted();
   }
 
-  // Writes the part `crop` of the last frame read back.
-  void writePng(const std::string& path, const PixelRect& crop) const {
-    lloydscope::writePng(path, static_cast<const unsigned char*>(pixels_.mapped), width_, height_, false, crop);
+  // The part `crop` of the last frame read back, as a PNG file for `path`.
+  std::vector<unsigned char> encodePng(const std::string& path, const PixelRect& crop) const {
+    return lloydscope::encodePng(path, static_cast<const unsigned char*>(pixels_.mapped), width_, height_, false, crop);
   }
 
   void finish() { gpu_.waitSubmitted(); }
@@ -159,8 +159,7 @@ void render(const std::string& meshName, const RemeshOptions& options, RemeshRes
     inspector.startExport(shot.picture);
     while (inspector.exporting()) {
       renderer.frame([&] { inspector.frame(); }, true);
-      renderer.writePng(inspector.exportRequest()->path, inspector.exportRequest()->crop);
-      inspector.exported();
+      inspector.savePicture(renderer.encodePng(inspector.exportRequest()->path, inspector.exportRequest()->crop));
     }
   }
   if (renderer.validationMessages() > 0)

@@ -612,7 +612,23 @@ void Inspector::startExport(ExportJob job) {
   exportJob_ = std::move(job);
 }
 
+void Inspector::savePicture(const std::vector<unsigned char>& png) {
+  const auto write = [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), png.size()); };
+  if (exportJob_->first < 0) {
+    writeAtomically(exportRequest_->path, write);
+  } else {
+    if (!sequenceFiles_) sequenceFiles_ = std::make_unique<FileBatch>();
+    sequenceFiles_->add(exportRequest_->path, write);
+    if (exportNext_ >= exportJob_->last) {
+      sequenceFiles_->commit();
+      sequenceFiles_.reset();
+    }
+  }
+  exported();
+}
+
 void Inspector::exported(const std::string& error) {
+  if (!error.empty()) sequenceFiles_.reset();  // none of its pictures replaces a file
   if (exportRequest_) showMessage(error.empty() ? "saved " + exportRequest_->path : error);
   exportRequest_.reset();
   if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last) {

@@ -5,6 +5,7 @@
 
 #include "background_task.h"
 #include "canvas_renderer.h"
+#include "files.h"
 #include "mesh_renderer.h"
 #include "orbit_camera.h"
 #include "plane_view.h"
@@ -61,8 +62,9 @@ std::string exportPath(const ExportJob& job, int iteration);
 void refuseReplacing(const std::string& path, const std::string& shown, const std::string& what);
 void refuseReplacing(const ExportJob& job, const std::string& shown);
 
-// One picture the front end must save: after rendering the frame, read it back, write `crop`
-// of it to `path`, and call Inspector::exported().
+// One picture the front end must save: after rendering the frame, read it back, encode `crop`
+// of it (encodePng, which names `path` in its errors), and give it to Inspector::savePicture(),
+// or say why it could not to Inspector::exported().
 struct ExportRequest {
   std::string path;
   PixelRect crop;  // in framebuffer pixels
@@ -156,7 +158,14 @@ class Inspector {
   void startExport(ExportJob job);  // throws Error on a bad path or range
   const std::optional<ExportRequest>& exportRequest() const { return exportRequest_; }
   bool exporting() const { return exportJob_.has_value(); }
-  // The picture was saved, or could not be (`error`, one line, ends the job and is shown).
+  // Saves the picture asked for. One alone replaces its file at once; a sequence's wait in
+  // temporaries until its last is made, then are renamed onto their files together
+  // (FileBatch): one that cannot be written (a full disk) leaves every file as it was. A
+  // sequence's 3rd picture on a full disk had replaced the first two and left the rest old.
+  // Throws Error naming the file; the caller ends the job with exported(why), or with the
+  // inspector (headless).
+  void savePicture(const std::vector<unsigned char>& png);
+  // The picture could not be made (`error`, one line, ends the job and is shown), or was saved.
   void exported(const std::string& error = {});
   // Records the frame ImGui::Render() produced into `framebuffer`: clears it and draws every
   // pane, our own pipelines included (ImGui 1.86 passes its draw callbacks no command buffer,
@@ -339,6 +348,7 @@ class Inspector {
   std::optional<ExportJob> exportJob_;
   int exportNext_ = 0, iterationBeforeExport_ = 0;
   std::optional<ExportRequest> exportRequest_;
+  std::unique_ptr<FileBatch> sequenceFiles_;  // a sequence's pictures, until its last
   bool closeRequested_ = false;
   char exportPath_[512] = "lloydscope.png";
   int exportPane_ = 0, exportFirst_ = 0;

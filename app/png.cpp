@@ -11,8 +11,8 @@
 
 namespace lloydscope {
 
-void writePng(const std::string& path, const unsigned char* pixels, int width, int height,
-              bool bgra, PixelRect crop) {
+std::vector<unsigned char> encodePng(const std::string& path, const unsigned char* pixels, int width, int height,
+                                     bool bgra, PixelRect crop) {
   crop.x = std::clamp(crop.x, 0, width);
   crop.y = std::clamp(crop.y, 0, height);
   crop.width = std::clamp(crop.width, 0, width - crop.x);
@@ -29,16 +29,23 @@ void writePng(const std::string& path, const unsigned char* pixels, int width, i
       to[3] = 255;  // the frame is opaque
     }
   }
-  writeAtomically(path, [&](std::ostream& out) {
-    const auto append = [](void* stream, void* data, int size) {
-      static_cast<std::ostream*>(stream)->write(static_cast<const char*>(data), size);
-    };
-    // stb fails only where its buffers cannot be allocated (it said "disk full?" through a
-    // failed stream); writeAtomically leaves the file as it was.
-    if (!stbi_write_png_to_func(append, &out, crop.width, crop.height, 4, rgba.data(), crop.width * 4))
-      throw Error(path + ": not enough memory to encode a " + std::to_string(crop.width) + "x" +
-                  std::to_string(crop.height) + " picture as PNG");
-  });
+  std::vector<unsigned char> png;
+  const auto append = [](void* out, void* data, int size) {
+    auto* bytes = static_cast<std::vector<unsigned char>*>(out);
+    bytes->insert(bytes->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
+  };
+  // stb fails only where its buffers cannot be allocated (it said "disk full?" through a failed
+  // stream).
+  if (!stbi_write_png_to_func(append, &png, crop.width, crop.height, 4, rgba.data(), crop.width * 4))
+    throw Error(path + ": not enough memory to encode a " + std::to_string(crop.width) + "x" +
+                std::to_string(crop.height) + " picture as PNG");
+  return png;
+}
+
+void writePng(const std::string& path, const unsigned char* pixels, int width, int height,
+              bool bgra, PixelRect crop) {
+  const std::vector<unsigned char> png = encodePng(path, pixels, width, height, bgra, crop);
+  writeAtomically(path, [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), png.size()); });
 }
 
 void requirePngPath(const std::string& path) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace lloydscope {
 
@@ -11,8 +12,12 @@ struct PixelRect {
 };
 
 // `pixels`: width x height, 4 bytes each, rows packed; `bgra` when the frame's format stores
-// blue first (a swapchain). Writes `crop` of it to a temporary file, then renames it to `path`:
-// an existing picture is replaced whole or not at all. Throws Error naming the file.
+// blue first (a swapchain). The PNG file of `crop` of it. Throws Error naming `path`, the file
+// it is for, where there is nothing to encode or no memory to encode it.
+std::vector<unsigned char> encodePng(const std::string& path, const unsigned char* pixels, int width, int height,
+                                     bool bgra, PixelRect crop);
+// Writes that to a temporary file, then renames it to `path`: an existing picture is replaced
+// whole or not at all. Throws Error naming the file.
 void writePng(const std::string& path, const unsigned char* pixels, int width, int height,
               bool bgra, PixelRect crop);
 

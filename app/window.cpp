@@ -155,10 +155,9 @@ void saveExport(Inspector& inspector, const Swapchain& chain, const gpu::Buffer&
   }
   const ExportRequest& r = *inspector.exportRequest();
   try {
-    writePng(r.path, static_cast<const unsigned char*>(pixels.mapped),
-             static_cast<int>(chain.extent.width), static_cast<int>(chain.extent.height), true,
-             r.crop);
-    inspector.exported();
+    inspector.savePicture(encodePng(r.path, static_cast<const unsigned char*>(pixels.mapped),
+                                    static_cast<int>(chain.extent.width), static_cast<int>(chain.extent.height),
+                                    true, r.crop));
   } catch (const Error& e) {
     inspector.exported(e.what());
   }

@@ -538,6 +538,24 @@ TEST(Inspector, ASequenceOneOfWhoseNamesCannotBeWrittenSavesNone) {
   EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"err.txt", "x_0002.png"}));
 }
 
+// A sequence whose third picture cannot be written once made (a full disk; here a link to
+// /dev/full, which the checks before the first picture pass) replaces none of its files: the
+// first two had been replaced, the rest left old. One that can be written replaces them all.
+TEST(Inspector, ASequenceThatFailsOnTheWayReplacesNone) {
+  const std::string here = test::emptyFolder("sequence_full"), base = here + "/x.png";
+  for (const char* name : {"/x_0000.png", "/x_0001.png", "/x_0003.png"}) test::writeText(here + name, "old");
+  std::filesystem::create_symlink("/dev/full", here + "/x_0002.png");
+  const std::string err = here + "/err.txt", shot = "inspect " + test::assetPath("sphere_cap.off") +
+                                                      " --screenshot " + base + " --size 960x600 --no-timings --pane 3d";
+  EXPECT_EQ(run(shot + " --iterations 0:3 2> " + err), 1);
+  EXPECT_EQ(test::readText(err), "lloydscope: " + here + "/x_0002.png: cannot write (No space left on device)\n");
+  for (const char* name : {"/x_0000.png", "/x_0001.png", "/x_0003.png"}) EXPECT_TRUE(test::readText(here + name) == "old") << name << " was replaced";
+  EXPECT_EQ(test::filesIn(here), (std::vector<std::string>{"err.txt", "x_0000.png", "x_0001.png", "x_0002.png", "x_0003.png"}));
+  ASSERT_EQ(run(shot + " --iterations 0:1"), 0);
+  EXPECT_FALSE(readPng(here + "/x_0000.png").rgba.empty());
+  EXPECT_FALSE(readPng(here + "/x_0001.png").rgba.empty());
+}
+
 // Each picture of a sequence of the Move stage quotes its own arrows' magnification: the
 // caption took it from the 2D pane's last drawing, the picture before's.
 TEST(Inspector, EachPictureOfASequenceHasItsOwnCaption) {
