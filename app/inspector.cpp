@@ -629,13 +629,12 @@ void Inspector::savePicture(const std::vector<unsigned char>& png) {
 
 void Inspector::exported(const std::string& error) {
   if (!error.empty()) sequenceFiles_.reset();  // none of its pictures replaces a file
-  if (exportRequest_) {
+  if (exportRequest_ && !error.empty()) showMessage(error);
+  if (exportRequest_ && error.empty()) {
     const bool sequence = exportJob_ && exportJob_->first >= 0;
-    showMessage(!error.empty() ? error
-                : sequence     ? pictureSavedText(exportRequest_->path, exportNext_ - exportJob_->first,
-                                                  exportJob_->last - exportJob_->first + 1,
-                                                  exportPath(*exportJob_, exportJob_->first))
-                               : pictureSavedText(exportRequest_->path, 0, 1, exportRequest_->path));
+    const int first = sequence ? exportJob_->first : 0, pictures = sequence ? exportJob_->last - first + 1 : 1;
+    showMessage(pictureSavedText(exportRequest_->path, sequence ? exportNext_ - first : 0, pictures,
+                                 sequence ? exportPath(*exportJob_, first) : exportRequest_->path));
   }
   exportRequest_.reset();
   if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last) {
