@@ -75,41 +75,57 @@ bool isSpecialFile(const std::string& path) {
 }
 
 // The temporaries being written, removed if the run is interrupted (Ctrl+C, kill) before they
-// are renamed: a slot each, for the few files one batch writes (a batch of n files takes 2n - 1:
-// its temporaries, and the second names kept while it commits).
-constexpr int kSlots = 4;
-char inFlight[kSlots][4096];
-volatile std::sig_atomic_t slotUsed[kSlots] = {};
+// are renamed: a slot each, holding a copy of its name. A batch of n files takes 2n - 1 (its
+// temporaries, and the second names kept while it commits), and a picture sequence is a batch
+// of one picture per iteration, up to the 100,000 iterations a run may take: with 4 slots, Ctrl+C
+// in a sequence of 40 pictures left 36 temporaries behind. The slots are lock-free atomics (a
+// signal handler may read them), searched from where the last was taken or freed.
+constexpr int kSlots = 1 << 18;
+std::atomic<const char*> inFlight[kSlots];
+static_assert(std::atomic<const char*>::is_always_lock_free);
+std::atomic<int> slotsReached{0};  // one past the highest slot ever taken: what the handler reads
+std::atomic<int> searchFrom{0};
 
 extern "C" void removeInFlightAndDie(int signal) {
-  for (int k = 0; k < kSlots; ++k)
-    if (slotUsed[k]) unlink(inFlight[k]);
+  const int reached = slotsReached.load();
+  for (int k = 0; k < reached; ++k)
+    if (const char* name = inFlight[k].load()) unlink(name);
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
 
 class InFlight {
  public:
-  explicit InFlight(const std::string& temporary) {
+  explicit InFlight(const std::string& temporary) : name_(new char[temporary.size() + 1]) {
     static const bool installed = [] {
       for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, removeInFlightAndDie);
       return true;
     }();
     (void)installed;
-    for (int k = 0; k < kSlots && slot_ < 0; ++k)
-      if (!slotUsed[k] && temporary.size() < sizeof inFlight[k]) {
-        std::memcpy(inFlight[k], temporary.c_str(), temporary.size() + 1);
-        slotUsed[k] = 1;
-        slot_ = k;
+    std::memcpy(name_.get(), temporary.c_str(), temporary.size() + 1);
+    const int start = searchFrom.load();
+    for (int i = 0; i < kSlots && slot_ < 0; ++i) {
+      const int k = (start + i) % kSlots;
+      if (inFlight[k].load() != nullptr) continue;
+      // The handler reads as far as slotsReached: it reaches k before k holds the name.
+      for (int seen = slotsReached.load(); seen <= k && !slotsReached.compare_exchange_weak(seen, k + 1);) {
       }
+      const char* empty = nullptr;
+      if (inFlight[k].compare_exchange_strong(empty, name_.get())) slot_ = k;
+    }
+    if (slot_ >= 0) searchFrom.store(slot_ + 1);
   }
   ~InFlight() {
-    if (slot_ >= 0) slotUsed[slot_] = 0;
+    if (slot_ < 0) return;
+    inFlight[slot_].store(nullptr);
+    for (int from = searchFrom.load(); slot_ < from && !searchFrom.compare_exchange_weak(from, slot_);) {
+    }
   }
   InFlight(const InFlight&) = delete;
   InFlight& operator=(const InFlight&) = delete;
 
  private:
+  std::unique_ptr<char[]> name_;
   int slot_ = -1;
 };
 

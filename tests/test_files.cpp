@@ -342,6 +342,24 @@ TEST(Files, AnInterruptedWriteLeavesNoTemporary) {
   EXPECT_EQ(test::readText(path), "old");
 }
 
+// A batch of many files (a picture sequence: one per iteration) interrupted before it commits
+// leaves none of its temporaries behind: the run kept the names of four at most, and Ctrl+C in
+// a sequence of 40 pictures left 36 hidden files of 400 KB each.
+TEST(Files, AnInterruptedBatchOfManyFilesLeavesNoTemporary) {
+  const std::string here = test::emptyFolder("interrupted_batch");
+  test::writeText(here + "/pic_0.png", "old");
+  EXPECT_EXIT(
+      {
+        FileBatch batch;
+        for (int i = 0; i < 40; ++i)
+          batch.add(here + "/pic_" + std::to_string(i) + ".png", [](std::ostream& out) { out << "new"; });
+        std::raise(SIGINT);
+      },
+      ::testing::KilledBySignal(SIGINT), "");
+  EXPECT_EQ(test::filesIn(here), std::vector<std::string>{"pic_0.png"});
+  EXPECT_EQ(test::readText(here + "/pic_0.png"), "old");
+}
+
 // A temporary file of the system's folder goes with its owner, at an error or a Ctrl+C: `bench
 // --lloyd-step` left /tmp/lloydscope-<pid>-0.lsrec behind at each.
 TEST(Files, ATemporaryFileGoesEvenWhenTheRunIsInterrupted) {
