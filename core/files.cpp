@@ -86,7 +86,15 @@ static_assert(std::atomic<const char*>::is_always_lock_free);
 std::atomic<int> slotsReached{0};  // one past the highest slot ever taken: what the handler reads
 std::atomic<int> searchFrom{0};
 
+std::atomic<int> deferring{0};        // InterruptionsDeferred alive
+std::atomic<int> deferredSignal{0};   // the signal that came meanwhile
+static_assert(std::atomic<int>::is_always_lock_free);
+
 extern "C" void removeInFlightAndDie(int signal) {
+  if (deferring.load() > 0) {
+    deferredSignal.store(signal);
+    return;
+  }
   const int reached = slotsReached.load();
   for (int k = 0; k < reached; ++k)
     if (const char* name = inFlight[k].load()) unlink(name);
@@ -94,14 +102,18 @@ extern "C" void removeInFlightAndDie(int signal) {
   std::raise(signal);
 }
 
+void installRemovalAtInterruption() {
+  static const bool installed = [] {
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, removeInFlightAndDie);
+    return true;
+  }();
+  (void)installed;
+}
+
 class InFlight {
  public:
   explicit InFlight(const std::string& temporary) : name_(new char[temporary.size() + 1]) {
-    static const bool installed = [] {
-      for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, removeInFlightAndDie);
-      return true;
-    }();
-    (void)installed;
+    installRemovalAtInterruption();
     std::memcpy(name_.get(), temporary.c_str(), temporary.size() + 1);
     const int start = searchFrom.load();
     for (int i = 0; i < kSlots && slot_ < 0; ++i) {
@@ -277,7 +289,18 @@ class KeptFile {
 
 }  // namespace
 
+InterruptionsDeferred::InterruptionsDeferred() {
+  installRemovalAtInterruption();
+  ++deferring;
+}
+
+InterruptionsDeferred::~InterruptionsDeferred() {
+  if (--deferring == 0)
+    if (const int signal = deferredSignal.exchange(0)) removeInFlightAndDie(signal);
+}
+
 void FileBatch::commit() {
+  const InterruptionsDeferred deferred;
   // Each file replaced so far is put back where a later one's rename fails (another user's
   // file in a sticky folder, refused beforehand now; a folder made in its place during the run).
   std::vector<std::unique_ptr<KeptFile>> kept;

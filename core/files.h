@@ -40,6 +40,18 @@ class FileBatch {
   std::vector<std::unique_ptr<Staged>> staged_;
 };
 
+// While one is alive, Ctrl+C or kill (SIGINT, SIGTERM, SIGHUP) waits: when the last goes, the
+// temporaries in flight are removed and the run ends by that signal. FileBatch::commit() renames
+// under one, so that an interruption between two renames cannot leave its files half replaced
+// and the second names that would put them back removed.
+class InterruptionsDeferred {
+ public:
+  InterruptionsDeferred();
+  ~InterruptionsDeferred();
+  InterruptionsDeferred(const InterruptionsDeferred&) = delete;
+  InterruptionsDeferred& operator=(const InterruptionsDeferred&) = delete;
+};
+
 // Throws the Error writeAtomically would end with where its temporary cannot be made (no such
 // folder, no permission, a read-only file there) or `path` is a folder: checked before a run that may take minutes.
 // Leaves nothing behind.

@@ -360,6 +360,22 @@ TEST(Files, AnInterruptedBatchOfManyFilesLeavesNoTemporary) {
   EXPECT_EQ(test::readText(here + "/pic_0.png"), "old");
 }
 
+// Ctrl+C while a batch commits waits for its renames: between two, it left the first file
+// replaced, the second old, and the second name that would have put the first back removed.
+// The run ends by the signal once they are done.
+TEST(Files, AnInterruptionWaitsForTheRenamesOfABatch) {
+  EXPECT_EXIT(
+      {
+        {
+          const InterruptionsDeferred deferred;
+          std::raise(SIGINT);
+          std::fprintf(stderr, "renamed\n");
+        }
+        std::_Exit(0);
+      },
+      ::testing::KilledBySignal(SIGINT), "renamed");
+}
+
 // A temporary file of the system's folder goes with its owner, at an error or a Ctrl+C: `bench
 // --lloyd-step` left /tmp/lloydscope-<pid>-0.lsrec behind at each.
 TEST(Files, ATemporaryFileGoesEvenWhenTheRunIsInterrupted) {
