@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <thread>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -88,12 +89,19 @@ std::atomic<int> searchFrom{0};
 
 std::atomic<int> deferring{0};        // InterruptionsDeferred alive
 std::atomic<int> deferredSignal{0};   // the signal that came meanwhile
+std::atomic<int> handling{0};         // handlers reading the slots: no name is freed under them
 static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void removeInFlightAndDie(int signal) {
+  ++handling;
   if (deferring.load() > 0) {
     deferredSignal.store(signal);
-    return;
+    // The last deferral may have ended on another thread between the two looks: one side, the
+    // one that takes the signal back, goes on with it.
+    if (deferring.load() > 0 || deferredSignal.exchange(0) == 0) {
+      --handling;
+      return;
+    }
   }
   const int reached = slotsReached.load();
   for (int k = 0; k < reached; ++k)
@@ -102,9 +110,14 @@ extern "C" void removeInFlightAndDie(int signal) {
   std::raise(signal);
 }
 
+// Not over a signal ignored (SIGHUP under nohup): the run would have ended by it.
 void installRemovalAtInterruption() {
   static const bool installed = [] {
-    for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, removeInFlightAndDie);
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+      struct sigaction before {};
+      if (sigaction(signal, nullptr, &before) == 0 && before.sa_handler == SIG_IGN) continue;
+      std::signal(signal, removeInFlightAndDie);
+    }
     return true;
   }();
   (void)installed;
@@ -130,6 +143,7 @@ class InFlight {
   ~InFlight() {
     if (slot_ < 0) return;
     inFlight[slot_].store(nullptr);
+    while (handling.load() > 0) std::this_thread::yield();  // it may have read the name (it dies)
     for (int from = searchFrom.load(); slot_ < from && !searchFrom.compare_exchange_weak(from, slot_);) {
     }
   }

@@ -376,6 +376,20 @@ TEST(Files, AnInterruptionWaitsForTheRenamesOfABatch) {
       ::testing::KilledBySignal(SIGINT), "renamed");
 }
 
+// A signal the run was started to ignore (SIGHUP under nohup) stays ignored: the handler that
+// removes the temporaries took it over, and `nohup lloydscope ...` ended when its terminal closed.
+TEST(Files, AnIgnoredHangupStaysIgnored) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");  // a child of its own, the handlers not yet set
+  EXPECT_EXIT(
+      {
+        std::signal(SIGHUP, SIG_IGN);
+        const TemporaryFile file(".x");
+        std::raise(SIGHUP);
+        std::_Exit(0);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
 // A temporary file of the system's folder goes with its owner, at an error or a Ctrl+C: `bench
 // --lloyd-step` left /tmp/lloydscope-<pid>-0.lsrec behind at each.
 TEST(Files, ATemporaryFileGoesEvenWhenTheRunIsInterrupted) {
