@@ -362,7 +362,10 @@ void Inspector::openReplay(Recording recording) {
   // A lesson's plan and an exported sequence's numbers are of the replay before (Restart in a
   // lesson kept playing the old plan, clamped to iteration 0).
   if (lesson_.playing()) toggleLesson();
+  if (exportJob_ && exportJob_->first >= 0) showMessage("the sequence was not saved: another run was opened before its last picture");
   exportJob_.reset();
+  exportRequest_.reset();   // the frame drawn now is of the new replay
+  sequenceFiles_.reset();   // the pictures made so far are not saved
   uploaded_ = Shown3D{};
   measuredIteration_ = edgesIteration_ = -1;
   canvasKey_ = CanvasKey{};
@@ -596,6 +599,8 @@ void refuseReplacing(const ExportJob& job, const std::string& shown) {
 }
 
 void Inspector::startExport(ExportJob job) {
+  // Its pictures would have joined the one running's, and been saved with the next sequence.
+  if (exporting()) throw Error(job.path + ": a picture is being saved; wait for it");
   requirePngPath(job.path);
   refuseReplacing(job, shownPath_);
   const int count = replay_->iterationCount();
@@ -613,6 +618,7 @@ void Inspector::startExport(ExportJob job) {
 }
 
 void Inspector::savePicture(const std::vector<unsigned char>& png) {
+  if (!exportJob_ || !exportRequest_) return;  // ended meanwhile (another run opened)
   const auto write = [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), png.size()); };
   if (exportJob_->first < 0) {
     writeAtomically(exportRequest_->path, write);
@@ -1312,6 +1318,8 @@ void Inspector::exportControls() {
   ImGui::SetNextItemWidth(110);
   ImGui::Combo("pane", &exportPane_, "window\0" "3D view\0" "2D view\0" "plots\0");
   const Pane pane = static_cast<Pane>(exportPane_);
+  const bool saving = exporting();  // a click below starts one: the same for both ends
+  if (saving) ImGui::BeginDisabled();
   if (ImGui::Button("Save this iteration (Ctrl+S)")) saveExport({exportPath_, pane});
   ImGui::SetNextItemWidth(60);
   // Iterations are numbered from 0: a negative one, which ExportJob reads as "the current
@@ -1326,6 +1334,7 @@ void Inspector::exportControls() {
   if (ImGui::InputInt("##last", &last, 0)) exportLast_ = last = std::max(0, last);
   ImGui::SameLine();
   if (ImGui::Button("Save sequence")) saveExport({exportPath_, pane, exportFirst_, last});
+  if (saving) ImGui::EndDisabled();
   greyedText("a sequence is numbered: name_0000.png, ...");  // wrapped: TextDisabled ran off the pane
 }
 
