@@ -135,6 +135,8 @@ TEST(Cli, ASimplificationAroundAHubSaysItIsSlow) {
   r = runCli("remesh " + in + " --simplify 2390 --sites 100 --max-iterations 2 --no-fidelity -o " +
              test::tempPath("hub_remeshed.off"));
   EXPECT_EQ(r.err.rfind(note, 0), 0u) << r.err;
+  r = runCli("simplify " + in + " --ratio 1 -o " + test::tempPath("hub_same.off"));  // nothing to collapse
+  EXPECT_EQ(r.err, "");
   r = runCli("simplify " + test::assetPath("bumpy_disk.off") + " --ratio 0.5 -o " + test::tempPath("bumpy_out.off"));
   EXPECT_EQ(r.err, "");
 }
