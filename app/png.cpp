@@ -34,18 +34,11 @@ std::vector<unsigned char> encodePng(const std::string& path, const unsigned cha
     auto* bytes = static_cast<std::vector<unsigned char>*>(out);
     bytes->insert(bytes->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
   };
-  // stb fails only where its buffers cannot be allocated (it said "disk full?" through a failed
-  // stream).
+  // stb fails only where its buffers cannot be allocated.
   if (!stbi_write_png_to_func(append, &png, crop.width, crop.height, 4, rgba.data(), crop.width * 4))
     throw Error(path + ": not enough memory to encode a " + std::to_string(crop.width) + "x" +
                 std::to_string(crop.height) + " picture as PNG");
   return png;
-}
-
-void writePng(const std::string& path, const unsigned char* pixels, int width, int height,
-              bool bgra, PixelRect crop) {
-  const std::vector<unsigned char> png = encodePng(path, pixels, width, height, bgra, crop);
-  writeAtomically(path, [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), png.size()); });
 }
 
 void requirePngPath(const std::string& path) {

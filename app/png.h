@@ -16,10 +16,7 @@ struct PixelRect {
 // it is for, where there is nothing to encode or no memory to encode it.
 std::vector<unsigned char> encodePng(const std::string& path, const unsigned char* pixels, int width, int height,
                                      bool bgra, PixelRect crop);
-// Writes that to a temporary file, then renames it to `path`: an existing picture is replaced
-// whole or not at all. Throws Error naming the file.
-void writePng(const std::string& path, const unsigned char* pixels, int width, int height,
-              bool bgra, PixelRect crop);
+
 
 // Throws Error unless `path` names a PNG file (ends in .png) that can be written (requireWritable):
 // checked before the frames are rendered, and before the run they show.

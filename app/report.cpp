@@ -510,7 +510,7 @@ std::string borderTrialText(const RemeshResult& r) {
     return "Kept as sampled (its border cut corners of the input's: remeshed with " + corners +
            " kept too, which failed: " + t.failed + ")";
   const std::string moved = t.cornersMoved > 0 ? ", " + std::to_string(t.cornersMoved) +
-                                                     " of them since moved along it where that raised a small angle"
+                                                     " of them no longer vertices of its border (slid along it or merged since, for the angles)"
                                                : "";
   return std::string(t.keptWith ? "Kept with " + corners + " as border samples" + moved : "Kept as sampled") +
          " (its border cut corners of the input's: remeshed with them kept too): Hausdorff " +

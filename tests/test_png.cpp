@@ -18,7 +18,7 @@ using namespace lloydscope;
 // stb's encoder fails only where its buffers cannot be allocated: that is what the error says,
 // naming the file (it said "cannot write ... (disk full?)"), and no file is left. Run in a
 // child process whose address space is capped at what it uses plus 100 MB: the 64 MB copy of
-// the pixels that writePng makes fits, the encoder's 64 MB of filtered rows do not.
+// the pixels that encodePng makes fits, the encoder's 64 MB of filtered rows do not.
 TEST(Png, RunningOutOfMemoryWhileEncodingIsAOneLineError) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "AddressSanitizer's shadow memory does not fit under a limit on the address space";
@@ -33,7 +33,7 @@ TEST(Png, RunningOutOfMemoryWhileEncodingIsAOneLineError) {
     const rlimit bound{limit, limit};
     if (setrlimit(RLIMIT_AS, &bound) != 0) std::_Exit(4);
     try {
-      writePng(path, pixels.data(), kSide, kSide, false, {0, 0, kSide, kSide});
+      encodePng(path, pixels.data(), kSide, kSide, false, {0, 0, kSide, kSide});
       std::_Exit(3);  // written: the limit was not reached
     } catch (const Error& e) {
       std::fprintf(stderr, "%s\n", e.what());

@@ -159,7 +159,8 @@ TEST(Report, TheBorderTrialSaysWhatEachRunGave) {
   EXPECT_EQ(json["border_trial"]["corners_moved"], 0);
   r.borderTrial->cornersMoved = 36;  // slid along the border by the polish
   EXPECT_EQ(borderTrialText(r).rfind("Kept with 48 corners of the input's coarse border as border samples, 36 of "
-                                     "them since moved along it where that raised a small angle (its border cut ",
+                                     "them no longer vertices of its border (slid along it or merged since, "
+                                     "for the angles) (its border cut ",
                                      0),
             0u)
       << borderTrialText(r);
