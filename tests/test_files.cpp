@@ -379,6 +379,7 @@ TEST(Files, AnInterruptionWaitsForTheRenamesOfABatch) {
 // A signal the run was started to ignore (SIGHUP under nohup) stays ignored: the handler that
 // removes the temporaries took it over, and `nohup lloydscope ...` ended when its terminal closed.
 TEST(Files, AnIgnoredHangupStaysIgnored) {
+  const std::string style = GTEST_FLAG_GET(death_test_style);
   GTEST_FLAG_SET(death_test_style, "threadsafe");  // a child of its own, the handlers not yet set
   EXPECT_EXIT(
       {
@@ -388,6 +389,7 @@ TEST(Files, AnIgnoredHangupStaysIgnored) {
         std::_Exit(0);
       },
       ::testing::ExitedWithCode(0), "");
+  GTEST_FLAG_SET(death_test_style, style);
 }
 
 // A temporary file of the system's folder goes with its owner, at an error or a Ctrl+C: `bench
