@@ -635,12 +635,15 @@ void Inspector::savePicture(const std::vector<unsigned char>& png) {
 
 void Inspector::exported(const std::string& error) {
   if (!error.empty()) sequenceFiles_.reset();  // none of its pictures replaces a file
-  if (exportRequest_ && !error.empty()) showMessage(error);
-  if (exportRequest_ && error.empty()) {
-    const bool sequence = exportJob_ && exportJob_->first >= 0;
-    const int first = sequence ? exportJob_->first : 0, pictures = sequence ? exportJob_->last - first + 1 : 1;
-    showMessage(pictureSavedText(exportRequest_->path, sequence ? exportNext_ - first : 0, pictures,
-                                 sequence ? exportPath(*exportJob_, first) : exportRequest_->path));
+  // The bar is hidden while pictures are made (they leave it out): a sequence says so at its end.
+  const bool sequence = exportJob_ && exportJob_->first >= 0;
+  if (exportRequest_ && !error.empty()) {
+    showMessage(error);
+  } else if (exportRequest_ && !sequence) {
+    showMessage(pictureSavedText(exportRequest_->path, 1, exportRequest_->path));
+  } else if (exportRequest_ && exportNext_ >= exportJob_->last) {
+    showMessage(pictureSavedText(exportRequest_->path, exportJob_->last - exportJob_->first + 1,
+                                 exportPath(*exportJob_, exportJob_->first)));
   }
   exportRequest_.reset();
   if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last) {
@@ -1429,6 +1432,9 @@ void Inspector::fileControls() {
       settings_.sites.keptBorderPoints.clear();  // the last mesh's corners
       if (simplifiedAfterFailure_ > 0 && settings_.simplifyTo == simplifiedAfterFailure_) settings_.simplifyTo = 0;  // a typed one stays
       simplifiedAfterFailure_ = 0;
+      // An earlier file's error or save; before the run opens, whose own messages stay (a
+      // sequence it ends unsaved said so, then went unseen).
+      message_.clear();
       try {
         startSession(read.mesh, name);
       } catch (const Error& e) {
@@ -1445,7 +1451,6 @@ void Inspector::fileControls() {
       result_.before = measureQuality(*input_);
       for (const std::string& note : read.notes) noteFirst(note);
       startRun();
-      message_.clear();  // an earlier file's error or save
     } catch (const Error& e) {
       showMessage(e.what());
     }
@@ -1481,12 +1486,12 @@ void Inspector::fileControls() {
       asked_ = {options_.slitDisks, options_.resample};
       simplifiedAfterFailure_ = 0;
       result_ = std::move(run.result);
+      message_.clear();  // as for a mesh
       openReplay(std::move(result_.recording));
       result_.recording = Recording{};  // the replay holds it
       inputTopology_ = replay_->surface();
       meshName_ = fileNameOf(recordingPath_);
       shownPath_ = recordingPath_;
-      message_.clear();
     } catch (const Error& e) {
       showMessage(e.what());
     }
