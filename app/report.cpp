@@ -407,9 +407,8 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
             {"total", r.ms.total}}}};
 }
 
-std::string pictureSavedText(const std::string& path, int picture, int pictures, const std::string& firstPath) {
+std::string pictureSavedText(const std::string& path, int pictures, const std::string& firstPath) {
   if (pictures <= 1) return "saved " + path;
-  if (picture + 1 < pictures) return "made " + path + " (saved with the last)";
   return "saved " + std::to_string(pictures) + " pictures, " + firstPath + " to " + path;
 }
 

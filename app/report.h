@@ -123,10 +123,9 @@ nlohmann::json recordingSummary(const Recording& r);
 // --sites and --method: their fields under Settings).
 std::string inWindowWords(std::string text);
 
-// What the window says once picture `picture` (from 0) of `pictures` is made, at `path`: a
-// single picture (pictures 1) is saved; a sequence's are saved together with its last, from
-// `firstPath` on (it said "saved" of each while none was yet).
-std::string pictureSavedText(const std::string& path, int picture, int pictures, const std::string& firstPath);
+// What the window says once `pictures` are saved, the last at `path` (a sequence's together,
+// from `firstPath` on: it said "saved" of each picture while none was yet).
+std::string pictureSavedText(const std::string& path, int pictures, const std::string& firstPath);
 // "Made without the first resampling ..., which failed: <problem>" (RemeshResult::resampleDropped).
 std::string withoutResamplingText(const std::string& problem);
 // "Kept slit open (remeshed both slit open and whole: ...): ..." (RemeshResult::slitTrial), or
