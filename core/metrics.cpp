@@ -2,6 +2,7 @@
 
 #include "parallel.h"
 #include "projection.h"
+#include "ring_moves.h"
 #include "topology.h"
 
 #include <Eigen/Cholesky>
@@ -154,10 +155,7 @@ int nextOnBorder(const Mesh& mesh, const Rings& rings, int v) {
 void findPinholeAt(const Mesh& mesh, const Rings& rings, const Triangle& worst, const std::vector<bool>& boundary,
                    QualityMetrics& m) {
   if (std::none_of(worst.begin(), worst.end(), [&](int v) { return boundary[v]; })) return;
-  double sides = 0;  // every triangle's: an inside edge counts twice, a fair mean all the same
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) sides += (mesh.points[t[(k + 1) % 3]] - mesh.points[t[k]]).norm();
-  m.meanEdge = sides / (3.0 * mesh.faceCount());
+  m.meanEdge = meanEdgeLength(mesh);
   for (int start : worst) {
     if (!boundary[start]) continue;
     double length = 0;
