@@ -365,7 +365,7 @@ void Inspector::openReplay(Recording recording) {
   if (exportJob_ && exportJob_->first >= 0) showMessage("the sequence was not saved: another run was opened before its last picture");
   exportJob_.reset();
   exportRequest_.reset();   // the frame drawn now is of the new replay
-  sequenceFiles_.reset();   // the pictures made so far are not saved
+  pictureFiles_.reset();    // the pictures made so far are not saved
   uploaded_ = Shown3D{};
   measuredIteration_ = edgesIteration_ = -1;
   canvasKey_ = CanvasKey{};
@@ -619,31 +619,29 @@ void Inspector::startExport(ExportJob job) {
 
 void Inspector::savePicture(const std::vector<unsigned char>& png) {
   if (!exportJob_ || !exportRequest_) return;  // ended meanwhile (another run opened)
-  const auto write = [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), png.size()); };
-  if (exportJob_->first < 0) {
-    writeAtomically(exportRequest_->path, write);
-  } else {
-    if (!sequenceFiles_) sequenceFiles_ = std::make_unique<FileBatch>();
-    sequenceFiles_->add(exportRequest_->path, write);
-    if (exportNext_ >= exportJob_->last) {
-      sequenceFiles_->commit();
-      sequenceFiles_.reset();
-    }
+  if (!pictureFiles_) pictureFiles_ = std::make_unique<FileBatch>();
+  pictureFiles_->add(exportRequest_->path, [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(png.data()), png.size());
+  });
+  if (exportJob_->first < 0 || exportNext_ >= exportJob_->last) {  // a picture alone, or a sequence's last
+    pictureFiles_->commit();
+    pictureFiles_.reset();
   }
   exported();
 }
 
 void Inspector::exported(const std::string& error) {
-  if (!error.empty()) sequenceFiles_.reset();  // none of its pictures replaces a file
+  if (!error.empty()) pictureFiles_.reset();  // none of its pictures replaces a file
   // The bar is hidden while pictures are made (they leave it out): a sequence says so at its end.
   const bool sequence = exportJob_ && exportJob_->first >= 0;
-  if (exportRequest_ && !error.empty()) {
-    showMessage(error);
-  } else if (exportRequest_ && !sequence) {
-    showMessage(pictureSavedText(exportRequest_->path, 1, exportRequest_->path));
-  } else if (exportRequest_ && exportNext_ >= exportJob_->last) {
-    showMessage(pictureSavedText(exportRequest_->path, exportJob_->last - exportJob_->first + 1,
-                                 exportPath(*exportJob_, exportJob_->first)));
+  if (exportRequest_) {
+    if (!error.empty())
+      showMessage(error);
+    else if (!sequence)
+      showMessage(pictureSavedText(exportRequest_->path, 1, exportRequest_->path));
+    else if (exportNext_ >= exportJob_->last)
+      showMessage(pictureSavedText(exportRequest_->path, exportJob_->last - exportJob_->first + 1,
+                                   exportPath(*exportJob_, exportJob_->first)));
   }
   exportRequest_.reset();
   if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last) {

@@ -158,9 +158,9 @@ class Inspector {
   void startExport(ExportJob job);  // throws Error on a bad path or range
   const std::optional<ExportRequest>& exportRequest() const { return exportRequest_; }
   bool exporting() const { return exportJob_.has_value(); }
-  // Saves the picture asked for. One alone replaces its file at once; a sequence's wait in
-  // temporaries until its last is made, then are renamed onto their files together
-  // (FileBatch): one that cannot be written (a full disk) leaves every file as it was. A
+  // Saves the picture asked for, through one FileBatch: one alone replaces its file at once; a
+  // sequence's wait in temporaries until its last is made, then are renamed onto their files
+  // together: one that cannot be written (a full disk) leaves every file as it was. A
   // sequence's 3rd picture on a full disk had replaced the first two and left the rest old.
   // Throws Error naming the file; the caller ends the job with exported(why), or with the
   // inspector (headless).
@@ -348,7 +348,7 @@ class Inspector {
   std::optional<ExportJob> exportJob_;
   int exportNext_ = 0, iterationBeforeExport_ = 0;
   std::optional<ExportRequest> exportRequest_;
-  std::unique_ptr<FileBatch> sequenceFiles_;  // a sequence's pictures, until its last
+  std::unique_ptr<FileBatch> pictureFiles_;  // the pictures made and not yet saved (a sequence's, until its last)
   bool closeRequested_ = false;
   char exportPath_[512] = "lloydscope.png";
   int exportPane_ = 0, exportFirst_ = 0;
