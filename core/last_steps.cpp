@@ -86,9 +86,9 @@ std::vector<int> snapToTips(Mesh& m, const SearchableSurface& input, int rounds)
   for (int round = 0; round < rounds; ++round) {
     const SurfaceProjection result(m);
     std::vector<std::pair<double, int>> far;  // squared distance, candidate
-    const std::vector<double> squared = result.squaredDistances(candidates);
+    const std::vector<double> squaredToResult = result.squaredDistances(candidates);
     for (int i = 0; i < static_cast<int>(candidates.size()); ++i)
-      if (squared[i] > 0.25 * spacing * spacing && !refused[i]) far.emplace_back(squared[i], i);
+      if (squaredToResult[i] > 0.25 * spacing * spacing && !refused[i]) far.emplace_back(squaredToResult[i], i);
     if (far.empty()) break;
     std::sort(far.rbegin(), far.rend());
     std::vector<Vec3> tips;  // this round's, two edge lengths apart
@@ -153,10 +153,15 @@ SmallestAngles smallestAnglesOf(const Mesh& m, const std::vector<int>& faces) {
 // The farthest of `points` from the triangles `faces` of `m`.
 double farthestFromFaces(const Mesh& m, const std::vector<int>& faces, const std::vector<Vec3>& points) {
   if (points.empty()) return 0;
-  Mesh part;
-  part.points = m.points;
-  for (int f : faces)
-    if (!isMergeMarker(m.triangles[f])) part.triangles.push_back(m.triangles[f]);
+  Mesh part;  // the faces' own corners only: a copy of every point, per change tried, cost
+              // more than the search on a large result
+  for (int f : faces) {
+    const Triangle& t = m.triangles[f];
+    if (isMergeMarker(t)) continue;
+    const int first = part.vertexCount();
+    for (int v : t) part.points.push_back(m.points[v]);
+    part.triangles.push_back({first, first + 1, first + 2});
+  }
   const SurfaceProjection projection(part);
   const std::vector<double> squared = projection.squaredDistances(points);
   return std::sqrt(*std::max_element(squared.begin(), squared.end()));
@@ -751,8 +756,9 @@ int earsAtSharpCorners(Mesh& m, const SearchableSurface& surface, std::vector<in
         for (int u : m.triangles[rings.faces[k]]) {
           if (border[u] || !refused.insert({v, u}).second) continue;
           if (rings.offset[u + 1] - rings.offset[u] == 3) {  // u goes into v: its three triangles become one, v's only one
+            if (fixed[u]) continue;
             Mesh tried = m;
-            if (fixed[u] || !mergeVertex(tried, u, v)) continue;
+            if (!mergeVertex(tried, u, v)) continue;
             const std::vector<int> faces(rings.faces.begin() + rings.offset[u], rings.faces.begin() + rings.offset[u + 1]);
             std::vector<Triangle> before;
             std::vector<std::pair<int, int>> oldEdges;

@@ -23,6 +23,7 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 namespace lloydscope {
 
@@ -125,7 +126,7 @@ RemeshSession::RemeshSession(const Mesh& input, const RemeshOptions& options,
         cutSummary_ = cut.summary;  // measured, slit or not (a disk kept whole said a spread of 1)
         if (cut.seam.empty()) return mesh;
         cut_ = std::move(cut);
-        return cut_->disk;
+        return std::move(cut_->disk);  // input_ holds it; nothing reads it there again
       }()),
       resampled_([&]() -> std::optional<Resampling> {
         if (!options_.resample) return std::nullopt;
@@ -479,6 +480,14 @@ void measureFidelityOf(RemeshResult& result, const PreparedInput& input) {
   result.ms.total += ms;
 }
 
+// Both measured against the input (each once): their Hausdorff distances, % of the diagonal,
+// `a`'s first.
+std::pair<double, double> hausdorffOfBoth(RemeshResult& a, RemeshResult& b, const PreparedInput& input) {
+  measureFidelityOf(a, input);
+  measureFidelityOf(b, input);
+  return {a.fidelity.hausdorffPercent, b.fidelity.hausdorffPercent};
+}
+
 // remeshCharts' refusal where its charts, small ones merged into their neighbours, come to one.
 struct OneChartCoversIt : Error {
   using Error::Error;
@@ -606,12 +615,8 @@ void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& optio
     trial.chartsBars = barsMet(charted.after, charted.before);
     trial.oneCutFolds = foldsAnew(kept.after, kept.before) > 0;
     trial.chartsFold = foldsAnew(charted.after, charted.before) > 0;
-    if (trial.distancesDecide()) {
-      measureFidelityOf(kept, prepared);
-      measureFidelityOf(charted, prepared);
-      trial.oneCutHausdorff = kept.fidelity.hausdorffPercent;
-      trial.chartsHausdorff = charted.fidelity.hausdorffPercent;
-    }
+    if (trial.distancesDecide())
+      std::tie(trial.oneCutHausdorff, trial.chartsHausdorff) = hausdorffOfBoth(kept, charted, prepared);
     if (trial.chartsBetter()) std::swap(kept, charted);
     kept.chartTrial = trial;
     countTheOtherRun(kept, charted);
@@ -686,20 +691,19 @@ RemeshResult remeshDisk(const Mesh& input, const RemeshOptions& options, const s
   try {
     kept = remeshOnce(input, slitOptions, name, slitHooks, &prepared);
   } catch (const Error&) {
-    // As it would have been without slits.
-    kept = whole.valid() && !wholeNotNeeded ? whole.get() : remeshOnce(input, wholeOptions, name, {}, &prepared);
+    // As it would have been without slits. A slit run that never slit (its cut never said so,
+    // or its session was not cut) was the whole run, and that failed: made again, it failed
+    // again, twice (with and without the first pass).
+    if (!whole.valid() || wholeNotNeeded) throw;
+    kept = whole.get();
   }
   if (kept.cut.seamEdges > 0 && whole.valid()) {
     try {
       RemeshResult other = whole.get();
       SlitTrial trial{kept.after.avgMinAngle, other.after.avgMinAngle, barsMet(kept.after, kept.before),
                       barsMet(other.after, other.before)};
-      if (trial.bothMeetTheBars()) {
-        measureFidelityOf(kept, prepared);
-        measureFidelityOf(other, prepared);
-        trial.slitHausdorff = kept.fidelity.hausdorffPercent;
-        trial.wholeHausdorff = other.fidelity.hausdorffPercent;
-      }
+      if (trial.bothMeetTheBars())
+        std::tie(trial.slitHausdorff, trial.wholeHausdorff) = hausdorffOfBoth(kept, other, prepared);
       if (trial.wholeBetter()) std::swap(kept, other);
       kept.slitTrial = trial;
       countTheOtherRun(kept, other);
@@ -722,24 +726,19 @@ void tryWithoutFirstPass(RemeshResult& kept, const Mesh& input, const RemeshOpti
   // first pass alone would save a fifth of the time (the camel head at 500: 3.2 -> 2.8 s), but
   // the way it did not keep can be the better without it (CGAL's triceratops clipped in half at
   // 1000 with one polish pass: all three bars instead of one).
+  FirstPassTrial trial;
+  trial.withBars = barsMet(kept.after, kept.before);
   RemeshResult other;
   try {
     other = remeshDisk(input, withoutResampling(options), name, prepared);
   } catch (const Error& e) {
-    kept.firstPassTrial = FirstPassTrial{};
-    kept.firstPassTrial->withBars = barsMet(kept.after, kept.before);
-    kept.firstPassTrial->failed = problemOf(e, name);
+    trial.failed = problemOf(e, name);
+    kept.firstPassTrial = trial;
     return;
   }
-  FirstPassTrial trial;
-  trial.withBars = barsMet(kept.after, kept.before);
   trial.withoutBars = barsMet(other.after, other.before);
-  if (trial.distancesDecide()) {
-    measureFidelityOf(kept, prepared);
-    measureFidelityOf(other, prepared);
-    trial.withHausdorff = kept.fidelity.hausdorffPercent;
-    trial.withoutHausdorff = other.fidelity.hausdorffPercent;
-  }
+  if (trial.distancesDecide())
+    std::tie(trial.withHausdorff, trial.withoutHausdorff) = hausdorffOfBoth(kept, other, prepared);
   trial.keptWithout = trial.withoutBetter();
   if (trial.keptWithout) std::swap(kept, other);
   kept.firstPassTrial = trial;
@@ -791,10 +790,7 @@ void tryKeepingBorderCorners(RemeshResult& kept, const Mesh& input, const Remesh
     return;
   }
   trial.withBars = barsMet(other.after, other.before);
-  measureFidelityOf(kept, prepared);
-  measureFidelityOf(other, prepared);
-  trial.withoutHausdorff = kept.fidelity.hausdorffPercent;
-  trial.withHausdorff = other.fidelity.hausdorffPercent;
+  std::tie(trial.withoutHausdorff, trial.withHausdorff) = hausdorffOfBoth(kept, other, prepared);
   trial.keptWith = trial.withBetter();
   if (trial.keptWith) {  // the first run's trials stand for this one's too
     other.slitTrial = kept.slitTrial;
@@ -899,6 +895,7 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
       result.largestChart = std::move(r.largestChart);
       result.chartTrial = r.chartTrial;
       result.firstPassTrial = r.firstPassTrial;
+      result.borderTrial = r.borderTrial;
     }
   }
   if (simplifiedAny) result.coarseInput = relaxedOn;

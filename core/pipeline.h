@@ -187,11 +187,6 @@ struct BorderTrial {
   bool withBetter() const { return withBars >= withoutBars && withHausdorff < kCloserBy * withoutHausdorff; }
 };
 
-// remesh() takes kSmallestRemeshedShare (core/sites) vertices at least: fewer asked for a
-// whole surface is an error. A component whose share of the vertices asked for is smaller, and
-// which has no more vertices than that (debris, a loose triangle), is kept as it is; a larger
-// one is remeshed to that many.
-
 // How many vertices a large input is simplified to before a run asked for `vertices`
 // (RemeshOptions::coarsenInput): ten per vertex asked, but no more than 10,000 or five per
 // vertex asked, whichever is larger (1500 asked: 10,000; 4000 asked: 20,000).
@@ -205,7 +200,7 @@ struct RemeshResult {
   CutSummary cut;  // how the input was cut open (no seam edges: it was not)
   QualityMetrics before, after;
   Fidelity fidelity;  // output against input; zero when not measured
-  int snappedTips = 0;  // vertices the polish snapped onto tips the result cut off (snapToTips)
+  int snappedTips = 0;  // vertices the last steps snapped onto tips the result cut off (snapToTips)
   int heldBack = 0;     // relocate: vertices left short of their sites (Relocation::heldBack)
   FitResult fit;  // how far RemeshOptions::fit moved the vertices
   // Not empty: the run failed with the first pass (this says why) and was made without it.
@@ -270,9 +265,11 @@ int verticesAsked(const RemeshOptions& options);
 // on the input as it is, again on the input simplified to the sites asked where it has more
 // (RemeshResult::fullInputFailed says why), unless --simplify or --full-input was given or its
 // own vertices are the sites: CGAL's dino at 500 vertices, whose tail's tip every map squeezes
-// to nothing, and the cheese at 1000. Several
-// connected components are remeshed each on its own, with shares of the vertices asked for
-// (options.simplifyTo, options.sites.count) by area.
+// to nothing, and the cheese at 1000. Several connected components are remeshed each on its
+// own, with shares of the vertices asked for (options.simplifyTo, options.sites.count) by area:
+// kSmallestRemeshedShare (core/sites) at least, as fewer asked for a whole surface is an error.
+// A component whose share is smaller, and which has no more vertices than that (debris, a loose
+// triangle), is kept as it is; a larger one is remeshed to that many.
 RemeshResult remesh(const Mesh& input, const RemeshOptions& options, const std::string& name);
 // The surface split into charts (core/charts), each a disk remeshed on its own, then
 // stitched: what remesh() tries beside the one cut where the surface is not a disk or no
@@ -328,7 +325,8 @@ class RemeshSession {
   // Whether the border holds seams to stitch: a cut's, or those of a chart of a surface.
   bool seamed() const { return cut_.has_value() || !options_.sites.onSeam.empty(); }
   // How many sites the options ask for: 0 in them is the size simplifyTo asks for (a coarser
-  // input is refined to it), or else as many as the input has vertices.
+  // input is refined to it), or else as many as the input has vertices. A cut surface's disk
+  // takes one more per copy of a seam sample (its seams' two sides), so more than asked.
   int siteCount() const;
   // The mesh that is parameterized: the resampled surface, or the input itself.
   const Mesh& surface() const { return resampled_ ? resampled_->mesh.mesh : input_; }

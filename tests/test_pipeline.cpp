@@ -1053,6 +1053,21 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
     EXPECT_LT(test::nearestDistance(r.output.points, saddle.points[saddle.vertexCount() - 24 + i]), 1e-9) << "corner " << i;
 }
 
+// The same saddle beside a small flat disk, two components: the saddle's border trial is the
+// run's (it was dropped, the report silent on the corners kept, and the inspector's Restart
+// on the largest component sampled its border without them).
+TEST(Pipeline, TheLargestComponentsBorderTrialIsTheRuns) {
+  Mesh two = test::polarDisk(24, 12, 0, [](double r, double a) { return 0.5 * r * r * std::cos(2 * a); });
+  append(two, test::moved(test::polarDisk(12, 4), 0.3, Vec3(5, 0, 0)));
+  RemeshOptions o;
+  o.sites.count = 440;
+  const RemeshResult r = remesh(two, o, "saddle and disk");
+  EXPECT_EQ(r.components, 2);
+  ASSERT_TRUE(r.borderTrial.has_value());
+  EXPECT_EQ(r.borderTrial->corners.size(), 24u);
+  EXPECT_TRUE(r.borderTrial->keptWith);
+}
+
 // A flat eight-pointed star, its rim a 16-gon alternating between radius 1 and 0.87: its eight
 // points (turning by 61 degrees) stay samples as any sharp corner does, but the eight reflex
 // corners between them turn by 16 degrees only, and the result's border chords at 400 vertices
