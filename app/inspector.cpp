@@ -1082,6 +1082,7 @@ void Inspector::controlsPane(const ImVec2& pos, const ImVec2& size) {
 // The mesh, the run's settings and sites, and which result the panes show.
 void Inspector::runSummary() {
   wrappedText("Mesh: " + meshName_);
+  if (const std::string part = recordedPartText(replay_->recording().settings); !part.empty()) wrappedText(part);
   wrappedText(std::string("Parameterization: ") + toString(result_.paramUsed) + " (" +
               borderPhrase(result_.paramUsed, options_.param.border) + "), density: " +
               toString(options_.density.kind) + ", solver: " + toString(options_.lloyd.solver));

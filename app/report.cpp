@@ -940,8 +940,10 @@ nlohmann::json recordingSummary(const Recording& r) {
   for (const IterationRecord& it : r.iterations)
     iterations.push_back({{"index", it.index},
                           {"energy", it.energy},
-                          {"max_displacement", it.maxDisplacement},
-                          {"mean_displacement", it.meanDisplacement},
+                          // Of the movable sites; a site's distance to its centroid, which is how
+                          // far Lloyd's step moves it, not L-BFGS's or Newton's.
+                          {"max_site_centroid_distance", it.maxDisplacement},
+                          {"mean_site_centroid_distance", it.meanDisplacement},
                           {"percent_moving", 100.0 * it.fractionMoving},
                           {"milliseconds", it.milliseconds}});
   return {{"settings", settingsJson(r.settings)},
@@ -958,10 +960,12 @@ nlohmann::json recordingSummary(const Recording& r) {
 std::string recordingReport(const Recording& r) {
   const nlohmann::json s = recordingSummary(r);
   std::ostringstream out;
-  out << "Settings: " << r.settings << "\n"
-      << "Parameterized mesh: " << r.input.vertexCount() << " vertices, " << r.input.faceCount()
+  out << "Settings: " << r.settings << "\n";
+  if (const std::string part = recordedPartText(r.settings); !part.empty()) out << part << "\n";
+  out << "Parameterized mesh: " << r.input.vertexCount() << " vertices, " << r.input.faceCount()
       << " faces (the input, or its rough first remeshing, simplification or cut as the settings say)\n"
-      << "Sites: " << s["fixed_sites"] << " fixed, " << s["movable_sites"] << " movable\n"
+      << "Sites: " << s["fixed_sites"] << " fixed (border samples, never moved), " << s["movable_sites"]
+      << " movable (the distances and % moving below are theirs)\n"
       << "Iterations: " << r.iterations.size()
       << (s["converged"].get<bool>() ? " (converged)" : " (not converged)") << "\n\n"
       << "| iteration | CVT energy | largest site-centroid distance | mean site-centroid distance | % moving | ms |\n"

@@ -445,10 +445,12 @@ RemeshResult remeshOnce(const Mesh& input, const RemeshOptions& options, const s
   return withOrWithoutFirstPass(options, name, run);
 }
 
-// A part of the surface remeshed on its own (a chart, a component) added to the whole's counts
-// and times; the largest by area (`largest` so far) gives its recording and map. Returns
-// whether it was that.
-bool addPart(RemeshResult& whole, RemeshResult& part, const std::string& label, double area, double& largest) {
+// A part of the surface remeshed on its own (`kind` "chart" or "component", `number` of `count`)
+// added to the whole's counts and times; the largest by area (`largest` so far) gives its
+// recording, which says so (part=), and map. Returns whether it was that.
+bool addPart(RemeshResult& whole, RemeshResult& part, const std::string& kind, int number, int count, double area,
+             double& largest) {
+  const std::string label = kind + " " + std::to_string(number);
   whole.iterations += part.iterations;
   whole.converged = whole.converged && part.converged;
   if (!part.resampleDropped.empty())
@@ -457,6 +459,13 @@ bool addPart(RemeshResult& whole, RemeshResult& part, const std::string& label, 
   if (area <= largest) return false;
   largest = area;
   whole.recording = std::move(part.recording);
+  // A chart of a component: part=chart-3-of-19,component-1-of-2.
+  const std::string mark = kind + "-" + std::to_string(number) + "-of-" + std::to_string(count);
+  std::string& settings = whole.recording.settings;
+  if (const std::string within = settingValue(settings, "part"); within.empty())
+    settings += " part=" + mark;
+  else
+    settings.replace(settings.find(" part=" + within), 6 + within.size(), " part=" + within + "," + mark);
   whole.paramUsed = part.paramUsed;
   whole.distortion = part.distortion;
   return true;
@@ -550,7 +559,8 @@ RemeshResult remeshCharts(const Mesh& input, const RemeshOptions& options, const
     o.measureFidelity = false;
     RemeshResult r = remeshOnce(chart.mesh, o, chartName);
     append(pieces, r.output);
-    if (addPart(result, r, "chart " + std::to_string(i + 1), chartArea, largest)) result.largestChart = chart.mesh;
+    if (addPart(result, r, "chart", static_cast<int>(i) + 1, static_cast<int>(charts.charts.size()), chartArea, largest))
+      result.largestChart = chart.mesh;
   }
   stage.lap();
   std::vector<bool> seamVertex;
@@ -888,7 +898,7 @@ RemeshResult remeshComponents(const Mesh& input, const RemeshOptions& options, c
     // (The total is timed around them all, in remesh().) The largest component's cut, charts and
     // trials go with its recording and map: a component remeshed chart by chart was said to be
     // one disk, and one chart's map the component's.
-    if (addPart(result, r, "component " + std::to_string(i + 1), area, largest)) {
+    if (addPart(result, r, "component", static_cast<int>(i) + 1, static_cast<int>(parts.size()), area, largest)) {
       result.cut = r.cut;
       result.slitTrial = r.slitTrial;
       result.charts = r.charts;
@@ -1263,6 +1273,16 @@ void keepWithinCommandLineBounds(RemeshOptions& o) {
   o.sites.count = asked(o.sites.count);
   o.polish = std::clamp(o.polish, -1, kMostPolishPasses);
   o.lloyd.maxIterations = std::clamp(o.lloyd.maxIterations, 1, kMostIterations);
+}
+
+std::string recordedPartText(const std::string& settings) {
+  std::string text, word;
+  std::istringstream marks(settingValue(settings, "part"));
+  while (std::getline(marks, word, ',')) {  // chart-3-of-19
+    std::replace(word.begin(), word.end(), '-', ' ');
+    text += (text.empty() ? "" : ", in ") + word;
+  }
+  return text.empty() ? "" : "This recording is of one part of the run, the largest: " + text;
 }
 
 ParamMethod recordedParamMethod(const std::string& settings) {

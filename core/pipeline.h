@@ -389,8 +389,9 @@ std::string describe(const RemeshOptions& options);
 // A describe() line's key=value words, in order (a word without '=' left out).
 std::vector<std::pair<std::string, std::string>> settingPairs(const std::string& settings);
 // The value of `key` in a describe() line, "" where the line does not name it. A recording's
-// line also names the map "auto" chose (param-used=lscm), and the size a large input was
-// simplified to first (coarse-input=10000; RemeshOptions::coarsenInput).
+// line also names the map "auto" chose (param-used=lscm), the size a large input was
+// simplified to first (coarse-input=10000; RemeshOptions::coarsenInput), and the part of the
+// run it is of (part=chart-3-of-19; recordedPartText).
 std::string settingValue(const std::string& settings, const std::string& key);
 // The options a describe() line was made from (a recording's: the inspector shows and compares
 // with what the run was), keys it does not name at their defaults. Throws Error on a value
@@ -400,6 +401,10 @@ RemeshOptions optionsFromSettings(const std::string& settings);
 // passes and iterations. A recording's own (a chart's sites=18) are not: the window runs its
 // next mesh with them. In place: the window's Settings keep theirs so every frame.
 void keepWithinCommandLineBounds(RemeshOptions& options);
+// What a recording of a run made in parts (charts, components) is of, from its line's part=
+// (chart-3-of-19,component-1-of-2): "This recording is of one part of the run, the largest:
+// chart 3 of 19, in component 1 of 2"; "" for a run of one part.
+std::string recordedPartText(const std::string& settings);
 // The map a recorded run used: its line's param-used (the map "auto" chose, or the input's own,
 // ParamMethod::Given), else the one asked (older recordings). Throws Error as optionsFromSettings.
 ParamMethod recordedParamMethod(const std::string& settings);

@@ -293,6 +293,10 @@ TEST(Cli, RemeshJsonReportsBothTablesAndWritesTheMesh) {
   ASSERT_EQ(info.code, 0) << info.err;
   const auto summary = nlohmann::json::parse(info.out);
   EXPECT_EQ(summary["iterations"].size(), j["iterations"].get<size_t>());
+  // What each iteration's figures are: a site's distance to its centroid (named a displacement,
+  // which for L-BFGS and Newton it is not), of the movable sites only.
+  EXPECT_TRUE(summary["iterations"][0].contains("max_site_centroid_distance")) << info.out;
+  EXPECT_NE(runCli("info " + rec).out.find(" movable (the distances and % moving below are theirs)"), std::string::npos);
   // The recording holds the mesh the map is of: here the input's rough first remeshing, not
   // the input, which it was called (the bumpy disk's: 1899 faces, the input's 1908).
   EXPECT_TRUE(summary.contains("parameterized_faces"));
@@ -396,6 +400,14 @@ TEST(Cli, TwoComponentsAreRemeshedEachOnItsOwn) {
   const CliRun json = runCli("remesh " + path + " --json");
   ASSERT_EQ(json.code, 0) << json.err;
   EXPECT_EQ(nlohmann::json::parse(json.out)["components"], 2);
+  // Its recording is of one of them, and says so wherever it is read (info gave its settings
+  // as the run's, its iterations as all of them).
+  const std::string rec = test::tempPath("two.lsrec");
+  ASSERT_EQ(runCli("remesh " + path + " --no-fidelity --record " + rec).code, 0);
+  const CliRun info = runCli("info " + rec);
+  EXPECT_NE(info.out.find("\nThis recording is of one part of the run, the largest: component 1 of 2\n"), std::string::npos)
+      << info.out;
+  EXPECT_EQ(nlohmann::json::parse(runCli("info " + rec + " --json").out)["settings"]["part"], "component-1-of-2");
 }
 
 TEST(Cli, TruncatedRecording) {

@@ -1053,6 +1053,15 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
     EXPECT_LT(test::nearestDistance(r.output.points, saddle.points[saddle.vertexCount() - 24 + i]), 1e-9) << "corner " << i;
 }
 
+// What a part's recording is of, in words: a chart of a component names both.
+TEST(Pipeline, ARecordingOfAPartSaysWhichPart) {
+  EXPECT_EQ(recordedPartText("method=retriangulate sites=20"), "");
+  EXPECT_EQ(recordedPartText("sites=194 part=chart-3-of-19"),
+            "This recording is of one part of the run, the largest: chart 3 of 19");
+  EXPECT_EQ(recordedPartText("sites=194 part=chart-3-of-19,component-1-of-2 param-used=lscm"),
+            "This recording is of one part of the run, the largest: chart 3 of 19, in component 1 of 2");
+}
+
 // The same saddle beside a small flat disk, two components: the saddle's border trial is the
 // run's (it was dropped, the report silent on the corners kept, and the inspector's Restart
 // on the largest component sampled its border without them).
@@ -1066,6 +1075,7 @@ TEST(Pipeline, TheLargestComponentsBorderTrialIsTheRuns) {
   ASSERT_TRUE(r.borderTrial.has_value());
   EXPECT_EQ(r.borderTrial->corners.size(), 24u);
   EXPECT_TRUE(r.borderTrial->keptWith);
+  EXPECT_EQ(settingValue(r.recording.settings, "part"), "component-1-of-2");
 }
 
 // A flat eight-pointed star, its rim a 16-gon alternating between radius 1 and 0.87: its eight
