@@ -300,7 +300,7 @@ std::vector<CvtSolver> otherSolvers(CvtSolver solver) {
 // L-BFGS blue, Newton purple (green is the threshold line's, red the current iteration's).
 ImVec4 solverColour(CvtSolver solver) {
   switch (solver) {
-    case CvtSolver::Lloyd: return {0.55f, 0.55f, 0.55f, 1};
+    case CvtSolver::Lloyd: return {0.38f, 0.38f, 0.38f, 1};  // 5.4:1 on the light background (0.55: 2.9:1)
     case CvtSolver::Lbfgs: return {0.15f, 0.3f, 0.7f, 1};
     case CvtSolver::Newton: return {0.62f, 0.3f, 0.72f, 1};
   }
@@ -1950,8 +1950,10 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   std::vector<Curve> energy, displacement, moving;  // the other runs'
   if (!comparisons_.empty()) {  // which curve is which
     const std::vector<IterationRecord>& its = replay_->recording().iterations;
+    // A run still going (a session) is not yet "not converged".
+    const bool converged = session_ || replay_->recording().converged();
     ImGui::TextColored(solverColour(options_.lloyd.solver), "%s",
-                       curveLegend(toString(options_.lloyd.solver), true, false, its, true, time).c_str());
+                       curveLegend(toString(options_.lloyd.solver), true, false, its, converged, time).c_str());
     for (size_t k = 0; k < comparisons_.size(); ++k) {
       const Comparison& c = comparisons_[k];
       const Curves other(c.iterations, ImGui::ColorConvertFloat4ToU32(solverColour(c.solver)), time);

@@ -315,7 +315,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--solver", r.solver,
                  "lbfgs (default: quasi-Newton, converges in far fewer iterations), lloyd (the "
                  "reference's) or newton (exact Hessian: fewer iterations still, each dearer)");
-  cmd.add_option("--max-iterations", r.maxIterations, "at most this many Lloyd iterations" + defaultIs(lloyd.maxIterations))
+  cmd.add_option("--max-iterations", r.maxIterations, "at most this many iterations of the solver (--solver: Lloyd's, L-BFGS's or Newton's steps)" + defaultIs(lloyd.maxIterations))
       ->check(wholeNumber(1, kMostIterations));
   cmd.add_option("--distance-threshold", r.distanceThreshold,
                  "a site farther than this from its centroid (a fraction of the domain's size) is still "
@@ -446,7 +446,7 @@ struct RemeshCommand {
     cmd = app.add_subcommand("remesh", "Remesh a triangle mesh (a surface that is not a disk is cut open first)");
     cmd->add_option("input", args.input, "Input mesh (OFF, OBJ or PLY)")->required();
     cmd->add_option("-o,--output", args.output, "Output mesh (OFF, OBJ or PLY)")->check(kFileName);
-    cmd->add_option("--record", args.record, "Save every Lloyd iteration to this file (any name but a mesh's .off, .obj or .ply; .lsrec by custom)")->check(kFileName);
+    cmd->add_option("--record", args.record, "Save every iteration (of the solver, --solver) to this file (any name but a mesh's .off, .obj or .ply; .lsrec by custom)")->check(kFileName);
     cmd->add_flag("--json", args.json, "Print the results as one JSON object");
     addRemeshOptions(*cmd, args);
   }

@@ -220,7 +220,7 @@ std::string curveLegend(const char* solver, bool thisRun, bool firstCompared, co
     // Two digits under 10 ms: a run of a tenth of a millisecond read "0 ms" beside its curve.
     text += format(ms < 10 ? ", %.2g" : ", %.0f", ms) + " ms";
   }
-  return converged || thisRun ? text : text + ", not converged";
+  return converged ? text : text + ", not converged";
 }
 
 int nearestIndex(const std::vector<double>& at, double x) {
@@ -855,11 +855,12 @@ std::string vertexCountText(const RemeshResult& r, const RemeshOptions& options)
          (r.componentsKept > 0 ? ", and components too small for their share are kept as they are" : "");
 }
 
-std::string lloydIterationsLine(const RemeshResult& r) {
+std::string iterationsLine(const RemeshResult& r, CvtSolver solver) {
+  const char* steps = solver == CvtSolver::Lloyd ? "Lloyd" : solver == CvtSolver::Lbfgs ? "L-BFGS" : "Newton";
   const std::string parts = r.components > 1 ? ", all components together"
                             : r.charts > 0   ? ", all " + std::to_string(r.charts) + " charts together (the recording is the largest one's)"
                                              : "";
-  return "Lloyd iterations: " + std::to_string(r.iterations) + parts + (r.converged ? " (converged)" : " (not converged)");
+  return std::string(steps) + " iterations: " + std::to_string(r.iterations) + parts + (r.converged ? " (converged)" : " (not converged)");
 }
 
 std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
@@ -881,7 +882,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << " recording, are the largest one's)"
         << (r.componentsKept > 0 ? "; " + std::to_string(r.componentsKept) + " with " + std::to_string(kSmallestRemeshedShare) + " vertices or fewer, too small for their share, kept as they are" : "")
         << "\n";
-  out << lloydIterationsLine(r) << "\n";
+  out << iterationsLine(r, o.lloyd.solver) << "\n";
   if (r.componentsKept < r.components)  // all kept as they are: nothing was parameterized
     out << "Parameterization" << (r.charts > 0 ? " (largest chart)" : "") << ": " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
         << format("%.3g", r.distortion.maxAreaRatio)

@@ -100,7 +100,8 @@ int nearestIndex(const std::vector<double>& at, double x);
 // Which curve of the convergence plots is which run: "lbfgs, this run: 160 iterations", then
 // "lloyd, same start: 1000, not converged" and "newton: 54" for the runs compared with it (the
 // first of them says they start alike); plotted against time, each with its total time
-// (", 185 ms"): how soon it converged.
+// (", 185 ms"): how soon it converged. `converged` false: any run, this one too, ends with
+// ", not converged".
 std::string curveLegend(const char* solver, bool thisRun, bool firstCompared, const std::vector<IterationRecord>& its,
                         bool converged, bool withTime);
 
@@ -248,9 +249,10 @@ std::string thresholdsText(const LloydOptions& options);
 // "1 iteration (0)" ("Stopped at 4 iterations" read as one more than the timeline's "0-3").
 std::string iterationsText(int count);
 
-// "Lloyd iterations: 160 (converged)": a surface remeshed in parts (components, charts) sums
-// its parts' iterations, and says so: 251 for 8 charts at --max-iterations 40 read as over it.
-std::string lloydIterationsLine(const RemeshResult& r);
+// "L-BFGS iterations: 160 (converged)", named by the solver's steps (a Newton run said "Lloyd
+// iterations"): a surface remeshed in parts (components, charts) sums its parts' iterations,
+// and says so: 251 for 8 charts at --max-iterations 40 read as over it.
+std::string iterationsLine(const RemeshResult& r, CvtSolver solver);
 
 // Input and output side by side.
 std::string qualityTable(const QualityMetrics& before, const QualityMetrics& after,

@@ -207,7 +207,7 @@ Caption caption(Stage stage, const CaptionFacts& f) {
     case Stage::Valence:
       c.formula = "Angles sum to 360° around a vertex, less the surface's curvature there: with 60° "
                   "angles a 5 (blue) sits where it bulges, a 7 (red) at a saddle. A 5 beside a 7 "
-                  "cancel: Lloyd leaves such pairs where rows of cells meet.";
+                  "cancel: the relaxation (any solver) leaves such pairs where rows of cells meet.";
       // "Border-aware": the Result stage's figure counts every border vertex as irregular.
       c.numbers = format("Iteration %d: %d fives, %d sevens, %d other%s: %.1f%% irregular (border-aware); "
                          "curvature asks for %.1f%%",

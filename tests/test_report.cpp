@@ -223,19 +223,22 @@ TEST(Report, ChartsThatStandInForAFailedDiskSaySo) {
 
 // The iterations of a surface remeshed in parts are their sum, said so: a sphere in 8 charts at
 // --max-iterations 40 said "Lloyd iterations: 251", where the recording (the largest chart's) has 40.
+// They are named by the solver's steps: a Newton run's read "Lloyd iterations".
 TEST(Report, IterationsSummedOverPartsSaySo) {
   RemeshResult r;
   r.iterations = 160;
   r.converged = true;
-  EXPECT_EQ(lloydIterationsLine(r), "Lloyd iterations: 160 (converged)");
+  EXPECT_EQ(iterationsLine(r, CvtSolver::Lbfgs), "L-BFGS iterations: 160 (converged)");
+  EXPECT_EQ(iterationsLine(r, CvtSolver::Newton), "Newton iterations: 160 (converged)");
+  EXPECT_EQ(iterationsLine(r, CvtSolver::Lloyd), "Lloyd iterations: 160 (converged)");
   r.iterations = 251;
   r.converged = false;
   r.charts = 8;
-  EXPECT_EQ(lloydIterationsLine(r),
+  EXPECT_EQ(iterationsLine(r, CvtSolver::Lloyd),
             "Lloyd iterations: 251, all 8 charts together (the recording is the largest one's) (not converged)");
   r.charts = 0;
   r.components = 3;
-  EXPECT_EQ(lloydIterationsLine(r), "Lloyd iterations: 251, all components together (not converged)");
+  EXPECT_EQ(iterationsLine(r, CvtSolver::Lloyd), "Lloyd iterations: 251, all components together (not converged)");
 }
 
 // Charts tried only because the one disk missed a bar say so; the JSON has the flag.
@@ -559,6 +562,9 @@ TEST(Report, TheCurvesLegendSaysWhichRunIsWhich) {
   its[2].milliseconds = 1.25;
   EXPECT_EQ(curveLegend("lbfgs", true, false, its, true, false), "lbfgs, this run: 3 iterations");
   EXPECT_EQ(curveLegend("lbfgs", true, false, its, true, true), "lbfgs, this run: 3 iterations, 4.8 ms");
+  // A run stopped by --max-iterations says so as the runs compared with it do: in a picture of
+  // the plots alone nothing else did.
+  EXPECT_EQ(curveLegend("lbfgs", true, false, its, false, false), "lbfgs, this run: 3 iterations, not converged");
   EXPECT_EQ(curveLegend("lloyd", false, true, its, false, false), "lloyd, same start: 3, not converged");
   EXPECT_EQ(curveLegend("lloyd", false, true, its, false, true), "lloyd, same start: 3, 4.8 ms, not converged");
   EXPECT_EQ(curveLegend("newton", false, false, its, true, true), "newton: 3, 4.8 ms");
