@@ -43,30 +43,29 @@ RemeshOptions referencePreset(RemeshMethod method) {
 
 namespace {
 
+// Relocation moves the input's own vertices: it needs one site per inside vertex, and the
+// input itself as the parameterized surface. A resampled surface's own vertices are the sites.
+RemeshOptions effective(RemeshOptions options) {
+  if (options.method == RemeshMethod::Relocate) options.sites.fromInputVertices = true;
+  if (options.sites.fromInputVertices) options.resample = false;
+  return options;
+}
+
+// Whether the input's own vertices are the sites (relocate, the report's preset).
+bool sitesAreInputVertices(const RemeshOptions& o) { return effective(o).sites.fromInputVertices; }
+
 // What RemeshOptions::coarsenInput simplifies `input` to: 0 where it is not simplified (the
 // caller's simplifyTo stands, the sites are the input's own vertices, a chart's seam samples are
 // numbered by its vertices, it is small enough, or it has a fan of triangles around a vertex
 // too large to simplify quickly: a CAD disk's hub of 3000 took over a minute to simplify, and
 // a second to remesh as it is).
 int coarseTarget(const RemeshOptions& o, const Mesh& input) {
-  if (!o.coarsenInput || o.simplifyTo > 0 || o.sites.count <= 0 || o.method == RemeshMethod::Relocate ||
-      o.sites.fromInputVertices || !o.sites.onSeam.empty())
+  if (!o.coarsenInput || o.simplifyTo > 0 || o.sites.count <= 0 || sitesAreInputVertices(o) || !o.sites.onSeam.empty())
     return 0;
   const int size = coarseInputSize(o.sites.count);
   if (input.vertexCount() <= size || mostTrianglesAroundAVertex(input) > kMostTrianglesAroundAVertexToSimplify)
     return 0;
   return size;
-}
-
-// Relocation moves the input's own vertices: it needs one site per inside vertex, and the
-// input itself as the parameterized surface. A resampled surface's own vertices are the sites.
-RemeshOptions effective(RemeshOptions options) {
-  if (options.method == RemeshMethod::Relocate) {
-    options.sites.fromInputVertices = true;
-    options.resample = false;
-  }
-  if (options.sites.fromInputVertices) options.resample = false;
-  return options;
 }
 
 RemeshOptions withCoarseInput(RemeshOptions options, const Mesh& input) {
@@ -609,13 +608,12 @@ RemeshResult remeshChartsSmallerWhereTheyFail(const Mesh& input, const RemeshOpt
 // cow and elephant, parts with many handles, the back half of a body whose arms curl over it),
 // its cells come out stretched, and the charts are rounder; on a CAD part with sharp edges
 // (CGAL's spool, rotor, lion) the charts' seams follow the edges, and the charts are closer.
-// `forBars`: see ChartTrial::forBars.
+// `forBars`: see ChartTrial::forBars. `options` measure no fidelity (the trial measures where it
+// decides).
 void tryCharts(RemeshResult& kept, const Mesh& input, const RemeshOptions& options, const std::string& name,
                const PreparedInput& prepared, bool forBars = false) {
-  RemeshOptions once = options;
-  once.measureFidelity = false;
   try {
-    RemeshResult charted = remeshChartsSmallerWhereTheyFail(input, once, name, prepared, /*evenOneChart=*/false);
+    RemeshResult charted = remeshChartsSmallerWhereTheyFail(input, options, name, prepared, /*evenOneChart=*/false);
     ChartTrial trial;
     trial.forBars = forBars;
     trial.charts = charted.charts;
@@ -779,7 +777,7 @@ int offTheBorder(const std::vector<Vec3>& points, const Mesh& m) {
 void tryKeepingBorderCorners(RemeshResult& kept, const Mesh& input, const RemeshOptions& options,
                              const std::string& name, const PreparedInput& prepared) {
   if (options.polish <= 0 || options.method != RemeshMethod::Retriangulate ||
-      effective(options).sites.fromInputVertices || kept.cut.seamEdges > 0 || kept.charts > 0)
+      sitesAreInputVertices(options) || kept.cut.seamEdges > 0 || kept.charts > 0)
     return;
   std::vector<Vec3> corners = borderCornersCut(kept.output, prepared.search());
   if (corners.empty()) return;
@@ -844,12 +842,12 @@ RemeshResult remeshSurface(const Mesh& input, bool disk, const RemeshOptions& op
     oneCutFailed = true;
   }
   if (chartsAllowed && kept.charts == 0 && (!disk || !isFreeBorder(kept.paramUsed)))
-    tryCharts(kept, input, options, name, prepared);
+    tryCharts(kept, input, once, name, prepared);
   // A one cut that failed failed without the first pass too (remeshOnce makes both): made
   // without it again, it failed again (CGAL's camel clipped by a plane, at 1000 vertices: 0.8 s of 3.9).
   if (disk && !oneCutFailed) tryWithoutFirstPass(kept, input, once, name, prepared);
   if (disk && chartsAllowed && !kept.chartTrial && barsMet(kept.after, kept.before) < 3)
-    tryCharts(kept, input, options, name, prepared, /*forBars=*/true);
+    tryCharts(kept, input, once, name, prepared, /*forBars=*/true);
   if (disk) tryKeepingBorderCorners(kept, input, once, name, prepared);
   kept.ms.simplify += simplifyMs;
   if (options.measureFidelity) measureFidelityOf(kept, prepared);
@@ -1018,7 +1016,7 @@ namespace {
 // (RemeshResult::fullInputFailed): where sites are asked, fewer than the input has, and neither
 // --simplify nor --full-input was given (nor the input's own vertices are the sites: relocate).
 bool simplifyingMayHelp(const RemeshOptions& o, const Mesh& input) {
-  return o.simplifyTo == 0 && o.coarsenInput && o.sites.count > 0 && !effective(o).sites.fromInputVertices &&
+  return o.simplifyTo == 0 && o.coarsenInput && o.sites.count > 0 && !sitesAreInputVertices(o) &&
          input.vertexCount() > o.sites.count;
 }
 
