@@ -437,6 +437,11 @@ void Inspector::stopRun() {
   joinWorker();
 }
 
+void Inspector::stopRunAndFinish() {
+  stopRun();
+  if (session_ && session_->finished()) finishSession();
+}
+
 void Inspector::joinWorker() {
   const std::string error = run_.join();
   collectIterations();
@@ -836,10 +841,7 @@ void Inspector::frame() {
     compared_.clear();
   }
   collectIterations();
-  if (session_ && run_.started() && run_.finished()) {
-    joinWorker();
-    if (session_ && session_->finished()) finishSession();
-  }
+  if (session_ && run_.started() && run_.finished()) stopRunAndFinish();
   // The time since the last frame goes to what was playing then, before the keys change it:
   // the window sleeps between a lesson's steps, and a stage skipped to got the time it had
   // slept on the last one. A frame after one that did not animate (the one that starts
@@ -1460,7 +1462,7 @@ void Inspector::fileControls() {
     try {
       refuseReplacing(recordingPath_, shownPath_, "recording");
       requireRecordingName(recordingPath_);  // before the run stops for it
-      stopRun();
+      stopRunAndFinish();
       saveRecording(replay_->recording(), recordingPath_);
       showMessage(std::string("saved ") + recordingPath_);
     } catch (const Error& e) {
@@ -1950,8 +1952,8 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
   std::vector<Curve> energy, displacement, moving;  // the other runs'
   if (!comparisons_.empty()) {  // which curve is which
     const std::vector<IterationRecord>& its = replay_->recording().iterations;
-    // A run still going (a session) is not yet "not converged".
-    const bool converged = session_ || replay_->recording().converged();
+    // A run still going (a session not finished) is not yet "not converged".
+    const bool converged = (session_ && !session_->finished()) || replay_->recording().converged();
     ImGui::TextColored(solverColour(options_.lloyd.solver), "%s",
                        curveLegend(toString(options_.lloyd.solver), true, false, its, converged, time).c_str());
     for (size_t k = 0; k < comparisons_.size(); ++k) {
@@ -1961,9 +1963,13 @@ void Inspector::plotsPane(const ImVec2& pos, const ImVec2& size) {
       displacement.push_back(other.displacement);
       moving.push_back(other.moving);
       const bool converged = convergedAt(c.iterations, replay_->recording().percentThreshold);
-      ImGui::SameLine();
-      ImGui::TextColored(solverColour(c.solver), "  %s",
-                         curveLegend(toString(c.solver), false, k == 0, c.iterations, converged, time).c_str());
+      const std::string legend = curveLegend(toString(c.solver), false, k == 0, c.iterations, converged, time);
+      // On the same line where it fits, else on the next (at 960 wide, Newton's was cut to "newton:").
+      const std::string spaced = "  " + legend;
+      const bool fits = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(spaced.c_str()).x <=
+                        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+      if (fits) ImGui::SameLine();
+      ImGui::TextColored(solverColour(c.solver), "%s", (fits ? spaced : legend).c_str());
     }
   }
   const char* unit = time ? "ms" : "";
@@ -2025,7 +2031,7 @@ void Inspector::timelinePane(const ImVec2& pos, const ImVec2& size) {
   if (!canStep) ImGui::EndDisabled();
   ImGui::SameLine();
   if (!running) ImGui::BeginDisabled();
-  if (ImGui::Button("Stop")) stopRun();
+  if (ImGui::Button("Stop")) stopRunAndFinish();
   if (!running) ImGui::EndDisabled();
   ImGui::SameLine();
   const bool lessonWaits = running && !lesson_.playing();

@@ -214,6 +214,10 @@ class Inspector {
   bool running() const { return run_.started(); }
   void startRun();
   void stopRun();
+  // Stop as the user asks it (Stop, Save recording) and as a run that ended is joined: a session
+  // that the worker's last step finished is finished here (Stop in the frame the run ended left
+  // it "Done after 1000 iterations: the clean-up on the surface follows", Step and Run greyed).
+  void stopRunAndFinish();
   void joinWorker();  // the worker's iterations collected, and what ended it said
   // The run failed (`why`): the iterations so far stay to look at; the session is spent.
   void runFailed(const std::string& why);

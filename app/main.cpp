@@ -413,7 +413,7 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
   Mesh mesh = loadToRemesh(a, options);
   RemeshResult result = remesh(mesh, options, in);
   if (result.recording.iterations.empty())  // the panes show iterations (it crashed)
-    throw Error(in + ": nothing to show: no Lloyd iteration was run (" + kNoIterationWhy + ")");
+    throw Error(in + ": nothing to show: no iteration was run (" + kNoIterationWhy + ")");
   if (input) *input = std::move(mesh);
   return result;
 }

@@ -362,7 +362,7 @@ void requireRecordingName(const std::string& path) {
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch) {
   requireRecordingName(path);
   if (recording.iterations.empty())
-    throw Error(path + ": nothing to record: no Lloyd iteration was run (" + kNoIterationWhy + ")");
+    throw Error(path + ": nothing to record: no iteration was run (" + kNoIterationWhy + ")");
   const std::string payload = encodePayload(recording);
   // What is saved reads back: a recording the replay would refuse is not written.
   try {

@@ -323,6 +323,26 @@ TEST(Inspector, ColoursEachSolverTheSameWhicheverRuns) {
   }
 }
 
+// A run stopped short: every legend says "not converged", which is longer than the pane is
+// wide at 960; the legend that does not fit goes on the next line (Newton's was cut to
+// "newton:", and with the plots against time it was not there at all).
+TEST(Inspector, ALegendThatDoesNotFitGoesOnTheNextLine) {
+  const std::string png = test::tempPath("legend_wrapped.png");
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --max-iterations 40 --compare-solvers --pane plots", png), 0);
+  const Picture picture = readPng(png);
+  auto topRowOf = [&](int r, int g, int b) {
+    for (int y = 0; y < picture.height; ++y)
+      for (int x = 0; x < picture.width; ++x) {
+        const unsigned char* c = picture.at(x, y);
+        if (std::abs(c[0] - r) < 30 && std::abs(c[1] - g) < 30 && std::abs(c[2] - b) < 30) return y;
+      }
+    return picture.height;
+  };
+  const int blue = topRowOf(38, 77, 178), purple = topRowOf(158, 77, 184);  // solverColour
+  ASSERT_LT(purple, picture.height);
+  EXPECT_GE(purple, blue + 10) << "Newton's legend on the run's line";
+}
+
 // The same Newton run, recorded and replayed: the same picture. A recording was shown with the
 // command line's defaults ("lbfgs, this run", in L-BFGS's blue, and Newton run again beside it).
 TEST(Inspector, ReplaysARecordingWithTheSettingsItWasMadeWith) {
