@@ -896,7 +896,10 @@ void Inspector::frame() {
       captionHeight = std::max(captionHeight, captionPaneHeight(captionOf(static_cast<Stage>(stage)), display.x - left));
   }
   const float timelineHeight = (presentation_ ? 2 * line + 30 : 64.0f) + (timelineWrapped_ ? ImGui::GetFrameHeightWithSpacing() : 0);
-  const float plotsHeight = presentation_ ? std::max(170.0f, display.y * 0.22f)
+  // Presentation: the plots' header, titles and tick labels are in the large font, and a fixed
+  // share of the height left their frames 76 pixels tall at 1280x800 (51 with Compare's
+  // legends, two labels on each axis): those rows, then frames of a sixth of the height.
+  const float plotsHeight = presentation_ ? (comparisons_.empty() ? 3 : 4) * line + std::max(110.0f, display.y / 6)
                                           : std::max(170.0f, display.y * 0.27f);
   const float viewsHeight = display.y - captionHeight - timelineHeight - plotsHeight;
   const float viewWidth = (display.x - left) / 2;
@@ -1675,11 +1678,12 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   // squeezes some parts of the surface (the camel head's middle, 2-5 px where the mean was 9).
   // In the room right of the domain where there is some (a wide, low pane); where there is
   // none, over its corner only while the mouse, which can zoom, is over the pane (it hid cells
-  // in every picture of a small pane, where no mouse can zoom).
+  // in every picture of a small pane, where no mouse can zoom). In classroom mode only while
+  // the mouse is there: on a slide it was a column of five words beside the diagram.
   const float room = p0.x + extent.x - (center.x + 0.5f * scale) - 12;
   if (const std::string text = crowdedSitesHint(
           closeSiteSpacing(replay_->view(iteration_).cells, replay_->recording().fixedSites.size()) * scale);
-      shown.sites2D && !text.empty() && (room >= 80 || ImGui::IsWindowHovered())) {
+      shown.sites2D && !text.empty() && ((room >= 80 && !presentation_) || ImGui::IsWindowHovered())) {
     const std::string hint = wrappedLines(text, room >= 80 ? room : 0.5f * extent.x);
     boxedText(dl, ImVec2(p0.x + extent.x - ImGui::CalcTextSize(hint.c_str()).x - 8, p0.y + 4 + (filled ? fillLegendTop() : 0.0f)),
               hint.c_str());
