@@ -778,9 +778,13 @@ void Inspector::uploadMesh() {
     const std::vector<VertexValence> valences = vertexValences(mesh);
     for (int v = 0; v < mesh.vertexCount(); ++v) markIrregular(mesh.points[v], valences[v]);
   }
+  // The Lift stage is about these sites: each on a white halo, which a projector shows over the
+  // input's dark wire (3 px squares alone were lost in it).
   if (now.sites && !final)
-    for (const Vec3& s : view.liftedSites)
-      marks.push_back(marker(gpu_.to(s), 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+    for (const Vec3& s : view.liftedSites) {
+      if (now.lift) marks.push_back(marker(gpu_.to(s), 7.0f, MarkerShape::Dot, rgb(1.0f, 1.0f, 1.0f)));
+      marks.push_back(marker(gpu_.to(s), now.lift ? 4.0f : 3.0f, MarkerShape::Square, rgb(0.1f, 0.15f, 0.45f)));
+    }
   renderer_.uploadMarkers(marks);
   uploaded_ = now;
 }
@@ -792,7 +796,7 @@ bool Inspector::cellsFilled() const { return fillShown() != CellFill::None && la
 Inspector::Shown3D Inspector::shown3D() const {
   const Layers shown = layers();
   return {iteration_,   shown.input3D,   shown.mapped3D, shown.sites3D, finalShown(),
-          colorByAngle_, cellsFilled() && fillShown() == CellFill::Valence, replay_->method()};
+          colorByAngle_, cellsFilled() && fillShown() == CellFill::Valence, replay_->method(), stage_ == Stage::Lift};
 }
 
 float Inspector::markScale() const {

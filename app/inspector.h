@@ -332,7 +332,8 @@ class Inspector {
     int iteration = -1;
     bool input = false, mapped = false, sites = false, final = false, byAngle = false, valences = false;
     RemeshMethod method = RemeshMethod::Retriangulate;
-    auto tied() const { return std::tie(iteration, input, mapped, sites, final, byAngle, valences, method); }
+    bool lift = false;  // the lesson's Lift stage: its sites haloed
+    auto tied() const { return std::tie(iteration, input, mapped, sites, final, byAngle, valences, method, lift); }
     bool operator==(const Shown3D& o) const { return tied() == o.tied(); }
   };
   Shown3D uploaded_;

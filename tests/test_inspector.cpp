@@ -760,6 +760,19 @@ TEST(Inspector, PresentationMarksGrowWithTheWindow) {
   EXPECT_GT(thicker, 1.6 * lines) << lines << " " << thicker;
 }
 
+// The Lift stage is about the sites on the surface: each is drawn on a white halo there (3 px
+// navy squares alone were lost in the input's dark wire on a projector). The Move stage draws
+// the same mesh and sites without it.
+TEST(Inspector, TheLiftStageShowsItsSitesOnHalos) {
+  const auto whitePixels = [](const std::string& stage) {
+    const std::string png = test::tempPath("halo_" + stage + ".png");
+    EXPECT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --presentation --stage " + stage + " --pane 3d", png), 0);
+    return pixelsWhere(readPng(png), [](const unsigned char* c) { return c[0] >= 250 && c[1] >= 250 && c[2] >= 250; });
+  };
+  const int lift = whitePixels("lift"), move = whitePixels("move");
+  EXPECT_GT(lift, move + 2000) << lift << " " << move;  // the labels' boxes are white in both
+}
+
 // The valence legend's five swatches all show whole in presentation mode at 960x600, where the
 // pane's own legend (two lines) leaves less room than five rows: there it covered the last, "4-".
 TEST(Inspector, TheValenceLegendFitsALowPane) {
