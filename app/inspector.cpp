@@ -285,6 +285,7 @@ void Inspector::noteTheResult() {
   noteFirst(foldsText(result_.before, result_.after));
   noteFirst(sharpCornerText(result_.before, result_.after));
   noteFirst(pinholeText(result_.after));
+  noteFirst(tipText(result_.after));
   noteFirst(curvatureText(result_.after));
 }
 

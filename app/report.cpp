@@ -779,6 +779,15 @@ std::string pinholeText(const QualityMetrics& after) {
          "needles (a pinhole in a scan; close it to remesh it away)";
 }
 
+std::string tipText(const QualityMetrics& after) {
+  if (after.minAngle >= kLeastMinAngle || after.minAngleTipSum <= 0) return "";
+  return "The smallest angle, " + format("%.1f", after.minAngle) + " degrees, at " + pointText(after.minAngleAt) +
+         ", is at a tip of the surface: the angles around that inside vertex sum to " +
+         format("%.0f", after.minAngleTipSum) +
+         " degrees, under the 90 that three angles of 30 need, so no triangles around a vertex there can all "
+         "reach 30";
+}
+
 std::string curvatureText(const QualityMetrics& after) {
   // CGAL's armadillo halved along y at 500 vertices: 19% irregular, its curvature 24 units
   // per 100 vertices; at 1000, 11% and 16 units.
@@ -874,6 +883,7 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
   if (const std::string folds = foldsText(r.before, r.after); !folds.empty()) out << folds << "\n";
   if (const std::string corner = sharpCornerText(r.before, r.after); !corner.empty()) out << corner << "\n";
   if (const std::string pinhole = pinholeText(r.after); !pinhole.empty()) out << pinhole << "\n";
+  if (const std::string tip = tipText(r.after); !tip.empty()) out << tip << "\n";
   if (const std::string curved = curvatureText(r.after); !curved.empty()) out << curved << "\n";
   if (const std::string count = vertexCountText(r, o); !count.empty()) out << count << "\n";
   if (r.components > 1)

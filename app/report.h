@@ -229,6 +229,9 @@ std::string relocateNeedsText(bool canRun);
 // Where the result's smallest angle is under 30 degrees beside a hole shorter than its mean
 // edge (QualityMetrics::minAngleHoleEdges): that the hole, kept, leaves needles; else "".
 std::string pinholeText(const QualityMetrics& after);
+// Where the smallest angle is under 30 at an inside vertex whose angles sum to under 90 (a
+// spike's apex: 69 degrees, its three angles 21.6 and the bar missed without a word): why.
+std::string tipText(const QualityMetrics& after);
 // Where the result is over kMostIrregularPercent irregular and the surface curves for its
 // vertices by as much (QualityMetrics::curvatureDefects): that equilateral triangles would be
 // as irregular there, and what may help; else "".

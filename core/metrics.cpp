@@ -247,7 +247,9 @@ QualityMetrics measureQuality(const Mesh& mesh) {
   if (m.minAngle < kLeastMinAngle) {  // the one "Pin the worst triangle" pins
     const int worst = worstTriangle(mesh);
     const auto& angles = cornerAngles[worst];
-    m.minAngleAt = mesh.points[mesh.triangles[worst][std::min_element(angles.begin(), angles.end()) - angles.begin()]];
+    const int corner = mesh.triangles[worst][std::min_element(angles.begin(), angles.end()) - angles.begin()];
+    m.minAngleAt = mesh.points[corner];
+    if (!boundary[corner] && angleSum[corner] < 3 * kLeastMinAngle) m.minAngleTipSum = angleSum[corner];
     findPinholeAt(mesh, rings, mesh.triangles[worst], boundary, m);
   }
   return m;

@@ -82,6 +82,10 @@ struct QualityMetrics {
   Vec3 minAngleAt = Vec3::Zero();
   int minAngleHoleEdges = 0;
   double minAngleHoleLength = 0, meanEdge = 0;
+  // Where that corner's vertex is inside and its angles sum to under 90 degrees (three of 30):
+  // the sum, at a tip of the surface (a spike's apex, on which a vertex is put to stay close to
+  // it) where no triangles around a vertex can all reach 30. 0 where not.
+  double minAngleTipSum = 0;
 };
 constexpr double kFoldDegrees = 150.0;
 constexpr double kPinholeOfMeanEdge = 0.5;

@@ -31,6 +31,20 @@ Mesh hexPatch(int rings) {
 }
 }  // namespace
 
+// A spike: three triangles around an apex whose angles sum to 59 degrees (20 each): no
+// triangles around a vertex there can all reach 30, and the metrics say where and how much; a
+// flat fan's centre is no tip, even where its own angles are small.
+TEST(Quality, ASmallestAngleAtATipGivesItsAngleSum) {
+  const Mesh spike = test::polarDisk(3, 1, 0, [](double r, double) { return 5 * (1 - r); });
+  const QualityMetrics m = measureQuality(spike);
+  EXPECT_LT(m.minAngle, 30);
+  EXPECT_NEAR(m.minAngleTipSum, 3 * 2 * std::asin(std::sqrt(3.0) / 2 / std::sqrt(26.0)) * 180 / M_PI, 1e-9);
+  EXPECT_EQ(m.minAngleAt, Vec3(0, 0, 5));
+  const Mesh needles = test::polarDisk(24, 1);  // 15-degree wedges, at a centre whose angles sum to 360
+  EXPECT_LT(measureQuality(needles).minAngle, 30);
+  EXPECT_EQ(measureQuality(needles).minAngleTipSum, 0);
+}
+
 TEST(Quality, EquilateralLatticeIsPerfectInside) {
   const Mesh m = hexPatch(3);  // 37 vertices, 54 triangles
   const QualityMetrics q = measureQuality(m);

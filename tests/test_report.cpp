@@ -764,6 +764,24 @@ TEST(Report, RelocateSaysWhatGivesARunThatCan) {
   EXPECT_NE(recording.find("remesh --method relocate --record"), std::string::npos) << recording;
 }
 
+// A spike's apex, its angles summing to 69 degrees: the bar missed at 21.6 degrees, and said
+// nowhere why.
+TEST(Report, ASmallestAngleAtATipIsExplained) {
+  QualityMetrics after;
+  after.minAngle = 21.6;
+  EXPECT_EQ(tipText(after), "");  // no tip there
+  after.minAngleAt = Vec3(0.2, 0, 0.8);
+  after.minAngleTipSum = 69.2;
+  EXPECT_EQ(tipText(after), "The smallest angle, 21.6 degrees, at (0.2, 0, 0.8), is at a tip of the surface: the angles "
+                            "around that inside vertex sum to 69 degrees, under the 90 that three angles of 30 need, so "
+                            "no triangles around a vertex there can all reach 30");
+  RemeshResult r;
+  r.after = after;
+  EXPECT_NE(remeshReport(r, RemeshOptions{}).find(tipText(after)), std::string::npos);
+  after.minAngle = 31;  // the bar met: nothing to explain
+  EXPECT_EQ(tipText(after), "");
+}
+
 // A sphere with a pinhole 10^-6 across: needles of 0.0001 degrees around the hole, which the
 // border keeps, and nothing said why.
 TEST(Report, ASmallestAngleBesideAPinholeIsExplained) {
