@@ -23,6 +23,10 @@ Replay::Replay(Recording recording)
 }
 
 bool Replay::canRelocate() const {
+  // A relocate run of a disk whose every vertex is on the border has no movable site, and no
+  // vertex to say so by (the inspector said its run had placed its own sites).
+  const bool noneMovable = recording_.iterations.empty() || recording_.iterations.front().sites.size() == 0;
+  if (noneMovable) return recording_.method == RemeshMethod::Relocate;
   return !recording_.movableVertex.empty() &&
          std::none_of(recording_.movableVertex.begin(), recording_.movableVertex.end(), [](int v) { return v < 0; });
 }

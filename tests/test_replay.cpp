@@ -83,6 +83,20 @@ TEST(Replay, RelocateOnlyWhereSitesAreInputVertices) {
   EXPECT_FALSE(replay.canRelocate());
   replay.setMethod(RemeshMethod::Relocate);
   EXPECT_EQ(replay.method(), RemeshMethod::Retriangulate);
+
+  // A fan of a 24-gon: every vertex on the border, no site to move. Its relocate run's recording
+  // relocates (the inspector greyed it, saying the run had placed its own sites).
+  Mesh fan;
+  for (int i = 0; i < 24; ++i) fan.points.emplace_back(std::cos(2 * M_PI * i / 24), std::sin(2 * M_PI * i / 24), 0);
+  for (int i = 1; i + 1 < 24; ++i) fan.triangles.push_back({0, i, i + 1});
+  RemeshOptions relocate;
+  relocate.method = RemeshMethod::Relocate;
+  relocate.measureFidelity = false;
+  Replay still(remesh(fan, relocate, "fan").recording);
+  ASSERT_EQ(still.recording().iterations.front().sites.size(), 0u);
+  EXPECT_TRUE(still.canRelocate());
+  EXPECT_EQ(still.method(), RemeshMethod::Relocate);
+  EXPECT_EQ(still.view(0).output.triangles, fan.triangles);
 }
 
 TEST(Replay, GrowsWhileARunGoesOn) {
