@@ -186,7 +186,7 @@ Mesh loadToRemesh(const RemeshArgs& a, const RemeshOptions& o) {
     std::cerr << "note: --simplify " << o.simplifyTo << " has no effect here: the input has " << input.vertexCount()
               << " vertices, and they are the sites (" << (relocate ? "relocate moves them" : "the report's preset starts from them")
               << ")\n";
-  else if (o.simplifyTo > 0 && o.simplifyTo < input.vertexCount())
+  else if (o.simplifyTo > 0 && simplifyCollapses(input, {o.simplifyTo}, a.input))
     noteASlowSimplification(input, a.input);
   return input;
 }
@@ -725,10 +725,7 @@ struct SimplifyCommand {
     const Mesh mesh = load(input, repair);
     // Beyond it the quadrics overflow: at 1e78 nothing collapsed, and the mesh was written as read.
     requireExactPredicatesRange(mesh, input, "simplified");
-    const bool collapses = target.vertices > 0 ? target.vertices < mesh.vertexCount()
-                           : target.faces > 0  ? target.faces < mesh.faceCount()
-                                               : target.ratio < 1;
-    if (collapses) noteASlowSimplification(mesh, input);
+    if (simplifyCollapses(mesh, target, input)) noteASlowSimplification(mesh, input);
     const SimplifyResult s = simplify(mesh, target, input);
     writeMesh(s.mesh, output);
     std::cout << input << ": " << mesh.vertexCount() << " vertices, " << mesh.faceCount() << " faces -> "

@@ -85,10 +85,9 @@ Vec3 farOffset(const Mesh& mesh) {
   return centre.norm() > 10 * (hi - lo).norm() ? centre : Vec3::Zero();
 }
 
-}  // namespace
-
-SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name) {
-  Stopwatch stopwatch;
+// Where the options stop the collapses on `input`. Throws Error naming `name` for no target or a
+// ratio outside (0, 1].
+SizeStop sizeStop(const Mesh& input, const SimplifyOptions& options, const std::string& name) {
   SizeStop stop{0, 0};
   if (options.vertices > 0) {
     stop.vertices = options.vertices;
@@ -100,8 +99,24 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
   } else {
     throw Error(name + ": give a positive number of vertices or faces, or a ratio, to simplify to");
   }
+  return stop;
+}
+
+bool reaches(const SizeStop& stop, const Mesh& mesh) {
+  return stop.vertices >= size_t(mesh.vertexCount()) || stop.faces >= size_t(mesh.faceCount());
+}
+
+}  // namespace
+
+bool simplifyCollapses(const Mesh& input, const SimplifyOptions& options, const std::string& name) {
+  return !reaches(sizeStop(input, options, name), input);
+}
+
+SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name) {
+  Stopwatch stopwatch;
+  const SizeStop stop = sizeStop(input, options, name);
   SimplifyResult result;
-  if (stop.vertices >= size_t(input.vertexCount()) || stop.faces >= size_t(input.faceCount())) {
+  if (reaches(stop, input)) {
     result.mesh = input;  // nothing to take away
     return result;
   }

@@ -33,6 +33,9 @@ struct SimplifyResult {
 // its own centre: the quadrics lose its detail there. Throws Error naming `name` for a target
 // that is not positive; one not smaller gives the input as it is.
 SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name);
+// Whether simplify() would collapse anything at all (its target under the input's size): a
+// caller warns of a slow one first. Throws Error as simplify() does on the options.
+bool simplifyCollapses(const Mesh& input, const SimplifyOptions& options, const std::string& name);
 
 // The most triangles around one vertex for which the edge collapse is quick: CGAL costs every
 // edge around a vertex again after each collapse there, each from that vertex's whole ring, in
