@@ -363,7 +363,7 @@ void Inspector::openReplay(Recording recording) {
   // A lesson's plan and an exported sequence's numbers are of the replay before (Restart in a
   // lesson kept playing the old plan, clamped to iteration 0).
   if (lesson_.playing()) toggleLesson();
-  if (exportJob_ && exportJob_->first >= 0) showMessage("the sequence was not saved: another run was opened before its last picture");
+  if (exportJob_ && exportJob_->sequence()) showMessage("the sequence was not saved: another run was opened before its last picture");
   exportJob_.reset();
   exportRequest_.reset();   // the frame drawn now is of the new replay
   pictureFiles_.reset();    // the pictures made so far are not saved
@@ -578,7 +578,7 @@ Pane parsePane(const std::string& name) {
 }
 
 std::string exportPath(const ExportJob& job, int iteration) {
-  if (job.first < 0) return job.path;
+  if (!job.sequence()) return job.path;
   char number[16];
   std::snprintf(number, sizeof number, "_%04d", iteration);
   return std::string(job.path).insert(job.path.size() - 4, number);
@@ -590,7 +590,7 @@ void refuseReplacing(const std::string& path, const std::string& shown, const st
 }
 
 void refuseReplacing(const ExportJob& job, const std::string& shown) {
-  if (job.first < 0) return refuseReplacing(job.path, shown, "picture");
+  if (!job.sequence()) return refuseReplacing(job.path, shown, "picture");
   // Of a sequence's names only the one with the shown file's own number can be it: one check,
   // not one per picture (--iterations 0:2000000000 ran for minutes before its range was refused).
   std::error_code ignored;
@@ -611,14 +611,14 @@ void Inspector::startExport(ExportJob job) {
   refuseReplacing(job, shownPath_);
   const int count = replay_->iterationCount();
   const std::string range = "iterations " + std::to_string(job.first) + ":" + std::to_string(job.last);
-  if (job.first >= 0 && job.last < job.first)
+  if (job.sequence() && job.last < job.first)
     throw Error(range + ": FIRST comes after LAST (the pictures go from FIRST up to LAST)");
-  if (job.first >= 0 && job.last >= count)
+  if (job.sequence() && job.last >= count)
     throw Error(range + ": expected FIRST:LAST within 0:" + std::to_string(count - 1));
   // Every picture's name, before the first is saved: a folder named as the third stopped the
   // sequence there, the first two written (or replaced).
   for (int k = job.first; k >= 0 && k <= job.last; ++k) requireWritable(exportPath(job, k));
-  exportNext_ = job.first >= 0 ? job.first : iteration_;
+  exportNext_ = job.sequence() ? job.first : iteration_;
   iterationBeforeExport_ = iteration_;
   exportJob_ = std::move(job);
 }
@@ -629,7 +629,7 @@ void Inspector::savePicture(const std::vector<unsigned char>& png) {
   pictureFiles_->add(exportRequest_->path, [&](std::ostream& out) {
     out.write(reinterpret_cast<const char*>(png.data()), png.size());
   });
-  if (exportJob_->first < 0 || exportNext_ >= exportJob_->last) {  // a picture alone, or a sequence's last
+  if (!exportJob_->sequence() || exportNext_ >= exportJob_->last) {  // a picture alone, or a sequence's last
     pictureFiles_->commit();
     pictureFiles_.reset();
   }
@@ -639,7 +639,7 @@ void Inspector::savePicture(const std::vector<unsigned char>& png) {
 void Inspector::exported(const std::string& error) {
   if (!error.empty()) pictureFiles_.reset();  // none of its pictures replaces a file
   // The bar is hidden while pictures are made (they leave it out): a sequence says so at its end.
-  const bool sequence = exportJob_ && exportJob_->first >= 0;
+  const bool sequence = exportJob_ && exportJob_->sequence();
   if (exportRequest_) {
     if (!error.empty())
       showMessage(error);
@@ -650,11 +650,11 @@ void Inspector::exported(const std::string& error) {
                                    exportPath(*exportJob_, exportJob_->first)));
   }
   exportRequest_.reset();
-  if (error.empty() && exportJob_ && exportJob_->first >= 0 && exportNext_ < exportJob_->last) {
+  if (error.empty() && exportJob_ && exportJob_->sequence() && exportNext_ < exportJob_->last) {
     ++exportNext_;
   } else {
     // A sequence leaves the timeline where it was (it stayed on the last picture saved).
-    if (exportJob_ && exportJob_->first >= 0) setIteration(iterationBeforeExport_);
+    if (exportJob_ && exportJob_->sequence()) setIteration(iterationBeforeExport_);
     exportJob_.reset();
   }
 }
@@ -867,7 +867,7 @@ void Inspector::frame() {
     setIteration(lesson_.current().iteration);
     stage_ = lesson_.current().stage;
   }
-  if (exportJob_ && exportJob_->first >= 0) setIteration(exportNext_);
+  if (exportJob_ && exportJob_->sequence()) setIteration(exportNext_);
   // Presentation mode's type grows with the window: the font drawn nearest the size, scaled to it.
   const float textSize = presentationTextSize(ImGui::GetIO().DisplaySize.y);
   ImFont* presentationFont = presentationFonts_[presentationFonts_[1] && textSize > 31.5f ? 1 : 0];

@@ -53,6 +53,7 @@ struct ExportJob {
   std::string path;
   Pane pane = Pane::Window;
   int first = -1, last = -1;  // -1: just the current iteration
+  bool sequence() const { return first >= 0; }
 };
 // The file the picture of `iteration` goes to.
 std::string exportPath(const ExportJob& job, int iteration);

@@ -17,7 +17,6 @@ struct PixelRect {
 std::vector<unsigned char> encodePng(const std::string& path, const unsigned char* pixels, int width, int height,
                                      bool bgra, PixelRect crop);
 
-
 // Throws Error unless `path` names a PNG file (ends in .png) that can be written (requireWritable):
 // checked before the frames are rendered, and before the run they show.
 void requirePngPath(const std::string& path);
