@@ -8,6 +8,7 @@
 #include "cgal_types.h"
 #include "stopwatch.h"
 
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/subdivision_method_3.h>
@@ -125,7 +126,15 @@ SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const
   using Policies = SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel>;
   Policies policies(sm);
   BoundaryKeepingPlacement<Policies::Get_placement> placement{policies.get_placement()};
-  SMS::edge_collapse(sm, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
+  // No collapse may turn a triangle around the edge by 90 degrees or more: quadrics choose the
+  // placement without looking at the triangles around, and a border vertex slides along the
+  // border. Without the filter the bench's inputs of nefertiti, the lion head and the mannequin
+  // had 2-24 folded edges (metrics), with it 0-11 (the mannequin has 104 as it comes), and a
+  // wiggly border at 500 vertices had 12 triangles upside down, with it none (test_simplify).
+  SMS::edge_collapse(sm, stop,
+                     CGAL::parameters::get_cost(policies.get_cost())
+                         .get_placement(placement)
+                         .filter(SMS::Bounded_normal_change_filter<>()));
   sm.collect_garbage();
   result.mesh = fromSurfaceMesh(sm);
   // One vertex goes with each collapse (edge_collapse counts the edges removed: three inside).
