@@ -244,6 +244,7 @@ void stepsOnTheInput(Mesh& result, const SearchableSurface& original, const Reme
     regularize();
     if (collapseShortBorderEdges(result, original, tips) > 0) regularize();
     raiseMeanAngles(result, original, tips);
+    bringNearer(result, original, tips);
   }
   if (!o.fit) return;
   FitOptions fit;

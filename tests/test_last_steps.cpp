@@ -541,3 +541,63 @@ TEST(LastSteps, AVertexIsSnappedOntoTheCrestOfACoarseInput) {
   EXPECT_LT(measureFidelity(result, input).hausdorffPercent, 0.5 * before);
   EXPECT_GE(measureQuality(result).minAngle, 30.0);
 }
+
+// A ridge of the input across the equilateral patch, oblique to its edges: the patch's vertices
+// on the input, its triangles' chords cut under the ridge. A fine grid over the patch's
+// parallelogram, raised 0.3 along the line x - 0.4 y = 4, falling to nothing 0.8 away.
+Mesh ridgeUnderThePatch() {
+  Mesh input = test::grid(90);
+  for (Vec3& p : input.points) {
+    const double x = 6 * p.x() + 3 * p.y(), y = 3 * std::sqrt(3.0) * p.y();
+    const double across = std::abs(x - 0.4 * y - 4) / std::hypot(1.0, 0.4);
+    p = Vec3(x, y, 0.3 * std::max(0.0, 1 - across / 0.8));
+  }
+  return input;
+}
+
+// The farthest of points on a fine grid over each triangle of `m` from `surface`.
+double farthestFrom(const Mesh& m, const SurfaceProjection& surface) {
+  double farthest = 0;
+  constexpr int n = 20;
+  for (const Triangle& t : m.triangles)
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const Vec3 p = (i * m.points[t[0]] + j * m.points[t[1]] + (n - i - j) * m.points[t[2]]) / n;
+        farthest = std::max(farthest, std::sqrt(surface.squaredDistance(p)));
+      }
+  return farthest;
+}
+
+// The vertices of the triangles that cut farthest under the ridge move along the input, their
+// chords nearer it: the farthest any point of the patch is from the input falls (by 6%: a move
+// that brings one triangle nearer takes the one beyond the ridge farther, and a ridge this
+// sharp would need a row of vertices along it), the smallest angle stays over 35 degrees, and
+// the border and pinned vertices stay.
+TEST(LastSteps, TheChordsFarthestFromTheInputAreBroughtNearer) {
+  const Mesh input = ridgeUnderThePatch();
+  const SurfaceProjection projection(input);
+  Mesh patch = test::equilateralPatch();
+  for (Vec3& p : patch.points) p = projection.closestPoint(p);
+  const double before = farthestFrom(patch, projection);
+  ASSERT_GT(before, 0.05);
+  ASSERT_GT(measureQuality(patch).minAngle, 50.0);
+
+  std::vector<int> all(patch.vertexCount());
+  std::iota(all.begin(), all.end(), 0);
+  Mesh m = patch;
+  EXPECT_EQ(bringNearer(m, input, all), 0);
+  EXPECT_EQ(m.points, patch.points);
+
+  EXPECT_GT(bringNearer(m, input), 0);
+  EXPECT_LT(farthestFrom(m, projection), 0.97 * before);  // 0.170 -> 0.159
+  EXPECT_GE(measureQuality(m).minAngle, 35.0);
+  const std::vector<bool> border = vertexEdges(patch).onBoundary;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (border[v]) EXPECT_EQ(m.points[v], patch.points[v]) << "vertex " << v;
+    EXPECT_LT(std::sqrt(projection.squaredDistance(m.points[v])), 1e-9) << "vertex " << v;
+  }
+
+  // Where the input is the patch itself, nothing strays and nothing moves.
+  Mesh flat = test::equilateralPatch();
+  EXPECT_EQ(bringNearer(flat, test::equilateralPatch()), 0);
+}
