@@ -409,15 +409,16 @@ namespace {
 // What AngleRaiser raises around each vertex it moves: its triangles' smallest angle (their
 // mean smallest angle may fall a little), or their mean smallest angle (their smallest angle
 // may not fall), or their nearness to the input: the farthest of their chords from it (their
-// mean smallest angle may fall a little, their smallest angle not under kNearerKeepAngle).
+// mean smallest angle may fall a little, their smallest angle not under the lesser of what it
+// was and kNearerKeepAngle).
 enum class Raise { Smallest, Mean, Nearer };
 
 // A place that a vertex's search may not move it to scores this.
 constexpr double kRefused = -INFINITY;
 
-// The smallest angle a move of Raise::Nearer may leave, where the triangles had more. 30 as
-// well as 35 on issue 5's bench kept every Hausdorff distance, and took the lion head's
-// smallest angle at 500 from 35.7 to 34.3 degrees.
+// The smallest angle a move of Raise::Nearer may leave, where the triangles had more. 30 gained
+// no distance over 35 on issue 5's bench, and took the lion head's smallest angle at 500 from
+// 35.7 to 34.3 degrees.
 constexpr double kNearerKeepAngle = 35.0;
 
 // Moves vertices on the surface to where the angles of their triangles are larger, or their
@@ -495,32 +496,40 @@ class AngleRaiser {
     // A ring whose faces already spread wider than keepsRingUnfolded() allows (a vertex on a
     // tip or a sharp ridge) is held only to none of them turning over.
     const bool wide = !keepsRingUnfolded(m_, rings, v, start, up);
-    // Where the searches for the chords' distances start (the search below builds close_).
-    Vec3 nearChord = raise_ == Raise::Nearer ? close().projection().closestPoint(start) : start;
+    Vec3 near = close().projection().closestPoint(start);  // the searches start from the last point found
+    Vec3 nearChord = near;  // and those for the chords' distances (Raise::Nearer) from theirs
+    // The score of v where it is now moved to, or kRefused.
+    const auto scoreThere = [&] {
+      const SmallestAngles there = smallestAnglesOf(m_, faces);
+      switch (raise_) {
+        case Raise::Mean: return there.smallest < now.smallest ? kRefused : there.mean;
+        case Raise::Smallest: return there.mean < floor ? kRefused : there.smallest;
+        case Raise::Nearer:
+          if (there.mean < floor || there.smallest < std::min(now.smallest, kNearerKeepAngle)) return kRefused;
+          return -farthestChordPoint(faces, nearChord);
+      }
+      return kRefused;
+    };
     const auto score = [&](const Vec3& to) {
       if (wide ? turnsOver(m_, rings, v, to) : !keepsRingUnfolded(m_, rings, v, to, up)) return kRefused;
       m_.points[v] = to;
-      const SmallestAngles there = smallestAnglesOf(m_, faces);
+      const double s = scoreThere();
       m_.points[v] = start;
-      if (raise_ == Raise::Mean) return there.smallest < now.smallest ? kRefused : there.mean;
-      if (raise_ == Raise::Smallest) return there.mean < floor ? kRefused : there.smallest;
-      if (there.mean < floor || there.smallest < std::min(now.smallest, kNearerKeepAngle)) return kRefused;
-      m_.points[v] = to;
-      const double distance = farthestChordPoint(faces, nearChord);
-      m_.points[v] = start;
-      return -distance;
+      return s;
     };
     // Measured as it is, folded or not: a move that unfolds the ring must raise it too.
     const double before = raise_ == Raise::Mean       ? now.mean
                           : raise_ == Raise::Smallest ? now.smallest
                                                       : -farthestChordPoint(faces, nearChord);
+    // What a move must gain: a millionth of a degree, or of an edge's length (a distance's gain
+    // scales with the mesh: a millionth of a unit stopped every move on a mesh 10^-4 across).
+    const double gain = raise_ == Raise::Nearer ? 1e-6 * spacing : 1e-6;
     double bestScore = before;
     Vec3 best = start;
     const Vec3 across = up.unitOrthogonal(), along = up.cross(across);
     // The points tried are near start (within a mean edge length but where the search drifts
     // on): searched over the input's triangles there.
     const SurfaceProjection::Nearby surface = close().projection().nearby(start, spacing);
-    Vec3 near = close().projection().closestPoint(start);  // the searches start from the last point found
     constexpr int kMostMoves = 100;
     for (double step = 0.25 * spacing; step > 0.01 * spacing; step *= 0.5) {
       // Steps this long while one of 8 directions gains, 100 at most: on a spike 1000 times as
@@ -534,7 +543,7 @@ class AngleRaiser {
           const double a = k * M_PI / 4;
           const Vec3 to = near = surface.closestPoint(from + step * (std::cos(a) * across + std::sin(a) * along), near);
           const double s = score(to);
-          if (s > bestScore + 1e-6) {
+          if (s > bestScore + gain) {
             bestScore = s;
             best = to;
             better = true;
@@ -542,7 +551,7 @@ class AngleRaiser {
         }
       }
     }
-    if (!(bestScore > before + 1e-6)) return false;
+    if (!(bestScore > before + gain)) return false;
     m_.points[v] = best;
     if (close().allows(m_, faces, {}, {}, [&](bool changed) { m_.points[v] = changed ? best : start; }))
       return true;
@@ -550,32 +559,37 @@ class AngleRaiser {
     return false;
   }
 
-  // The farthest from the input of points on a grid over each of `faces` (four to an edge,
-  // the corners left out: a triangle's corners are on the input), each search started from the
-  // point found before. Where a ridge crosses an edge the peak was 5/8 of the way along it.
-  double farthestChordPoint(const std::vector<int>& faces, Vec3& near) const {
+  // The farthest from the input of points on a grid over each of `faces`: each edge cut in
+  // quarters, its three points inside each edge and three inside the triangle (not the
+  // corners: they are on the input). Each search starts from the point found before.
+  double farthestChordPoint(const std::vector<int>& faces, Vec3& near) {
     constexpr int n = 4;
     double farthest = 0;
     for (int f : faces) {
       const Triangle& t = m_.triangles[f];
-      for (int i = 0; i < n; ++i)
+      for (int i = 0; i <= n; ++i)
         for (int j = 0; i + j <= n; ++j) {
-          if (j == n || i + j == 0) continue;
+          if (i == n || j == n || i + j == 0) continue;  // the corners
           const Vec3 p = (i * m_.points[t[0]] + j * m_.points[t[1]] + (n - i - j) * m_.points[t[2]]) / n;
-          farthest = std::max(farthest, close_->projection().squaredDistance(p, near));
+          farthest = std::max(farthest, close().projection().squaredDistance(p, near));
         }
     }
     return std::sqrt(farthest);
   }
 
-  // Each triangle's farthest from the input, screened by its edges' midpoints and centroid
-  // alone (a fifth of the grid's points, searched in one batch): only the farthest is moved.
+  // Where a triangle is screened for its distance from the input: its edges' midpoints and its
+  // centroid (a third as many points as the grid above, enough to rank the triangles).
+  std::array<Vec3, 4> screenPoints(int f) const {
+    const Triangle& t = m_.triangles[f];
+    const Vec3 &a = m_.points[t[0]], &b = m_.points[t[1]], &c = m_.points[t[2]];
+    return {(a + b) / 2, (b + c) / 2, (c + a) / 2, (a + b + c) / 3};
+  }
+
+  // Each triangle's screened distance from the input, searched in one batch.
   std::vector<double> screenedDistances() {
     std::vector<Vec3> points;
-    for (const Triangle& t : m_.triangles) {
-      for (int k = 0; k < 3; ++k) points.push_back((m_.points[t[k]] + m_.points[t[(k + 1) % 3]]) / 2);
-      points.push_back((m_.points[t[0]] + m_.points[t[1]] + m_.points[t[2]]) / 3);
-    }
+    for (int f = 0; f < m_.faceCount(); ++f)
+      for (const Vec3& p : screenPoints(f)) points.push_back(p);
     const std::vector<double> squared = close().projection().squaredDistances(points);
     std::vector<double> farthest(m_.faceCount());
     for (size_t f = 0; f < farthest.size(); ++f)
@@ -583,14 +597,22 @@ class AngleRaiser {
     return farthest;
   }
 
+  // One triangle's, the search started from `near` (a point on the input near it).
+  double screenedDistance(int f, Vec3 near) {
+    double farthest = 0;
+    for (const Vec3& p : screenPoints(f)) farthest = std::max(farthest, close().projection().squaredDistance(p, near));
+    return std::sqrt(farthest);
+  }
+
  public:
-  // The free vertices of the triangle farthest from the input, each moved where its triangles
-  // come nearest (tryVertex), that triangle found again after each move, until none of its
-  // vertices gains or `most` moves are made. A vertex is tried again once a neighbour moved.
+  // The triangle farthest from the input (screened), the first of its free vertices whose
+  // search gains moved (tryVertex), and so on, the farthest found again after each move, until
+  // none of the farthest triangle's vertices can gain (or all are fixed: the Hausdorff
+  // distance is there, whatever moves elsewhere) or `most` moves are made. A vertex is tried
+  // again once a neighbour moved.
   int bringNearer(int most) {
     const Rings rings(m_);  // moves keep the triangles
     std::vector<double> farthest = screenedDistances();
-    Vec3 near = close().projection().closestPoint(m_.points[0]);
     std::vector<bool> tried(m_.vertexCount(), false);
     int moved = 0;
     while (moved < most) {
@@ -605,7 +627,7 @@ class AngleRaiser {
       const int v = *mover;
       for (int i = rings.offset[v]; i < rings.offset[v + 1]; ++i) {
         const int f = rings.faces[i];
-        farthest[f] = farthestChordPoint({f}, near);
+        farthest[f] = screenedDistance(f, m_.points[v]);  // v is on the input
         for (int w : m_.triangles[f]) tried[w] = w == v;
       }
     }

@@ -82,18 +82,22 @@ int raiseSmallAngles(Mesh& mesh, const SearchableSurface& surface, const std::ve
 int raiseMeanAngles(Mesh& mesh, const SearchableSurface& surface, const std::vector<int>& pinned = {});
 
 // Where the result strays farthest from the input: a ridge or a fold of the input that crosses
-// a triangle, whose chord cuts across it. The free vertices (not on the border, not `pinned`) of
-// the triangle whose chords stray farthest move, one at a time, to the point of the surface
-// near them (raiseSmallAngles()'s search) where the farthest point of their triangles' chords
-// is nearest the input, their smallest angle not under the lesser of what it was and 35
-// degrees, their mean smallest angle lowered by a quarter of a degree at most, and kept where,
-// as for relaxedValenceMoves(), the input's vertices under them end no farther away. Then the
-// farthest triangle is found again, until none of its vertices can gain (or after 64 moves).
-// Returns the moves made. Runs before the fit. On issue 5's bench the Hausdorff distance fell
-// on 8 of the 15 inputs (by up to 11%: the mushroom at 1000, 1.327 -> 1.182% of the diagonal)
-// and rose on none, the angles (to 0.01 degrees) and the irregularity as they were; on 12 new
-// disks at 500, 1000 and 2000 vertices (docs/bench_log.md), on 13 of the 36 (by up to 14%),
-// on none the other way. 12-18 ms at 1000 vertices, the most of it the search structures.
+// a triangle, whose chord cuts across it. The triangle whose chords stray farthest (ranked by
+// their edges' midpoints and centroid) has the first of its free vertices (not on the border,
+// not `pinned`) whose search gains moved to the point of the surface near it (raiseSmallAngles()'s
+// search) where the farthest point of its triangles' chords is nearest the input: their
+// smallest angle not under the lesser of what it was and 35 degrees, their mean smallest angle
+// lowered by a quarter of a degree at most by the vertex's own moves, and kept where, as for
+// relaxedValenceMoves(), neither the chords nor the input's vertices under them end farther
+// apart than before (or than three quarters of the farthest anywhere). Then the farthest
+// triangle is found again, and so on until none of its vertices can gain (or all are fixed:
+// the Hausdorff distance is there) or 64 moves are made; a vertex is tried again once a
+// neighbour moved. Returns the moves made. Runs before the fit. On issue 5's bench the
+// Hausdorff distance fell on 8 of the 15 inputs (by up to 11%: the mushroom at 1000, 1.327 ->
+// 1.182% of the diagonal) and rose on none, the angles (to 0.01 degrees) and the irregularity
+// as they were; on 12 new disks at 500, 1000 and 2000 vertices (docs/bench_log.md), on 13 of
+// the 36 (by up to 14%), on none the other way. 11-31 ms a run at 1000 vertices on the
+// bench's inputs (the mushroom's six moves the most).
 int bringNearer(Mesh& mesh, const SearchableSurface& surface, const std::vector<int>& pinned = {});
 
 // A border edge under 0.7 of the mean edge length (two samples the border had to keep close

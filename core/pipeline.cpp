@@ -230,7 +230,9 @@ namespace {
 // half at 2000 vertices 16.4 -> 32.5 degrees, the man at 500 23.7 -> 33.1; collapsing first,
 // before the flips, left the man at 19.6 degrees); every vertex moved where its triangles'
 // mean smallest angle is largest, their smallest angle kept (raiseMeanAngles: on the 36 disks,
-// the average smallest angle up by 0.65 degrees on average); then the fit to the input.
+// the average smallest angle up by 0.65 degrees on average); the vertices of the triangle
+// that strays farthest from the input moved where its chords come nearer (bringNearer: on the
+// bench, the Hausdorff distance down on 8 of 15 inputs, by up to 11%); then the fit to the input.
 void stepsOnTheInput(Mesh& result, const SearchableSurface& original, const RemeshOptions& o, RemeshResult& done) {
   if (o.polish > 0) {
     std::vector<int> tips = o.snapToTips ? snapToTips(result, original) : std::vector<int>();

@@ -29,7 +29,9 @@ struct SimplifyResult {
 // itself (after earlier collapses a chord of the input's border, so that a curved border's
 // vertices may come off it a little: 0.36% of the diagonal on the sphere cap at 30 vertices),
 // an edge with one border end to that end, and no edge joining two border vertices through the
-// inside collapses (it would pinch the surface). A mesh far from the origin is simplified about
+// inside collapses (it would pinch the surface). No collapse turns a triangle around it by 90
+// degrees or more (several collapses may still turn one over between them, and the input's own
+// folds stay). A mesh far from the origin is simplified about
 // its own centre: the quadrics lose its detail there. Throws Error naming `name` for a target
 // that is not positive; one not smaller gives the input as it is.
 SimplifyResult simplify(const Mesh& input, const SimplifyOptions& options, const std::string& name);
