@@ -96,15 +96,6 @@ std::pair<ImVec2, ImVec2> canvasArea() {
   return {ImGui::GetCursorScreenPos(), drawable(ImGui::GetContentRegionAvail())};
 }
 
-// Dark text on a light box: over the 2D cells or a zoomed 3D mesh, a dark label on dark
-// triangles could not be read.
-void boxedText(ImDrawList* dl, ImVec2 where, const char* text) {
-  const ImVec2 extent = ImGui::CalcTextSize(text);
-  dl->AddRectFilled(ImVec2(where.x - 2, where.y), ImVec2(where.x + extent.x + 2, where.y + extent.y),
-                    IM_COL32(255, 255, 255, 220));
-  dl->AddText(where, rgb(0.1f, 0.1f, 0.1f), text);
-}
-
 constexpr float kColorBarWidth = 12.0f;
 constexpr float kFillBarHeight = 90.0f;
 

@@ -83,6 +83,11 @@ void drawPinnedTriangles3D(ImDrawList* dl, const Mesh& mesh, const std::vector<i
   }
 }
 
+// The radius of the ring around a pinned cell's site, in pixels: smaller as the sites crowd.
+float siteRing(const IterationView& view, float scale) {
+  return std::clamp(0.3f * scale / std::sqrt(float(view.sites.size()) + 1), 3.0f, 8.0f);
+}
+
 }  // namespace
 
 ImU32 Selection::cellColor(float alpha) {
@@ -131,8 +136,35 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
     std::vector<ImVec2> path;
     for (const Vec2& p : siteTrajectory(recording, cell)) path.push_back(screen(p));
     dl->AddPolyline(path.data(), static_cast<int>(path.size()), cellColor(), 0, 1.5f);
-    const float r = std::clamp(0.3f * scale / std::sqrt(float(view.sites.size()) + 1), 3.0f, 8.0f);
-    dl->AddCircle(screen(view.sites[cell]), r, cellColor(), 0, 2.0f);
+    dl->AddCircle(screen(view.sites[cell]), siteRing(view, scale), cellColor(), 0, 2.0f);
+  }
+  // With two cells pinned or more, each is labelled with its number beside its site: the
+  // selection panel and the lesson's caption (the cell pinned last) name them by number, and
+  // two magenta cells could not be told apart. After every fill, which would cover a label.
+  if (cellsShown && cells_.size() > 1) {
+    // The boxes labels may not cover (min x, min y, max x, max y): the pinned sites' rings,
+    // then each label placed.
+    std::vector<ImVec4> placed;
+    const float ring = siteRing(view, scale);
+    for (int cell : cells_)
+      if (cell < static_cast<int>(view.cells.size())) {
+        const ImVec2 site = screen(view.sites[cell]);
+        placed.emplace_back(site.x - ring, site.y - ring, site.x + ring, site.y + ring);
+      }
+    for (int cell : cells_) {
+      if (cell >= static_cast<int>(view.cells.size())) continue;
+      const std::string label = "cell " + std::to_string(cell);
+      const ImVec2 box = ImGui::CalcTextSize(label.c_str()), site = screen(view.sites[cell]);
+      const ImVec2 at = labelPlace(site, ring + 4, box, dl->GetClipRectMax().x, placed);
+      placed.emplace_back(at.x, at.y, at.x + box.x, at.y + box.y);
+      // A leader from the ring to the label: a label moved a line off names its site still.
+      const bool onTheRight = at.x > site.x;
+      const ImVec2 from(site.x + (onTheRight ? ring : -ring), site.y),
+          to(onTheRight ? at.x - 2 : at.x + box.x + 2, at.y + 0.5f * box.y);
+      dl->AddLine(from, to, IM_COL32(255, 255, 255, 220), 4.0f);  // on a halo: over the cells' lines
+      dl->AddLine(from, to, cellColor(), 2.0f);
+      boxedText(dl, at, label.c_str());
+    }
   }
   for (int triangle : resultShown ? trianglesIn(view) : std::vector<int>{}) {
     const Triangle& t = view.output.triangles[triangle];

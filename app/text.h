@@ -3,10 +3,22 @@
 // that the tests can check them without a window or a GPU.
 #pragma once
 
+#include <imgui.h>
+
 #include <string>
 #include <vector>
 
 namespace lloydscope {
+
+// Dark text on a light box: over the 2D cells or a zoomed 3D mesh, a dark label on dark
+// triangles could not be read.
+void boxedText(ImDrawList* dl, ImVec2 where, const char* text);
+
+// Where a label `box` big goes beside a point (a pinned cell's site): on its right, `gap`
+// away, or on its left where the pane (its right edge at `right`) would cut it (a border
+// cell's), and a line lower, then higher, and so on, where it would cover one of the `placed`
+// boxes (min x, min y, max x, max y: other sites, labels placed before).
+ImVec2 labelPlace(ImVec2 point, float gap, ImVec2 box, float right, const std::vector<ImVec4>& placed);
 
 // Call once after ImGui::CreateContext(), before the font texture is uploaded. Without
 // DejaVu Sans (fonts-dejavu-core) only ImGui's own font is there.

@@ -700,6 +700,13 @@ TEST(Inspector, TheCaptionQuotesTheCellPinnedLast) {
   EXPECT_GT(captionDiffers(withBoth, withFirst), 200u);  // the test tells the two cells apart
 }
 
+// Two cells pinned: each is labelled with its number beside its site in 2D ("cell 40", "cell
+// 100"), as the selection panel and the caption name them; magenta both, they could not be
+// told apart. One cell pinned has no label (inspector_selection.png).
+TEST(Inspector, TwoPinnedCellsAreLabelledWithTheirNumbers) {
+  checkScene("inspector_two_cells.png", "--iteration 3 --select-cell 40 --select-cell 100 --pane 2d");
+}
+
 // The lesson's Result stage shows and quotes the final result, after the clean-up, as the
 // controls pane's Final column has it (it showed the last iteration's mesh before it).
 TEST(Inspector, TheLessonsResultStageShowsTheFinalResult) {

@@ -200,3 +200,22 @@ TEST(Text, PresentationTypeGrowsWithTheWindow) {
   EXPECT_FLOAT_EQ(presentationTextSize(800), 21.0f);
   EXPECT_FLOAT_EQ(presentationTextSize(1600), 42.0f);
 }
+
+// A pinned cell's label goes on its site's right, or its left at the pane's right edge; where it
+// would cover another site or a label placed before, a line lower, then higher: two cells side
+// by side had their labels one over the other ("cell 420 300"), and a label covered the next
+// pinned site.
+TEST(Text, ALabelGoesWhereItCoversNothingPlacedBefore) {
+  const ImVec2 box(60, 13);
+  EXPECT_EQ(labelPlace(ImVec2(100, 100), 8, box, 500, {}).x, 108);
+  EXPECT_EQ(labelPlace(ImVec2(100, 100), 8, box, 500, {}).y, 93.5f);
+  EXPECT_EQ(labelPlace(ImVec2(480, 100), 8, box, 500, {}).x, 412);  // on the left
+  // A label there already: the next goes a line lower; with a second below it, a line higher.
+  std::vector<ImVec4> placed = {ImVec4(108, 93.5f, 168, 106.5f)};
+  EXPECT_EQ(labelPlace(ImVec2(110, 100), 8, box, 500, placed).y, 93.5f + 14);
+  placed.push_back(ImVec4(118, 107.5f, 178, 120.5f));
+  EXPECT_EQ(labelPlace(ImVec2(110, 100), 8, box, 500, placed).y, 93.5f - 14);
+  // Another site's ring on the right (5 px across): the label moves off it too.
+  const ImVec2 at = labelPlace(ImVec2(100, 100), 8, box, 500, {ImVec4(130, 95, 140, 105)});
+  EXPECT_TRUE(at.y + box.y <= 95 || at.y >= 105) << at.y;
+}
