@@ -388,6 +388,7 @@ void Inspector::startSession(const Mesh& input, const std::string& name) {
     noteFirst(fullInputFailedText(started.fullInputFailed, options_.simplifyTo));
   }
   result_.paramUsed = session_->paramUsed();
+  result_.borderUsed = session_->borderUsed();
   result_.distortion = session_->distortion();
   // The 2D pane shows the simplified input's map.
   noteFirst(coarseInputText(session_->coarseInput(), input.vertexCount()));
@@ -405,6 +406,7 @@ void Inspector::forgetResult() {
   RemeshResult kept;
   kept.before = result_.before;
   kept.paramUsed = result_.paramUsed;
+  kept.borderUsed = result_.borderUsed;
   kept.distortion = result_.distortion;
   result_ = std::move(kept);
   selection_.forgetFinal();
@@ -977,7 +979,7 @@ CaptionFacts Inspector::captionFacts() {
   f.cleanedUp = finalShown();
   f.result = f.cleanedUp ? result_.after : currentQuality();
   f.param = toString(result_.paramUsed);
-  f.border = borderPhrase(result_.paramUsed, options_.param.border);
+  f.border = borderPhrase(result_.paramUsed, result_.borderUsed);
   f.solver = toString(options_.lloyd.solver);
   f.density = toString(options_.density.kind);
   f.method = toString(replay_->method());
@@ -1085,7 +1087,7 @@ void Inspector::runSummary() {
   wrappedText("Mesh: " + meshName_);
   if (const std::string part = recordedPartText(replay_->recording().settings); !part.empty()) wrappedText(part);
   wrappedText(std::string("Parameterization: ") + toString(result_.paramUsed) + " (" +
-              borderPhrase(result_.paramUsed, options_.param.border) + "), density: " +
+              borderPhrase(result_.paramUsed, result_.borderUsed) + "), density: " +
               toString(options_.density.kind) + ", solver: " + toString(options_.lloyd.solver));
   ImGui::Text("Sites: %zu fixed, %zu movable", replay_->recording().fixedSites.size(),
               replay_->recording().iterations.empty()
@@ -1352,9 +1354,8 @@ void Inspector::settingsControls() {
   int param = static_cast<int>(settings_.param.method);
   if (combo("parameterization", param, "auto\0authalic\0conformal\0mean-value\0tutte\0lscm\0"))
     settings_.param.method = static_cast<ParamMethod>(param);
-  int border = settings_.param.border == Border::Square ? 0 : 1;
-  if (combo("border", border, "square\0circle\0"))
-    settings_.param.border = border == 0 ? Border::Square : Border::Circle;
+  int border = static_cast<int>(settings_.param.border);
+  if (combo("border", border, "square\0circle\0rectangle\0")) settings_.param.border = static_cast<Border>(border);
   int density = static_cast<int>(settings_.density.kind);
   if (combo("density", density, "uniform\0area\0curvature\0"))
     settings_.density.kind = static_cast<DensityKind>(density);

@@ -300,7 +300,9 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--param", r.param,
                  "auto (default: lscm, or mean-value where lscm folds), authalic, conformal, "
                  "mean-value, tutte or lscm");
-  cmd.add_option("--border", r.border, "square or circle (default), for the fixed-border methods");
+  cmd.add_option("--border", r.border,
+                 "square, circle (default) or rectangle (for a border with four corners, as a strip's: its sides as "
+                 "long as the border between them), for the fixed-border methods");
   cmd.add_option("--density", r.density, "uniform, area (default) or curvature");
   const DensityOptions density;
   const LloydOptions lloyd;

@@ -325,6 +325,7 @@ nlohmann::json toJson(const RemeshResult& r, const RemeshOptions& o) {
   output["fidelity"] = r.fidelity.samples > 0 ? toJson(r.fidelity) : nlohmann::json();
   nlohmann::json settings = settingsJson(describe(o));
   settings["param_used"] = toString(r.paramUsed);
+  if (!isFreeBorder(r.paramUsed)) settings["border_used"] = toString(r.borderUsed);
   // Where either way failed, nothing was compared.
   const bool chartsMeasured = r.chartTrial && r.chartTrial->failed.empty() && r.chartTrial->oneCutFailed.empty() &&
                               r.chartTrial->distancesDecide();
@@ -894,7 +895,8 @@ std::string remeshReport(const RemeshResult& r, const RemeshOptions& o) {
         << "\n";
   out << iterationsLine(r, o.lloyd.solver) << "\n";
   if (r.componentsKept < r.components)  // all kept as they are: nothing was parameterized
-    out << "Parameterization" << (r.charts > 0 ? " (largest chart)" : "") << ": " << toString(r.paramUsed) << ", area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
+    out << "Parameterization" << (r.charts > 0 ? " (largest chart)" : "") << ": " << toString(r.paramUsed) << " ("
+        << borderPhrase(r.paramUsed, r.borderUsed) << "), area ratio: " << format("%.3g", r.distortion.minAreaRatio) << " .. "
         << format("%.3g", r.distortion.maxAreaRatio)
         << ", mean angle error: " << format("%.1f", r.distortion.meanAngleErrorDeg) << " deg\n";
   if (!r.resampleDropped.empty()) out << withoutResamplingText(r.resampleDropped) << "\n";

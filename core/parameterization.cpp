@@ -20,6 +20,7 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 
 namespace lloydscope {
@@ -42,14 +43,16 @@ double angleAt(const Point3& at, const Point3& p, const Point3& q) {
   return std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
 }
 
-// The four border vertices that become the square's corners: the sharpest turn of the border,
-// then the sharpest turn near each quarter of the border's length from it. CGAL's own choice
-// (quarters of the length from an arbitrary vertex) can put a corner mid-side and leave the
-// triangles at the shape's real corners with three vertices on one side of the square: flat.
-std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
+// The border walked once: its vertices in order, how sharply it turns at each (pi less the sum
+// of the corner angles there: pi/2 at a square's corner) and how far along it each is.
+struct BorderWalk {
   std::vector<Vertex> loop;
-  std::vector<double> turn, position;  // turn: pi - the sum of the corner angles at the vertex
+  std::vector<double> turn, position;
   double length = 0;
+};
+
+BorderWalk walkBorder(const SurfaceMesh& sm, Halfedge border) {
+  BorderWalk w;
   for (Halfedge h : CGAL::halfedges_around_face(border, sm)) {
     const Vertex v = sm.source(h);
     double angles = 0;
@@ -62,11 +65,24 @@ std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
       }();
       angles += angleAt(sm.point(v), sm.point(sm.source(at)), sm.point(sm.target(sm.next(at))));
     }
-    loop.push_back(v);
-    turn.push_back(M_PI - angles);
-    position.push_back(length);
-    length += std::sqrt(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h))));
+    w.loop.push_back(v);
+    w.turn.push_back(M_PI - angles);
+    w.position.push_back(w.length);
+    w.length += std::sqrt(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h))));
   }
+  return w;
+}
+
+// The four border vertices that become the square's corners: the sharpest turn of the border,
+// then the sharpest turn near each quarter of the border's length from it. CGAL's own choice
+// (quarters of the length from an arbitrary vertex) can put a corner mid-side and leave the
+// triangles at the shape's real corners with three vertices on one side of the square: flat.
+std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
+  const BorderWalk w = walkBorder(sm, border);
+  const std::vector<Vertex>& loop = w.loop;
+  const std::vector<double>& turn = w.turn;
+  const std::vector<double>& position = w.position;
+  const double length = w.length;
   const size_t first = std::max_element(turn.begin(), turn.end()) - turn.begin();
   std::array<Vertex, 4> corners = {loop[first], loop[first], loop[first], loop[first]};
   for (int k = 1; k < 4; ++k) {
@@ -95,8 +111,47 @@ std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
   return corners;
 }
 
+// The corners of a border that is a quadrilateral: exactly four vertices where it turns by 45
+// degrees or more, none by 135 or more (a slit's end turns by 180, and a cut surface's border
+// has many), in the border's order. A strip's or a plate's, which a rectangle keeps.
+std::optional<std::array<Vertex, 4>> rectangleCorners(const SurfaceMesh& sm, Halfedge border) {
+  const BorderWalk w = walkBorder(sm, border);
+  std::vector<Vertex> corners;
+  for (size_t i = 0; i < w.loop.size(); ++i) {
+    if (w.turn[i] >= 3 * M_PI / 4) return std::nullopt;
+    if (w.turn[i] >= M_PI / 4) corners.push_back(w.loop[i]);
+  }
+  if (corners.size() != 4) return std::nullopt;
+  return std::array<Vertex, 4>{corners[0], corners[1], corners[2], corners[3]};
+}
+
+// A map onto the unit square stretched to the rectangle whose sides are as long as the border
+// between its corners (the mean of opposite sides). The fixed-border maps are affine in their
+// border (each inside point is a weighted mean of its neighbours), so this is the map onto that
+// rectangle.
+void stretchToSides(const SurfaceMesh& sm, Halfedge border, UVMap uv) {
+  double across = 0, along = 0;  // the sides on y = 0 and 1, and on x = 0 and 1
+  for (Halfedge h : CGAL::halfedges_around_face(border, sm)) {
+    const Point2 a = get(uv, sm.source(h)), b = get(uv, sm.target(h));
+    const double length = std::sqrt(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h))));
+    const auto on = [](double x, double y, double at) { return std::abs(x - at) < 1e-9 && std::abs(y - at) < 1e-9; };
+    if (on(a.y(), b.y(), 0) || on(a.y(), b.y(), 1)) across += length;
+    else if (on(a.x(), b.x(), 0) || on(a.x(), b.x(), 1)) along += length;
+  }
+  if (!(across > 0 && along > 0)) return;
+  for (Vertex v : sm.vertices()) put(uv, v, Point2(get(uv, v).x() * across / along, get(uv, v).y()));
+}
+
 template <template <class, class, class> class Method>
 SMP::Error_code solveFixedBorder(SurfaceMesh& sm, Halfedge border, UVMap uv, Border shape) {
+  if (shape == Border::Rectangle) {
+    using B = SMP::Square_border_arc_length_parameterizer_3<SurfaceMesh>;
+    const auto c = rectangleCorners(sm, border).value();  // solveMap asked
+    const SMP::Error_code status =
+        SMP::parameterize(sm, Method<SurfaceMesh, B, Solver>(B(c[0], c[1], c[2], c[3])), border, uv);
+    if (status == SMP::OK) stretchToSides(sm, border, uv);
+    return status;
+  }
   if (shape == Border::Square) {
     using B = SMP::Square_border_arc_length_parameterizer_3<SurfaceMesh>;
     const auto c = squareCorners(sm, border);
@@ -242,6 +297,9 @@ SolvedMap solveMap(const Mesh& mesh, const ParamOptions& options, const std::str
   SurfaceMesh sm = toSurfaceMesh(mesh);
   const Halfedge border = CGAL::Polygon_mesh_processing::longest_border(sm).first;
   UVMap uvMap = sm.add_property_map<SurfaceMesh::Vertex_index, Point2>("v:uv").first;
+  if (options.border == Border::Rectangle && !isFreeBorder(options.method) && !rectangleCorners(sm, border))
+    throw Error(name + ": a rectangle border needs a border with four corners, where it turns by 45 to 135 "
+                       "degrees, and nowhere else by 45 or more (--border circle or square fits any border)");
   const SMP::Error_code err = solve(sm, border, uvMap, options);
   // CGAL's own one-to-one check only reports: the map is there, for repairFolds and
   // requireOneToOne to judge.
@@ -445,8 +503,11 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   if (options.method == ParamMethod::Auto) {
     // LSCM distorts least but may fold; mean value and then Tutte, on the border asked (it was
     // a circle whatever --border said), are one-to-one in exact arithmetic, and Tutte's positive
-    // weights hold on where rounding folds the other.
+    // weights hold on where rounding folds the other. A border with four corners (a strip's)
+    // is tried on a rectangle first: a helicoid of two turns, whose LSCM map winds round twice
+    // and overlaps itself, kept its angles to 4 degrees there (mean error), 46 on a circle.
     std::vector<ParamOptions> tries = {{ParamMethod::Lscm, options.border, {}},
+                                       {ParamMethod::MeanValue, Border::Rectangle, {}},
                                        {ParamMethod::MeanValue, options.border, {}},
                                        {ParamMethod::Tutte, options.border, {}}};
     if (!options.fallback.empty())
@@ -463,6 +524,7 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
   requireDisk(mesh, name);
   Parameterization result;
   result.method = options.method;
+  result.border = options.border;
   SolvedMap solved = options.method == ParamMethod::Given ? givenMap(mesh, options.fallback, name)
                                                          : solveMap(mesh, options, name);
   result.uv = std::move(solved.uv);
@@ -498,7 +560,8 @@ std::vector<Vec2> conformalMap(const Mesh& disk, const std::string& name) {
 constexpr NamedValue<ParamMethod> kParamMethodNames[] = {
     {ParamMethod::Auto, "auto"},   {ParamMethod::Authalic, "authalic"}, {ParamMethod::Conformal, "conformal"},
     {ParamMethod::MeanValue, "mean-value"}, {ParamMethod::Tutte, "tutte"}, {ParamMethod::Lscm, "lscm"}};
-constexpr NamedValue<Border> kBorderNames[] = {{Border::Square, "square"}, {Border::Circle, "circle"}};
+constexpr NamedValue<Border> kBorderNames[] = {
+    {Border::Square, "square"}, {Border::Circle, "circle"}, {Border::Rectangle, "rectangle"}};
 
 const char* toString(ParamMethod method) {
   return method == ParamMethod::Given ? "input-map" : nameOf(kParamMethodNames, method);

@@ -13,7 +13,7 @@ enum class ParamMethod {
   Authalic, Conformal, MeanValue, Tutte, Lscm,
   Given  // ParamOptions::fallback, taken as it is (what Auto reports when it used it)
 };
-enum class Border { Square, Circle };  // ignored by LSCM, whose border is free
+enum class Border { Square, Circle, Rectangle };  // ignored by LSCM, whose border is free
 
 // LSCM's map, or one given: conformal, its border free. The others have a fixed border; the
 // automatic choice falls back to one (mean value, Tutte) where no conformal map held.
@@ -22,7 +22,8 @@ inline bool isFreeBorder(ParamMethod m) { return m == ParamMethod::Lscm || m == 
 struct ParamOptions {
   // Free-border LSCM keeps the border's own shape: no corner of the input is squeezed onto a
   // circle or spread along a square's side, which measured best. It can fold, and then the
-  // mean-value map, one-to-one on any convex border, takes over.
+  // mean-value map, one-to-one on any convex border, takes over: on a rectangle where the
+  // border has four corners (rectangleCorners), else on `border`.
   ParamMethod method = ParamMethod::Auto;
   Border border = Border::Circle;  // for the fixed-border methods
   // Per vertex, a map that Auto tries after LSCM and before mean value, if not empty: for a
@@ -40,6 +41,7 @@ struct Distortion {
 
 struct Parameterization {
   ParamMethod method = ParamMethod::Lscm;  // the one used (Auto resolved)
+  Border border = Border::Circle;          // and its border, where it is fixed
   std::vector<Vec2> uv;           // per vertex, scaled uniformly to fit the unit square
   std::vector<int> boundaryLoop;  // the border's vertices, counter-clockwise in UV
   std::vector<bool> onBoundary;   // per vertex

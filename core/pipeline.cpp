@@ -199,8 +199,11 @@ Recording RemeshSession::header() const {
   // simplify=N, it read back as asked) and the map "auto" chose.
   RemeshOptions asked = options_;
   if (coarsened_) asked.simplifyTo = 0;
+  // The border "auto" fell back to, where it is not the one asked (a rectangle).
+  const bool otherBorder = !isFreeBorder(param_.method) && param_.border != options_.param.border;
   r.settings = describe(asked) + (coarsened_ ? " coarse-input=" + std::to_string(options_.simplifyTo) : "") +
-               " param-used=" + toString(param_.method);
+               " param-used=" + toString(param_.method) +
+               (otherBorder ? std::string(" border-used=") + toString(param_.border) : "");
   r.method = options_.method;
   r.distanceThreshold = options_.lloyd.distanceThreshold;
   r.percentThreshold = options_.lloyd.percentThreshold;
@@ -378,6 +381,7 @@ SiteOptions RemeshSession::seamSites() const {
 RemeshResult RemeshSession::finish() {
   RemeshResult result;
   result.paramUsed = param_.method;
+  result.borderUsed = param_.border;
   result.distortion = param_.distortion;
   result.cut = cutSummary_;
   result.ms = ms_;
@@ -469,6 +473,7 @@ bool addPart(RemeshResult& whole, RemeshResult& part, const std::string& kind, i
   else
     settings.replace(settings.find(" part=" + within), 6 + within.size(), " part=" + within + "," + mark);
   whole.paramUsed = part.paramUsed;
+  whole.borderUsed = part.borderUsed;
   whole.distortion = part.distortion;
   return true;
 }
@@ -1298,6 +1303,8 @@ RecordedRun recordedRun(Recording recording) {
   run.options = optionsFromSettings(recording.settings);
   RemeshResult& r = run.result;
   r.paramUsed = recordedParamMethod(recording.settings);
+  const std::string border = settingValue(recording.settings, "border-used");
+  r.borderUsed = border.empty() ? run.options.param.border : parseBorder(border);
   r.distortion = measureDistortion(recording.input, recording.uv);
   r.before = measureQuality(recording.input);
   r.iterations = static_cast<int>(recording.iterations.size());

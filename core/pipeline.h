@@ -196,6 +196,7 @@ struct RemeshResult {
   Mesh output;
   Recording recording;
   ParamMethod paramUsed = ParamMethod::Lscm;  // what "auto" chose
+  Border borderUsed = Border::Circle;         // and on which border (a fixed-border method's)
   Distortion distortion;
   CutSummary cut;  // how the input was cut open (no seam edges: it was not)
   QualityMetrics before, after;
@@ -311,6 +312,7 @@ class RemeshSession {
   int coarseInput() const { return coarsened_ ? options_.simplifyTo : 0; }
   // The map the session parameterized with (what "auto" chose) and its distortion.
   ParamMethod paramUsed() const { return param_.method; }
+  Border borderUsed() const { return param_.border; }
   const Distortion& distortion() const { return param_.distortion; }
   // For the cells of the steps to come (LloydOptions::threads; the results do not depend on it).
   void setThreads(int threads) {  // for the cells, and the fit's closest points

@@ -150,7 +150,8 @@ TEST(Parameterization, OrientationIsPositiveEverywhere) {
 }
 
 // A sphere with one square taken out: LSCM folds, and auto falls back to mean value, on the
-// border asked (it was a circle whatever --border said).
+// border asked (it was a circle whatever --border said), or on a rectangle where the border has
+// four corners, as this one has: the square's sides, the same.
 TEST(Parameterization, AutosFallbackTakesTheBorderAsked) {
   Mesh sphere = test::cube(6, true);
   sphere.triangles.erase(sphere.triangles.begin(), sphere.triangles.begin() + 2);  // a square hole: 4 corners
@@ -436,4 +437,38 @@ TEST(Parameterization, AFixedBorderMapSqueezedByRoundingSaysToSimplify) {
     }
   }
   EXPECT_NO_THROW(parameterize(finger(5), {ParamMethod::Tutte, Border::Circle, {}}, "finger.off"));
+}
+
+// A strip that winds twice round an axis (a helicoid, as a helper's disk): LSCM's map winds
+// round twice too and overlaps itself, and the mean-value map on a circle squeezed the strip's
+// length onto the circle (mean angle error 46 degrees). The strip's four corners make the
+// border a rectangle as long as the strip: its map is nearly conformal (4 degrees).
+TEST(Parameterization, AStripThatLscmOverlapsIsMappedOntoARectangle) {
+  const Mesh strip = test::helicoidStrip();
+  EXPECT_THROW(parameterize(strip, {ParamMethod::Lscm, Border::Circle, {}}, "helicoid"), Error);
+  const Parameterization p = parameterize(strip, {ParamMethod::Auto, Border::Circle, {}}, "helicoid");
+  EXPECT_EQ(p.method, ParamMethod::MeanValue);
+  EXPECT_EQ(p.border, Border::Rectangle);
+  EXPECT_LT(p.distortion.meanAngleErrorDeg, 15.0);  // 10.3 (the grid's right triangles); a circle's, over 40
+  const auto [lo, hi] = boundingBox(p.uv);
+  const double aspect = (hi - lo).maxCoeff() / (hi - lo).minCoeff();
+  EXPECT_GT(aspect, 5.0);  // the sides' mean lengths: 8.5 along, 0.8 across
+  EXPECT_LT(aspect, 15.0);
+}
+
+// A plane strip 8 by 1 onto a rectangle: as it is, turned and scaled (mean value reproduces a
+// plane map that fits the border): no angle and no area changed (on a square, every angle
+// would). A round border has no corners for a rectangle: refused, saying why.
+TEST(Parameterization, ARectangleBorderKeepsAPlaneStripAsItIs) {
+  Mesh strip = test::grid(16);
+  for (Vec3& q : strip.points) q.x() *= 8;
+  const Parameterization p = parameterize(strip, {ParamMethod::MeanValue, Border::Rectangle, {}}, "strip");
+  EXPECT_EQ(p.border, Border::Rectangle);
+  EXPECT_LT(p.distortion.meanAngleErrorDeg, 1e-6);
+  EXPECT_NEAR(p.distortion.minAreaRatio, 1.0, 1e-9);
+  EXPECT_NEAR(p.distortion.maxAreaRatio, 1.0, 1e-9);
+  const std::string error = test::errorOf(
+      [] { parameterize(test::polarDisk(24, 4), {ParamMethod::MeanValue, Border::Rectangle, {}}, "disk"); },
+      "a rectangle on a round border");
+  EXPECT_NE(error.find("disk: a rectangle border needs a border with four corners"), std::string::npos) << error;
 }

@@ -875,7 +875,7 @@ TEST(Names, EachNameReadsBackAndAnUnknownOneListsThemAll) {
   };
   EXPECT_EQ(refusal(parseParamMethod, "input-map"),
             "unknown parameterization 'input-map' (auto, authalic, conformal, mean-value, tutte, lscm)");
-  EXPECT_EQ(refusal(parseBorder, "Square"), "unknown border 'Square' (square, circle)");
+  EXPECT_EQ(refusal(parseBorder, "Square"), "unknown border 'Square' (square, circle, rectangle)");
   EXPECT_EQ(refusal(parsePolishTarget, ""), "unknown polish target '' (voronoi, centroid, circumcenter)");
 }
 
@@ -1157,4 +1157,18 @@ TEST(Pipeline, ACoarseInputRemeshedFinerKeepsItsTipsAsCgalDoes) {
     EXPECT_GE(r.after.minAngle, 30.0) << size;
     EXPECT_GT(r.snappedTips, 0) << size;
   }
+}
+
+// The map auto chose and its border are the run's to tell: a strip whose LSCM map overlaps
+// itself is mapped onto a rectangle, and the report, the recording (border-used, read back by
+// recordedRun) and so the inspector say "rectangle border", not the circle asked.
+TEST(Pipeline, ARunSaysWhichBorderItsMapHas) {
+  RemeshOptions o;
+  o.sites.count = 300;
+  o.measureFidelity = false;
+  const RemeshResult r = remesh(test::helicoidStrip(16, 80), o, "helicoid");
+  EXPECT_EQ(r.paramUsed, ParamMethod::MeanValue);
+  EXPECT_EQ(r.borderUsed, Border::Rectangle);
+  EXPECT_NE(r.recording.settings.find(" border-used=rectangle"), std::string::npos) << r.recording.settings;
+  EXPECT_EQ(recordedRun(r.recording).result.borderUsed, Border::Rectangle);
 }

@@ -315,6 +315,24 @@ inline Mesh equilateralPatch() {
   return m;
 }
 
+// A strip that winds twice round an axis (a helicoid: radius 0.2 to 1, rising 0.25 a radian),
+// `across` by `along` cells: its LSCM map winds round twice too and overlaps itself.
+inline Mesh helicoidStrip(int across = 30, int along = 160) {
+  Mesh strip;
+  for (int j = 0; j <= along; ++j)
+    for (int i = 0; i <= across; ++i) {
+      const double r = 0.2 + 0.8 * i / across, t = 4 * M_PI * j / along;
+      strip.points.emplace_back(r * std::cos(t), r * std::sin(t), 0.25 * t);
+    }
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < across; ++i) {
+      const int a = j * (across + 1) + i, b = a + 1, c = b + across + 1, d = a + across + 1;
+      strip.triangles.push_back({a, b, c});
+      strip.triangles.push_back({a, c, d});
+    }
+  return strip;
+}
+
 // The equilateral patch with `edges` flipped, one after the other.
 inline Mesh patchWithFlips(std::initializer_list<std::pair<int, int>> edges) {
   Mesh m = equilateralPatch();
