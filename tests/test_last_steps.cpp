@@ -13,6 +13,13 @@
 
 using namespace lloydscope;
 
+// Every vertex of `m`, to pin them all.
+std::vector<int> everyVertex(const Mesh& m) {
+  std::vector<int> all(m.vertexCount());
+  std::iota(all.begin(), all.end(), 0);
+  return all;
+}
+
 // `m` with its inside vertices moved in x and y by up to `amount` each, at random.
 Mesh jitteredInside(Mesh m, unsigned seed, double amount) {
   std::mt19937 rng(seed);
@@ -144,8 +151,7 @@ TEST(LastSteps, RelaxedValenceMovesCutNoRidgeOff) {
   EXPECT_EQ(relaxedValenceMoves(m, surface), 0);
   EXPECT_EQ(m.triangles, surface.triangles);
   for (int v = 0; v < m.vertexCount(); ++v) EXPECT_EQ(m.points[v], surface.points[v]) << "vertex " << v;
-  std::vector<int> all(surface.vertexCount());
-  std::iota(all.begin(), all.end(), 0);
+  const std::vector<int> all = everyVertex(surface);
   EXPECT_EQ(relaxedValenceMoves(m, surface, all), 0);
   EXPECT_EQ(m.triangles, surface.triangles);
   for (Vec3& p : surface.points) p.z() = 0;
@@ -167,8 +173,7 @@ Mesh patchWithOneVertexPushed(double height) {
 TEST(LastSteps, RaiseSmallAnglesMovesAVertexWhereItsAnglesAreLargest) {
   const Mesh surface = patchWithOneVertexPushed(0.0);
   ASSERT_LT(measureQuality(surface).minAngle, 25.0);
-  std::vector<int> all(surface.vertexCount());
-  std::iota(all.begin(), all.end(), 0);
+  const std::vector<int> all = everyVertex(surface);
   Mesh m = surface;
   EXPECT_EQ(raiseSmallAngles(m, surface, all), 0);
   EXPECT_EQ(m.points, surface.points);
@@ -220,8 +225,7 @@ TEST(LastSteps, RaiseMeanAnglesKeepsTheSmallestAngle) {
         EXPECT_GE(after.first, before.first) << "vertex " << v;
       });
   EXPECT_GT(moved, 15);
-  std::vector<int> all(flat.vertexCount());
-  std::iota(all.begin(), all.end(), 0);
+  const std::vector<int> all = everyVertex(flat);
   Mesh m = jittered;
   EXPECT_EQ(raiseMeanAngles(m, flat, all), 0);
   EXPECT_EQ(m.points, jittered.points);
@@ -266,8 +270,7 @@ TEST(LastSteps, RaiseSmallAnglesMovesAVertexOnTheEdgeOfAThinFin) {
   const Mesh fin = finWithAVertexSlid();
   const double before = measureQuality(fin).minAngle;
   ASSERT_LT(before, 25.0);
-  std::vector<int> allBut24(fin.vertexCount());
-  std::iota(allBut24.begin(), allBut24.end(), 0);
+  std::vector<int> allBut24 = everyVertex(fin);
   allBut24.erase(allBut24.begin() + 24);
   Mesh m = fin;
   m.points[0].z() += 0.05;
@@ -586,8 +589,7 @@ TEST(LastSteps, TheChordsFarthestFromTheInputAreBroughtNearer) {
     ASSERT_GT(before, 0.05 * scale);
     ASSERT_GT(measureQuality(patch).minAngle, 50.0);
 
-    std::vector<int> all(patch.vertexCount());
-    std::iota(all.begin(), all.end(), 0);
+    const std::vector<int> all = everyVertex(patch);
     Mesh m = patch;
     EXPECT_EQ(bringNearer(m, input, all), 0);
     EXPECT_EQ(m.points, patch.points);
