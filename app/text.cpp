@@ -19,17 +19,17 @@ void boxedText(ImDrawList* dl, ImVec2 where, const char* text) {
   dl->AddText(where, IM_COL32(26, 26, 26, 255), text);
 }
 
-ImVec2 labelPlace(ImVec2 point, float gap, ImVec2 box, float right, const std::vector<ImVec4>& placed) {
-  const float x = point.x + gap + box.x + 2 > right ? point.x - gap - box.x : point.x + gap;
+ImVec2 labelPlace(ImVec2 point, float gap, ImVec2 box, const ImVec4& pane, const std::vector<ImVec4>& placed) {
+  const float x = point.x + gap + box.x + 2 > pane.z ? point.x - gap - box.x : point.x + gap;
   const auto free = [&](float y) {
-    return std::none_of(placed.begin(), placed.end(), [&](const ImVec4& p) {
-      return x < p.z && p.x < x + box.x && y < p.w && p.y < y + box.y;
-    });
+    return y >= pane.y && y + box.y <= pane.w && std::none_of(placed.begin(), placed.end(), [&](const ImVec4& p) {
+             return x < p.z && p.x < x + box.x && y < p.w && p.y < y + box.y;
+           });
   };
   const float y = point.y - 0.5f * box.y;
-  // Each shift tried, 0, +1, -1, +2, -2 ... lines: one more each way than there are boxes
-  // finds a free one.
-  for (int k = 0; k < 2 * static_cast<int>(placed.size()) + 1; ++k) {
+  // Each shift tried, 0, +1, -1, +2, -2 ... lines, as far as twice as many lines each way as
+  // there are boxes; where none is free, the label stays beside its point.
+  for (int k = 0; k < 4 * static_cast<int>(placed.size()) + 1; ++k) {
     const float shifted = y + (k % 2 ? 1.0f : -1.0f) * ((k + 1) / 2) * (box.y + 1);
     if (free(shifted)) return ImVec2(x, shifted);
   }

@@ -15,10 +15,10 @@ namespace lloydscope {
 void boxedText(ImDrawList* dl, ImVec2 where, const char* text);
 
 // Where a label `box` big goes beside a point (a pinned cell's site): on its right, `gap`
-// away, or on its left where the pane (its right edge at `right`) would cut it (a border
-// cell's), and a line lower, then higher, and so on, where it would cover one of the `placed`
-// boxes (min x, min y, max x, max y: other sites, labels placed before).
-ImVec2 labelPlace(ImVec2 point, float gap, ImVec2 box, float right, const std::vector<ImVec4>& placed);
+// away, or on its left where the `pane` would cut it (a border cell's), and a line lower, then
+// higher, and so on, where it would cover one of the `placed` boxes or leave the pane (boxes as
+// min x, min y, max x, max y; placed: other sites, labels placed before).
+ImVec2 labelPlace(ImVec2 point, float gap, ImVec2 box, const ImVec4& pane, const std::vector<ImVec4>& placed);
 
 // Call once after ImGui::CreateContext(), before the font texture is uploaded. Without
 // DejaVu Sans (fonts-dejavu-core) only ImGui's own font is there.

@@ -111,15 +111,17 @@ std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
   return corners;
 }
 
-// The corners of a border that is a quadrilateral: exactly four vertices where it turns by 45
-// degrees or more, none by 135 or more (a slit's end turns by 180, and a cut surface's border
-// has many), in the border's order. A strip's or a plate's, which a rectangle keeps.
+// The corners of a border that is a quadrilateral: exactly four vertices where it turns by 60
+// to 135 degrees, and nowhere else by more than 30 either way (a slit's end turns back by 180,
+// and a cut surface's border has many; a regular octagon's 45 is neither), in the border's
+// order. A strip's or a plate's, which a rectangle keeps.
 std::optional<std::array<Vertex, 4>> rectangleCorners(const SurfaceMesh& sm, Halfedge border) {
   const BorderWalk w = walkBorder(sm, border);
   std::vector<Vertex> corners;
   for (size_t i = 0; i < w.loop.size(); ++i) {
-    if (w.turn[i] >= 3 * M_PI / 4) return std::nullopt;
-    if (w.turn[i] >= M_PI / 4) corners.push_back(w.loop[i]);
+    const double turn = w.turn[i];
+    if (turn >= M_PI / 3 && turn <= 3 * M_PI / 4) corners.push_back(w.loop[i]);
+    else if (std::abs(turn) > M_PI / 6) return std::nullopt;
   }
   if (corners.size() != 4) return std::nullopt;
   return std::array<Vertex, 4>{corners[0], corners[1], corners[2], corners[3]};
@@ -298,8 +300,8 @@ SolvedMap solveMap(const Mesh& mesh, const ParamOptions& options, const std::str
   const Halfedge border = CGAL::Polygon_mesh_processing::longest_border(sm).first;
   UVMap uvMap = sm.add_property_map<SurfaceMesh::Vertex_index, Point2>("v:uv").first;
   if (options.border == Border::Rectangle && !isFreeBorder(options.method) && !rectangleCorners(sm, border))
-    throw Error(name + ": a rectangle border needs a border with four corners, where it turns by 45 to 135 "
-                       "degrees, and nowhere else by 45 or more (--border circle or square fits any border)");
+    throw Error(name + ": a rectangle border needs a border with four corners, where it turns by 60 to 135 "
+                       "degrees, and nowhere else by more than 30 (--border circle or square fits any border)");
   const SMP::Error_code err = solve(sm, border, uvMap, options);
   // CGAL's own one-to-one check only reports: the map is there, for repairFolds and
   // requireOneToOne to judge.
@@ -506,10 +508,12 @@ Parameterization parameterize(const Mesh& mesh, const ParamOptions& options,
     // weights hold on where rounding folds the other. A border with four corners (a strip's)
     // is tried on a rectangle first: a helicoid of two turns, whose LSCM map winds round twice
     // and overlaps itself, kept its angles to 4 degrees there (mean error), 46 on a circle.
+    // (A rectangle asked has a circle after it, for a border that is no quadrilateral.)
+    const Border after = options.border == Border::Rectangle ? Border::Circle : options.border;
     std::vector<ParamOptions> tries = {{ParamMethod::Lscm, options.border, {}},
                                        {ParamMethod::MeanValue, Border::Rectangle, {}},
-                                       {ParamMethod::MeanValue, options.border, {}},
-                                       {ParamMethod::Tutte, options.border, {}}};
+                                       {ParamMethod::MeanValue, after, {}},
+                                       {ParamMethod::Tutte, after, {}}};
     if (!options.fallback.empty())
       tries.insert(tries.begin() + 1, {ParamMethod::Given, Border::Circle, options.fallback});
     for (size_t i = 0;; ++i) {

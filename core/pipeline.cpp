@@ -1298,13 +1298,17 @@ ParamMethod recordedParamMethod(const std::string& settings) {
   return used == toString(ParamMethod::Given) ? ParamMethod::Given : parseParamMethod(used);
 }
 
+Border recordedBorder(const std::string& settings) {
+  const std::string used = settingValue(settings, "border-used");
+  return used.empty() ? optionsFromSettings(settings).param.border : parseBorder(used);
+}
+
 RecordedRun recordedRun(Recording recording) {
   RecordedRun run;
   run.options = optionsFromSettings(recording.settings);
   RemeshResult& r = run.result;
   r.paramUsed = recordedParamMethod(recording.settings);
-  const std::string border = settingValue(recording.settings, "border-used");
-  r.borderUsed = border.empty() ? run.options.param.border : parseBorder(border);
+  r.borderUsed = recordedBorder(recording.settings);
   r.distortion = measureDistortion(recording.input, recording.uv);
   r.before = measureQuality(recording.input);
   r.iterations = static_cast<int>(recording.iterations.size());

@@ -410,6 +410,9 @@ std::string recordedPartText(const std::string& settings);
 // The map a recorded run used: its line's param-used (the map "auto" chose, or the input's own,
 // ParamMethod::Given), else the one asked (older recordings). Throws Error as optionsFromSettings.
 ParamMethod recordedParamMethod(const std::string& settings);
+// The border its map has: border-used where auto chose another than asked, else the one asked.
+// Throws Error on a value no run writes.
+Border recordedBorder(const std::string& settings);
 
 // A run as its recording tells it: the options it was made with, and a result holding the
 // recording, its map's method, its iterations and the quality of its mapped mesh (a recording

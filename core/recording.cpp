@@ -169,6 +169,7 @@ void checkContents(const Recording& r, const std::string& path) {
   try {
     recorded = optionsFromSettings(r.settings);
     recordedParamMethod(r.settings);
+    recordedBorder(r.settings);
   } catch (const Error& e) {
     damaged(e.what());
   }

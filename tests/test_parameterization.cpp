@@ -150,8 +150,8 @@ TEST(Parameterization, OrientationIsPositiveEverywhere) {
 }
 
 // A sphere with one square taken out: LSCM folds, and auto falls back to mean value, on the
-// border asked (it was a circle whatever --border said), or on a rectangle where the border has
-// four corners, as this one has: the square's sides, the same.
+// border asked (it was a circle whatever --border said; the hole's border is no quadrilateral
+// for a rectangle: it turns inward at its corners).
 TEST(Parameterization, AutosFallbackTakesTheBorderAsked) {
   Mesh sphere = test::cube(6, true);
   sphere.triangles.erase(sphere.triangles.begin(), sphere.triangles.begin() + 2);  // a square hole: 4 corners
@@ -161,6 +161,10 @@ TEST(Parameterization, AutosFallbackTakesTheBorderAsked) {
     const Vec2& uv = p.uv[v];
     EXPECT_NEAR(std::min({uv.x(), uv.y(), 1 - uv.x(), 1 - uv.y()}), 0.0, 1e-9) << v;  // on a side
   }
+  // A rectangle asked has a circle after it: this border is no quadrilateral.
+  const Parameterization r = parameterize(sphere, {ParamMethod::Auto, Border::Rectangle, {}}, "sphere");
+  EXPECT_EQ(r.method, ParamMethod::MeanValue);
+  EXPECT_EQ(r.border, Border::Circle);
 }
 
 // Auto's fallback after LSCM (a resampled surface's points in the input's map): taken as it
@@ -442,7 +446,8 @@ TEST(Parameterization, AFixedBorderMapSqueezedByRoundingSaysToSimplify) {
 // A strip that winds twice round an axis (a helicoid, as a helper's disk): LSCM's map winds
 // round twice too and overlaps itself, and the mean-value map on a circle squeezed the strip's
 // length onto the circle (mean angle error 46 degrees). The strip's four corners make the
-// border a rectangle as long as the strip: its map is nearly conformal (4 degrees).
+// border a rectangle as long as the strip: its map is nearly conformal (10 degrees on these
+// right triangles; 4 on a resampled helicoid's).
 TEST(Parameterization, AStripThatLscmOverlapsIsMappedOntoARectangle) {
   const Mesh strip = test::helicoidStrip();
   EXPECT_THROW(parameterize(strip, {ParamMethod::Lscm, Border::Circle, {}}, "helicoid"), Error);

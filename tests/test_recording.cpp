@@ -162,6 +162,7 @@ TEST(Recording, ContentsNoRunRecordsAreRefused) {
       // info printed these (inspect refused the first), the escape sequence to the terminal
       {[](Recording& r) { r.settings = "method=bogus " + r.settings; }, "unknown method 'bogus' (relocate, retriangulate)"},
       {[](Recording& r) { r.settings = "param-used=nope " + r.settings; }, "unknown parameterization 'nope' (auto, authalic, conformal, mean-value, tutte, lscm)"},
+      {[](Recording& r) { r.settings = "border-used=rectanglX " + r.settings; }, "unknown border 'rectanglX' (square, circle, rectangle)"},
       {[](Recording& r) { r.settings += " solver=\x1b[31mRED"; }, "its settings hold a character no run writes"}};
   const std::string path = test::tempPath("edited.lsrec");
   for (const auto& [edit, why] : edits) {

@@ -207,15 +207,19 @@ TEST(Text, PresentationTypeGrowsWithTheWindow) {
 // pinned site.
 TEST(Text, ALabelGoesWhereItCoversNothingPlacedBefore) {
   const ImVec2 box(60, 13);
-  EXPECT_EQ(labelPlace(ImVec2(100, 100), 8, box, 500, {}).x, 108);
-  EXPECT_EQ(labelPlace(ImVec2(100, 100), 8, box, 500, {}).y, 93.5f);
-  EXPECT_EQ(labelPlace(ImVec2(480, 100), 8, box, 500, {}).x, 412);  // on the left
+  const ImVec4 pane(0, 0, 500, 400);
+  EXPECT_EQ(labelPlace(ImVec2(100, 100), 8, box, pane, {}).x, 108);
+  EXPECT_EQ(labelPlace(ImVec2(100, 100), 8, box, pane, {}).y, 93.5f);
+  EXPECT_EQ(labelPlace(ImVec2(480, 100), 8, box, pane, {}).x, 412);  // on the left
   // A label there already: the next goes a line lower; with a second below it, a line higher.
   std::vector<ImVec4> placed = {ImVec4(108, 93.5f, 168, 106.5f)};
-  EXPECT_EQ(labelPlace(ImVec2(110, 100), 8, box, 500, placed).y, 93.5f + 14);
+  EXPECT_EQ(labelPlace(ImVec2(110, 100), 8, box, pane, placed).y, 93.5f + 14);
   placed.push_back(ImVec4(118, 107.5f, 178, 120.5f));
-  EXPECT_EQ(labelPlace(ImVec2(110, 100), 8, box, 500, placed).y, 93.5f - 14);
+  EXPECT_EQ(labelPlace(ImVec2(110, 100), 8, box, pane, placed).y, 93.5f - 14);
   // Another site's ring on the right (5 px across): the label moves off it too.
-  const ImVec2 at = labelPlace(ImVec2(100, 100), 8, box, 500, {ImVec4(130, 95, 140, 105)});
+  const ImVec2 at = labelPlace(ImVec2(100, 100), 8, box, pane, {ImVec4(130, 95, 140, 105)});
   EXPECT_TRUE(at.y + box.y <= 95 || at.y >= 105) << at.y;
+  // At the pane's top, the line above is out of it: two lines lower.
+  EXPECT_EQ(labelPlace(ImVec2(100, 8), 8, box, pane, {ImVec4(108, 1.5f, 168, 14.5f), ImVec4(108, 15.5f, 168, 28.5f)}).y,
+            1.5f + 28);
 }
