@@ -1665,9 +1665,11 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
         dl->AddLine(screen(domain.uv()[tri[k]]), screen(domain.uv()[tri[(k + 1) % 3]]),
                     rgb(0.15f, 0.15f, 0.15f), 2.0f);
       }
-  selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale, shown.cells2D,
-                    iterationResultIn2D());
   const float legendTop = p0.y + extent.y - legendHeight - 5;
+  const ImVec2 legendSize = ImGui::CalcTextSize(legend.c_str());
+  selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale, shown.cells2D,
+                    iterationResultIn2D(),
+                    {ImVec4(p0.x + 6, legendTop, p0.x + 10 + legendSize.x, legendTop + legendSize.y)});
   if (filled) fillLegend(dl, ImVec2(p0.x + 10, p0.y + 4), legendTop - 4);
   boxedText(dl, ImVec2(p0.x + 8, legendTop), legend.c_str());
   // Sites a few pixels apart are a blob of dots and rings (1000 sites in presentation mode at

@@ -125,7 +125,8 @@ void Selection::clear() {
 }
 
 void Selection::draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
-                       const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown) const {
+                       const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown,
+                       const std::vector<ImVec4>& keepClear) const {
   for (int cell : cellsShown ? cells_ : std::vector<int>{}) {
     if (cell >= static_cast<int>(view.cells.size())) continue;
     for (const CellPiece& piece : view.cells[cell].pieces) {
@@ -142,9 +143,9 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
   // selection panel and the lesson's caption (the cell pinned last) name them by number, and
   // two magenta cells could not be told apart. After every fill, which would cover a label.
   if (cellsShown && cells_.size() > 1) {
-    // The boxes labels may not cover (min x, min y, max x, max y): the pinned sites' rings,
-    // then each label placed.
-    std::vector<ImVec4> placed;
+    // The boxes labels may not cover (min x, min y, max x, max y): those kept clear, the pinned
+    // sites' rings, then each label placed.
+    std::vector<ImVec4> placed = keepClear;
     const float ring = siteRing(view, scale);
     for (int cell : cells_)
       if (cell < static_cast<int>(view.cells.size())) {

@@ -39,9 +39,11 @@ class Selection {
   // Highlights: each pinned cell filled, with its site's path over all iterations; each pinned
   // triangle outlined (in the parameter domain by its corners' UV positions). Each only where
   // the view shows its kind: the lesson's first stages show no cells and no result (a pinned
-  // triangle's ring floated on the empty domain).
+  // triangle's ring floated on the empty domain). Cells' labels keep off `keepClear` (boxes as
+  // min x, min y, max x, max y: the pane's legend, drawn over them).
   void draw2D(ImDrawList* dl, const Recording& recording, const IterationView& view,
-              const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown) const;
+              const ScreenOfUV& screen, float scale, bool cellsShown, bool resultShown,
+              const std::vector<ImVec4>& keepClear = {}) const;
   // The cells' outlines and sites lifted to the surface, the triangles' outlines (where the
   // surface hides one from `eye`, the camera, a dashed ring alone).
   void draw3D(ImDrawList* dl, const Recording& recording, const Domain& domain,

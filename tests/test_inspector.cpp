@@ -707,6 +707,13 @@ TEST(Inspector, TwoPinnedCellsAreLabelledWithTheirNumbers) {
   checkScene("inspector_two_cells.png", "--iteration 3 --select-cell 40 --select-cell 100 --pane 2d");
 }
 
+// Four cells side by side at the domain's bottom: their labels stack upward, clear of the
+// pane's legend (two of them went under it, their leaders running down into it).
+TEST(Inspector, PinnedCellsLabelsKeepOffTheLegend) {
+  checkScene("inspector_labels_legend.png",
+             "--iteration 3 --select-cell 19 --select-cell 20 --select-cell 21 --select-cell 22 --pane 2d");
+}
+
 // The lesson's Result stage shows and quotes the final result, after the clean-up, as the
 // controls pane's Final column has it (it showed the last iteration's mesh before it).
 TEST(Inspector, TheLessonsResultStageShowsTheFinalResult) {
