@@ -1608,7 +1608,8 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   const bool seams = !replay_->seams().empty() || !replay_->recording().sharedSeams.empty();
   const std::string legend = wrappedLines(
       domainLegend(shown.sites2D, shown.centroids2D, seams, presentation_ && pickTriangles2D_), extent.x - 16, "  ");
-  const float legendHeight = ImGui::CalcTextSize(legend.c_str()).y;
+  const ImVec2 legendSize = ImGui::CalcTextSize(legend.c_str());
+  const float legendHeight = legendSize.y;
   // A fill's legend (its name over a colour bar, top left) has its own room too: over the
   // domain it hid a square domain's corner cells.
   const bool filled = cellsFilled();
@@ -1666,7 +1667,6 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
                     rgb(0.15f, 0.15f, 0.15f), 2.0f);
       }
   const float legendTop = p0.y + extent.y - legendHeight - 5;
-  const ImVec2 legendSize = ImGui::CalcTextSize(legend.c_str());
   selection_.draw2D(dl, replay_->recording(), replay_->view(iteration_), screen, scale, shown.cells2D,
                     iterationResultIn2D(),
                     {ImVec4(p0.x + 6, legendTop, p0.x + 10 + legendSize.x, legendTop + legendSize.y)});

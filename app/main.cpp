@@ -299,7 +299,7 @@ void addRemeshOptions(CLI::App& cmd, RemeshArgs& r) {
   cmd.add_option("--method", r.method, "relocate or retriangulate (default)");
   cmd.add_option("--param", r.param,
                  "auto (default: lscm, or mean-value where lscm folds, on a rectangle where the border has four "
-                 "corners, else on --border), authalic, conformal, "
+                 "corners, then on --border), authalic, conformal, "
                  "mean-value, tutte or lscm");
   cmd.add_option("--border", r.border,
                  "square, circle (default) or rectangle (for a border with four corners, as a strip's: its sides as "

@@ -147,6 +147,7 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
     // sites' rings, then each label placed.
     std::vector<ImVec4> placed = keepClear;
     const float ring = siteRing(view, scale);
+    const ImVec2 low = dl->GetClipRectMin(), high = dl->GetClipRectMax();
     for (int cell : cells_)
       if (cell < static_cast<int>(view.cells.size())) {
         const ImVec2 site = screen(view.sites[cell]);
@@ -156,7 +157,6 @@ void Selection::draw2D(ImDrawList* dl, const Recording& recording, const Iterati
       if (cell >= static_cast<int>(view.cells.size())) continue;
       const std::string label = "cell " + std::to_string(cell);
       const ImVec2 box = ImGui::CalcTextSize(label.c_str()), site = screen(view.sites[cell]);
-      const ImVec2 low = dl->GetClipRectMin(), high = dl->GetClipRectMax();
       const ImVec2 at = labelPlace(site, ring + 4, box, ImVec4(low.x, low.y, high.x, high.y), placed);
       placed.emplace_back(at.x, at.y, at.x + box.x, at.y + box.y);
       // A leader from the ring to the label: a label moved a line off names its site still.

@@ -506,7 +506,7 @@ class AngleRaiser {
         case Raise::Smallest: return there.mean < floor ? kRefused : there.smallest;
         case Raise::Nearer:
           if (there.mean < floor || there.smallest < std::min(now.smallest, kNearerKeepAngle)) return kRefused;
-          return -farthestChordPoint(faces, nearChord);
+          return -gridDistance(faces, nearChord);
       }
       return kRefused;
     };
@@ -520,7 +520,7 @@ class AngleRaiser {
     // Measured as it is, folded or not: a move that unfolds the ring must raise it too.
     const double before = raise_ == Raise::Mean       ? now.mean
                           : raise_ == Raise::Smallest ? now.smallest
-                                                      : -farthestChordPoint(faces, nearChord);
+                                                      : -gridDistance(faces, nearChord);
     // What a move must gain: a millionth of a degree, or of an edge's length (a distance's gain
     // scales with the mesh: a millionth of a unit stopped every move on a mesh 10^-4 across).
     const double gain = raise_ == Raise::Nearer ? 1e-6 * spacing : 1e-6;
@@ -559,22 +559,27 @@ class AngleRaiser {
     return false;
   }
 
-  // The farthest from the input of points on a grid over each of `faces`: each edge cut in
-  // quarters, its three points inside each edge and three inside the triangle (not the
-  // corners: they are on the input). Each search starts from the point found before.
-  double farthestChordPoint(const std::vector<int>& faces, Vec3& near) {
-    constexpr int n = 4;
+  // The farthest of `points` from the input, each search started from the point found before.
+  double farthestFromInput(const std::vector<Vec3>& points, Vec3& near) {
     double farthest = 0;
+    for (const Vec3& p : points) farthest = std::max(farthest, close().projection().squaredDistance(p, near));
+    return std::sqrt(farthest);
+  }
+
+  // How far the chords of `faces` stray from the input: the farthest of points on a grid over
+  // each, each edge cut in quarters, its three points inside each edge and three inside the
+  // triangle (not the corners: they are on the input).
+  double gridDistance(const std::vector<int>& faces, Vec3& near) {
+    constexpr int n = 4;
+    std::vector<Vec3> points;
     for (int f : faces) {
       const Triangle& t = m_.triangles[f];
       for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) {
-          if (i == n || j == n || i + j == 0) continue;  // the corners
-          const Vec3 p = (i * m_.points[t[0]] + j * m_.points[t[1]] + (n - i - j) * m_.points[t[2]]) / n;
-          farthest = std::max(farthest, close().projection().squaredDistance(p, near));
-        }
+        for (int j = 0; i + j <= n; ++j)
+          if (i != n && j != n && i + j != 0)  // not the corners
+            points.push_back((i * m_.points[t[0]] + j * m_.points[t[1]] + (n - i - j) * m_.points[t[2]]) / n);
     }
-    return std::sqrt(farthest);
+    return farthestFromInput(points, near);
   }
 
   // Where a triangle is screened for its distance from the input: its edges' midpoints and its
@@ -599,9 +604,8 @@ class AngleRaiser {
 
   // One triangle's, the search started from `near` (a point on the input near it).
   double screenedDistance(int f, Vec3 near) {
-    double farthest = 0;
-    for (const Vec3& p : screenPoints(f)) farthest = std::max(farthest, close().projection().squaredDistance(p, near));
-    return std::sqrt(farthest);
+    const std::array<Vec3, 4> points = screenPoints(f);
+    return farthestFromInput({points.begin(), points.end()}, near);
   }
 
  public:

@@ -78,11 +78,7 @@ BorderWalk walkBorder(const SurfaceMesh& sm, Halfedge border) {
 // (quarters of the length from an arbitrary vertex) can put a corner mid-side and leave the
 // triangles at the shape's real corners with three vertices on one side of the square: flat.
 std::array<Vertex, 4> squareCorners(const SurfaceMesh& sm, Halfedge border) {
-  const BorderWalk w = walkBorder(sm, border);
-  const std::vector<Vertex>& loop = w.loop;
-  const std::vector<double>& turn = w.turn;
-  const std::vector<double>& position = w.position;
-  const double length = w.length;
+  const auto& [loop, turn, position, length] = walkBorder(sm, border);
   const size_t first = std::max_element(turn.begin(), turn.end()) - turn.begin();
   std::array<Vertex, 4> corners = {loop[first], loop[first], loop[first], loop[first]};
   for (int k = 1; k < 4; ++k) {
