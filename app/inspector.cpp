@@ -1617,21 +1617,21 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   const float fillLeft = filled ? fillLegendWidth() : 0.0f;
   const float fitWidth = std::max(1.0f, extent.x - fillLeft);
   const float fitHeight = std::max(1.0f, extent.y - legendHeight - 10 - fillTop);
-  const float base = 0.92f * std::min(fitWidth, fitHeight);
-  const glm::vec2 fit(p0.x + fillLeft + fitWidth / 2, p0.y + fillTop + fitHeight / 2);
+  const auto [lo, hi] = boundingBox(replay_->domain().uv());
+  const PaneFit fit = fitBox(lo, hi, glm::vec2(p0.x + fillLeft + fitWidth / 2, p0.y + fillTop + fitHeight / 2),
+                             fitWidth, fitHeight);
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
     view2D_.pan += glm::vec2(io.MouseDelta.x, io.MouseDelta.y);
   const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) view2D_.zoomAt(io.MouseWheel, mouse, fit);
   if (ImGui::IsItemHovered() && letterPressed('F')) fit2D();
-  const glm::vec2 middle = view2D_.middle(fit);
-  const ImVec2 center(middle.x, middle.y);
-  const float scale = base * view2D_.zoom;
+  const float scale = fit.base * view2D_.zoom;
   auto screen = [&](const Vec2& uv) {
-    const glm::vec2 at = view2D_.toScreen(uv, fit, base);
+    const glm::vec2 at = view2D_.toScreen(uv, fit);
     return ImVec2(at.x, at.y);
   };
-  const Vec2 mouseUV = view2D_.toDomain(mouse, fit, base);
+  const ImVec2 center = screen(Vec2(0.5, 0.5));  // the canvas draws about the unit square's middle
+  const Vec2 mouseUV = view2D_.toDomain(mouse, fit);
   // Cells and triangles are offered where they are drawn: the lesson's load stage, which draws
   // neither, offered one to pin under the pointer.
   const bool picks = pickTriangles2D_ ? iterationResultIn2D() : layers().cells2D;
@@ -1679,7 +1679,7 @@ void Inspector::domainPane2D(const ImVec2& pos, const ImVec2& size) {
   // none, over its corner only while the mouse, which can zoom, is over the pane (it hid cells
   // in every picture of a small pane, where no mouse can zoom). In classroom mode only while
   // the mouse is there: on a slide it was a column of five words beside the diagram.
-  const float room = p0.x + extent.x - (center.x + 0.5f * scale) - 12;
+  const float room = p0.x + extent.x - screen(hi).x - 12;
   if (const std::string text = crowdedSitesHint(
           closeSiteSpacing(replay_->view(iteration_).cells, replay_->recording().fixedSites.size()) * scale);
       shown.sites2D && !text.empty() && ((room >= 80 && !presentation_) || ImGui::IsWindowHovered())) {

@@ -119,6 +119,25 @@ void checkScene(const std::string& name, const std::string& args, std::string in
   EXPECT_EQ(inExactRows, 0u) << name << ": the top " << exactRows << " rows differ; this run's picture: " << actualPath;
 }
 
+// The columns of the 2D pane's picture crossed by a dark line of 100 pixels or more (the
+// domain's border): the first and the last.
+std::pair<int, int> longDarkColumns(const Picture& picture) {
+  int first = -1, last = -1;
+  for (int x = 0; x < picture.width; ++x) {
+    int run = 0, longest = 0;
+    for (int y = 0; y < picture.height; ++y) {
+      const unsigned char* c = picture.at(x, y);
+      run = std::max({c[0], c[1], c[2]}) < 70 ? run + 1 : 0;
+      longest = std::max(longest, run);
+    }
+    if (longest >= 100) {
+      if (first < 0) first = x;
+      last = x;
+    }
+  }
+  return {first, last};
+}
+
 }  // namespace
 
 TEST(Inspector, FirstIteration) { checkScene("inspector_iteration0.png", "--iteration 0"); }
@@ -253,6 +272,25 @@ TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {
   ASSERT_GE(bar, 0);
   ASSERT_GE(domain, 0);
   EXPECT_GE(domain - bar, 70);  // the bar, 12 pixels, and a label "9.68e-03" beside it
+}
+
+// A map is scaled to the unit square, which a strip's fills along its length only: the pane
+// frames the map's own box, centred where the unit square's middle is and as tall. A flat 4:1
+// strip's map on a rectangle (0.25 by 1) lay against the square's right side, 0.375 of its side
+// (about 130 pixels here) right of the middle.
+TEST(Inspector, ANarrowDomainIsDrawnInThePanesMiddle) {
+  const std::string strip = test::tempPath("flat_strip.off");
+  writeMesh(test::wrappedGrid(40, 10, false, false, [](double u, double v) { return Vec3(4 * u, v, 0); }), strip);
+  const std::string stripPng = test::tempPath("strip_2d.png"), squarePng = test::tempPath("square_2d.png");
+  ASSERT_EQ(renderScene(strip + " --param mean-value --border rectangle --pane 2d", stripPng), 0);
+  ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --param authalic --border square --pane 2d", squarePng), 0);
+  const auto [stripLeft, stripRight] = longDarkColumns(readPng(stripPng));
+  const auto [squareLeft, squareRight] = longDarkColumns(readPng(squarePng));
+  ASSERT_GE(stripLeft, 0);
+  ASSERT_GE(squareLeft, 0);
+  EXPECT_NEAR(stripRight - stripLeft, (squareRight - squareLeft) / 4, 4);
+  EXPECT_NEAR(stripLeft + stripRight, squareLeft + squareRight, 6)
+      << "the strip spans columns " << stripLeft << "-" << stripRight << ", the square " << squareLeft << "-" << squareRight;
 }
 
 // The lesson's Result stage shows the final result: its worst triangle is the one pinned, and
