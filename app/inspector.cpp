@@ -1768,8 +1768,20 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
   }
   // A projector washes colours out: darker lines, stronger colours, bigger marks.
   const bool strong = presentation_;
+  // Pixels between sites: on average (the domain's area shared among them), and around each
+  // movable site (from its cell's area; a border site's cell is cut in half, and its square
+  // shrank out of sight: the average). A map is scaled to the unit square, which a strip's fills
+  // along its length only, and squeezes parts of the surface (a face's nose): there marks sized
+  // for the unit square's average covered the cells, and merged into dark blobs.
+  const bool cellsKnown = view.cells.size() == view.sites.size() && !view.cells.empty();
+  double domainArea = 0;
+  for (const BoundedCell& cell : view.cells) domainArea += cell.area;
+  const float spacing = cellsKnown ? scale * static_cast<float>(std::sqrt(domainArea / view.cells.size()))
+                                   : scale / std::sqrt(static_cast<float>(view.sites.size()) + 1);
+  const auto spacingAt = [&](size_t i) {
+    return cellsKnown && i >= fixedCount ? scale * static_cast<float>(std::sqrt(view.cells[i].area)) : spacing;
+  };
   // Over a fill, the light triangles were the brightest lines in the pane: faint there.
-  const float spacing = scale / std::sqrt(static_cast<float>(view.sites.size()) + 1);  // between sites, in pixels
   // Over a fill, cells a few pixels across were all lines and dots (the Valence stage at
   // 960x600 showed a dark blue disk): as the 3D view's wire, they fade from 10 pixels down to 4.
   const float seen = filled ? std::clamp((spacing - 4.0f) / 6.0f, 0.15f, 1.0f) : 1.0f;
@@ -1794,12 +1806,13 @@ CanvasGeometry Inspector::buildCanvas(float scale) {
     g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
   for (const auto& [a, b] : recording.sharedSeams)  // a chart's, with the other charts
     g.thickLine(recording.uv[a], recording.uv[b], strong ? 7.0f : 5.0f, kSeamColor);
-  // Dots a sixth of the site spacing: the cells stay visible between them.
-  const float r = std::clamp(0.16f * spacing, 1.2f, 6.0f) * (strong ? 1.3f : 1.0f);
+  // Dots a sixth of the site spacing around them: the cells stay visible between them.
+  const auto radius = [&](size_t i) { return std::clamp(0.16f * spacingAt(i), 1.2f, 6.0f) * (strong ? 1.3f : 1.0f); };
   // The lesson's Move stage is about the arrows: too short to see, they are drawn longer.
   const double arrowScale = stage_ == Stage::Move ? moveArrowScale(view, fixedCount) : 1.0;
   for (size_t i = 0; i < view.sites.size() && shown.sites2D; ++i) {
     const Vec2& s = view.sites[i];
+    const float r = radius(i);
     if (i < fixedCount) {
       g.point(s, r, MarkerShape::Square, rgb(0.35f, 0.35f, 0.35f));
       continue;

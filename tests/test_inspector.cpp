@@ -119,23 +119,37 @@ void checkScene(const std::string& name, const std::string& args, std::string in
   EXPECT_EQ(inExactRows, 0u) << name << ": the top " << exactRows << " rows differ; this run's picture: " << actualPath;
 }
 
+// The 2D domain's border, a colour bar's outline, the legend's text: not the cells' lines.
+bool isDark(const unsigned char* c) { return std::max({c[0], c[1], c[2]}) < 70; }
+
+// The longest run of dark pixels down column x.
+int longestDarkRun(const Picture& picture, int x) {
+  int run = 0, longest = 0;
+  for (int y = 0; y < picture.height; ++y) {
+    run = isDark(picture.at(x, y)) ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  return longest;
+}
+
 // The columns of the 2D pane's picture crossed by a dark line of 100 pixels or more (the
 // domain's border): the first and the last.
 std::pair<int, int> longDarkColumns(const Picture& picture) {
   int first = -1, last = -1;
-  for (int x = 0; x < picture.width; ++x) {
-    int run = 0, longest = 0;
-    for (int y = 0; y < picture.height; ++y) {
-      const unsigned char* c = picture.at(x, y);
-      run = std::max({c[0], c[1], c[2]}) < 70 ? run + 1 : 0;
-      longest = std::max(longest, run);
-    }
-    if (longest >= 100) {
+  for (int x = 0; x < picture.width; ++x)
+    if (longestDarkRun(picture, x) >= 100) {
       if (first < 0) first = x;
       last = x;
     }
-  }
   return {first, last};
+}
+
+// A flat 4:1 strip of 451 vertices, written once: its file.
+std::string flatStripFile() {
+  const std::string strip = test::tempPath("flat_strip.off");
+  if (!std::filesystem::exists(strip))
+    writeMesh(test::wrappedGrid(40, 10, false, false, [](double u, double v) { return Vec3(4 * u, v, 0); }), strip);
+  return strip;
 }
 
 }  // namespace
@@ -254,18 +268,9 @@ TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {
             0);
   const Picture picture = readPng(png);
   ASSERT_GT(picture.width, 0);
-  auto longestDarkRun = [&](int x) {  // down column x: the bar's outline, the domain's border
-    int run = 0, longest = 0;
-    for (int y = 0; y < picture.height; ++y) {
-      const unsigned char* c = picture.at(x, y);
-      run = std::max({c[0], c[1], c[2]}) < 70 ? run + 1 : 0;
-      longest = std::max(longest, run);
-    }
-    return longest;
-  };
   int bar = -1, domain = -1;  // their left edges: the bar is 90 pixels tall, the domain more
   for (int x = 0; x < picture.width && domain < 0; ++x) {
-    const int run = longestDarkRun(x);
+    const int run = longestDarkRun(picture, x);
     if (bar < 0 && run >= 80 && run <= 100) bar = x;
     if (run >= 110) domain = x;
   }
@@ -279,8 +284,7 @@ TEST(Inspector, TheFillsLegendLeavesTheDomainUncovered) {
 // strip's map on a rectangle (0.25 by 1) lay against the square's right side, 0.375 of its side
 // (about 130 pixels here) right of the middle.
 TEST(Inspector, ANarrowDomainIsDrawnInThePanesMiddle) {
-  const std::string strip = test::tempPath("flat_strip.off");
-  writeMesh(test::wrappedGrid(40, 10, false, false, [](double u, double v) { return Vec3(4 * u, v, 0); }), strip);
+  const std::string strip = flatStripFile();
   const std::string stripPng = test::tempPath("strip_2d.png"), squarePng = test::tempPath("square_2d.png");
   ASSERT_EQ(renderScene(strip + " --param mean-value --border rectangle --pane 2d", stripPng), 0);
   ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --param authalic --border square --pane 2d", squarePng), 0);
@@ -291,6 +295,33 @@ TEST(Inspector, ANarrowDomainIsDrawnInThePanesMiddle) {
   EXPECT_NEAR(stripRight - stripLeft, (squareRight - squareLeft) / 4, 4);
   EXPECT_NEAR(stripLeft + stripRight, squareLeft + squareRight, 6)
       << "the strip spans columns " << stripLeft << "-" << stripRight << ", the square " << squareLeft << "-" << squareRight;
+}
+
+// The marks are sized by the room around each site (its cell's area), not by the unit square
+// shared among the sites: on a strip's map a quarter as wide, sites and rings sized for the
+// square covered its cells, and the fill's colour showed on 12% of the strip (35% now). Most
+// cells have the largest area there: the bar's yellow.
+TEST(Inspector, ANarrowDomainsCellsShowTheirFill) {
+  const std::string png = test::tempPath("strip_fill.png");
+  ASSERT_EQ(renderScene(flatStripFile() + " --param mean-value --border rectangle --fill area --pane 2d", png), 0);
+  const Picture picture = readPng(png);
+  const auto [left, right] = longDarkColumns(picture);
+  ASSERT_GE(left, 0);
+  int top = -1, bottom = -1;  // the strip's border, down its middle column
+  for (int y = 0; y < picture.height; ++y)
+    if (isDark(picture.at((left + right) / 2, y))) {
+      if (top < 0) top = y;
+      bottom = y;
+    }
+  ASSERT_GT(bottom - top, 100);
+  int inside = 0, yellow = 0;  // inside the border's lines and squares
+  for (int y = top + 4; y < bottom - 3; ++y)
+    for (int x = left + 4; x < right - 3; ++x) {
+      const unsigned char* c = picture.at(x, y);
+      ++inside;
+      yellow += c[0] > 180 && c[1] > 160 && c[2] < 140;
+    }
+  EXPECT_GE(yellow, inside / 4) << yellow << " of " << inside << " pixels show the fill; the picture: " << png;
 }
 
 // The lesson's Result stage shows the final result: its worst triangle is the one pinned, and
@@ -868,12 +899,7 @@ TEST(Inspector, TheColourBarFitsALowPane) {
   ASSERT_EQ(renderScene(test::assetPath("sphere_cap.off") + " --presentation --stage move --fill distance --pane 2d", png), 0);
   const Picture picture = readPng(png);
   int longest = 0;  // the bar's outline: the longest dark run down a column left of the domain
-  for (int x = 0; x < std::min(picture.width, 40); ++x)
-    for (int y = 0, run = 0; y < picture.height; ++y) {
-      const unsigned char* c = picture.at(x, y);
-      run = std::max({c[0], c[1], c[2]}) < 70 ? run + 1 : 0;
-      longest = std::max(longest, run);
-    }
+  for (int x = 0; x < std::min(picture.width, 40); ++x) longest = std::max(longest, longestDarkRun(picture, x));
   EXPECT_GE(longest, 40);  // two lines of its labels at least
   EXPECT_LE(longest, 80);
 }
