@@ -91,6 +91,21 @@ constexpr ImGuiWindowFlags kCanvasPaneFlags =
 // (a window narrower than the left pane, 300x200) gives.
 ImVec2 drawable(ImVec2 size) { return ImVec2(std::max(size.x, 2.0f), std::max(size.y, 2.0f)); }
 
+// ImGui::SameLine() where an item `width` wide still fits on the line, else nothing (it starts
+// the next): at --ui-scale 1.5 the left pane's "retriangulate" and "triangle" ran under its
+// scroll bar, cut off.
+void sameLineIfFits(float width) {
+  // Where the pane clips its items: half its padding right of its content (ImGui's
+  // InnerClipRect), where "retriangulate" ended at --ui-scale 1.
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x +
+                      std::floor(0.5f * ImGui::GetStyle().WindowPadding.x);
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+float radioWidth(const char* label) {
+  return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+}
+float buttonWidth(const char* label) { return ImGui::CalcTextSize(label).x + 2 * ImGui::GetStyle().FramePadding.x; }
+
 // The rest of the pane as a drawing area: its top-left corner and size.
 std::pair<ImVec2, ImVec2> canvasArea() {
   return {ImGui::GetCursorScreenPos(), drawable(ImGui::GetContentRegionAvail())};
@@ -1097,14 +1112,14 @@ void Inspector::runSummary() {
   ImGui::Separator();
   int method = replay_->method() == RemeshMethod::Relocate ? 0 : 1;
   ImGui::TextUnformatted("Result");
-  ImGui::SameLine();
+  sameLineIfFits(radioWidth("relocate"));
   // Greyed, with why, where the run's sites are not the input's vertices: clicked, it did
   // nothing, and its explanation showed for one frame.
   const bool canRelocate = replay_->canRelocate();
   if (!canRelocate) ImGui::BeginDisabled();
   if (ImGui::RadioButton("relocate", &method, 0)) replay_->setMethod(RemeshMethod::Relocate);
   if (!canRelocate) ImGui::EndDisabled();
-  ImGui::SameLine();
+  sameLineIfFits(radioWidth("retriangulate"));
   if (ImGui::RadioButton("retriangulate", &method, 1)) replay_->setMethod(RemeshMethod::Retriangulate);
   if (!canRelocate) greyedText(relocateNeedsText(input_.has_value()));
 
@@ -1216,9 +1231,9 @@ void Inspector::selectionControls() {
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pick = pickTriangles2D_ ? 1 : 0;
     ImGui::TextUnformatted("2D click pins a");
-    ImGui::SameLine();
+    sameLineIfFits(radioWidth("cell"));
     ImGui::RadioButton("cell", &pick, 0);
-    ImGui::SameLine();
+    sameLineIfFits(radioWidth("triangle"));
     ImGui::RadioButton("triangle", &pick, 1);
     pickTriangles2D_ = pick == 1;
     if (ImGui::Button("Pin the worst triangle")) pinWorstTriangle();
@@ -1292,9 +1307,9 @@ void Inspector::viewControls() {
 
 void Inspector::cameraControls() {
   if (ImGui::Button("Fit view (F)")) fitCamera();
-  ImGui::SameLine();
+  sameLineIfFits(buttonWidth("Copy view"));
   if (ImGui::Button("Copy view")) ImGui::SetClipboardText(cameraText().c_str());
-  ImGui::SameLine();
+  sameLineIfFits(buttonWidth("Paste view"));
   if (ImGui::Button("Paste view")) {
     const char* text = ImGui::GetClipboardText();
     try {

@@ -241,6 +241,35 @@ TEST(Inspector, ADenserScreenDrawsTheSamePictureWithTwiceThePixels) {
   EXPECT_NEAR(static_cast<double>(orange(halved)) / orange(a), 1.0, 0.4) << orange(a) << " and " << orange(halved);
 }
 
+// At --ui-scale 1.5 the left pane is too narrow for "Result: relocate retriangulate" and "2D
+// click pins a cell triangle" on one line: the last button goes on the next, where it ran under
+// the scroll bar, its label cut ("retriangulat", "triangl": 34 dark pixels in the 20 columns
+// left of the bar).
+TEST(Inspector, TheLeftPanesButtonsWrapRatherThanRunUnderItsScrollBar) {
+  const std::string png = test::tempPath("ui_scale_15.png");
+  ASSERT_EQ(run("inspect " + test::assetPath("bumpy_disk.off") +
+                " --stage load --no-timings --size 1440x900 --ui-scale 1.5 --screenshot " + png),
+            0);
+  const Picture picture = readPng(png);
+  int bar = -1;  // the scroll bar's left edge: a grey column down most of the left pane
+  for (int x = 200; x < picture.width / 2 && bar < 0; ++x) {
+    int grey = 0;
+    for (int y = 0; y < picture.height; ++y) {
+      const unsigned char* c = picture.at(x, y);
+      grey += c[0] > 150 && c[0] < 215 && std::abs(c[0] - c[2]) < 10;
+    }
+    if (grey >= 400) bar = x;
+  }
+  ASSERT_GT(bar, 0);
+  int cut = 0;  // the type's dark pixels
+  for (int x = bar - 20; x < bar; ++x)
+    for (int y = 0; y < picture.height; ++y) {
+      const unsigned char* c = picture.at(x, y);
+      cut += std::max({c[0], c[1], c[2]}) < 90;
+    }
+  EXPECT_EQ(cut, 0) << "text runs under the scroll bar at x = " << bar << ": " << png;
+}
+
 // With the final result shown, the worst triangle pinned is the final result's, ringed over it:
 // it was the iteration's, which the final result hides (0 teal pixels).
 TEST(Inspector, TheWorstTriangleOfTheFinalResultIsPinnedOverIt) {
