@@ -1288,7 +1288,7 @@ std::string recordedPartText(const std::string& settings) {
     std::replace(word.begin(), word.end(), '-', ' ');
     text += (text.empty() ? "" : ", in ") + word;
   }
-  return text.empty() ? "" : "This recording is of one part of the run, the largest: " + text;
+  return text.empty() ? "" : "The iterations are of one part of the run, the largest: " + text;
 }
 
 ParamMethod recordedParamMethod(const std::string& settings) {

@@ -404,8 +404,9 @@ RemeshOptions optionsFromSettings(const std::string& settings);
 // next mesh with them. In place: the window's Settings keep theirs so every frame.
 void keepWithinCommandLineBounds(RemeshOptions& options);
 // What a recording of a run made in parts (charts, components) is of, from its line's part=
-// (chart-3-of-19,component-1-of-2): "This recording is of one part of the run, the largest:
-// chart 3 of 19, in component 1 of 2"; "" for a run of one part.
+// (chart-3-of-19,component-1-of-2): "The iterations are of one part of the run, the largest:
+// chart 3 of 19, in component 1 of 2"; "" for a run of one part. (The window shows it over a
+// mesh it remeshed, too, where "this recording" named a file the user had not seen.)
 std::string recordedPartText(const std::string& settings);
 // The map a recorded run used: its line's param-used (the map "auto" chose, or the input's own,
 // ParamMethod::Given), else the one asked (older recordings). Throws Error as optionsFromSettings.

@@ -405,7 +405,7 @@ TEST(Cli, TwoComponentsAreRemeshedEachOnItsOwn) {
   const std::string rec = test::tempPath("two.lsrec");
   ASSERT_EQ(runCli("remesh " + path + " --no-fidelity --record " + rec).code, 0);
   const CliRun info = runCli("info " + rec);
-  EXPECT_NE(info.out.find("\nThis recording is of one part of the run, the largest: component 1 of 2\n"), std::string::npos)
+  EXPECT_NE(info.out.find("\nThe iterations are of one part of the run, the largest: component 1 of 2\n"), std::string::npos)
       << info.out;
   EXPECT_EQ(nlohmann::json::parse(runCli("info " + rec + " --json").out)["settings"]["part"], "component-1-of-2");
 }

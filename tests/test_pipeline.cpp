@@ -1057,9 +1057,9 @@ TEST(Pipeline, ACoarseBorderThatTheResultCutsIsSampledAtItsCorners) {
 TEST(Pipeline, ARecordingOfAPartSaysWhichPart) {
   EXPECT_EQ(recordedPartText("method=retriangulate sites=20"), "");
   EXPECT_EQ(recordedPartText("sites=194 part=chart-3-of-19"),
-            "This recording is of one part of the run, the largest: chart 3 of 19");
+            "The iterations are of one part of the run, the largest: chart 3 of 19");
   EXPECT_EQ(recordedPartText("sites=194 part=chart-3-of-19,component-1-of-2 param-used=lscm"),
-            "This recording is of one part of the run, the largest: chart 3 of 19, in component 1 of 2");
+            "The iterations are of one part of the run, the largest: chart 3 of 19, in component 1 of 2");
 }
 
 // The same saddle beside a small flat disk, two components: the saddle's border trial is the
