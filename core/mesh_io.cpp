@@ -416,6 +416,17 @@ RawMesh readOff(const std::string& path, std::string_view text) {
   }
 }
 
+// Whether a vertex line reads as a face: a count of three or more, then as many whole indices
+// and nothing else. Where the header's vertex count is more than the file has, the last of
+// its "vertices" are faces: a header's counts swapped (72 49 for 49 72) read 23 faces as
+// vertices and kept the mesh's last 49 faces, with no error.
+bool readsAsFace(const std::vector<std::string_view>& tokens) {
+  long long n = 0, index = 0;
+  if (tokens.size() < 4 || !parseInteger(tokens[0], n) || n != static_cast<long long>(tokens.size()) - 1) return false;
+  return std::all_of(tokens.begin() + 1, tokens.end(),
+                     [&](std::string_view t) { return parseInteger(t, index) && index >= 0; });
+}
+
 // An OFF file's vertices and faces, a line each (values after a vertex's three or a face's
 // indices are colours, normals ... which we do not need), from the line after the counts on.
 RawMesh readOffLines(const std::string& path, LineReader& lines, int nv, int nf, size_t bodySize) {
@@ -424,6 +435,7 @@ RawMesh readOffLines(const std::string& path, LineReader& lines, int nv, int nf,
   reservePoints(raw, nv, bodySize, 6);  // "0 0 0\n"
   size_t widest = 0;  // the most numbers on one vertex line, and where
   int widestLine = 0;
+  size_t firstWidth = 0;  // the first vertex line's numbers: the last, a face, has more
   for (int i = 0; i < nv; ++i) {
     if (!lines.next(tokens)) {
       // Several vertices written on one line read as one: say where, not just "truncated".
@@ -441,6 +453,16 @@ RawMesh readOffLines(const std::string& path, LineReader& lines, int nv, int nf,
     }
     raw.points.emplace_back(numberAt(path, line, tokens[0]), numberAt(path, line, tokens[1]),
                             numberAt(path, line, tokens[2]));
+    if (i == 0) firstWidth = tokens.size();
+    // The last "vertex" a face (a free-format file's vertices, six numbers on a line, are
+    // wider than a face that ran into them: readFreeFormatOff says what is wrong there).
+    if (i == nv - 1 && firstWidth < tokens.size() && readsAsFace(tokens)) {
+      std::string text;
+      for (std::string_view t : tokens) text += (text.empty() ? "" : " ") + std::string(t);
+      fail(path, atLine(line) + "vertex " + str(i) + " reads as a face ('" + text + "'): the header's counts (" +
+                     plural(nv, "vertex", "vertices") + ", " + plural(nf, "face", "faces") +
+                     ") do not match the file");
+    }
   }
   for (int f = 0; f < nf; ++f) {
     if (!lines.next(tokens)) {
@@ -892,6 +914,21 @@ void checkMeasurable(const std::vector<Vec3>& points, const std::string& name, i
   }
 }
 
+// A polygon that lists a vertex twice in a row, or ends where it started (a triangle written as
+// the quad "a b c c" by an exporter of quads only; "a b c a"): its corners without those
+// repeats, in `corners`. False, and `corners` left alone, where there are none.
+bool withoutRepeatsInARow(const long long* v, size_t n, std::vector<long long>& corners) {
+  const auto repeat = [&](size_t i) { return v[i] == v[(i + n - 1) % n]; };
+  if (n < 2) return false;
+  bool any = false;
+  for (size_t i = 0; i < n && !any; ++i) any = repeat(i);
+  if (!any) return false;
+  corners.clear();
+  for (size_t i = 0; i < n; ++i)
+    if (!repeat(i)) corners.push_back(v[i]);
+  return true;
+}
+
 // Size, index range and repeated vertices of one face, before any geometry is looked at. With
 // `repeatsAllowed` (the repair drops such a face), a repeated vertex is returned, not refused;
 // `fromFile`: the refusal says that the repair would drop it.
@@ -908,7 +945,9 @@ bool checkFaceIndices(const Index* v, size_t n, long long face, size_t vertexCou
   }
   const auto repeatedVertex = [&](long long v) {
     if (repeatsAllowed) return true;
-    fail(name, faceName + " uses vertex " + str(v + base) + " twice" + (fromFile ? " (--repair drops such faces)" : ""));
+    fail(name, faceName + " uses vertex " + str(v + base) + " twice" +
+                   (fromFile ? " (--repair drops such faces, or reads a face that lists it twice in a row with it once)"
+                             : ""));
   };
   if (n <= 8) {  // the usual case, without allocating
     for (size_t i = 0; i < n; ++i) {
@@ -1386,10 +1425,20 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   ReadResult result;
   result.mesh.points = raw.points;
   std::vector<long long> faceOfTriangle;
-  int polygons = 0, repeating = 0;
+  int polygons = 0, repeating = 0, shortened = 0;
+  std::vector<long long> corners;  // a polygon without its repeats in a row, where the repair reads it so
   for (long long f = 0; f < raw.polygonCount(); ++f) {
     const long long* v = raw.indices.data() + raw.polygonStart[f];
-    const size_t n = raw.polygonStart[f + 1] - raw.polygonStart[f];
+    size_t n = raw.polygonStart[f + 1] - raw.polygonStart[f];
+    if (options.repair && withoutRepeatsInARow(v, n, corners)) {
+      if (corners.size() < 3) {  // "a b b": no face left
+        ++repeating;
+        continue;
+      }
+      ++shortened;
+      v = corners.data();
+      n = corners.size();
+    }
     if (checkFaceIndices(v, n, f, raw.points.size(), raw.base, path, options.repair, /*fromFile=*/true)) {
       ++repeating;
       continue;
@@ -1399,6 +1448,9 @@ ReadResult readMesh(const std::string& path, const ReadOptions& options) {
       fail(path, "face " + str(f + raw.base) + " " + problem);
     faceOfTriangle.resize(result.mesh.triangles.size(), f);
   }
+  if (shortened > 0)
+    result.notes.push_back(path + ": repaired: " + plural(shortened, "face", "faces") +
+                           " listing a vertex twice in a row read with it once");
   if (repeating > 0)
     result.notes.push_back(path + ": repaired: " + plural(repeating, "face", "faces") + " using a vertex twice dropped");
   checkHasFaces(result.mesh.faceCount(), path);

@@ -626,6 +626,19 @@ TEST(MeshIoErrors, AbsurdCountsAreRefusedBeforeAllocating) {
   EXPECT_EXIT(readUnderALimit(), ::testing::ExitedWithCode(0), "");
 }
 
+// A header that claims more vertices than the file has reads its first faces as vertices: the
+// last "vertex" reads as a face, and the file is refused (a header's counts swapped, 72 49 for
+// 49 72, kept the last 49 of the 72 faces with no error; one vertex too many said "truncated").
+TEST(MeshIoErrors, AFaceReadAsAVertexSaysTheCountsAreWrong) {
+  const std::string square = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  expectFileError("one_face_as_vertex.off", "OFF\n5 1 0\n" + square,
+                  "line 7: vertex 4 reads as a face ('3 0 1 2'): the header's counts (5 vertices, 1 face) do not "
+                  "match the file");
+  expectFileError("one_vertex_too_many.off", "OFF\n5 2 0\n" + square, "vertex 4 reads as a face");
+  // Vertices on integer coordinates with a fourth value are vertices all the same.
+  EXPECT_EQ(readMesh(writeFile("four_values.off", "OFF\n3 1 0\n3 0 1 2\n4 0 1 2\n3 1 1 2\n3 0 1 2\n")).mesh.vertexCount(), 3);
+}
+
 TEST(MeshIoErrors, MoreDataThanTheHeaderSays) {
   expectFileError("extra.off", std::string(kSquareOff) + "3 1 2 3\n", "header says 2 faces but the file has more data");
   expectFileError("extra_binary.off", binaryOffSquare() + "garbage", "more data");
@@ -716,7 +729,8 @@ TEST(MeshIoErrors, FaceWithTooFewVertices) {
 
 TEST(MeshIoErrors, RepeatedVertexInAFace) {
   expectFileError("repeat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n",
-                  "face 0 uses vertex 1 twice (--repair drops such faces)");
+                  "face 0 uses vertex 1 twice (--repair drops such faces, or reads a face that lists it twice in a "
+                  "row with it once)");
 }
 
 // The repair drops a face that uses a vertex twice (here the square's third face), and says so;
@@ -730,6 +744,19 @@ TEST(MeshIo, TheRepairDropsAFaceUsingAVertexTwice) {
   EXPECT_EQ(r.notes[0], path + ": repaired: 1 face using a vertex twice dropped");
   const std::string only = writeFile("repeat_only.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n");
   EXPECT_THROW(readMesh(only, ReadOptions{true}), Error);
+}
+
+// A polygon that lists a vertex twice in a row ("a b c c": a triangle, as an exporter of quads
+// writes it) or ends where it started ("a b c a") is read by the repair with the vertex once:
+// it was dropped, which left a hole.
+TEST(MeshIo, TheRepairReadsAFaceListingAVertexTwiceInARowWithItOnce) {
+  const std::string path = writeFile("quad_as_triangle.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+                                                             "4 0 1 2 2\n4 0 2 3 0\n");
+  const ReadResult r = readMesh(path, ReadOptions{true});
+  EXPECT_EQ(r.mesh.faceCount(), 2);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_EQ(r.notes[0], path + ": repaired: 2 faces listing a vertex twice in a row read with it once");
+  expectReadError(path, "face 0 uses vertex 2 twice");
 }
 
 TEST(MeshIoErrors, ZeroAreaFace) {
