@@ -273,13 +273,14 @@ std::string savedInputPath(const BenchOptions& options, const std::string& model
 }
 
 // The CSV's folder checked, and a CSV or prepared input that would replace a model (a_30.off,
-// saving a.off at 30), a CSV onto a prepared input, or two models of one name saved onto each
-// other, refused: before any model is run, so that a bad one fails in a moment, not after
+// saving a.off at 30), a CSV under a mesh's name, a CSV onto a prepared input, or two models of
+// one name saved onto each other, refused: before any model is run, so that a bad one fails in a moment, not after
 // minutes of the others' work.
 void checkOutputs(const BenchOptions& options, const std::vector<std::string>& models) {
   requireWritable(options.csv);
   for (const std::string& path : models)
     if (sameFile(options.csv, path)) throw Error(options.csv + ": --csv would replace the input mesh; give it another name");
+  requireNoMeshExtension(options.csv, "the table", ".csv");  // another mesh
   if (options.saveInputs.empty()) return;
   makeFolder(options.saveInputs);
   for (const std::string& path : models)

@@ -1406,6 +1406,17 @@ std::string extensionByContent(std::string_view text) {
 
 bool isMeshExtension(const std::string& ext) { return ext == ".off" || ext == ".obj" || ext == ".ply"; }
 
+void requireNoMeshExtension(const std::string& path, const std::string& what, const std::string& suggested) {
+  // The name, and where it leads: run.lsrec, a link to mine.off, replaced the mesh.
+  for (const std::string& name : {path, targetOf(path).string()}) {
+    const std::string ext = lowercaseExtension(name);
+    if (isMeshExtension(ext))
+      throw Error(path + ": " + what + " is not saved under a mesh's extension (" + ext +
+                  (name == path ? "" : ", through a link") + "): it would replace a mesh with what no mesh reader reads; name it " +
+                  suggested);
+  }
+}
+
 ReadResult readMesh(const std::string& path, const ReadOptions& options) {
   requireFileThere(path);
   const std::string ext = lowercaseExtension(path);

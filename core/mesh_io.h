@@ -29,8 +29,12 @@ struct ReadOptions {
 constexpr std::uint64_t kLargestMeshFile = 2'000'000'000;
 
 // Whether `ext` (lowercaseExtension's: ".off") is one meshes are read and written by: .off, .obj
-// or .ply. (A recording is never saved under one: it would replace a mesh.)
+// or .ply. (A recording or a table is never saved under one: it would replace a mesh.)
 bool isMeshExtension(const std::string& ext);
+// Throws Error("<path>: <what> is not saved under a mesh's extension ...; name it <suggested>")
+// where `path`, or the file a link there leads to, has a mesh's extension: `what` ("a
+// recording") saved so would replace a mesh with what no mesh reader reads.
+void requireNoMeshExtension(const std::string& path, const std::string& what, const std::string& suggested);
 
 // Reads by extension (.off, .obj, .ply; case-insensitive) and validates with validateMesh().
 // A problem that the repair would fix says so ("... (--repair fixes this)"). A file larger than

@@ -350,15 +350,7 @@ void saveRecording(const Recording& recording, const std::string& path) {
   batch.commit();
 }
 
-void requireRecordingName(const std::string& path) {
-  // The name, and where it leads: run.lsrec, a link to mine.off, replaced the mesh.
-  for (const std::string& name : {path, targetOf(path).string()}) {
-    const std::string ext = lowercaseExtension(name);
-    if (isMeshExtension(ext))
-      throw Error(path + ": a recording is not saved under a mesh's extension (" + ext + (name == path ? "" : ", through a link") +
-                  "): it would replace a mesh with what no mesh reader reads; name it .lsrec");
-  }
-}
+void requireRecordingName(const std::string& path) { requireNoMeshExtension(path, "a recording", ".lsrec"); }
 
 void saveRecording(const Recording& recording, const std::string& path, FileBatch& batch) {
   requireRecordingName(path);

@@ -555,6 +555,19 @@ TEST(Cli, ARecordingIsNotSavedUnderAMeshsExtension) {
   std::remove(pipe.c_str());
 }
 
+// bench's table under a mesh's name replaced that mesh (mine.off began "model,size,method,...").
+// Refused before any model is run, the file left as it was.
+TEST(Cli, TheBenchsTableIsNotSavedUnderAMeshsExtension) {
+  const std::string mesh = test::tempPath("mine_table.off");
+  test::writeText(mesh, kTriangle);
+  const CliRun r = runCli("bench " + test::assetPath("sphere_cap.off") + " --sizes 100 --no-reference --csv " + mesh);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "lloydscope: " + mesh +
+                       ": the table is not saved under a mesh's extension (.off): it would replace a mesh with what "
+                       "no mesh reader reads; name it .csv\n");
+  EXPECT_EQ(test::readText(mesh), kTriangle);
+}
+
 // The recording and the output are saved both or neither: with the output on a full disk the
 // recording of the run before was replaced all the same.
 TEST(Cli, AnOutputThatCannotBeWrittenLeavesTheRecordingAlone) {
