@@ -622,7 +622,8 @@ void Inspector::startExport(ExportJob job) {
   if (job.sequence() && job.last < job.first)
     throw Error(range + ": FIRST comes after LAST (the pictures go from FIRST up to LAST)");
   if (job.sequence() && job.last >= count)
-    throw Error(range + ": expected FIRST:LAST within 0:" + std::to_string(count - 1));
+    throw Error(meshName() + ": " + range + " do not exist: expected FIRST:LAST within 0:" + std::to_string(count - 1) +
+                " (" + std::to_string(count) + " recorded)");
   // Every picture's name, before the first is saved: a folder named as the third stopped the
   // sequence there, the first two written (or replaced).
   for (int k = job.first; k >= 0 && k <= job.last; ++k) requireWritable(exportPath(job, k));

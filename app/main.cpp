@@ -412,6 +412,10 @@ RemeshResult openForInspection(const RemeshArgs& a, const CLI::App& cmd, RemeshO
     options = run.options;
     return std::move(run.result);
   }
+  // A recording saved as run.rec and cut short was refused for its "unknown extension '.rec'".
+  if (!isMeshExtension(lowercaseExtension(in)) && std::filesystem::is_regular_file(in))
+    throw Error(in + ": neither a mesh (.off, .obj or .ply) nor a Lloydscope recording (its first bytes are not a "
+                     "recording's: another file, or a recording cut short or damaged)");
   options = remeshOptions(a, cmd);
   Mesh mesh = loadToRemesh(a, options);
   RemeshResult result = remesh(mesh, options, in);

@@ -426,6 +426,15 @@ TEST(Cli, TruncatedRecording) {
   const CliRun inspected = runCli("inspect " + upper + " --screenshot " + test::tempPath("never.png"));
   EXPECT_EQ(inspected.code, 1);
   EXPECT_EQ(inspected.err, "lloydscope: " + upper + ": not a Lloydscope recording\n");
+  // Under a name of the user's own (--record takes any but a mesh's), cut before its first
+  // bytes: it was "unknown extension '.rec' (expected .off, .obj or .ply)".
+  const std::string own = test::tempPath("cli_cut.rec");
+  test::writeText(own, bytes.substr(0, 4));
+  const CliRun ownName = runCli("inspect " + own + " --screenshot " + test::tempPath("never.png"));
+  EXPECT_EQ(ownName.code, 1);
+  EXPECT_EQ(ownName.err, "lloydscope: " + own +
+                             ": neither a mesh (.off, .obj or .ply) nor a Lloydscope recording (its first bytes are "
+                             "not a recording's: another file, or a recording cut short or damaged)\n");
 }
 
 // A recording replays its own run: an option that would remesh is refused, in one line naming
