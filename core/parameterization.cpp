@@ -190,7 +190,7 @@ const char* errorMessage(SMP::Error_code code) {
     case SMP::ERROR_NON_TRIANGULAR_MESH: return "the mesh is not triangular";
     case SMP::ERROR_NO_TOPOLOGICAL_DISC: return "the mesh is not a topological disk";
     case SMP::ERROR_NO_TOPOLOGICAL_BALL: return "the mesh is not a topological ball";
-    case SMP::ERROR_BORDER_TOO_SHORT: return "the border is too short";
+    case SMP::ERROR_BORDER_TOO_SHORT: return "the border has too few vertices (a square border needs 4 at least: try --border circle)";
     case SMP::ERROR_NON_CONVEX_BORDER: return "the method needs a convex border";
     case SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return "its linear system could not be solved";
     case SMP::ERROR_NO_1_TO_1_MAPPING: return "the map is not one-to-one";

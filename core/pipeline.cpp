@@ -329,7 +329,9 @@ int verticesAsked(const RemeshOptions& o) { return o.sites.count > 0 ? o.sites.c
 
 void requireStitched(const Mesh& stitched, const Topology& want, int verticesWanted, const std::string& name) {
   try {
-    validateMesh(stitched, name);
+    // Its problems are the result's, not the input's: "(tetra.off: the mesh has no faces)" said
+    // the input, which has four, had none.
+    validateMesh(stitched, "the stitched result");
     const Topology got = analyzeTopology(stitched);
     std::set<Triangle> faces;  // the same three vertices twice: two sides of one triangle
     for (Triangle t : stitched.triangles) {

@@ -532,6 +532,31 @@ TEST(Cli, ARecordingNeitherReplacesTheInputNorTheOutputNorReadsAFolder) {
   EXPECT_EQ(r.err, "lloydscope: " + folder + ": is a folder, not a recording\n");
 }
 
+// A result that did not stitch back says what is wrong with the result, not with the input: a
+// tetrahedron's was "(tetra.off: the mesh has no faces)", of a file of four faces.
+TEST(Cli, AResultThatDidNotStitchBackIsNotTakenForTheInput) {
+  const std::string tetra = test::tempPath("tetra.off");
+  test::writeText(tetra, "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  const CliRun r = runCli("remesh " + tetra + " --no-resample -o " + test::tempPath("tetra_out.off"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("did not stitch back into a closed surface of genus 0 (the stitched result: "), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find(tetra + ": the mesh has no faces"), std::string::npos) << r.err;
+}
+
+// A square border on a border of three vertices: "the border is too short" said neither why
+// nor what to do.
+TEST(Cli, ASquareBorderOnThreeVerticesSaysWhatToTry) {
+  const std::string triangle = test::tempPath("one_triangle.off");
+  test::writeText(triangle, kTriangle);
+  const CliRun r = runCli("remesh " + triangle + " --preset reference -o " + test::tempPath("one_triangle_out.off"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(triangle + ": authalic parameterization failed: the border has too few vertices (a square border "
+                                  "needs 4 at least: try --border circle)"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(Cli, AFailedRunLeavesTheUsersFileAlone) {
   const std::string out = test::tempPath("precious.off");
   test::writeText(out, kTriangle);
