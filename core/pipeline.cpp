@@ -963,6 +963,15 @@ namespace {
 // coordinate) than this many times as far as 99% of its vertices are: a stray one.
 constexpr double kStrayDistance = 100;
 
+// "(x, y, z)", six digits each: a vertex named by where it is, as the file has it (by its
+// number it was the reader's, counted from 0 once unused vertices were dropped: an OBJ's line
+// 53 was "vertex 50").
+std::string pointText(const Vec3& p) {
+  std::ostringstream text;
+  text << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
+  return text.str();
+}
+
 // A stray vertex (a scan's outlier, a coordinate typed wrong) pulls its triangles into a needle
 // far longer than the surface, which the border's samples or the last steps' ears then follow
 // for minutes (the bumpy disk with one vertex 1000 times as far: over 200 s, for a result that
@@ -989,7 +998,7 @@ void requireNoStrayVertex(const Mesh& input, const std::string& name) {
   const auto reachOfMost = distance.begin() + static_cast<long>(0.99 * static_cast<double>(distance.size() - 1));
   std::nth_element(distance.begin(), reachOfMost, distance.end());
   if (*reachOfMost > 0 && stray > kStrayDistance * *reachOfMost)
-    throw Error(name + ": vertex " + std::to_string(vertices[farthest]) + " is " +
+    throw Error(name + ": the vertex at " + pointText(input.points[vertices[farthest]]) + " is " +
                 std::to_string(static_cast<long long>(stray / *reachOfMost)) +
                 " times as far from the middle of the surface as 99% of its vertices (at most " +
                 std::to_string(static_cast<int>(kStrayDistance)) +
