@@ -1034,7 +1034,8 @@ bool orientable(int faceCount, const std::vector<HalfEdge>& halfEdges) {
   return true;
 }
 
-void checkEdges(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
+// Every triangle's three half edges, sorted by edge.
+std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh) {
   std::vector<HalfEdge> halfEdges;
   halfEdges.reserve(3 * mesh.triangles.size());
   for (int t = 0; t < mesh.faceCount(); ++t) {
@@ -1046,6 +1047,14 @@ void checkEdges(const Mesh& mesh, const std::string& name, const Numbering& numb
   std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
     return std::tie(x.lo, x.hi, x.triangle) < std::tie(y.lo, y.hi, y.triangle);
   });
+  return halfEdges;
+}
+
+constexpr const char* kNotOrientable =
+    "the surface is not orientable (a Moebius strip, say): no turning of its faces makes them agree across every edge";
+
+void checkEdges(const Mesh& mesh, const std::string& name, const Numbering& numbering) {
+  const std::vector<HalfEdge> halfEdges = sortedHalfEdges(mesh);
   const auto edgeName = [&](const HalfEdge& h) {
     return "edge " + str(numbering.vertex(h.lo)) + "-" + str(numbering.vertex(h.hi));
   };
@@ -1060,9 +1069,7 @@ void checkEdges(const Mesh& mesh, const std::string& name, const Numbering& numb
     const HalfEdge &x = halfEdges[i], &y = halfEdges[i + 1];
     if (x.lo == y.lo && x.hi == y.hi && x.forward == y.forward) {
       // No turning of faces mends a Moebius strip: its message said only that two faces disagree.
-      if (!orientable(mesh.faceCount(), halfEdges))
-        fail(name, "the surface is not orientable (a Moebius strip, say): no turning of its faces makes them agree "
-                   "across every edge");
+      if (!orientable(mesh.faceCount(), halfEdges)) fail(name, kNotOrientable);
       fail(name, "faces " + str(numbering.face(x.triangle)) + " and " + str(numbering.face(y.triangle)) +
                      " have opposite orientations across " + edgeName(x));
     }
@@ -1197,11 +1204,16 @@ std::vector<std::pair<int, int>> checkOrRepair(ReadResult& result, const std::st
     return checkSurface(result.mesh, path, numbering);
   } catch (const Error& e) {
     if (repair) {
+      const Mesh before = result.mesh;
       const bool renumbered = repairInto(result, path, numbering);
       try {
         return checkSurface(result.mesh, path, numbering);
       } catch (const Error& left) {
-        // A vertex the repair split (a Moebius strip's) has a number the file does not.
+        // No turning of faces mends a Moebius strip: the repair cut it open, and the cut's two
+        // sides were refused as "vertices 61 and 150 at the same position", of a file of 120.
+        if (!orientable(before.faceCount(), sortedHalfEdges(before)))
+          fail(path, std::string(kNotOrientable) + ", which the repair cannot mend");
+        // A vertex the repair split has a number the file does not.
         throw Error(std::string(left.what()) + " (left after the repair" +
                     (renumbered && !result.mesh.triangles.empty() ? ", which numbered the vertices and faces anew, from 0)"
                                                                   : ")"));

@@ -833,8 +833,16 @@ TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
   EXPECT_NE(pinch.find("same position on a border (an unwelded seam, a crack, or the border touching itself at a point) "
                        "(left after the repair)"),
             std::string::npos) << pinch;
-  // A Moebius strip: the repair turns its faces one way by splitting two vertices, whose copies
-  // have numbers the file does not (it said "vertices 2 and 12" of a file of 12).
+  // Two triangles on one vertex: the repair splits it, and the copy has a number the file does
+  // not (a Moebius strip's said "vertices 2 and 12" of a file of 12).
+  const std::string bowtie = test::errorOf(
+      [&] { readMesh(writeFile("bowtie.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n"),
+                     ReadOptions{true}); },
+      "a bowtie repaired");
+  EXPECT_NE(bowtie.find("(left after the repair, which numbered the vertices and faces anew, from 0)"), std::string::npos)
+      << bowtie;
+  // A Moebius strip: no turning of its faces mends it, and the repair says so (it cut the strip
+  // open and refused the cut's two sides as vertices at one place).
   std::string moebius = "OFF\n12 12 0\n";
   for (int i = 0; i < 6; ++i)
     for (double w : {0.3, -0.3}) {
@@ -851,7 +859,9 @@ TEST(MeshIoErrors, WhatTheRepairLeavesIsStillRefused) {
   expectReadError(writeFile("moebius_as_is.off", moebius), "the surface is not orientable (a Moebius strip, say)");
   const std::string repaired = test::errorOf([&] { readMesh(writeFile("moebius.off", moebius), ReadOptions{true}); },
                                               "a Moebius strip repaired");
-  EXPECT_NE(repaired.find("(left after the repair, which numbered the vertices and faces anew, from 0)"), std::string::npos)
+  EXPECT_NE(repaired.find("the surface is not orientable (a Moebius strip, say): no turning of its faces makes them agree "
+                          "across every edge, which the repair cannot mend"),
+            std::string::npos)
       << repaired;
 }
 
