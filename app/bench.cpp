@@ -280,20 +280,21 @@ void checkOutputs(const BenchOptions& options, const std::vector<std::string>& m
   requireWritable(options.csv);
   for (const std::string& path : models)
     if (sameFile(options.csv, path)) throw Error(options.csv + ": --csv would replace the input mesh; give it another name");
-  requireNoMeshExtension(options.csv, "the table", ".csv");  // another mesh
-  if (options.saveInputs.empty()) return;
-  makeFolder(options.saveInputs);
-  for (const std::string& path : models)
-    for (int size : options.sizes) {
-      const std::string saved = savedInputPath(options, path, size);
-      if (sameFile(saved, options.csv)) throw Error(saved + ": --csv and --save-inputs name the same file; give them two");
-      for (const std::string& other : models) {
-        if (sameFile(saved, other))
-          throw Error(saved + ": --save-inputs would replace the input mesh " + other + "; save them elsewhere");
-        if (other != path && name(other) == name(path))
-          throw Error(path + " and " + other + ": --save-inputs would save both as " + saved + "; rename one");
+  if (!options.saveInputs.empty()) {
+    makeFolder(options.saveInputs);
+    for (const std::string& path : models)
+      for (int size : options.sizes) {
+        const std::string saved = savedInputPath(options, path, size);
+        if (sameFile(saved, options.csv)) throw Error(saved + ": --csv and --save-inputs name the same file; give them two");
+        for (const std::string& other : models) {
+          if (sameFile(saved, other))
+            throw Error(saved + ": --save-inputs would replace the input mesh " + other + "; save them elsewhere");
+          if (other != path && name(other) == name(path))
+            throw Error(path + " and " + other + ": --save-inputs would save both as " + saved + "; rename one");
+        }
       }
-    }
+  }
+  requireNoMeshExtension(options.csv, "the table", ".csv");  // any other mesh
 }
 
 }  // namespace
